@@ -1,0 +1,65 @@
+# Helpers shared by every folder: one call builds a plugin, a test or a benchmark the same way.
+
+# fitfeel_add_plugin(<name> SOURCES ...) builds a loadable module into the build tree's plugin
+# folder. Only its register.cc may export a symbol (the registration hook).
+function(fitfeel_add_plugin name)
+  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBS" ${ARGN})
+  add_library(${name} MODULE ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
+  if(NOT ARG_OUTPUT_DIR)
+    set(ARG_OUTPUT_DIR ${FITFEEL_BUILD_PLUGIN_DIR})
+  endif()
+  set_target_properties(${name} PROPERTIES
+    PREFIX "lib"
+    LIBRARY_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
+  if(ARG_OUTPUT_DIR STREQUAL FITFEEL_BUILD_PLUGIN_DIR)
+    install(TARGETS ${name} LIBRARY DESTINATION lib/fitfeel/plugins)
+    set_property(GLOBAL APPEND PROPERTY FITFEEL_PLUGIN_TARGETS ${name})
+  endif()
+endfunction()
+
+# fitfeel_add_test(<name> SOURCES ... [LIBS ...]) builds a GoogleTest binary and registers its
+# tests with ctest. Tests run with the build tree's plugins and the repository as the working tree.
+function(fitfeel_add_test name)
+  if(NOT FITFEEL_BUILD_TESTS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock
+                                        GTest::gtest_main ${ARG_LIBS})
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+  get_property(plugins GLOBAL PROPERTY FITFEEL_PLUGIN_TARGETS)
+  gtest_discover_tests(${name}
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+    PROPERTIES LABELS "${ARG_LABELS}"
+               ENVIRONMENT "FITFEEL_SOURCE_DIR=${PROJECT_SOURCE_DIR};FITFEEL_BUILD_DIR=${CMAKE_BINARY_DIR}"
+    DISCOVERY_TIMEOUT 60)
+endfunction()
+
+# fitfeel_add_benchmark(<name> SOURCES ... [LIBS ...]) builds a Google Benchmark binary into
+# build/bench. Benchmarks are never run by ctest: they measure, tests assert.
+function(fitfeel_add_benchmark name)
+  if(NOT FITFEEL_BUILD_BENCHMARKS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE fitfeel::framework benchmark::benchmark
+                                        benchmark::benchmark_main ${ARG_LIBS})
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bench)
+endfunction()
+
+# Adds every immediate subfolder of the current folder that has a CMakeLists.txt, so that a new
+# plugin is one new folder and no edit elsewhere.
+function(fitfeel_add_plugin_folders)
+  file(GLOB children LIST_DIRECTORIES true RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}
+       ${CMAKE_CURRENT_SOURCE_DIR}/*)
+  list(SORT children)
+  foreach(child IN LISTS children)
+    if(IS_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/${child}
+       AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${child}/CMakeLists.txt)
+      add_subdirectory(${child})
+    endif()
+  endforeach()
+endfunction()

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "framework/core/error.h"
+#include "framework/core/export.h"
+#include "framework/core/quantity.h"
+
+namespace fitfeel {
+
+// A read-only view of one node of a scenario file that knows where it stands (file, line, column,
+// key path) so that every check a framework or plugin makes on it fails with the same precise
+// message: "file:line:column: key.path: expected ..., found ...". Plugins validate their own keys
+// through it, so adding a surface type needs no change to the scenario parser.
+class FITFEEL_API ConfigNode {
+ public:
+  ConfigNode(YAML::Node node, std::string file, std::string path);
+
+  const std::string& path() const { return path_; }
+  const std::string& file() const { return file_; }
+  SourceLocation location() const;
+  bool is_map() const;
+  bool is_sequence() const;
+  bool is_scalar() const;
+  const YAML::Node& yaml() const { return node_; }
+
+  // Keys of a map in file order; fails unless this is a map.
+  std::vector<std::string> Keys() const;
+  bool Has(std::string_view key) const;
+
+  // Fails with "unknown key" (naming the allowed ones) if the map holds any other key.
+  void ExpectOnlyKeys(const std::vector<std::string_view>& allowed) const;
+
+  ConfigNode Child(std::string_view key) const;  // required
+  std::optional<ConfigNode> Find(std::string_view key) const;
+  std::vector<ConfigNode> Items() const;  // elements of a sequence
+
+  // Scalar accessors on this node.
+  std::string AsString() const;
+  double AsQuantity(Dimension dimension) const;
+  double AsQuantityIn(Dimension dimension, double min, double max, bool min_inclusive = true) const;
+  long AsInteger(long min = std::numeric_limits<long>::min(),
+                 long max = std::numeric_limits<long>::max()) const;
+  bool AsBool() const;
+  std::string AsOneOf(const std::vector<std::string_view>& choices) const;
+
+  // Shorthands for a required child.
+  std::string String(std::string_view key) const { return Child(key).AsString(); }
+  double Quantity(std::string_view key, Dimension dimension) const {
+    return Child(key).AsQuantity(dimension);
+  }
+  double QuantityIn(std::string_view key, Dimension dimension, double min, double max) const {
+    return Child(key).AsQuantityIn(dimension, min, max);
+  }
+  // Optional child with a default.
+  double QuantityOr(std::string_view key, Dimension dimension, double fallback) const;
+  std::string StringOr(std::string_view key, std::string fallback) const;
+
+  // Throws ScenarioError at this node.
+  [[noreturn]] void Fail(const std::string& expected, const std::string& found) const;
+  // What this node holds, quoted for a message: "'20 mmm'", "a map", "nothing".
+  std::string Describe() const;
+
+ private:
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+};
+
+}  // namespace fitfeel

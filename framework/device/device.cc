@@ -1,0 +1,56 @@
+#include "framework/device/device.h"
+
+#include <cassert>
+#include <cmath>
+
+#include "framework/core/error.h"
+#include "framework/device/stage.h"
+
+namespace fitfeel {
+
+Device::~Device() = default;
+Stage::~Stage() = default;
+
+std::string_view ToString(StageId stage) {
+  switch (stage) {
+    case StageId::kPositioning: return "positioning";
+    case StageId::kConstrained: return "constrained";
+  }
+  return "unknown";
+}
+
+void Device::Configure(const ConfigNode& node) { DoConfigure(node); }
+
+void Device::Start(double period) {
+  if (!(period > 0.0) || !std::isfinite(period)) {
+    throw UserError("device tick period must be a positive number of seconds");
+  }
+  DoStart(period);
+}
+
+void Device::Stop() noexcept { DoStop(); }
+
+void Device::Read(double time, DeviceState* out) noexcept {
+  assert(out != nullptr);
+  DoRead(time, out);
+}
+
+void Device::Write(const Wrench& wrench) noexcept {
+  // The safety chain guarantees finite wrenches; a device must never see anything else.
+  if (!wrench.AllFinite()) {
+    DoWrite(Wrench{});
+    return;
+  }
+  DoWrite(wrench);
+}
+
+void Device::RunServoLoop(double, const std::function<bool(double)>&) {
+  throw UnsupportedError("this device does not own a servo clock; run it from the scheduler");
+}
+
+void Stage::Evaluate(const DeviceState& device, StageOutput* out) const noexcept {
+  assert(out != nullptr);
+  DoEvaluate(device, out);
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,74 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "framework/core/config_node.h"
+#include "framework/core/export.h"
+#include "framework/core/wrench.h"
+
+namespace fitfeel {
+
+// Limits and native properties of a haptic device (data, overridable by the scenario).
+struct DeviceSpec {
+  std::string model;
+  double max_force = 0.0;             // N, peak
+  double max_continuous_force = 0.0;  // N
+  double max_stiffness = 0.0;         // N/m, largest stable rendered stiffness
+  double damping = 0.0;               // N*s/m, physical damping usable for passivity
+  Eigen::Vector3d workspace{0.0, 0.0, 0.0};  // extent of the reachable box, m
+  double native_rate = 1000.0;        // Hz
+};
+
+// One sample of the device (or hand) state, in the scene frame: y is the mating axis.
+struct DeviceState {
+  double time = 0.0;  // s since the start of the run
+  Eigen::Vector3d position{0.0, 0.0, 0.0};
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d velocity{0.0, 0.0, 0.0};
+  Eigen::Vector3d angular_velocity{0.0, 0.0, 0.0};
+  std::uint32_t buttons = 0;
+  // Wrench the device delivered in the previous tick after its own limits (for recording).
+  Wrench delivered;
+};
+
+// Who calls the tick: the framework's scheduler, or the device vendor's servo thread.
+enum class ClockOwner { kFramework, kDevice };
+
+// A device plugin. Configure and Start may allocate and throw; Read and Write run in the tick.
+class FITFEEL_API Device {
+ public:
+  virtual ~Device();
+
+  // Parses the scenario's `device` node (after the plugin key); throws ScenarioError.
+  void Configure(const ConfigNode& node);
+  // Opens the hardware or prepares the simulation for a run of `period` seconds per tick.
+  void Start(double period);
+  void Stop() noexcept;
+
+  // Per tick. `time` is the tick's scheduled time (virtual or real) in seconds since start.
+  void Read(double time, DeviceState* out) noexcept;
+  // Per tick: the wrench to apply (already scaled and bounded by the safety chain).
+  void Write(const Wrench& wrench) noexcept;
+
+  virtual DeviceSpec spec() const = 0;
+  virtual ClockOwner clock_owner() const { return ClockOwner::kFramework; }
+  // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
+  // rate until it returns false or `duration` seconds pass. Throws if the device cannot.
+  virtual void RunServoLoop(double duration, const std::function<bool(double)>& tick);
+  // True while the device wants the run to continue (e.g. a replay that has not ended).
+  virtual bool active() const { return true; }
+
+ protected:
+  virtual void DoConfigure(const ConfigNode& node) = 0;
+  virtual void DoStart(double period) = 0;
+  virtual void DoStop() noexcept {}
+  virtual void DoRead(double time, DeviceState* out) noexcept = 0;
+  virtual void DoWrite(const Wrench& wrench) noexcept = 0;
+};
+
+}  // namespace fitfeel

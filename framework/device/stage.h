@@ -1,0 +1,36 @@
+#pragma once
+
+#include <string_view>
+
+#include "framework/core/export.h"
+#include "framework/core/wrench.h"
+#include "framework/device/device.h"
+#include "framework/model/contact_analyzer.h"
+
+namespace fitfeel {
+
+// Identifies the stage of an assembly (paper section 3): free positioning, then constrained mating.
+enum class StageId : int { kPositioning = 0, kConstrained = 1 };
+
+FITFEEL_API std::string_view ToString(StageId stage);
+
+// Output of one stage tick.
+struct StageOutput {
+  Wrench wrench;               // on the moving part, scene frame
+  MatingPose pose;             // where the moving part is relative to the fixed one
+  ContactState contact;        // filled by the constrained stage
+  StageId next = StageId::kPositioning;  // stage for the next tick (hand-over)
+};
+
+// One stage of the assembly. Prepare may allocate; Evaluate is the per-tick path.
+class FITFEEL_API Stage {
+ public:
+  virtual ~Stage();
+  virtual StageId id() const = 0;
+  void Evaluate(const DeviceState& device, StageOutput* out) const noexcept;
+
+ protected:
+  virtual void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept = 0;
+};
+
+}  // namespace fitfeel

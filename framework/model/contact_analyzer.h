@@ -1,0 +1,61 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "framework/core/export.h"
+#include "framework/model/gps_spec.h"
+#include "framework/model/model_settings.h"
+#include "framework/model/skin_model_shape.h"
+
+namespace fitfeel {
+
+// Pose of the moving part relative to the fixed one, in the fixed part's mating frame.
+struct MatingPose {
+  double depth = 0.0;                 // insertion along the mating axis (y), m; 0 = first contact
+  Eigen::Vector2d offset{0.0, 0.0};   // (x, z) offset of the moving part's axis, m
+  double angle = 0.0;                 // rotation about the mating axis (or the sphere centre), rad
+};
+
+// What the analyzer found at one pose (paper section 3.1); read by a resistance law.
+struct ContactState {
+  bool engaged = false;         // the mating surfaces overlap axially
+  bool interference = false;    // the assembly space is empty: the parts are pressed together
+  double engaged_length = 0.0;  // overlap along the mating axis, m
+  double engaged_area = 0.0;    // nominal area of the overlapping cells, m^2
+  // Radial state (eq. 9): distance of the moving axis from the fixed axis, its direction gamma,
+  // and the assembly space's extent S_A(gamma) in that direction.
+  double offset_distance = 0.0;      // delta d, m
+  double offset_angle = 0.0;         // gamma, rad
+  double assembly_extent = 0.0;      // S_A(gamma), m (0 when the assembly space is empty)
+  double penetration = 0.0;          // max(0, delta d - S_A(gamma)), m
+  // Interference (eqs. 10-12): sum over overlapping cells of delta(P_ij) * area (m^3), with
+  // texture taken as its expected interference where the settings ask for it; a law multiplies it
+  // by its pressure per unit interference.
+  double interference_volume = 0.0;
+  double max_interference = 0.0;     // largest delta(P_ij), m
+  // Resultant direction of the contact normal force in the cross-section when interfering.
+  Eigen::Vector2d pressure_resultant{0.0, 0.0};  // sum of delta * area * u_j, m^3
+};
+
+// Builds per-depth tables in prepare and answers per-tick queries in bounded time.
+class FITFEEL_API ContactAnalyzer {
+ public:
+  virtual ~ContactAnalyzer();
+  // Prepare-time; may allocate.
+  void Prepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+               const SkinModelShape& outer_sms, const ModelSettings& settings);
+  // Per tick: no allocation, no locks, no exceptions, no I/O.
+  void Evaluate(const MatingPose& pose, ContactState* out) const noexcept;
+  bool prepared() const { return prepared_; }
+
+ protected:
+  virtual void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
+                         const PartSpec& outer, const SkinModelShape& outer_sms,
+                         const ModelSettings& settings) = 0;
+  virtual void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept = 0;
+
+ private:
+  bool prepared_ = false;
+};
+
+}  // namespace fitfeel

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/core/export.h"
+
+namespace fitfeel {
+
+// Which side of the mating pair a part is. The tolerance space is S_T = V_outer - V_inner.
+enum class Role { kInner, kOuter };  // shaft / key / pin / ball ; bushing / keyway / hole / socket
+
+// Size limits of a feature of size, as deviations from the nominal size (ISO 286 convention:
+// es/ei for shafts, ES/EI for holes). All in metres.
+struct SizeSpec {
+  double nominal = 0.0;
+  double lower_deviation = 0.0;
+  double upper_deviation = 0.0;
+  std::string iso_code;  // "H7", "g6", ... when given as a code; empty for explicit deviations
+};
+
+// GPS form (and pair orientation) characteristics a surface type may support (paper Table 1).
+enum class FormCharacteristic {
+  kAxisStraightness,
+  kGeneratrixStraightness,
+  kRoundness,
+  kCylindricity,
+  kStraightness,  // line straightness of a flat face
+  kFlatness,
+  kParallelism,   // of a pair of flat faces
+  kSphericity,
+};
+
+// Scenario spelling of a characteristic ("axis_straightness", ...).
+FITFEEL_API std::string ToString(FormCharacteristic characteristic);
+
+// Tolerance zone widths in metres, one per characteristic given.
+struct FormSpec {
+  std::map<FormCharacteristic, double> tolerance;
+  double Get(FormCharacteristic c) const {
+    auto it = tolerance.find(c);
+    return it == tolerance.end() ? 0.0 : it->second;
+  }
+};
+
+// Surface texture (paper eq. 6): waviness amplitude A, roughness Ra and Rz, in metres.
+struct TextureSpec {
+  double waviness = 0.0;
+  double ra = 0.0;
+  double rz = 0.0;
+};
+
+struct Material {
+  std::string name;
+  double youngs_modulus = 0.0;  // Pa
+  double poisson = 0.0;
+};
+
+// Surface-type-specific nominal geometry of one part's mating surface; each surface plugin derives
+// its own and parses it from the part's `geometry` node.
+class FITFEEL_API Geometry {
+ public:
+  virtual ~Geometry();
+  // Nominal area of the mating surface that carries a skin model shape, m^2.
+  virtual double nominal_area() const = 0;
+  // Length of the mating surface along the direction of the constrained motion, m.
+  virtual double mating_length() const = 0;
+  // One line for summaries, e.g. "cylinder d=20 mm l=40 mm".
+  virtual std::string Describe() const = 0;
+};
+
+// Everything the scenario says about one part.
+struct PartSpec {
+  std::string name;
+  Role role = Role::kInner;
+  SizeSpec size;
+  FormSpec form;
+  TextureSpec texture;
+  Material material;
+  std::shared_ptr<const Geometry> geometry;
+};
+
+}  // namespace fitfeel

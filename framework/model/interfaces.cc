@@ -1,0 +1,112 @@
+// Out-of-line destructors (one vtable per interface, in the framework library) and the checking
+// wrappers of the Drake-style public/protected-virtual pairs.
+#include <algorithm>
+#include <cassert>
+#include <string>
+
+#include "framework/core/error.h"
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/discretizer.h"
+#include "framework/model/gps_spec.h"
+#include "framework/model/resistance_law.h"
+#include "framework/model/surface_type.h"
+#include "framework/model/variation_generator.h"
+
+namespace fitfeel {
+
+std::string ToString(FormCharacteristic characteristic) {
+  switch (characteristic) {
+    case FormCharacteristic::kAxisStraightness: return "axis_straightness";
+    case FormCharacteristic::kGeneratrixStraightness: return "generatrix_straightness";
+    case FormCharacteristic::kRoundness: return "roundness";
+    case FormCharacteristic::kCylindricity: return "cylindricity";
+    case FormCharacteristic::kStraightness: return "straightness";
+    case FormCharacteristic::kFlatness: return "flatness";
+    case FormCharacteristic::kParallelism: return "parallelism";
+    case FormCharacteristic::kSphericity: return "sphericity";
+  }
+  return "unknown";
+}
+
+Geometry::~Geometry() = default;
+Discretizer::~Discretizer() = default;
+VariationGenerator::~VariationGenerator() = default;
+ContactAnalyzer::~ContactAnalyzer() = default;
+ResistanceLaw::~ResistanceLaw() = default;
+SurfaceType::~SurfaceType() = default;
+
+SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& resolution) const {
+  if (!part.geometry) throw UserError("part '" + part.name + "' has no geometry to discretize");
+  if (resolution.rows < 0 || resolution.columns < 0) {
+    throw UserError("resolution of part '" + part.name + "' must not be negative");
+  }
+  SurfaceGrid grid = DoDiscretize(part, resolution);
+  assert(grid.rows > 0 && grid.columns > 0);
+  assert(grid.area.size() == grid.size() && grid.centre.cols() == grid.size());
+  return grid;
+}
+
+SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceGrid& grid,
+                                            TextureMode texture, Rng& rng) const {
+  if (grid.size() == 0) throw UserError("part '" + part.name + "' has an empty grid");
+  SkinModelShape sms = DoGenerate(part, grid, texture, rng);
+  assert(sms.variation.size() == grid.size());
+  return sms;
+}
+
+void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
+                              const PartSpec& outer, const SkinModelShape& outer_sms,
+                              const ModelSettings& settings) {
+  if (inner_sms.grid.size() == 0 || outer_sms.grid.size() == 0) {
+    throw UserError("contact analysis needs a skin model shape for both parts");
+  }
+  DoPrepare(inner, inner_sms, outer, outer_sms, settings);
+  prepared_ = true;
+}
+
+void ContactAnalyzer::Evaluate(const MatingPose& pose, ContactState* out) const noexcept {
+  assert(prepared_ && out != nullptr);
+  DoEvaluate(pose, out);
+}
+
+void ResistanceLaw::Prepare(const PartSpec& inner, const PartSpec& outer,
+                            const ModelSettings& settings) {
+  if (settings.friction < 0.0) throw UserError("friction coefficient must not be negative");
+  if (settings.contact_stiffness < 0.0) throw UserError("contact stiffness must not be negative");
+  DoPrepare(inner, outer, settings);
+}
+
+void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& motion,
+                             Wrench* out) const noexcept {
+  assert(out != nullptr);
+  DoEvaluate(contact, motion, out);
+}
+
+std::shared_ptr<const Geometry> SurfaceType::ParseGeometry(const PartSpec& part,
+                                                           const ConfigNode& geometry) const {
+  auto parsed = DoParseGeometry(part, geometry);
+  assert(parsed != nullptr);
+  return parsed;
+}
+
+void SurfaceType::CheckPair(const PartSpec& inner, const PartSpec& outer,
+                            const ConfigNode& pair_node) const {
+  DoCheckPair(inner, outer, pair_node);
+}
+
+void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode&) const {}
+
+std::unique_ptr<ResistanceLaw> SurfaceType::MakeLaw(std::string_view name) const {
+  const auto names = law_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string offered;
+    for (const auto& n : names) offered += (offered.empty() ? "" : ", ") + n;
+    throw UserError("unknown resistance law '" + std::string(name) + "'; this surface offers: " +
+                    (offered.empty() ? "none" : offered));
+  }
+  auto law = DoMakeLaw(name);
+  if (!law) throw UnsupportedError("resistance law '" + std::string(name) + "' is not available");
+  return law;
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/core/config_node.h"
+#include "framework/core/export.h"
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/discretizer.h"
+#include "framework/model/gps_spec.h"
+#include "framework/model/resistance_law.h"
+#include "framework/model/variation_generator.h"
+
+namespace fitfeel {
+
+// What a surface plugin registers: one kind of mating surface (cylindrical, planar, ...) with the
+// four model interfaces of the design card. Objects it makes keep their plugin library loaded (the
+// registry never unloads a library).
+class FITFEEL_API SurfaceType {
+ public:
+  virtual ~SurfaceType();
+
+  // Parses and checks one part's `geometry` node; throws ScenarioError at the offending key.
+  // `part` holds everything the scenario said of the part except its geometry (name, role, size,
+  // form, texture, material): the mating size comes from `part.size.nominal`.
+  std::shared_ptr<const Geometry> ParseGeometry(const PartSpec& part,
+                                                const ConfigNode& geometry) const;
+  // Checks the pair as a whole once both parts are parsed (e.g. the nominal sizes agree);
+  // throws ScenarioError at `pair_node`.
+  void CheckPair(const PartSpec& inner, const PartSpec& outer, const ConfigNode& pair_node) const;
+
+  // Form characteristics this surface type models; others in a scenario are refused.
+  virtual std::vector<FormCharacteristic> form_characteristics() const = 0;
+  // Law names this surface offers; the first is the default.
+  virtual std::vector<std::string> law_names() const = 0;
+  // False for a surface type that can be discretised but has no resistance law yet (thread stub);
+  // `limitation()` then says why, and running a scene with it is refused with that message.
+  virtual bool renders_forces() const { return true; }
+  virtual std::string limitation() const { return {}; }
+  // The constrained motion: translation along the mating axis, or rotation about it / the centre.
+  virtual bool rotational() const { return false; }
+
+  virtual std::unique_ptr<Discretizer> MakeDiscretizer() const = 0;
+  virtual std::unique_ptr<VariationGenerator> MakeVariationGenerator() const = 0;
+  virtual std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const = 0;
+  // Throws UserError naming the offered laws if `name` is not one of them.
+  std::unique_ptr<ResistanceLaw> MakeLaw(std::string_view name) const;
+
+ protected:
+  virtual std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
+                                                          const ConfigNode& geometry) const = 0;
+  virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                           const ConfigNode& pair_node) const;
+  virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
+};
+
+}  // namespace fitfeel

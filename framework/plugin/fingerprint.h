@@ -1,0 +1,12 @@
+#pragma once
+
+#include <Eigen/Core>
+
+// Identifies the build settings that must match between the framework and a plugin for C++
+// objects to cross the library boundary: compiler, C++ standard library, Eigen and the ABI.
+#define FITFEEL_STR2(x) #x
+#define FITFEEL_STR(x) FITFEEL_STR2(x)
+#define FITFEEL_BUILD_FINGERPRINT                                                         \
+  "abi=" FITFEEL_STR(FITFEEL_PLUGIN_ABI_VERSION) ";cxx=" __VERSION__                      \
+  ";glibcxx=" FITFEEL_STR(_GLIBCXX_RELEASE) ";eigen=" FITFEEL_STR(EIGEN_WORLD_VERSION) "." \
+  FITFEEL_STR(EIGEN_MAJOR_VERSION) "." FITFEEL_STR(EIGEN_MINOR_VERSION)
