@@ -10,5 +10,8 @@ void AddRunCommand(CLI::App& app);
 void AddValidateCommand(CLI::App& app);
 void AddPluginsCommand(CLI::App& app);
 void AddFitCommand(CLI::App& app);
+void AddSmsCommand(CLI::App& app);
+void AddPlotCommand(CLI::App& app);
+void AddStabilityCommand(CLI::App& app);
 
 }  // namespace fitfeel::cli

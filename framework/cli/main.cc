@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddValidateCommand(app);
   fitfeel::cli::AddPluginsCommand(app);
   fitfeel::cli::AddFitCommand(app);
+  fitfeel::cli::AddSmsCommand(app);
+  fitfeel::cli::AddPlotCommand(app);
+  fitfeel::cli::AddStabilityCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -47,12 +47,16 @@ class FITFEEL_API ContactAnalyzer {
   // Per tick: no allocation, no locks, no exceptions, no I/O.
   void Evaluate(const MatingPose& pose, ContactState* out) const noexcept;
   bool prepared() const { return prepared_; }
+  // Not for the tick (may allocate): the interference delta(P_ij) >= 0 of every cell of the inner
+  // part's grid at `pose` (zero where there is clearance), for pressure maps and pictures.
+  void InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
 
  protected:
   virtual void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                          const PartSpec& outer, const SkinModelShape& outer_sms,
                          const ModelSettings& settings) = 0;
   virtual void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept = 0;
+  virtual void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
 
  private:
   bool prepared_ = false;

@@ -1,6 +1,7 @@
 // Out-of-line destructors (one vtable per interface, in the framework library) and the checking
 // wrappers of the Drake-style public/protected-virtual pairs.
 #include <algorithm>
+#include <stdexcept>
 #include <cassert>
 #include <string>
 
@@ -67,6 +68,16 @@ void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner
 void ContactAnalyzer::Evaluate(const MatingPose& pose, ContactState* out) const noexcept {
   assert(prepared_ && out != nullptr);
   DoEvaluate(pose, out);
+}
+
+void ContactAnalyzer::InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const {
+  if (!prepared_) throw UserError("contact analyzer queried before prepare");
+  if (delta == nullptr) throw std::invalid_argument("InterferenceMap needs an output vector");
+  DoInterferenceMap(pose, delta);
+}
+
+void ContactAnalyzer::DoInterferenceMap(const MatingPose&, Eigen::VectorXd*) const {
+  throw UnsupportedError("this surface type does not produce interference maps");
 }
 
 void ResistanceLaw::Prepare(const PartSpec& inner, const PartSpec& outer,

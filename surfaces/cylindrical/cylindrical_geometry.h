@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+
+#include "framework/model/gps_spec.h"
+
+namespace fitfeel::cylindrical {
+
+// Nominal geometry of one cylindrical mating surface. The mating diameter is the part's nominal
+// size (PartSpec::size.nominal); the rest comes from the part's `geometry` node.
+class CylindricalGeometry final : public Geometry {
+ public:
+  CylindricalGeometry(Role role, double diameter, double length, double outer_diameter,
+                      double bore_diameter)
+      : role_(role),
+        diameter_(diameter),
+        length_(length),
+        outer_diameter_(outer_diameter),
+        bore_diameter_(bore_diameter) {}
+
+  Role role() const { return role_; }
+  double diameter() const { return diameter_; }              // mating diameter d1, m
+  double length() const { return length_; }                  // length of the mating surface, m
+  double outer_diameter() const { return outer_diameter_; }  // outer part: hub outer d2, m
+  double bore_diameter() const { return bore_diameter_; }    // inner part: bore of a hollow shaft (0 = solid), m
+
+  double nominal_area() const override;
+  double mating_length() const override { return length_; }
+  std::string Describe() const override;
+
+ private:
+  Role role_;
+  double diameter_;
+  double length_;
+  double outer_diameter_;
+  double bore_diameter_;
+};
+
+}  // namespace fitfeel::cylindrical

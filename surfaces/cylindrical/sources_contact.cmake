@@ -1,0 +1,1 @@
+# Sources of the contact analyzer and the resistance laws.

@@ -1,0 +1,1 @@
+# Sources of geometry, discretizer, variation generator, surface type and registration.
