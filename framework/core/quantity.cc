@@ -25,14 +25,16 @@ struct Unit {
   Dimension dimension;
   int exponent10;
   double factor;
-  bool listed;     // shown in DescribeDimension (aliases such as "µm" are accepted, not listed)
-  bool formatted;  // used by FormatQuantity
+  bool listed;  // shown in DescribeDimension (aliases such as "µm" are accepted, not listed)
+  // Used by FormatQuantity. Machining states sizes in mm and tolerances and roughness in um (Ra
+  // 0.4 um, not 400 nm), so nm is accepted but never chosen.
+  bool formatted;
 };
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 constexpr std::array kUnits = {
-    Unit{"nm", Dimension::kLength, -9, 1.0, true, true},
+    Unit{"nm", Dimension::kLength, -9, 1.0, true, false},
     Unit{"um", Dimension::kLength, -6, 1.0, true, true},
     Unit{"\u00b5m", Dimension::kLength, -6, 1.0, false, false},  // micro sign
     Unit{"\u03bcm", Dimension::kLength, -6, 1.0, false, false},  // Greek mu

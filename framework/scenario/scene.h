@@ -21,12 +21,13 @@ enum class ClockMode { kVirtual, kRealTime };
 
 // The scenario's `run` section.
 struct RunSettings {
-  double rate = 1000.0;    // Hz
-  double duration = 0.0;   // s
+  double rate = 1000.0;   // Hz
+  double duration = 0.0;  // s
   std::uint64_t seed = 1;
   ClockMode clock = ClockMode::kVirtual;
   bool write_trace = true;
   bool write_summary = true;
+  bool write_recording = false;
 };
 
 // A fully parsed and checked scenario, in SI units. Nothing has run yet: the device is configured

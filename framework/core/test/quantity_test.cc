@@ -147,7 +147,8 @@ TEST(FormatQuantityTest, PicksAUnitSuitedToTheMagnitude) {
   EXPECT_EQ(FormatQuantity(-8e-6, Dimension::kLength), "-8 um");
   EXPECT_EQ(FormatQuantity(0.02, Dimension::kLength), "20 mm");
   EXPECT_EQ(FormatQuantity(1.5, Dimension::kLength), "1.5 m");
-  EXPECT_EQ(FormatQuantity(3e-10, Dimension::kLength), "0.3 nm");
+  EXPECT_EQ(FormatQuantity(3e-10, Dimension::kLength), "0.0003 um");
+  EXPECT_EQ(FormatQuantity(4e-7, Dimension::kLength), "0.4 um");
   EXPECT_EQ(FormatQuantity(0.0, Dimension::kLength), "0 m");
   EXPECT_EQ(FormatQuantity(210e9, Dimension::kPressure), "210 GPa");
   EXPECT_EQ(FormatQuantity(2e6, Dimension::kStiffness), "2 N/um");
