@@ -21,8 +21,8 @@ enum class ClockMode { kVirtual, kRealTime };
 
 // The scenario's `run` section.
 struct RunSettings {
-  double rate = 1000.0;   // Hz
-  double duration = 0.0;  // s
+  double rate = 1000.0;    // Hz
+  double duration = 0.0;   // s
   std::uint64_t seed = 1;
   ClockMode clock = ClockMode::kVirtual;
   bool write_trace = true;
