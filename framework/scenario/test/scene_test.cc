@@ -10,6 +10,7 @@
 
 #include "framework/core/error.h"
 #include "framework/plugin/registry.h"
+#include "framework/scenario/scene_summary.h"
 #include "framework/scenario/test/fake_plugins.h"
 
 namespace fitfeel {
@@ -472,6 +473,26 @@ TEST_F(SceneTest, EmptyOutputListWritesNothing) {
   EXPECT_FALSE(scene.run.write_trace);
   EXPECT_FALSE(scene.run.write_summary);
   EXPECT_FALSE(scene.run.write_recording);
+}
+
+TEST_F(SceneTest, SummaryNamesPartsLimitsModelDeviceAndRun) {
+  const std::string summary = DescribeScene(LoadScene(kTestDir / "good" / "full.yaml", registry_));
+  EXPECT_THAT(summary, HasSubstr("scenario     good-h7g6 ("));
+  EXPECT_THAT(summary, HasSubstr("inner      shaft (moving)\n"));
+  EXPECT_THAT(summary, HasSubstr("size 20 mm g6: deviations -20 .. -7 um (limits 19.9800 .. "
+                                 "19.9930 mm)"));
+  EXPECT_THAT(summary, HasSubstr("outer      bushing\n"));
+  EXPECT_THAT(summary, HasSubstr("size 20 mm: deviations +0 .. +21 um"));
+  EXPECT_THAT(summary, HasSubstr("form axis_straightness 10 um, roundness 4 um\n"));
+  EXPECT_THAT(summary, HasSubstr("texture waviness 3.2 um, Ra 0.4 um, Rz 1.6 um\n"));
+  EXPECT_THAT(summary, HasSubstr("material C45E4, E 210 GPa, nu 0.3\n"));
+  EXPECT_THAT(summary, HasSubstr("geometry cylinder d=20 mm l=60 mm\n"));
+  EXPECT_THAT(summary, HasSubstr("law ve1, friction 0.15, contact stiffness 2 N/um, resolution "
+                                 "40 x 72, texture sampled, depth step 500 um\n"));
+  EXPECT_THAT(summary, HasSubstr("texture none given (smooth)\n"));
+  EXPECT_THAT(summary, HasSubstr("device       test.device.fake\n"));
+  EXPECT_THAT(summary, HasSubstr("run          2 kHz for 5 s (10000 ticks), seed 42, clock "
+                                 "realtime, outputs trace, summary, recording\n"));
 }
 
 }  // namespace
