@@ -60,8 +60,10 @@ Fit LookupFit(double nominal_m, std::string_view fit_code) {
     throw std::invalid_argument("an ISO 286 fit is written HOLE/shaft (e.g. H7/g6), found '" +
                                 std::string(fit_code) + "'");
   }
-  return MakeFit(Lookup(nominal_m, fit_code.substr(0, slash)),
-                 Lookup(nominal_m, fit_code.substr(slash + 1)));
+  // Hole first, so that an error names the hole when both are wrong.
+  const Limits hole = Lookup(nominal_m, fit_code.substr(0, slash));
+  const Limits shaft = Lookup(nominal_m, fit_code.substr(slash + 1));
+  return MakeFit(hole, shaft);
 }
 
 }  // namespace fitfeel::iso286
