@@ -78,6 +78,16 @@ std::vector<fs::path> EnvironmentPath() {
   return out;
 }
 
+// Boost.DLL reports "...load() failed (dlerror system message: <text>): <errno text>", where the
+// errno text is meaningless after dlopen; the dynamic loader's own text is what a user needs.
+std::string LoaderMessage(const std::string& what) {
+  static constexpr std::string_view kMarker = "dlerror system message: ";
+  const std::size_t start = what.find(kMarker);
+  const std::size_t end = what.rfind(')');
+  if (start == std::string::npos || end == std::string::npos || end < start) return what;
+  return what.substr(start + kMarker.size(), end - start - kMarker.size());
+}
+
 bool IsPluginFileName(const std::string& name) {
   return name.size() > 6 && name.compare(0, 3, "lib") == 0 &&
          name.compare(name.size() - 3, 3, ".so") == 0;
@@ -216,7 +226,7 @@ struct PluginRegistry::Impl {
       // RTLD_LOCAL: one plugin's symbols never bind another's.
       handle.load(library, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
     } catch (const std::exception& e) {
-      Refuse(std::string("cannot be loaded: ") + e.what());
+      Refuse("cannot be loaded: " + LoaderMessage(e.what()));
     }
     if (!handle.has(FITFEEL_PLUGIN_HOOK_NAME)) {
       Refuse("no registration hook: expected an exported extern \"C\" symbol '" +
