@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -375,6 +376,8 @@ TEST_F(PluginRegistryTest, ObjectsOutliveTheRegistryThatMadeThem) {
 }
 
 void* NullFactory() { return nullptr; }
+void* ThrowingFactory() { throw std::runtime_error("no hardware on this bus"); }
+void* UserErrorFactory() { throw UnsupportedError("this device needs a vendor SDK"); }
 
 TEST_F(PluginRegistryTest, InProcessEntriesAreCheckedLikeLibraryEntries) {
   PluginRegistry registry(kNoFolders);
@@ -398,6 +401,14 @@ TEST_F(PluginRegistryTest, InProcessEntriesAreCheckedLikeLibraryEntries) {
                 registry.AddEntry({"fitfeel.x.y", kFitfeelDevicePlugin, nullptr, "", &NullFactory});
               }),
               HasSubstr("version is null"));
+  // A factory's failure reaches the caller as a user error naming the plugin.
+  registry.AddEntry({"fitfeel.device.throws", kFitfeelDevicePlugin, "1", "", &ThrowingFactory});
+  EXPECT_THAT(PluginErrorOf([&] { registry.MakeDevice("fitfeel.device.throws"); }),
+              HasSubstr("plugin 'fitfeel.device.throws' (in-process) failed to make its object: "
+                        "no hardware on this bus"));
+  registry.AddEntry(
+      {"fitfeel.device.unsupported", kFitfeelDevicePlugin, "1", "", &UserErrorFactory});
+  EXPECT_THROW(registry.MakeDevice("fitfeel.device.unsupported"), UnsupportedError);
   // A library claiming an in-process id is refused.
   registry.AddEntry({"fitfeel.test.still_device", kFitfeelDevicePlugin, "1", "", &NullFactory});
   EXPECT_THAT(PluginErrorOf([&] { registry.LoadLibrary(CaseLibrary("good")); }),
