@@ -235,7 +235,10 @@ struct PluginRegistry::Impl {
     }
     const auto& hook = handle.get<const FitfeelPluginDescriptor*()>(FITFEEL_PLUGIN_HOOK_NAME);
     const FitfeelPluginDescriptor* d = hook();
-    if (d == nullptr) Refuse("registration hook returned a null descriptor");
+    if (d == nullptr)
+      Refuse(
+          "registration hook returned a null descriptor; expected a pointer to the plugin's static "
+          "FitfeelPluginDescriptor");
     if (d->abi_version != FITFEEL_PLUGIN_ABI_VERSION) {
       Refuse("plugin ABI version mismatch: expected " + std::to_string(FITFEEL_PLUGIN_ABI_VERSION) +
              ", found " + std::to_string(d->abi_version) +

@@ -117,5 +117,33 @@ TEST_F(PluginsCommandTest, JsonListsTheSame) {
   EXPECT_TRUE(saw_refusal);
 }
 
+// Every test plugin exports exactly one symbol, the hook (or, for no_hook, its misspelling): the
+// project builds with hidden visibility, and register.cc must not leak anything else.
+TEST(TestPluginSymbolsTest, EachTestPluginExportsOnlyItsHook) {
+  ASSERT_FALSE(BuildDir().empty());
+  int checked = 0;
+  for (const auto& folder : fs::directory_iterator(BuildDir() / "test-plugins")) {
+    for (const auto& file : fs::directory_iterator(folder.path())) {
+      if (file.path().extension() != ".so") continue;
+      const std::string command =
+          "nm -D --defined-only '" + file.path().string() + "' | awk '{print $3}'";
+      FILE* pipe = popen(command.c_str(), "r");
+      ASSERT_NE(pipe, nullptr);
+      std::string out;
+      std::array<char, 4096> buffer{};
+      std::size_t n = 0;
+      while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        out.append(buffer.data(), n);
+      ASSERT_EQ(pclose(pipe), 0) << command;
+      const std::string expected = folder.path().filename() == "no_hook"
+                                       ? "fitfeel_register_plugin\n"
+                                       : "fitfeel_plugin_register\n";
+      EXPECT_EQ(out, expected) << file.path();
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 14);
+}
+
 }  // namespace
 }  // namespace fitfeel
