@@ -8,6 +8,7 @@
 #include <mutex>
 #include <set>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <utility>
 
@@ -206,8 +207,9 @@ struct PluginRegistry::Impl {
     entry.info.id = e.id;
     entry.info.kind = static_cast<FitfeelPluginKind>(e.kind);
     entry.info.version = std::string(e.version, strnlen(e.version, kMaxStringLength));
-    if (e.summary != nullptr)
+    if (e.summary != nullptr) {
       entry.info.summary = std::string(e.summary, strnlen(e.summary, kMaxStringLength));
+    }
     entry.info.library = library;
     entry.factory = e.factory;
     by_id.emplace(entry.info.id, entries.size());

@@ -58,7 +58,8 @@ class FITFEEL_API PluginRegistry {
   // Scans every folder of the search path for lib*.so and loads each; a library that fails its
   // checks is recorded in refused() and skipped; the first library to claim an id keeps it.
   void LoadAll();
-  // Loads one library; throws PluginError saying exactly what is wrong with it.
+  // Loads one library; throws PluginError naming the library and exactly what is wrong with it
+  // (expected vs found). Loading a library this registry already accepted is a no-op.
   void LoadLibrary(const std::filesystem::path& library);
   // Registers an in-process entry (tests, built-ins); throws PluginError on a duplicate id.
   void AddEntry(const FitfeelPluginEntry& entry);
