@@ -54,7 +54,7 @@ bool IsPlainName(const std::string& name) {
 }
 
 std::shared_ptr<SurfaceType> ResolveSurface(const ConfigNode& node, const PluginRegistry& registry,
-                                            std::string* id) {
+                                            const LoadOptions& options, std::string* id) {
   *id = node.AsString();
   std::shared_ptr<SurfaceType> surface;
   try {
@@ -65,7 +65,7 @@ std::shared_ptr<SurfaceType> ResolveSurface(const ConfigNode& node, const Plugin
         node.Describe() + " (" + e.what() + ")");
   }
   if (surface == nullptr) throw std::logic_error("plugin registry returned no surface object");
-  if (!surface->renders_forces()) {
+  if (!surface->renders_forces() && !options.allow_non_rendering) {
     node.Fail("a surface type that renders forces",
               node.Describe() + ", which cannot yet: " + surface->limitation());
   }
@@ -217,7 +217,8 @@ RunSettings ParseRun(const ConfigNode& node) {
 
 }  // namespace
 
-Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry) {
+Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
+                const LoadOptions& options) {
   const ConfigNode root = scenario::LoadYamlFile(file);
   root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "model", "device",
                        "safety", "run"});
@@ -237,7 +238,7 @@ Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registr
   }
   scene.description = root.StringOr("description", "");
 
-  scene.surface = ResolveSurface(root.Child("surface"), registry, &scene.surface_id);
+  scene.surface = ResolveSurface(root.Child("surface"), registry, options, &scene.surface_id);
   Parts parts = ParseParts(root, *scene.surface, scene.surface_id);
   scene.moving = parts.moving;
   scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-const fs::path kTestDir = FITFEEL_SCENARIO_TEST_DIR;
+const fs::path kTestDir = fs::path(FITFEEL_TEST_SOURCE_DIR) / "framework" / "scenario" / "test";
 
 class SceneTest : public ::testing::Test {
  protected:
@@ -465,6 +465,17 @@ TEST_F(SceneTest, MinimalScenarioTakesTheDocumentedDefaults) {
   EXPECT_TRUE(scene.run.write_trace);
   EXPECT_TRUE(scene.run.write_summary);
   EXPECT_FALSE(scene.run.write_recording);
+}
+
+TEST_F(SceneTest, NonRenderingSurfaceOnlyWhenAllowed) {
+  const fs::path file =
+      WriteVariant("thread", "surface: test.surface.cylinder", "surface: test.surface.thread");
+  EXPECT_THROW(LoadScene(file, registry_), ScenarioError);
+  LoadOptions options;
+  options.allow_non_rendering = true;
+  const Scene scene = LoadScene(file, registry_, options);
+  EXPECT_EQ(scene.surface_id, "test.surface.thread");
+  EXPECT_FALSE(scene.surface->renders_forces());
 }
 
 TEST_F(SceneTest, EmptyOutputListWritesNothing) {
