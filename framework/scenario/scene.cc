@@ -69,7 +69,7 @@ std::shared_ptr<SurfaceType> ResolveSurface(const ConfigNode& node, const Plugin
     node.Fail("a surface type that renders forces",
               node.Describe() + ", which cannot yet: " + surface->limitation());
   }
-  if (surface->law_names().empty()) {
+  if (surface->law_names().empty() && !options.allow_non_rendering) {
     node.Fail("a surface type that offers a resistance law", node.Describe() + " offers none");
   }
   return surface;
@@ -111,6 +111,10 @@ Parts ParseParts(const ConfigNode& root, const SurfaceType& surface,
     PartSpec part = scenario::ParsePart(name, node_of_part, surface, surface_id);
     // The plugin sees everything else the scenario said of the part (size, form, ...).
     part.geometry = surface.ParseGeometry(part, node_of_part.Child("geometry"));
+    if (part.geometry == nullptr) {
+      throw std::logic_error("surface plugin " + surface_id + " returned no geometry for part '" +
+                             name + "'");
+    }
     (part.role == Role::kInner ? parts.inner : parts.outer) = std::move(part);
   }
   surface.CheckPair(parts.inner, parts.outer, node);
@@ -145,7 +149,8 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
       {"law", "friction", "contact_stiffness", "resolution", "texture", "depth_step", "options"});
   ModelSettings model;
   const std::vector<std::string> laws = surface.law_names();
-  model.law = laws.front();
+  // Empty only for a surface type loaded for inspection (LoadOptions::allow_non_rendering).
+  if (!laws.empty()) model.law = laws.front();
   if (std::optional<ConfigNode> law = node.Find("law")) {
     model.law = law->AsString();
     if (std::find(laws.begin(), laws.end(), model.law) == laws.end()) {

@@ -72,6 +72,7 @@ class FakeCylinder : public SurfaceType {
 class FakeThread final : public FakeCylinder {
  public:
   bool renders_forces() const override { return false; }
+  std::vector<std::string> law_names() const override { return {}; }
   std::string limitation() const override { return "thread resistance laws are not written yet"; }
 };
 

@@ -8,7 +8,7 @@ namespace fitfeel::test {
 //   test.surface.cylinder  forms axis_straightness, generatrix_straightness, roundness,
 //                          cylindricity; laws gps, ve1; geometry {length} (inner) or
 //                          {length, outer_diameter} (outer); the pair's nominal sizes must agree.
-//   test.surface.thread    renders_forces() == false (like the helicoid stub).
+//   test.surface.thread    renders_forces() == false and no law (like the helicoid stub).
 //   test.device.fake       keys plugin, speed (> 0), radial_load (>= 0).
 void RegisterFakePlugins(PluginRegistry& registry);
 

@@ -40,9 +40,10 @@ struct BadCase {
 
 std::ostream& operator<<(std::ostream& out, const BadCase& c) { return out << c.name; }
 
-void ExpectRefused(const fs::path& file, const BadCase& c, const PluginRegistry& registry) {
+void ExpectRefused(const fs::path& file, const BadCase& c, const PluginRegistry& registry,
+                   const LoadOptions& options = {}) {
   try {
-    LoadScene(file, registry);
+    LoadScene(file, registry, options);
     ADD_FAILURE() << file << " was accepted";
   } catch (const ScenarioError& e) {
     // A whole-file problem has no line: "file: expected ...".
@@ -137,8 +138,9 @@ std::string ReadFile(const fs::path& file) {
   return text.str();
 }
 
-fs::path WriteVariant(const std::string& name, const std::string& from, const std::string& to) {
-  std::string text = ReadFile(kTestDir / "good" / "full.yaml");
+fs::path WriteVariant(const std::string& name, const std::string& from, const std::string& to,
+                      const std::string& source = "full.yaml") {
+  std::string text = ReadFile(kTestDir / "good" / source);
   const std::size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   EXPECT_EQ(text.find(from, at + 1), std::string::npos) << from << " occurs twice";
@@ -468,14 +470,27 @@ TEST_F(SceneTest, MinimalScenarioTakesTheDocumentedDefaults) {
 }
 
 TEST_F(SceneTest, NonRenderingSurfaceOnlyWhenAllowed) {
-  const fs::path file =
-      WriteVariant("thread", "surface: test.surface.cylinder", "surface: test.surface.thread");
+  const fs::path file = WriteVariant("thread", "surface: test.surface.cylinder",
+                                     "surface: test.surface.thread", "minimal.yaml");
   EXPECT_THROW(LoadScene(file, registry_), ScenarioError);
   LoadOptions options;
   options.allow_non_rendering = true;
   const Scene scene = LoadScene(file, registry_, options);
   EXPECT_EQ(scene.surface_id, "test.surface.thread");
   EXPECT_FALSE(scene.surface->renders_forces());
+  EXPECT_EQ(scene.model.law, "");
+  // A law cannot be named for a surface that offers none.
+  const fs::path with_law = WriteVariant("thread_law", "  friction: 0.1\n",
+                                         "  law: gps\n  friction: 0.1\n", "minimal.yaml");
+  std::string text = ReadFile(with_law);
+  text.replace(text.find("test.surface.cylinder"), 21, "test.surface.thread");
+  std::ofstream(with_law) << text;
+  ExpectRefused(with_law,
+                {"thread_law", 17, 8, "model.law",
+                 "a resistance law that test.surface.thread "
+                 "offers (none)",
+                 "'gps'"},
+                registry_, options);
 }
 
 TEST_F(SceneTest, EmptyOutputListWritesNothing) {
