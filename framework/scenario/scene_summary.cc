@@ -18,7 +18,8 @@ std::string Number(double value, const char* format = "%g") {
 std::string Length(double metres) { return FormatQuantity(metres, Dimension::kLength); }
 
 // Deviations in um, as ISO 286 tables print them.
-std::string Micrometres(double metres) { return Number(metres * 1e6, "%+.4g"); }
+// Adding 0.0 turns a table's -0 (an H hole's EI) into +0.
+std::string Micrometres(double metres) { return Number(metres * 1e6 + 0.0, "%+.4g"); }
 
 std::string DescribePart(const PartSpec& part, bool moving) {
   const std::string indent = "             ";
