@@ -1,7 +1,7 @@
 #include "framework/scenario/part_parser.h"
 
 #include <cctype>
-#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,8 +13,6 @@
 
 namespace fitfeel::scenario {
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 const char* const kSizeForms =
     "a size as '<nominal> <ISO 286 class>' (e.g. '20 mm H7', '20 mm g6') or a map "
