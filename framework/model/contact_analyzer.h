@@ -11,9 +11,9 @@ namespace fitfeel {
 
 // Pose of the moving part relative to the fixed one, in the fixed part's mating frame.
 struct MatingPose {
-  double depth = 0.0;                // insertion along the mating axis (y), m; 0 = first contact
-  Eigen::Vector2d offset{0.0, 0.0};  // (x, z) offset of the moving part's axis, m
-  double angle = 0.0;                // rotation about the mating axis (or the sphere centre), rad
+  double depth = 0.0;                 // insertion along the mating axis (y), m; 0 = first contact
+  Eigen::Vector2d offset{0.0, 0.0};   // (x, z) offset of the moving part's axis, m
+  double angle = 0.0;                 // rotation about the mating axis (or the sphere centre), rad
 };
 
 // What the analyzer found at one pose (paper section 3.1); read by a resistance law.
@@ -24,20 +24,21 @@ struct ContactState {
   double engaged_area = 0.0;    // nominal area of the overlapping cells, m^2
   // Radial state (eq. 9): distance of the moving axis from the fixed axis, its direction gamma,
   // and the assembly space's extent S_A(gamma) in that direction.
-  double offset_distance = 0.0;  // delta d, m
-  double offset_angle = 0.0;     // gamma, rad
-  double assembly_extent = 0.0;  // S_A(gamma), m (0 when the assembly space is empty)
-  double penetration = 0.0;      // max(0, delta d - S_A(gamma)), m
-  // Unit vector along which the moving axis has left the position it may take (the assembly
+  double offset_distance = 0.0;      // delta d, m
+  double offset_angle = 0.0;         // gamma, rad
+  double assembly_extent = 0.0;      // S_A(gamma), m (0 when the assembly space is empty)
+  double penetration = 0.0;          // max(0, delta d - S_A(gamma)), m
+  // Unit vector along which the moving axis has left the positions it may take (the assembly
   // space, or the energy-minimising axis position under interference); the radial spring pushes
-  // back along minus it. Zero when penetration is zero. Needed because an assembly space that is
-  // not centred on the fixed axis is not left along gamma.
+  // back along minus it. Zero when penetration is zero. An assembly space that is not centred on
+  // the fixed axis is not left along gamma, so eq. 9's direction generalises to this one (and its
+  // penetration to the distance from the assembly space).
   Eigen::Vector2d penetration_direction{0.0, 0.0};
   // Interference (eqs. 10-12): sum over overlapping cells of delta(P_ij) * area (m^3), with
   // texture taken as its expected interference where the settings ask for it; a law multiplies it
   // by its pressure per unit interference.
   double interference_volume = 0.0;
-  double max_interference = 0.0;  // largest delta(P_ij), m
+  double max_interference = 0.0;     // largest delta(P_ij), m
   // Resultant direction of the contact normal force in the cross-section when interfering.
   Eigen::Vector2d pressure_resultant{0.0, 0.0};  // sum of delta * area * u_j, m^3
 };
