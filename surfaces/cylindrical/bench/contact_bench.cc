@@ -110,6 +110,33 @@ BENCHMARK(BM_Prepare)
     ->Arg(100000)
     ->Arg(1000000)
     ->Unit(benchmark::kMillisecond);
+// The paper-case scale (40 x 360 per part, the scenarios' resolution) with an H7/js6-like mix of
+// clearance and interference and the expected texture: prepare including the energy minimisation
+// at every interfering depth and the texture integral at every depth.
+void BM_PreparePaperScale(benchmark::State& state) {
+  PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
+  const TextureSpec t{3.2e-6, 0.4e-6, 1.6e-6};
+  shaft.texture = t;
+  bushing.texture = t;
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> form(-5e-6, 5e-6);
+  const int n = 360;
+  const SkinModelShape s =
+      MakeSms(MakeGrid(40, n, 0.020, 0.040), [&](int, int) { return 0.0 + form(rng); });
+  const SkinModelShape b =
+      MakeSms(MakeGrid(40, n, 0.020, 0.020), [&](int, int) { return 6.25e-6 + form(rng); });
+  int interfering = 0;
+  for (auto _ : state) {
+    CylinderContactAnalyzer a;
+    a.Prepare(shaft, s, bushing, b, Settings(0.15, 0.0, TextureMode::kExpected));
+    interfering = 0;
+    for (int k = 0; k < a.depth_steps(); ++k) interfering += a.interference_at(k);
+    state.counters["newton_iterations"] = a.newton_iterations();
+  }
+  state.counters["interfering_steps"] = interfering;
+}
+BENCHMARK(BM_PreparePaperScale)->Unit(benchmark::kMillisecond);
+
 // Square grids, then n fixed at 64 with m growing: the tick depends on n only. (A fixed-n grid of
 // 10^6 cells has m = 15625 rows; its O(m^2 n) prepare takes minutes, so it is left out.)
 static void TickArgs(benchmark::internal::Benchmark* b) {

@@ -247,3 +247,64 @@ TEST(CylinderContact, FactoryOffersBothLaws) {
 
 }  // namespace
 }  // namespace fitfeel::cylindrical
+
+namespace fitfeel::cylindrical {
+namespace {
+
+// Over many seeds of random form, the tabulated axis position under interference minimises the
+// elastic energy sum(area * delta^2), computed here directly from the V arrays (equal row pitch,
+// depths on the row grid, so every shaft row faces exactly one bushing row).
+TEST(CylinderContact, InterferenceAxisMinimisesElasticEnergy) {
+  int checked = 0;
+  for (int seed = 0; seed < 40; ++seed) {
+    std::mt19937_64 rng(100 + seed);
+    const int ms = 12, mb = 6, n = 24;
+    const double pitch = 2e-3, ls = ms * pitch, lb = mb * pitch;
+    std::uniform_real_distribution<double> vs(-3 * kUm, 6 * kUm), vb(0.0, 5 * kUm);
+    Eigen::VectorXd shaft_v(ms * n), bushing_v(mb * n);
+    for (auto& v : shaft_v) v = vs(rng);
+    for (auto& v : bushing_v) v = vb(rng);
+    const PartSpec shaft = MakeShaft(0.020, ls), bushing = MakeBushing(0.020, lb, 0.030);
+    const SurfaceGrid gs = MakeGrid(ms, n, 0.020, ls), gb = MakeGrid(mb, n, 0.020, lb);
+    ModelSettings st = Settings(0.15, 0.0, TextureMode::kSampled);
+    st.depth_step = pitch;
+    CylinderContactAnalyzer a;
+    a.Prepare(shaft, MakeSms(gs, [&](int i, int j) { return shaft_v[i * n + j]; }), bushing,
+              MakeSms(gb, [&](int i, int j) { return bushing_v[i * n + j]; }), st);
+    for (int k = 1; k < a.depth_steps() - 1; ++k) {
+      const int first = k - ms;  // bushing row facing shaft row 0
+      auto energy = [&](const Eigen::Vector2d& p) {
+        double e = 0.0;
+        for (int i = 0; i < ms; ++i) {
+          const int b = first + i;
+          if (b < 0 || b >= mb) continue;
+          for (int j = 0; j < n; ++j) {
+            const double beta = 2 * kPi * j / n;
+            const double gap = bushing_v[b * n + j] - shaft_v[i * n + j] -
+                               (p.x() * std::cos(beta) + p.y() * std::sin(beta));
+            e += gs.area[0] * std::max(0.0, -gap) * std::max(0.0, -gap);
+          }
+        }
+        return e;
+      };
+      if (!a.interference_at(k)) {
+        EXPECT_LT(energy(a.anchor(k)), 1e-40) << "seed " << seed << " step " << k;
+        continue;
+      }
+      ++checked;
+      const Eigen::Vector2d p = a.anchor(k);
+      const double e0 = energy(p);
+      EXPECT_GT(e0, 0.0);
+      for (int d = 0; d < 8; ++d) {
+        const Eigen::Vector2d dir(std::cos(d * kPi / 4), std::sin(d * kPi / 4));
+        for (double eps : {1e-9, 1e-7}) {
+          EXPECT_GE(energy(p + eps * dir), e0 * (1 - 1e-12)) << "seed " << seed << " step " << k;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+}  // namespace
+}  // namespace fitfeel::cylindrical
