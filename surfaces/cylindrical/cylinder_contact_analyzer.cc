@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -14,6 +15,14 @@
 
 namespace fitfeel::cylindrical {
 namespace {
+
+// Numbers in messages. snprintf rather than std::to_string, whose integer path instantiates a
+// GNU-unique (exported) table in the plugin, and whose "%f" hides micrometres.
+std::string Num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
 
 // Largest table we build: beyond this the depth step is a user error (a step far finer than the
 // grid buys nothing, since the cells are piecewise constant).
@@ -80,7 +89,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   const SurfaceGrid& gb = outer_sms.grid;
   if (gs.columns != gb.columns) {
     throw UserError("cylindrical contact needs the same number of columns on both parts (" +
-                    std::to_string(gs.columns) + " and " + std::to_string(gb.columns) + ")");
+                    Num(gs.columns) + " and " + Num(gb.columns) + ")");
   }
   n_ = gs.columns;
   angle_.assign(static_cast<std::size_t>(n_), 0.0);
@@ -122,8 +131,8 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   max_depth_ = shaft_length_ + bushing_length_;
   const double steps = std::ceil(max_depth_ / step_);
   if (!(steps < kMaxDepthSteps)) {
-    throw UserError("depth_step " + std::to_string(step_) + " m gives more than " +
-                    std::to_string(kMaxDepthSteps) + " table rows; use a coarser step");
+    throw UserError("depth_step " + Num(step_) + " m gives more than " + Num(kMaxDepthSteps) +
+                    " table rows; use a coarser step");
   }
   const std::size_t count = static_cast<std::size_t>(steps) + 1;
 

@@ -1,6 +1,7 @@
 #include "surfaces/cylindrical/cylinder_laws.h"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -9,6 +10,14 @@
 
 namespace fitfeel::cylindrical {
 namespace {
+
+// Numbers in messages. snprintf rather than std::to_string, whose integer path instantiates a
+// GNU-unique (exported) table in the plugin, and whose "%f" hides micrometres.
+std::string Num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
 
 const CylindricalGeometry& Cylinder(const PartSpec& part) {
   const auto* g = dynamic_cast<const CylindricalGeometry*>(part.geometry.get());
@@ -43,8 +52,7 @@ PressFitDimensions PressFitDimensionsOf(const PartSpec& inner, const PartSpec& o
   d.di = Cylinder(inner).bore_diameter();
   if (!(d.d1 > 0.0) || !(d.d2 > d.d1) || !(d.di >= 0.0 && d.di < d.d1)) {
     throw UserError("press fit needs 0 <= shaft bore < shaft diameter < hub outer diameter (got " +
-                    std::to_string(d.di) + ", " + std::to_string(d.d1) + ", " +
-                    std::to_string(d.d2) + " m)");
+                    Num(d.di) + ", " + Num(d.d1) + ", " + Num(d.d2) + " m)");
   }
   return d;
 }
