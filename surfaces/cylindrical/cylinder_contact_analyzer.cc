@@ -27,6 +27,11 @@ std::string Num(double v) {
 // Largest table we build: beyond this the depth step is a user error (a step far finer than the
 // grid buys nothing, since the cells are piecewise constant).
 constexpr double kMaxDepthSteps = 2e6;
+// 1e8 vertices are 1.6 GB of tables: the most a scene may ask for.
+constexpr double kMaxTableVertices = 1e8;
+// An automatic step never makes more rows than this (a step of 3 um on a 60 mm stroke), however
+// fine the grid: a haptic hand does not resolve the difference, and the tables stay in memory.
+constexpr double kAutoDepthSteps = 20000;
 // Half-width of the box that bounds an assembly space whose normals do not surround the origin;
 // clearances are micrometres, so one metre never binds.
 constexpr double kPolygonBound = 1.0;
@@ -127,12 +132,15 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     for (std::size_t i = 1; i < e->size(); ++i) min_row = std::min(min_row, (*e)[i] - (*e)[i - 1]);
   }
   if (settings.depth_step < 0.0) throw UserError("depth_step must not be negative");
-  step_ = settings.depth_step > 0.0 ? settings.depth_step : min_row;
   max_depth_ = shaft_length_ + bushing_length_;
+  step_ = settings.depth_step > 0.0 ? settings.depth_step
+                                    : std::max(min_row, max_depth_ / kAutoDepthSteps);
   const double steps = std::ceil(max_depth_ / step_);
-  if (!(steps < kMaxDepthSteps)) {
-    throw UserError("depth_step " + Num(step_) + " m gives more than " + Num(kMaxDepthSteps) +
-                    " table rows; use a coarser step");
+  // Each step stores up to n + 4 polygon vertices.
+  if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxTableVertices)) {
+    throw UserError("depth_step " + Num(step_) + " m gives " + Num(steps) +
+                    " table rows of up to " + Num(n_ + 4) +
+                    " vertices, more than the analyzer holds; use a coarser step");
   }
   const std::size_t count = static_cast<std::size_t>(steps) + 1;
 
@@ -326,7 +334,8 @@ void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* o
   out->offset_angle = std::atan2(x.y(), x.x());
   std::size_t k = 0;
   double t = 0.0;
-  if (!Locate(pose.depth, &k, &t)) return;
+  // A non-finite offset is an upstream fault: report no contact rather than NaN forces.
+  if (!x.allFinite() || !Locate(pose.depth, &k, &t)) return;
   const double s = 1.0 - t;
   out->engaged_length = s * length_[k] + t * length_[k + 1];
   out->engaged_area = s * area_[k] + t * area_[k + 1];

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -79,6 +80,9 @@ TEST(CylinderContact, UniformClearanceGivesRegularAssemblySpace) {
   EXPECT_NEAR(At(a, 50e-3).engaged_length, 10e-3, 1e-12);
   EXPECT_NEAR(At(a, 30e-3).engaged_area, kPi * 0.020 * 0.020, 1e-12);
   EXPECT_FALSE(At(a, 60e-3).engaged);
+  EXPECT_FALSE(At(a, std::nan("")).engaged);
+  EXPECT_FALSE(At(a, 30e-3, {std::nan(""), 0.0}).engaged);
+  EXPECT_FALSE(At(a, std::numeric_limits<double>::infinity()).engaged);
 }
 
 TEST(CylinderContact, OffsetBoreShiftsTheAssemblySpace) {
