@@ -364,9 +364,16 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   delta->setZero(static_cast<Eigen::Index>(shaft_rows_) * n_);
   std::size_t k = 0;
   double t = 0.0;
+  if (!pose.offset.allFinite()) throw UserError("interference map of a non-finite axis offset");
   if (!Locate(pose.depth, &k, &t)) return;
+  // Where the laws take the axis to be: under interference the energy-minimising position (the
+  // offset from it is the radial spring's), in clearance the pose's own offset, so that a shaft
+  // pressed against the bore by a radial load shows its contact line.
+  const bool interference = empty_[t < 0.5 ? k : k + 1] != 0;
   const Eigen::Vector2d anchor =
-      (1.0 - t) * AnchorAt(k, pose.offset) + t * AnchorAt(k + 1, pose.offset);
+      interference
+          ? Eigen::Vector2d((1.0 - t) * AnchorAt(k, pose.offset) + t * AnchorAt(k + 1, pose.offset))
+          : pose.offset;
   const double shift = pose.depth - shaft_length_;
   for (int i = 0; i < shaft_rows_; ++i) {
     const double pos = shaft_row_centre_[i] + shift;  // bushing coordinate of the row's centre

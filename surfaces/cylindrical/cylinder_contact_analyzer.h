@@ -45,6 +45,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   double depth_step() const { return step_; }
   double max_depth() const { return max_depth_; }
   // Tabulated anchor (p* or centroid) and interference flag at step k, for tests and pictures.
+  // InterferenceMap maps each shaft row through its centre's axial position; the axis is at the
+  // energy-minimising position under interference and at the pose's offset in clearance.
   Eigen::Vector2d anchor(int k) const { return anchor_[static_cast<std::size_t>(k)]; }
   bool interference_at(int k) const { return empty_[static_cast<std::size_t>(k)] != 0; }
   int newton_iterations() const { return newton_iterations_; }

@@ -72,6 +72,17 @@ TEST(CylinderContact, UniformClearanceGivesRegularAssemblySpace) {
     }
     EXPECT_EQ(At(a, depth).interference_volume, 0.0);
   }
+  // Pressed 1 um into the wall at column 0: the map shows the contact line there only.
+  MatingPose pose;
+  pose.depth = 30e-3;
+  pose.offset = {c + 1 * kUm, 0.0};
+  Eigen::VectorXd map;
+  a.InterferenceMap(pose, &map);
+  EXPECT_NEAR(map[p.shaft_grid.index(20, 0)], 1 * kUm, 1e-15);
+  EXPECT_NEAR(map[p.shaft_grid.index(20, 1)], std::max(0.0, (c + kUm) * std::cos(2 * kPi / n) - c),
+              1e-15);
+  EXPECT_EQ(map[p.shaft_grid.index(20, n / 2)], 0.0);
+  EXPECT_EQ(map[p.shaft_grid.index(5, 0)], 0.0);  // not yet in the bushing
   // Engagement follows the alignment: depth 0 = leading end at the entrance.
   EXPECT_FALSE(At(a, -1e-3).engaged);
   EXPECT_FALSE(At(a, 0.0).engaged);

@@ -48,6 +48,14 @@ TEST(GpsLaw, LamePressFitOracle) {
     EXPECT_NEAR(w.force.x(), 0.0, 1e-6);
     EXPECT_NEAR(w.force.z(), 0.0, 1e-6);
   }
+  // Eq. 12: off the energy-minimising axis (here the bore's axis) a radial spring pushes back,
+  // and its force adds to the normal load of the friction.
+  GpsLaw stiff;
+  stiff.Prepare(shaft, bushing, Settings(0.15, 1e8));
+  const Wrench off = Apply(a, stiff, 30e-3, {0.0, 1 * kUm}, 0.010);
+  EXPECT_NEAR(off.force.z(), -100.0, 1e-6);
+  EXPECT_NEAR(off.force.x(), 0.0, 1e-6);
+  EXPECT_NEAR(off.force.y(), -1099.6 - 0.15 * 100.0, 0.001 * 1099.6);
   // Linear in the engaged length while entering and leaving; opposite when pulled out.
   EXPECT_NEAR(Apply(a, law, 10e-3, {0, 0}, 0.010).force.y(), -1099.6 / 2, 0.001 * 1099.6);
   EXPECT_NEAR(Apply(a, law, 50e-3, {0, 0}, -0.010).force.y(), 1099.6 / 2, 0.001 * 1099.6);
