@@ -91,12 +91,15 @@ Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count,
   if (count == 1) return v[0];
   bool inside = count >= 3;
   double best = std::numeric_limits<double>::infinity();
+  double area2 = 0.0, longest2 = 0.0;
   Eigen::Vector2d nearest = v[0];
   for (int k = 0; k < count; ++k) {
     const Eigen::Vector2d& a = v[k];
     const Eigen::Vector2d& b = v[(k + 1) % count];
     const Eigen::Vector2d e = b - a;
     if (Cross(e, x - a) < 0.0) inside = false;
+    area2 += Cross(a - v[0], b - v[0]);
+    longest2 = std::max(longest2, e.squaredNorm());
     const double ee = e.squaredNorm();
     const double t = ee > 0.0 ? std::clamp((x - a).dot(e) / ee, 0.0, 1.0) : 0.0;
     const Eigen::Vector2d c = a + t * e;
@@ -106,6 +109,9 @@ Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count,
       nearest = c;
     }
   }
+  // A polygon closed down to a point or a segment (coincident vertices, zero-length edges) has
+  // no inside to test against: every point's answer is its nearest point.
+  if (!(area2 > 1e-12 * longest2) || longest2 == 0.0) inside = false;
   return inside ? x : nearest;
 }
 

@@ -126,6 +126,23 @@ TEST(AssemblyPolygon, AgreesWithClippingOverManySeeds) {
   EXPECT_GT(nonempties, 20);
 }
 
+TEST(AssemblyPolygon, ClosedToAPointStillPushesBack) {
+  // Line-to-line fit: every h_j = 0, the polygon is the origin (several coincident vertices).
+  for (int n : {3, 8, 36}) {
+    Poly v;
+    ASSERT_TRUE(IntersectHalfPlanes(Angles(n), std::vector<double>(n, 0.0), 1.0, &v));
+    const Eigen::Vector2d x(1e-6, -2e-6);
+    const Eigen::Vector2d p = ProjectOntoPolygon(v.data(), static_cast<int>(v.size()), x);
+    EXPECT_LT(p.norm(), 1e-18) << n;
+  }
+  // A segment: two anti-parallel pairs squeezed to x = 1 um, |z| <= 2 um.
+  std::vector<double> h = {1e-6, 2e-6, -1e-6, 2e-6};
+  Poly v;
+  ASSERT_TRUE(IntersectHalfPlanes(Angles(4), h, 1.0, &v));
+  const Eigen::Vector2d p = ProjectOntoPolygon(v.data(), static_cast<int>(v.size()), {1e-6, 5e-6});
+  EXPECT_NEAR((p - Eigen::Vector2d(1e-6, 2e-6)).norm(), 0.0, 1e-18);
+}
+
 TEST(AssemblyPolygon, OppositeConstraintsThatCrossAreEmpty) {
   // A shaft 1 um too fat on one diameter only: h = +5 um everywhere but -3 um at 0 and pi.
   const int n = 8;
