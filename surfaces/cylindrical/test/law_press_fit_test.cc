@@ -56,6 +56,13 @@ TEST(GpsLaw, LamePressFitOracle) {
   EXPECT_NEAR(off.force.z(), -100.0, 1e-6);
   EXPECT_NEAR(off.force.x(), 0.0, 1e-6);
   EXPECT_NEAR(off.force.y(), -1099.6 - 0.15 * 100.0, 0.001 * 1099.6);
+  // k_p left at 0: the Lame radial stiffness of the engaged length, P * pi * d1 * L / 2
+  // = 5.8333e12 * pi * 0.02 * 0.02 / 2 = 3.665e9 N/m at full engagement, half at half.
+  const double k_full = 5.8333e12 * kPi * 0.020 * 0.020 / 2;
+  EXPECT_NEAR(Apply(a, law, 30e-3, {0.0, 1 * kUm}, 0.010).force.z(), -k_full * 1e-6,
+              1e-4 * k_full * 1e-6);
+  EXPECT_NEAR(Apply(a, law, 10e-3, {0.0, 1 * kUm}, 0.010).force.z(), -k_full * 0.5e-6,
+              1e-4 * k_full * 1e-6);
   // Linear in the engaged length while entering and leaving; opposite when pulled out.
   EXPECT_NEAR(Apply(a, law, 10e-3, {0, 0}, 0.010).force.y(), -1099.6 / 2, 0.001 * 1099.6);
   EXPECT_NEAR(Apply(a, law, 50e-3, {0, 0}, -0.010).force.y(), 1099.6 / 2, 0.001 * 1099.6);
