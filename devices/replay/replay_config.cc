@@ -1,0 +1,44 @@
+// Scenario-facing part of the replay device.
+#include <limits>
+
+#include "devices/replay/replay_device.h"
+#include "framework/device/device_specs.h"
+
+namespace fitfeel {
+
+void ReplayDevice::DoConfigure(const ConfigNode& node) {
+  node.ExpectOnlyKeys({"plugin", "file", "speed", "start", "loop", "model", "spec"});
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  ReplaySettings settings;
+  const ConfigNode file = node.Child("file");
+  settings.file = file.AsString();
+  if (settings.file.is_relative()) {
+    settings.file = std::filesystem::path(node.file()).parent_path() / settings.file;
+  }
+  if (!std::filesystem::exists(settings.file)) {
+    file.Fail("an existing recording file", "'" + settings.file.string() + "' (no such file)");
+  }
+  if (auto n = node.Find("speed")) {
+    settings.speed = n->AsQuantityIn(Dimension::kDimensionless, 0.0, kInf, false);
+  }
+  if (auto n = node.Find("start")) settings.start = n->AsQuantityIn(Dimension::kTime, 0.0, kInf);
+  if (auto n = node.Find("loop")) settings.loop = n->AsBool();
+  if (auto n = node.Find("model")) {
+    settings.model = n->AsString();
+    if (!FindDeviceSpec(settings.model)) n->Fail("a known device model", n->Describe());
+  }
+  if (auto n = node.Find("spec")) {
+    const DeviceSpec base =
+        settings.model.empty() ? DeviceSpec{} : LookupDeviceSpec(settings.model);
+    settings.spec = ParseDeviceSpec(*n, base);
+    settings.spec->model = settings.spec->model.empty() ? "replay" : settings.spec->model;
+    try {
+      ValidateDeviceSpec(*settings.spec);
+    } catch (const UserError& e) {
+      n->Fail("a complete device spec", e.what());
+    }
+  }
+  Configure(settings);
+}
+
+}  // namespace fitfeel
