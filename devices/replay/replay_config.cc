@@ -28,14 +28,22 @@ void ReplayDevice::DoConfigure(const ConfigNode& node) {
     if (!FindDeviceSpec(settings.model)) n->Fail("a known device model", n->Describe());
   }
   if (auto n = node.Find("spec")) {
-    const DeviceSpec base =
-        settings.model.empty() ? DeviceSpec{} : LookupDeviceSpec(settings.model);
+    // Overrides apply on top of the model's spec: the key's, else the recording's.
+    DeviceSpec base;
+    if (!settings.model.empty()) {
+      base = LookupDeviceSpec(settings.model);
+    } else if (auto known = FindDeviceSpec(ReadRecording(settings.file).info.device_model)) {
+      base = *known;
+    }
     settings.spec = ParseDeviceSpec(*n, base);
-    settings.spec->model = settings.spec->model.empty() ? "replay" : settings.spec->model;
+    if (settings.spec->model.empty()) settings.spec->model = "replay";
     try {
       ValidateDeviceSpec(*settings.spec);
     } catch (const UserError& e) {
-      n->Fail("a complete device spec", e.what());
+      n->Fail(
+          "a complete device spec (max_force, max_continuous_force, max_stiffness, damping, "
+          "workspace) or a known model to start from",
+          e.what());
     }
   }
   Configure(settings);
