@@ -27,12 +27,12 @@ TEST(ReplayConfig, ParsesKeysAndResolvesTheFileBesideTheScenario) {
   EXPECT_DOUBLE_EQ(device.spec().max_force, 2.0);
   EXPECT_THROW(device.Configure(ConfigNode(YAML::Load("{file: nope.rec}"), scene, "device")),
                ScenarioError);
-  EXPECT_THROW(device.Configure(ConfigNode(YAML::Load("{file: hand.rec, speed: -1}"), scene,
-                                           "device")),
-               ScenarioError);
-  EXPECT_THROW(device.Configure(ConfigNode(YAML::Load("{file: hand.rec, colour: red}"), scene,
-                                           "device")),
-               ScenarioError);
+  EXPECT_THROW(
+      device.Configure(ConfigNode(YAML::Load("{file: hand.rec, speed: -1}"), scene, "device")),
+      ScenarioError);
+  EXPECT_THROW(
+      device.Configure(ConfigNode(YAML::Load("{file: hand.rec, colour: red}"), scene, "device")),
+      ScenarioError);
   fs::remove_all(dir);
 }
 
