@@ -16,6 +16,29 @@ bool StateFinite(const DeviceState& s) {
 
 }  // namespace
 
+std::string FormatSafetyReport(const SafetyReport& r) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "device: " << r.device_model << "\n";
+  out << "force scale: " << r.force_scale << " device N per physical N\n";
+  if (r.coupling == CouplingMode::kSpringDamper) {
+    out << "coupling: spring-damper, K_c " << r.coupling_gains.stiffness << " N/m, B_c "
+        << r.coupling_gains.damping << " N*s/m\n";
+  } else {
+    out << "coupling: direct rendering\n";
+  }
+  out << "force limits: peak " << r.peak_force_limit << " N, continuous "
+      << r.continuous_force_limit << " N\n";
+  out << "ticks: " << r.ticks << " (peak-limited " << r.peak_limited_ticks
+      << ", continuous-limited " << r.continuous_limited_ticks << ", non-finite faults "
+      << r.non_finite_faults << ", passivity controller " << r.passivity_controller_ticks << ")\n";
+  out << "largest force: physical " << r.max_physical_force << " N, requested "
+      << r.max_requested_force << " N, delivered " << r.max_delivered_force << " N\n";
+  out << "energy: absorbed " << r.energy << " J, created (largest deficit) " << r.energy_created
+      << " J, dissipated by the passivity controller " << r.controller_energy << " J\n";
+  return out.str();
+}
+
 void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& spec, double period) {
   if (!(period > 0.0) || !std::isfinite(period)) {
     throw UserError("safety chain: tick period must be a positive number of seconds");

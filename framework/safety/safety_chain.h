@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
@@ -38,6 +39,10 @@ struct SafetyReport {
   double energy_created = 0.0;     // J, largest deficit the observer saw
   double controller_energy = 0.0;  // J the passivity controller dissipated
 };
+
+// The report as lines for the run summary, with units, e.g.
+//   "force scale: 0.01 device N per physical N".
+FITFEEL_API std::string FormatSafetyReport(const SafetyReport& report);
 
 // Everything between the resistance law and Device::Write.
 //

@@ -4,8 +4,8 @@
 #include <memory>
 #include <new>
 
-// Framework headers first: framework/core/quantity.h names a parameter si_value, which <signal.h>
-// (pulled in by gtest) defines as a macro.
+// Framework headers first: the skeleton's framework/core/quantity.h names a parameter si_value,
+// which <signal.h> (pulled in by gtest) defines as a macro.
 #include "framework/device/device_specs.h"
 #include "framework/safety/safety_chain.h"
 

@@ -84,6 +84,17 @@ TEST(SafetyChain, NonFiniteNeverReachesTheDevice) {
   EXPECT_DOUBLE_EQ(out.force.x(), 1.0);
 }
 
+TEST(SafetyChain, ReportFormatsWithUnits) {
+  SafetyChain chain;
+  chain.Configure(SafetySettings{}, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
+  chain.Apply(Force(0.0, 1e4, 0.0), DeviceState{}, 1e-3);
+  const std::string text = FormatSafetyReport(chain.report());
+  EXPECT_NE(text.find("force scale: 1 device N per physical N"), std::string::npos) << text;
+  EXPECT_NE(text.find("K_c 800 N/m, B_c 2.3 N*s/m"), std::string::npos) << text;
+  EXPECT_NE(text.find("peak 7.9 N, continuous 1.75 N"), std::string::npos) << text;
+  EXPECT_NE(text.find("ticks: 1 "), std::string::npos) << text;
+}
+
 TEST(SafetyChain, UnconfiguredChainSendsNothing) {
   SafetyChain chain;
   EXPECT_EQ(chain.Apply(Force(1.0, 2.0, 3.0), DeviceState{}, 1e-3).force, Eigen::Vector3d::Zero());
