@@ -13,10 +13,8 @@ Stage::~Stage() = default;
 
 std::string_view ToString(StageId stage) {
   switch (stage) {
-    case StageId::kPositioning:
-      return "positioning";
-    case StageId::kConstrained:
-      return "constrained";
+    case StageId::kPositioning: return "positioning";
+    case StageId::kConstrained: return "constrained";
   }
   return "unknown";
 }

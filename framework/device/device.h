@@ -16,12 +16,12 @@ namespace fitfeel {
 // Limits and native properties of a haptic device (data, overridable by the scenario).
 struct DeviceSpec {
   std::string model;
-  double max_force = 0.0;                    // N, peak
-  double max_continuous_force = 0.0;         // N
-  double max_stiffness = 0.0;                // N/m, largest stable rendered stiffness
-  double damping = 0.0;                      // N*s/m, physical damping usable for passivity
+  double max_force = 0.0;             // N, peak
+  double max_continuous_force = 0.0;  // N
+  double max_stiffness = 0.0;         // N/m, largest stable rendered stiffness
+  double damping = 0.0;               // N*s/m, physical damping usable for passivity
   Eigen::Vector3d workspace{0.0, 0.0, 0.0};  // extent of the reachable box, m
-  double native_rate = 1000.0;               // Hz
+  double native_rate = 1000.0;        // Hz
 };
 
 // One sample of the device (or hand) state, in the scene frame: y is the mating axis.

@@ -16,9 +16,9 @@ FITFEEL_API std::string_view ToString(StageId stage);
 
 // Output of one stage tick.
 struct StageOutput {
-  Wrench wrench;                         // on the moving part, scene frame
-  MatingPose pose;                       // where the moving part is relative to the fixed one
-  ContactState contact;                  // filled by the constrained stage
+  Wrench wrench;               // on the moving part, scene frame
+  MatingPose pose;             // where the moving part is relative to the fixed one
+  ContactState contact;        // filled by the constrained stage
   StageId next = StageId::kPositioning;  // stage for the next tick (hand-over)
 };
 
