@@ -50,34 +50,62 @@ Eigen::Vector3d VirtualCoupling::Step(const Eigen::Vector3d& environment_force,
                                       const Eigen::Vector3d& device_position,
                                       const Eigen::Vector3d& device_velocity, double stiffness_hint,
                                       double dt) noexcept {
-  // Environment stiffness seen along the proxy's last move (secant), decaying once it vanishes.
+  // Environment stiffness seen along the proxy's last move (secant). A move too small to measure
+  // brings no news: the estimate is kept while in contact (a proxy at rest against a wall must not
+  // forget the wall) and decays once contact ends.
+  const bool in_contact = environment_force.squaredNorm() > 0.0;
+  const double decay = std::exp(-dt / kEstimateDecayTime);
+  bool measurable = false;
   double measured = 0.0;
   if (has_last_) {
     const Eigen::Vector3d dx = position_ - last_position_;
     const double dx_sq = dx.squaredNorm();
     if (dx_sq > kMinSecantStep * kMinSecantStep) {
+      measurable = true;
       measured = std::max(0.0, -(environment_force - last_force_).dot(dx) / dx_sq);
     }
   }
-  stiffness_estimate_ =
-      std::max(measured, stiffness_estimate_ * std::exp(-dt / kEstimateDecayTime));
+  if (measurable) {
+    stiffness_estimate_ = std::max(measured, stiffness_estimate_ * decay);
+  } else if (!in_contact) {
+    stiffness_estimate_ *= decay;
+  }
   if (!std::isfinite(stiffness_estimate_)) stiffness_estimate_ = 0.0;
+  const bool was_in_contact = has_last_ && last_force_.squaredNorm() > 0.0;
+  const Eigen::Vector3d previous_position = last_position_;
+  const Eigen::Vector3d previous_force = last_force_;
+  const bool crossed = has_last_ && was_in_contact != in_contact;
   last_position_ = position_;
   last_force_ = environment_force;
   has_last_ = true;
   // The linearisation holds only in contact: a proxy the environment does not push is free, and
   // an implicit stiffness there would only hold it back.
-  const double k_e =
-      environment_force.squaredNorm() > 0.0
-          ? std::max(stiffness_estimate_, std::isfinite(stiffness_hint) ? stiffness_hint : 0.0)
-          : 0.0;
+  const double k_e = in_contact ? std::max(stiffness_estimate_,
+                                           std::isfinite(stiffness_hint) ? stiffness_hint : 0.0)
+                                : 0.0;
 
   const double denominator = mass_ / dt + (k_e + gains_.stiffness) * dt + gains_.damping;
   const Eigen::Vector3d numerator = (mass_ / dt) * velocity_ + environment_force +
                                     gains_.stiffness * (device_position - position_) +
                                     gains_.damping * device_velocity;
   velocity_ = numerator / denominator;
-  position_ += dt * velocity_;
+  Eigen::Vector3d step = dt * velocity_;
+  // The face of the environment lies between the last two positions when contact began or ended
+  // between them. The secant across the face underestimates a stiff environment and the step can
+  // overshoot back past the face; bisection keeps the proxy inside that bracket, which shrinks by
+  // half at each crossing until both samples lie on one side and the secant is exact.
+  if (crossed) {
+    const Eigen::Vector3d outward = (in_contact ? environment_force : previous_force).normalized();
+    // Along `direction`, how far the step goes towards the previous position, and the bracket.
+    const Eigen::Vector3d direction = in_contact ? outward : -outward;
+    const double bracket = (previous_position - position_).dot(direction);
+    const double along = step.dot(direction);
+    if (bracket > 0.0 && along > 0.5 * bracket) {
+      step -= (along - 0.5 * bracket) * direction;
+      velocity_ = step / dt;
+    }
+  }
+  position_ += step;
   // Reaction of the coupling on the handle: it pulls the handle towards the proxy.
   return gains_.stiffness * (position_ - device_position) +
          gains_.damping * (velocity_ - device_velocity);

@@ -35,10 +35,11 @@ FITFEEL_API bool CouplingGainsArePassive(const CouplingGains& gains, const Devic
 // orders of magnitude stiffer than any device), and reduces to a quasi-static proxy for m = 0.
 // k_e is the larger of the hint the runtime gives (the contact stiffness, if it knows it) and a
 // secant estimate from the last two (position, force) samples of the proxy that decays with a
-// 0.1 s time constant once contact ends (long against the tick, short against a gesture). The
-// secant across the wall's face underestimates a very stiff wall (tested exact up to 2e6 N/m in
-// device units; at 2e8 N/m the proxy chatters at the face): give the hint when the law knows its
-// stiffness.
+// 0.1 s time constant once contact ends (long against the tick, short against a gesture). A
+// secant taken across the environment's face underestimates a stiff wall, so on the step after
+// contact begins or ends the proxy may move at most half-way back towards the previous position
+// (bisection of the face); the proxy then settles with both samples inside, where the secant is
+// exact (tested to 2e10 N/m without a hint).
 class FITFEEL_API VirtualCoupling {
  public:
   void Configure(const CouplingGains& gains, double proxy_mass);
