@@ -9,9 +9,10 @@ namespace {
 
 constexpr double kStiffnessMargin = 0.8;
 constexpr double kDampingShare = 0.5;
-// Secant estimates need a displacement well above the devices' encoder resolution (~20 um for a
-// Touch, ~0.02 mm); below it the ratio is noise.
-constexpr double kMinSecantStep = 1e-6;     // m
+// The proxy's positions are computed, not measured, so a secant is meaningful down to where the
+// law's force stops being smooth; 1 nm is far below any tolerance the law resolves and far above
+// the rounding of positions of a few centimetres.
+constexpr double kMinSecantStep = 1e-9;     // m
 constexpr double kEstimateDecayTime = 0.1;  // s
 
 }  // namespace
@@ -50,26 +51,21 @@ Eigen::Vector3d VirtualCoupling::Step(const Eigen::Vector3d& environment_force,
                                       const Eigen::Vector3d& device_position,
                                       const Eigen::Vector3d& device_velocity, double stiffness_hint,
                                       double dt) noexcept {
-  // Environment stiffness seen along the proxy's last move (secant). A move too small to measure
-  // brings no news: the estimate is kept while in contact (a proxy at rest against a wall must not
-  // forget the wall) and decays once contact ends.
+  // Environment stiffness seen along the proxy's last move (secant), decaying when no move shows
+  // it: an overestimate (a friction reversal reads as a huge stiffness) would otherwise hold the
+  // proxy forever, while an estimate decayed below half the true stiffness only lets the proxy
+  // drift until its move is measurable again, which is sub-nanometre.
   const bool in_contact = environment_force.squaredNorm() > 0.0;
-  const double decay = std::exp(-dt / kEstimateDecayTime);
-  bool measurable = false;
   double measured = 0.0;
   if (has_last_) {
     const Eigen::Vector3d dx = position_ - last_position_;
     const double dx_sq = dx.squaredNorm();
     if (dx_sq > kMinSecantStep * kMinSecantStep) {
-      measurable = true;
       measured = std::max(0.0, -(environment_force - last_force_).dot(dx) / dx_sq);
     }
   }
-  if (measurable) {
-    stiffness_estimate_ = std::max(measured, stiffness_estimate_ * decay);
-  } else if (!in_contact) {
-    stiffness_estimate_ *= decay;
-  }
+  stiffness_estimate_ =
+      std::max(measured, stiffness_estimate_ * std::exp(-dt / kEstimateDecayTime));
   if (!std::isfinite(stiffness_estimate_)) stiffness_estimate_ = 0.0;
   const bool was_in_contact = has_last_ && last_force_.squaredNorm() > 0.0;
   const Eigen::Vector3d previous_position = last_position_;
