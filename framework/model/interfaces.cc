@@ -1,8 +1,8 @@
 // Out-of-line destructors (one vtable per interface, in the framework library) and the checking
 // wrappers of the Drake-style public/protected-virtual pairs.
 #include <algorithm>
-#include <stdexcept>
 #include <cassert>
+#include <stdexcept>
 #include <string>
 
 #include "framework/core/error.h"
@@ -17,14 +17,22 @@ namespace fitfeel {
 
 std::string ToString(FormCharacteristic characteristic) {
   switch (characteristic) {
-    case FormCharacteristic::kAxisStraightness: return "axis_straightness";
-    case FormCharacteristic::kGeneratrixStraightness: return "generatrix_straightness";
-    case FormCharacteristic::kRoundness: return "roundness";
-    case FormCharacteristic::kCylindricity: return "cylindricity";
-    case FormCharacteristic::kStraightness: return "straightness";
-    case FormCharacteristic::kFlatness: return "flatness";
-    case FormCharacteristic::kParallelism: return "parallelism";
-    case FormCharacteristic::kSphericity: return "sphericity";
+    case FormCharacteristic::kAxisStraightness:
+      return "axis_straightness";
+    case FormCharacteristic::kGeneratrixStraightness:
+      return "generatrix_straightness";
+    case FormCharacteristic::kRoundness:
+      return "roundness";
+    case FormCharacteristic::kCylindricity:
+      return "cylindricity";
+    case FormCharacteristic::kStraightness:
+      return "straightness";
+    case FormCharacteristic::kFlatness:
+      return "flatness";
+    case FormCharacteristic::kParallelism:
+      return "parallelism";
+    case FormCharacteristic::kSphericity:
+      return "sphericity";
   }
   return "unknown";
 }
@@ -54,6 +62,10 @@ SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceG
   assert(sms.variation.size() == grid.size());
   return sms;
 }
+
+void VariationGenerator::Configure(const ConfigNode& options) { DoConfigure(options); }
+
+void VariationGenerator::DoConfigure(const ConfigNode& options) { options.ExpectOnlyKeys({}); }
 
 void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                               const PartSpec& outer, const SkinModelShape& outer_sms,
@@ -112,8 +124,8 @@ std::unique_ptr<ResistanceLaw> SurfaceType::MakeLaw(std::string_view name) const
   if (std::find(names.begin(), names.end(), name) == names.end()) {
     std::string offered;
     for (const auto& n : names) offered += (offered.empty() ? "" : ", ") + n;
-    throw UserError("unknown resistance law '" + std::string(name) + "'; this surface offers: " +
-                    (offered.empty() ? "none" : offered));
+    throw UserError("unknown resistance law '" + std::string(name) +
+                    "'; this surface offers: " + (offered.empty() ? "none" : offered));
   }
   auto law = DoMakeLaw(name);
   if (!law) throw UnsupportedError("resistance law '" + std::string(name) + "' is not available");

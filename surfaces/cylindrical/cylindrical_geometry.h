@@ -22,7 +22,9 @@ class CylindricalGeometry final : public Geometry {
   double diameter() const { return diameter_; }              // mating diameter d1, m
   double length() const { return length_; }                  // length of the mating surface, m
   double outer_diameter() const { return outer_diameter_; }  // outer part: hub outer d2, m
-  double bore_diameter() const { return bore_diameter_; }    // inner part: bore of a hollow shaft (0 = solid), m
+  double bore_diameter() const {
+    return bore_diameter_;
+  }  // inner part: bore of a hollow shaft (0 = solid), m
 
   double nominal_area() const override;
   double mating_length() const override { return length_; }
