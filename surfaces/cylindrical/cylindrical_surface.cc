@@ -4,6 +4,7 @@
 #include <string>
 
 #include "framework/core/quantity.h"
+#include "framework/metrology/sms_conformance.h"
 #include "surfaces/cylindrical/contact_factory.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
@@ -37,6 +38,22 @@ std::unique_ptr<ContactAnalyzer> CylindricalSurface::MakeContactAnalyzer() const
 
 std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view name) const {
   return cylindrical::MakeLaw(name);
+}
+
+std::vector<CharacteristicCheck> CylindricalSurface::DoEvaluateCharacteristics(
+    const PartSpec& part, const SkinModelShape& sms) const {
+  const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(part, sms);
+  std::vector<CharacteristicCheck> checks;
+  for (const auto& item : report.items) {
+    if (!item.specified) continue;
+    if (item.name == "size") {
+      checks.push_back({"two_point_size_min", item.value_low, item.limit_low, item.limit_high});
+      checks.push_back({"two_point_size_max", item.value, item.limit_low, item.limit_high});
+    } else {
+      checks.push_back({item.name, item.value, item.limit_low, item.limit_high});
+    }
+  }
+  return checks;
 }
 
 std::shared_ptr<const Geometry> CylindricalSurface::DoParseGeometry(

@@ -22,6 +22,11 @@ class CylindricalSurface final : public SurfaceType {
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                    const ConfigNode& pair_node) const override;
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
+  // framework/metrology's evaluation (EvaluateCylindricalSms): two-point sizes as
+  // two_point_size_min / two_point_size_max against the size limits, then each specified form
+  // tolerance.
+  std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
+      const PartSpec& part, const SkinModelShape& sms) const override;
 };
 
 }  // namespace fitfeel::cylindrical

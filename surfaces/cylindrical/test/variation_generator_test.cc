@@ -62,7 +62,7 @@ TEST(CylindricalVariationGenerator, PartsAddUpAndSizeIsOnePerPart) {
 TEST(CylindricalVariationGenerator, SampledTextureIsTheTruncatedGaussianOfEq6) {
   // Loose size so nothing is scaled back; no form. Heights within +-(A + Rz)/2 = +-2.4 um with
   // sigma = 0.8 um truncated at 3 sigma: standard deviation 0.9866 sigma.
-  PartSpec part = Part("p", Role::kInner, 0.05, 0.1, -100e-6, 100e-6);
+  PartSpec part = Part("p", Role::kInner, 0.05, 0.2, -100e-6, 100e-6);
   part.texture = {3.2e-6, 0.4e-6, 1.6e-6};
   const SkinModelShape s = Make(part, 3, TextureMode::kSampled);
   ASSERT_GT(s.surface_part.size(), 10000);
