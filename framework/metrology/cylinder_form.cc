@@ -68,34 +68,65 @@ CylindricityResult MinimumZoneCylindricity(const CylinderSamples& s) {
   if (scale == 0.0) return out;
   const auto [yc, yh] = AxialScale(s.y);
   // Variables (a, b, c, d, r_in, r_out): axis x = a + b*u, z = c + d*u with u = (y - yc)/yh.
-  Eigen::MatrixXd A(2 * m * n, 6);
-  Eigen::VectorXd rhs(2 * m * n);
-  long k = 0;
-  for (long i = 0; i < m; ++i) {
-    const double u = (s.y(i) - yc) / yh;
-    for (long j = 0; j < n; ++j) {
-      const double cs = std::cos(s.theta(j)), sn = std::sin(s.theta(j));
-      const double v = s.deviation(i, j) / scale;
-      A.row(k) << -cs, -cs * u, -sn, -sn * u, 0.0, -1.0;  // v - axis <= r_out
-      rhs(k++) = -v;
-      A.row(k) << cs, cs * u, sn, sn * u, 1.0, 0.0;  // r_in <= v - axis
-      rhs(k++) = v;
+  // Constraint generation: most of the 2 m n constraints are slack at the optimum, so the LP is
+  // solved on a working set (each row's highest and lowest point to start), every point is then
+  // checked against the solution, and the most violated are added until none is: the last LP's
+  // optimum is then the full program's.
+  Eigen::VectorXd u(m);
+  for (long i = 0; i < m; ++i) u(i) = (s.y(i) - yc) / yh;
+  Eigen::VectorXd cs(n), sn(n);
+  for (long j = 0; j < n; ++j) {
+    cs(j) = std::cos(s.theta(j));
+    sn(j) = std::sin(s.theta(j));
+  }
+  const Eigen::MatrixXd v = s.deviation / scale;
+  std::vector<char> in_set(m * n, 0);
+  std::vector<long> working;
+  auto add = [&](long i, long j) {
+    if (!in_set[i * n + j]) {
+      in_set[i * n + j] = 1;
+      working.push_back(i * n + j);
     }
+  };
+  for (long i = 0; i < m; ++i) {
+    Eigen::Index hi_j = 0, lo_j = 0;
+    v.row(i).maxCoeff(&hi_j);
+    v.row(i).minCoeff(&lo_j);
+    add(i, hi_j);
+    add(i, lo_j);
   }
   Eigen::VectorXd c(6);
   c << 0, 0, 0, 0, -1, 1;
-  const LinearProgramResult lp = MinimiseLinearProgram(c, A, rhs);
-  const Eigen::VectorXd& x = lp.x;
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (long i = 0; i < m; ++i) {
-    const double u = (s.y(i) - yc) / yh;
-    for (long j = 0; j < n; ++j) {
-      const double r = s.deviation(i, j) / scale - (x(0) + x(1) * u) * std::cos(s.theta(j)) -
-                       (x(2) + x(3) * u) * std::sin(s.theta(j));
-      lo = std::min(lo, r);
-      hi = std::max(hi, r);
+  Eigen::VectorXd x;
+  Eigen::MatrixXd residual(m, n);
+  for (int round = 0; round < 200; ++round) {
+    const long w = static_cast<long>(working.size());
+    Eigen::MatrixXd A(2 * w, 6);
+    Eigen::VectorXd rhs(2 * w);
+    for (long k = 0; k < w; ++k) {
+      const long i = working[k] / n, j = working[k] % n;
+      A.row(2 * k) << -cs(j), -cs(j) * u(i), -sn(j), -sn(j) * u(i), 0.0, -1.0;  // <= r_out
+      rhs(2 * k) = -v(i, j);
+      A.row(2 * k + 1) << cs(j), cs(j) * u(i), sn(j), sn(j) * u(i), 1.0, 0.0;  // >= r_in
+      rhs(2 * k + 1) = v(i, j);
     }
+    x = MinimiseLinearProgram(c, A, rhs).x;
+    for (long i = 0; i < m; ++i)
+      for (long j = 0; j < n; ++j)
+        residual(i, j) = v(i, j) - (x(0) + x(1) * u(i)) * cs(j) - (x(2) + x(3) * u(i)) * sn(j);
+    // Violations beyond rounding, worst first, at most 2 m per round.
+    std::vector<std::pair<double, long>> violated;
+    for (long i = 0; i < m; ++i)
+      for (long j = 0; j < n; ++j) {
+        const double over = std::max(residual(i, j) - x(5), x(4) - residual(i, j));
+        if (over > 1e-12 && !in_set[i * n + j]) violated.emplace_back(-over, i * n + j);
+      }
+    if (violated.empty()) break;
+    const size_t take = std::min<size_t>(violated.size(), 2 * m);
+    std::partial_sort(violated.begin(), violated.begin() + take, violated.end());
+    for (size_t k = 0; k < take; ++k) add(violated[k].second / n, violated[k].second % n);
   }
+  const double lo = residual.minCoeff(), hi = residual.maxCoeff();
   out.value = (hi - lo) * scale;
   out.tx = x(1) * scale / yh;
   out.x0 = x(0) * scale - out.tx * yc;

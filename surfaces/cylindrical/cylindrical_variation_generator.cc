@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -290,13 +291,52 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
     }
     form += good * component;
   };
-  if (const double t = budget(FormCharacteristic::kAxisStraightness, t_axis); t > 0.0) {
+  // Each component is drawn within the tolerance left by those before it. Zone widths are
+  // subadditive (w(F + C) <= w(F) + w(C)), and a component drawn with bound B contributes at most
+  // B to every characteristic it touches (see the component functions), so drawing with
+  // B <= t - w(F) for each touched, specified characteristic keeps the sum in tolerance; the check
+  // and regeneration remain the guard for what the linear bounds do not see (e.g. the e^2/2R
+  // curvature terms of a displaced circle).
+  struct Touch {
+    FormCharacteristic characteristic;
+    double gain;  // the component adds at most gain * B to it
+  };
+  auto remaining = [&](double own, std::initializer_list<Touch> touched) {
+    double bound = own;
+    if (bound <= 0.0) return 0.0;
+    const bool flat = form.cwiseAbs().maxCoeff() == 0.0;
+    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
+    for (const Touch& touch : touched) {
+      const auto it = part.form.tolerance.find(touch.characteristic);
+      if (it == part.form.tolerance.end()) continue;
+      const double used =
+          flat ? 0.0 : metrology::EvaluateCylinderForm(touch.characteristic, samples);
+      bound = std::min(bound, (it->second - used) / touch.gain);
+    }
+    return std::max(bound, 0.0);
+  };
+  using FC = FormCharacteristic;
+  // Axis bow: every V within +-B/2, so at most B on axis straightness, generatrices and
+  // cylindricity.
+  if (const double t =
+          remaining(budget(FC::kAxisStraightness, t_axis), {{FC::kAxisStraightness, 1.0},
+                                                            {FC::kGeneratrixStraightness, 1.0},
+                                                            {FC::kCylindricity, 1.0}});
+      t > 0.0) {
     integrate([&] { return AxisComponent(grid, length, t, rng); });
   }
-  if (const double t = budget(FormCharacteristic::kGeneratrixStraightness, t_gen); t > 0.0) {
+  // Axisymmetric radius wave within +-B/2: generatrices and cylindricity, not axis or roundness.
+  if (const double t = remaining(budget(FC::kGeneratrixStraightness, t_gen),
+                                 {{FC::kGeneratrixStraightness, 1.0}, {FC::kCylindricity, 1.0}});
+      t > 0.0) {
     integrate([&] { return GeneratrixComponent(grid, length, t, rng); });
   }
-  if (const double t = budget(FormCharacteristic::kRoundness, t_round); t > 0.0) {
+  // Lobing: peak-to-valley <= B per section about a zero mean, so values within +-B: at most B on
+  // roundness, 2B on cylindricity and on generatrices (sections differ).
+  if (const double t = remaining(
+          budget(FC::kRoundness, t_round),
+          {{FC::kRoundness, 1.0}, {FC::kGeneratrixStraightness, 2.0}, {FC::kCylindricity, 2.0}});
+      t > 0.0) {
     integrate([&] { return RoundnessComponent(grid, geometry.diameter(), length, t, rng); });
   }
   // Eq. 6: texture as a truncated Gaussian per cell, only when sampled. Limits +-(A + Rz)/2 at
