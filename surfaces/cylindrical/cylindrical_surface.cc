@@ -33,6 +33,11 @@ std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view na
   return cylindrical::MakeLaw(name);
 }
 
+void CylindricalSurface::DoCheckOptions(const ConfigNode& options) const {
+  CylindricalVariationGenerator generator;
+  generator.Configure(options);
+}
+
 std::vector<CharacteristicCheck> CylindricalSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
   const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(part, sms);

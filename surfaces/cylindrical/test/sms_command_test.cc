@@ -45,12 +45,12 @@ fs::path EmptyFolder(const std::string& name) {
   return dir;
 }
 
-Result Sms(const std::string& arguments, const fs::path& cwd) {
+Result Sms(const std::string& arguments, const fs::path& cwd, const fs::path& scene = kScene) {
   const fs::path out = cwd.parent_path() / (cwd.filename().string() + ".out");
   const fs::path err = cwd.parent_path() / (cwd.filename().string() + ".err");
   const std::string command = "cd '" + cwd.string() + "' && FITFEEL_PLUGIN_PATH='" +
                               (kBuild / "test-plugins/good").string() + "' '" +
-                              (kBuild / "bin/fitfeel").string() + "' sms '" + kScene.string() +
+                              (kBuild / "bin/fitfeel").string() + "' sms '" + scene.string() +
                               "' " + arguments + " >'" + out.string() + "' 2>'" + err.string() +
                               "'";
   const int status = std::system(command.c_str());
@@ -115,6 +115,25 @@ TEST(SmsCommand, UserErrorsExitTwoAndWriteNothing) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("does not exist"));
   EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(SmsCommand, BadModelOptionIsRefusedAtItsKey) {
+  const fs::path dir = EmptyFolder("options");
+  std::string text = Slurp(kScene);
+  const std::string good = "size_draw: per_part";
+  ASSERT_NE(text.find(good), std::string::npos);
+  text.replace(text.find(good), good.size(), "size_draw: per_row");
+  const fs::path scene = dir.parent_path() / "bad_options.yaml";
+  {
+    std::FILE* f = std::fopen(scene.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+  }
+  const Result r = Sms("", dir, scene);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("model.options.size_draw"));
+  EXPECT_THAT(r.err, HasSubstr("per_part"));
 }
 
 }  // namespace
