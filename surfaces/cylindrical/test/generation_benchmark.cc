@@ -1,5 +1,5 @@
 // Prepare-time cost of skin model shape generation (discretise + generate with every form check)
-// for grids from the automatic paper grid up to 10^5 cells.
+// for grids from the automatic paper grid up to 10^6 cells.
 #include <benchmark/benchmark.h>
 
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
@@ -30,6 +30,7 @@ BENCHMARK(BM_GeneratePaperShaft)
     ->Args({100, 96})
     ->Args({240, 360})
     ->Args({500, 200})
+    ->Args({1000, 1000})
     ->Unit(benchmark::kMillisecond);
 
 void BM_GenerateWithCylindricity(benchmark::State& state) {
