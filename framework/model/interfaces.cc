@@ -1,8 +1,8 @@
 // Out-of-line destructors (one vtable per interface, in the framework library) and the checking
 // wrappers of the Drake-style public/protected-virtual pairs.
 #include <algorithm>
-#include <cassert>
 #include <stdexcept>
+#include <cassert>
 #include <string>
 
 #include "framework/core/error.h"
@@ -17,22 +17,14 @@ namespace fitfeel {
 
 std::string ToString(FormCharacteristic characteristic) {
   switch (characteristic) {
-    case FormCharacteristic::kAxisStraightness:
-      return "axis_straightness";
-    case FormCharacteristic::kGeneratrixStraightness:
-      return "generatrix_straightness";
-    case FormCharacteristic::kRoundness:
-      return "roundness";
-    case FormCharacteristic::kCylindricity:
-      return "cylindricity";
-    case FormCharacteristic::kStraightness:
-      return "straightness";
-    case FormCharacteristic::kFlatness:
-      return "flatness";
-    case FormCharacteristic::kParallelism:
-      return "parallelism";
-    case FormCharacteristic::kSphericity:
-      return "sphericity";
+    case FormCharacteristic::kAxisStraightness: return "axis_straightness";
+    case FormCharacteristic::kGeneratrixStraightness: return "generatrix_straightness";
+    case FormCharacteristic::kRoundness: return "roundness";
+    case FormCharacteristic::kCylindricity: return "cylindricity";
+    case FormCharacteristic::kStraightness: return "straightness";
+    case FormCharacteristic::kFlatness: return "flatness";
+    case FormCharacteristic::kParallelism: return "parallelism";
+    case FormCharacteristic::kSphericity: return "sphericity";
   }
   return "unknown";
 }
@@ -142,8 +134,8 @@ std::unique_ptr<ResistanceLaw> SurfaceType::MakeLaw(std::string_view name) const
   if (std::find(names.begin(), names.end(), name) == names.end()) {
     std::string offered;
     for (const auto& n : names) offered += (offered.empty() ? "" : ", ") + n;
-    throw UserError("unknown resistance law '" + std::string(name) +
-                    "'; this surface offers: " + (offered.empty() ? "none" : offered));
+    throw UserError("unknown resistance law '" + std::string(name) + "'; this surface offers: " +
+                    (offered.empty() ? "none" : offered));
   }
   auto law = DoMakeLaw(name);
   if (!law) throw UnsupportedError("resistance law '" + std::string(name) + "' is not available");
