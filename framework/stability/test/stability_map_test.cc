@@ -1,0 +1,2 @@
+#include "framework/stability/stability_map.h"
+#include <gtest/gtest.h>
