@@ -1,0 +1,155 @@
+// Runs the real `fitfeel stability` binary on the paper case 1 scene (with the registry's test
+// device, found through FITFEEL_PLUGIN_PATH; the cylindrical plugin comes from the build tree).
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
+const fs::path kBuild = FITFEEL_TEST_BUILD_DIR;
+const fs::path kScene = kSource / "framework/stability/test/case1_still.yaml";
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string Slurp(const fs::path& file) {
+  std::string text;
+  if (FILE* f = std::fopen(file.c_str(), "r")) {
+    char buffer[4096];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+    std::fclose(f);
+  }
+  return text;
+}
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+fs::path EmptyFolder(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_stability_test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+Result Stability(const std::string& arguments, const fs::path& cwd) {
+  const fs::path out = cwd.parent_path() / (cwd.filename().string() + ".out");
+  const fs::path err = cwd.parent_path() / (cwd.filename().string() + ".err");
+  const std::string command = "cd '" + cwd.string() + "' && FITFEEL_PLUGIN_PATH='" +
+                              (kBuild / "test-plugins/good").string() + "' '" +
+                              (kBuild / "bin/fitfeel").string() + "' stability " + arguments +
+                              " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  Result result;
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.out = Slurp(out);
+  result.err = Slurp(err);
+  return result;
+}
+
+// Columns of one CSV line.
+std::vector<std::string> Split(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+  return out;
+}
+
+TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
+  const fs::path dir = EmptyFolder("map");
+  const Result r = Stability("'" + kScene.string() +
+                                 "' --rate '500 Hz,1 kHz' --damping '0 N*s/m' --per-decade 4 "
+                                 "--horizon '1 s' -o map.csv",
+                             dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> lines = Lines(Slurp(dir / "map.csv"));
+  // 2 methods x 2 rates x 1 damping x (13 log-spaced + k_p + Lame) stiffnesses.
+  ASSERT_EQ(lines.size(), 1u + 2u * 2u * 15u);
+  EXPECT_EQ(lines[0],
+            "method,rate_Hz,stiffness_N_per_m,damping_Ns_per_m,bound_ok,stable,energy_growth_J,"
+            "peak_force_N");
+  int case_rows = 0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> c = Split(lines[i]);
+    ASSERT_EQ(c.size(), 8u) << lines[i];
+    const double k = std::stod(c[2]);
+    EXPECT_LE(std::stod(c[7]), 7.9) << lines[i];  // PHANTOM Desktop peak force
+    if (c[0] == "coupled") {
+      EXPECT_EQ(c[5], "1") << lines[i];
+    }
+    if (k == 3.665e9 || k == 7.33e9) {
+      ++case_rows;
+      EXPECT_EQ(c[4], "0");
+      EXPECT_EQ(c[5], c[0] == "coupled" ? "1" : "0") << lines[i];
+    }
+  }
+  EXPECT_EQ(case_rows, 8);
+  EXPECT_THAT(r.out, HasSubstr("PHANTOM Desktop"));
+  EXPECT_THAT(r.out, HasSubstr("3.665e+09 N/m at the device"));
+  EXPECT_THAT(r.out, HasSubstr("map.csv"));
+}
+
+TEST(StabilityCommand, DeviceAndForceScaleChangeTheMap) {
+  const fs::path dir = EmptyFolder("touch");
+  const Result r = Stability("'" + kScene.string() +
+                                 "' --device touch --force-scale 0.01 --rate '1 kHz' "
+                                 "--damping 0Ns/m --per-decade 2 --horizon '0.5 s' -o m.csv",
+                             dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("Touch"));
+  const std::string csv = Slurp(dir / "m.csv");
+  EXPECT_THAT(csv, HasSubstr("coupled,1000,36650000,0,0,1,"));
+  for (const std::string& line : Lines(csv)) {
+    if (line.rfind("method", 0) == 0) continue;
+    EXPECT_LE(std::stod(Split(line)[7]), 3.3) << line;  // Touch peak force
+  }
+}
+
+TEST(StabilityCommand, BadInputExitsTwoAndWritesNothing) {
+  const fs::path dir = EmptyFolder("bad");
+  const std::string scene = "'" + kScene.string() + "'";
+  struct Case {
+    std::string arguments;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {scene + " --device nosuch -o m.csv", "nosuch"},
+      {scene + " --rate '1 km' -o m.csv", "--rate"},
+      {scene + " --damping 3 -o m.csv", "--damping"},
+      {scene + " --stiffness-min '1 N/mm' --stiffness-max '1 N/m' -o m.csv", "stiffness"},
+      {scene + " --hand-mass '-1 kg' -o m.csv", "hand-mass"},
+      {scene + " --push '5 N' -o m.csv", "--push"},
+      {scene + " --force-scale 0 -o m.csv", "force-scale"},
+      {scene + " -o missing/m.csv", "does not exist"},
+      {"'" + (dir / "nosuch.yaml").string() + "' -o m.csv", "nosuch.yaml"},
+  };
+  for (const Case& c : cases) {
+    const Result r = Stability(c.arguments, dir);
+    EXPECT_EQ(r.exit_code, 2) << c.arguments << "\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr(c.message)) << c.arguments;
+    EXPECT_FALSE(fs::exists(dir / "m.csv")) << c.arguments;
+  }
+  // No temporary file left behind either.
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+}  // namespace
