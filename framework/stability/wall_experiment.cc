@@ -85,9 +85,19 @@ WallOutcome RunWallExperiment(const WallExperiment& e) {
     y_rest = e.push_force / e.stiffness + e.push_force / kc;
   }
   const double m = e.hand_mass;
-  auto energy = [&](double y, double v) {
-    return 0.5 * m * v * v + 0.5 * k_static * (y - y_rest) * (y - y_rest);
+  // The continuous (unsampled) system's energy above its resting state: kinetic, the wall's
+  // one-sided spring as the device can render it (its force capped at the peak rating) and the
+  // push's potential. Without sampling it can only decrease (dE/dt = -b v^2), so any growth is
+  // energy the sampled rendering created; it stays meaningful when an unstable hand bounces off
+  // the wall or drives it into saturation.
+  const double y_saturated = e.spec.max_force / k_static;
+  auto potential = [&](double y) {
+    const double inside = std::clamp(y, 0.0, y_saturated);
+    return 0.5 * k_static * inside * inside + e.spec.max_force * std::max(0.0, y - y_saturated) -
+           e.push_force * y;
   };
+  const double rest_potential = potential(y_rest);
+  auto energy = [&](double y, double v) { return 0.5 * m * v * v + potential(y) - rest_potential; };
 
   WallOutcome out;
   out.bound_margin = PassivityMargin(e.spec.damping, e.stiffness, e.damping, period);

@@ -58,8 +58,10 @@ struct WallExperiment {
 struct WallOutcome {
   double bound_margin = 0.0;  // b - (K T / 2 + |B|), N*s/m
   bool bound_ok = false;      // bound_margin > 0
-  // Oscillation energy of the hand about its resting point, E = m v^2 / 2 + K_s (y - y_rest)^2 / 2
-  // with K_s the static stiffness the hand feels (K direct; K_c in series with K coupled).
+  // Energy of the hand above its resting state, E = m v^2 / 2 + U_wall(y) - F_push y, less its
+  // value at rest, with U_wall the potential of a one-sided spring of the static stiffness the
+  // hand feels (K direct; K_c in series with K coupled) whose force saturates at the device's
+  // peak rating. For the continuous wall E only decreases.
   double initial_energy = 0.0;        // J, at the first contact
   double final_energy = 0.0;          // J, largest over the last tenth of the horizon
   double energy_growth = 0.0;         // J, final - initial
