@@ -224,6 +224,36 @@ TEST(FailureCases, ZeroClearanceGrazingContact) {
     EXPECT_LT(gap, previous_gap) << e;
     previous_gap = gap;
   }
+  // Grazing off the axis: a shaft of the bore's size whose surface is displaced by 2 um along x
+  // (V = e cos(beta)) fits at exactly one axis position, (-e, 0): the assembly space is a point
+  // away from the axis, whose opposite constraints meet exactly (or, after rounding, cross by an
+  // ulp and read as interference). Either way the spring pulls towards that point, and a sweep of
+  // the offset across it is continuous.
+  const double e = 2 * kUm;
+  const Joint shifted([=](int, int j) { return e * std::cos(2.0 * std::numbers::pi * j / 36); },
+                      [](int, int) { return 0.0; }, kp);
+  for (const Eigen::Vector2d& x :
+       {Eigen::Vector2d(-e, 0.0), Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(-e, 0.5 * kUm)}) {
+    const Wrench w = shifted.At(depth, x, kSpeed);
+    ASSERT_TRUE(w.AllFinite());
+    EXPECT_NEAR(w.force.x(), -kp * (x.x() + e), 1e-3 * kp * kUm) << x.transpose();
+    EXPECT_NEAR(w.force.z(), -kp * x.y(), 1e-3 * kp * kUm) << x.transpose();
+  }
+  auto offset_jump = [&](double h) {
+    double worst = 0.0;
+    Eigen::Vector3d previous = shifted.At(depth, {-e - 0.5 * kUm, 0.1 * kUm}, kSpeed).force;
+    for (double u = -e - 0.5 * kUm + h; u <= -e + 0.5 * kUm; u += h) {
+      const Eigen::Vector3d f = shifted.At(depth, {u, 0.1 * kUm}, kSpeed).force;
+      worst = std::max(worst, (f - previous).norm());
+      previous = f;
+    }
+    return worst;
+  };
+  const double coarse = offset_jump(0.01 * kUm);
+  EXPECT_GT(coarse, 0.0);
+  EXPECT_LT(offset_jump(0.005 * kUm), 0.6 * coarse);
+  ExpectContinuous(shifted, -1e-3, shifted.analyzer.max_depth() + 1e-3, {-e, 0.2 * kUm},
+                   "grazing off the axis");
   // Along the insertion, grazing all the way.
   ExpectContinuous(grazing, -1e-3, grazing.analyzer.max_depth() + 1e-3, offset, "grazing");
 }
