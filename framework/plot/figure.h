@@ -33,7 +33,7 @@ struct LineChart {
   std::vector<LinePanel> panels;  // drawn top to bottom
 };
 
-// A labelled value on a colour bar, e.g. a tolerance limit.
+// A labelled value on a colour bar (e.g. a tolerance limit) or an axis.
 struct ColourMark {
   double value = 0.0;
   std::string label;
@@ -53,6 +53,8 @@ struct HeatMap {
   std::optional<double> colour_min;
   std::optional<double> colour_max;
   std::vector<ColourMark> colour_marks;
+  // Labelled horizontal lines across the map at these y values (e.g. a force direction).
+  std::vector<ColourMark> y_lines;
   double y_tic_step = 0.0;  // spacing of the y tics, 0 = gnuplot's choice (e.g. 90 for degrees)
 };
 

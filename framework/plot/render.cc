@@ -143,6 +143,22 @@ void CheckIncreasing(const Eigen::VectorXd& v, const char* what) {
   }
 }
 
+// About five to ten round values (1, 2 or 5 times a power of ten apart) within [low, high].
+std::vector<double> NiceTics(double low, double high) {
+  const double span = high - low;
+  const double power = std::pow(10.0, std::floor(std::log10(span / 5.0)));
+  double step = power;
+  for (const double factor : {1.0, 2.0, 5.0, 10.0}) {
+    step = factor * power;
+    if (span / step <= 10.0) break;
+  }
+  std::vector<double> tics;
+  for (double tic = std::ceil(low / step) * step; tic <= high + 1e-9 * span; tic += step) {
+    tics.push_back(std::abs(tic) < 1e-9 * span ? 0.0 : tic);
+  }
+  return tics;
+}
+
 }  // namespace
 
 void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
@@ -243,10 +259,17 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
   title_lines.insert(title_lines.end(), chart.subtitle.begin(), chart.subtitle.end());
   std::ostringstream body;
   body << "reset\nset encoding utf8\n" << PaletteCommand();
+  body << "set style textbox opaque fillcolor rgb 'white' noborder margins 2,1\n";
   body << "set multiplot layout " << panels << ",1 title " << QuoteLines(title_lines)
        << " font ',14'\n";
   // The right margin leaves room for the colour bar's labelled tolerance limits.
-  body << "set lmargin 12\nset rmargin 30\nset tics out\n";
+  // The right margin holds the colour bar, its longest tic label and the colour-bar label.
+  std::size_t longest_mark = 6;
+  for (const auto& map : chart.panels) {
+    for (const auto& mark : map.colour_marks)
+      longest_mark = std::max(longest_mark, mark.label.size());
+  }
+  body << "set lmargin 12\nset rmargin " << longest_mark + 6 << "\nset tics out\n";
   for (int p = 0; p < panels; ++p) {
     const HeatMap& map = chart.panels[static_cast<std::size_t>(p)];
     Eigen::VectorXd x_lower, x_upper, y_lower, y_upper;
@@ -277,14 +300,33 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     } else {
       body << "set ytics autofreq\n";
     }
-    body << "set cbtics autofreq\n";
-    if (!map.colour_marks.empty()) {
-      body << "set cbtics add (";
-      for (std::size_t k = 0; k < map.colour_marks.size(); ++k) {
-        if (k != 0) body << ", ";
-        body << QuoteForGnuplot(map.colour_marks[k].label) << " " << Num(map.colour_marks[k].value);
+    // Round-number tics, minus those that would print over a labelled mark.
+    body << "set cbtics (";
+    bool first = true;
+    for (const double tic : NiceTics(low, high)) {
+      bool near_mark = false;
+      for (const auto& mark : map.colour_marks) {
+        near_mark = near_mark || std::abs(tic - mark.value) < 0.09 * (high - low);
       }
-      body << ")\n";
+      if (near_mark) continue;
+      body << (first ? "" : ", ") << "'" << Num(tic) << "' " << Num(tic);
+      first = false;
+    }
+    for (const auto& mark : map.colour_marks) {
+      body << (first ? "" : ", ") << QuoteForGnuplot(mark.label) << " " << Num(mark.value);
+      first = false;
+    }
+    body << ")\n";
+    body << "unset arrow\nunset label\n";
+    for (std::size_t k = 0; k < map.y_lines.size(); ++k) {
+      // Black under white dashes: visible on the dark and the light end of the colour map alike.
+      const std::string y = Num(map.y_lines[k].value);
+      body << "set arrow from graph 0, first " << y << " to graph 1, first " << y
+           << " nohead front lw 4 lc rgb 'black'\n";
+      body << "set arrow from graph 0, first " << y << " to graph 1, first " << y
+           << " nohead front lw 2 dt 2 lc rgb 'white'\n";
+      body << "set label " << QuoteForGnuplot(map.y_lines[k].label) << " at graph 0.01, first " << y
+           << " offset 0,0.8 front textcolor rgb 'black' boxed\n";
     }
     const std::string name = "map" + std::to_string(p) + ".dat";
     std::string data;
@@ -303,7 +345,7 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     }
     WriteText(work.path() / name, data);
     if (regular) {
-      body << "plot '" << name << "' using 1:2:3 with image pixels notitle\n";
+      body << "plot '" << name << "' using 1:2:3 with image notitle\n";
     } else {
       // Cells of uneven size: one filled box per cell, its half-widths in columns 3 and 4.
       body << "plot '" << name
