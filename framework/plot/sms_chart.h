@@ -36,6 +36,25 @@ struct ToleranceSpaceGrid {
   Eigen::VectorXd angle;
   Eigen::MatrixXd value;  // axial.size() x angle.size()
 };
+// Axial extent of a grid's rows: boundaries halfway between row centres, the end rows as wide as
+// their neighbours' spacing. Needs two rows or more.
+FITFEEL_API double MatingLength(const SurfaceGrid& grid);
+
+// Depth at which the mating surfaces first overlap completely: the shorter one's length.
+FITFEEL_API double FullInsertionDepth(const SkinModelShape& inner, const SkinModelShape& outer);
+
+// The tolerance space S_T = V_outer - V_inner at insertion depth `depth` (m), with the alignment of
+// the contact analyzers (framework/model/contact_analyzer.h, MatingPose): depth 0 puts the inner
+// part's leading end (its largest axial coordinate) at the outer part's entrance (its smallest),
+// and at depth D an inner point s behind its leading end faces the outer surface D - s past the
+// entrance. Cells are piecewise constant; the overlap is sampled at `samples_per_row` evenly
+// spaced positions per row of the finer grid there, so every slice between row boundaries shows.
+// Axial positions of the result are measured from the outer part's entrance. Each inner column
+// faces the outer column nearest in angle. Throws UserError when the surfaces do not overlap.
+FITFEEL_API ToleranceSpaceGrid ToleranceSpaceAtDepth(const SkinModelShape& inner,
+                                                     const SkinModelShape& outer, double depth,
+                                                     int samples_per_row = 4);
+
 FITFEEL_API HeatMap MakeToleranceSpaceMap(const PartSpec& inner, const PartSpec& outer,
                                           const ToleranceSpaceGrid& space,
                                           const std::string& where);

@@ -69,7 +69,8 @@ TEST(Render, RegularHeatMapWritesPngAndSvg) {
   EXPECT_TRUE(testing::IsPng(dir.path() / "maps.png"));
   EXPECT_TRUE(testing::IsSvg(dir.path() / "maps.svg"));
   // The colour bar carries the tolerance limits as labelled tics.
-  EXPECT_NE(testing::ReadFile(dir.path() / "maps.svg").find("upper limit +4 µm"), std::string::npos);
+  EXPECT_NE(testing::ReadFile(dir.path() / "maps.svg").find("upper limit +4 µm"),
+            std::string::npos);
 }
 
 TEST(Render, IrregularHeatMapWritesPng) {

@@ -89,3 +89,68 @@ TEST(MakeSmsChart, RendersBothPartsAndTheToleranceSpace) {
 
 }  // namespace
 }  // namespace fitfeel::plot
+
+namespace fitfeel::plot {
+namespace {
+
+// A shaft of 60 rows x 1 mm whose V encodes its row (0.1 um per row) and column (0.001 um per
+// column), in a bushing of 20 rows x 1 mm with V = 10 um everywhere.
+struct Pair {
+  SkinModelShape shaft = testing::SyntheticSms(kShaft, 60, 72, 60e-3, 0.0);
+  SkinModelShape bushing = testing::SyntheticSms(kBushing, 20, 72, 20e-3, 0.0);
+  Pair() {
+    for (int i = 0; i < 60; ++i) {
+      for (int j = 0; j < 72; ++j) shaft.variation(shaft.grid.index(i, j)) = 1e-7 * i + 1e-9 * j;
+    }
+    bushing.variation.setConstant(10e-6);
+  }
+};
+
+TEST(ToleranceSpaceAtDepth, FullInsertionFacesTheShaftsLeadingRows) {
+  const Pair p;
+  EXPECT_NEAR(MatingLength(p.shaft.grid), 60e-3, 1e-15);
+  const double depth = FullInsertionDepth(p.shaft, p.bushing);
+  EXPECT_NEAR(depth, 20e-3, 1e-15);
+  const ToleranceSpaceGrid space = ToleranceSpaceAtDepth(p.shaft, p.bushing, depth, 4);
+  ASSERT_EQ(space.axial.size(), 80);
+  EXPECT_NEAR(space.axial(0), 0.125e-3, 1e-15);  // from the bushing's entrance
+  // Next to the entrance sits the shaft's row 40 (20 mm behind its leading end), at the far end
+  // its leading row 59.
+  EXPECT_NEAR(space.value(0, 0), 10e-6 - 40e-7, 1e-15);
+  EXPECT_NEAR(space.value(79, 5), 10e-6 - 59e-7 - 5e-9, 1e-15);
+  EXPECT_NEAR(space.value(41, 0), 10e-6 - 50e-7, 1e-15);  // 10.375 mm in: row 50
+}
+
+TEST(ToleranceSpaceAtDepth, PartialDepthOverlapsOnlyTheEntrance) {
+  const Pair p;
+  const ToleranceSpaceGrid space = ToleranceSpaceAtDepth(p.shaft, p.bushing, 5e-3, 4);
+  EXPECT_NEAR(space.axial(space.axial.size() - 1), 5e-3 - 0.125e-3, 1e-12);
+  EXPECT_NEAR(space.value(0, 0), 10e-6 - 55e-7, 1e-15);
+  // Past the bushing (depth > its length), the shaft's trailing part leaves through its far end.
+  const ToleranceSpaceGrid late = ToleranceSpaceAtDepth(p.shaft, p.bushing, 70e-3, 4);
+  EXPECT_NEAR(late.axial(0), 10e-3 + 0.125e-3, 1e-12);
+  EXPECT_NEAR(late.value(0, 0), 10e-6, 1e-15);  // shaft row 0 faces 10 mm past the entrance
+}
+
+TEST(ToleranceSpaceAtDepth, NoOverlapIsRefused) {
+  const Pair p;
+  EXPECT_THROW(ToleranceSpaceAtDepth(p.shaft, p.bushing, 0.0), UserError);
+  EXPECT_THROW(ToleranceSpaceAtDepth(p.shaft, p.bushing, 80e-3), UserError);
+  EXPECT_THROW(ToleranceSpaceAtDepth(p.shaft, p.bushing, -1e-3), UserError);
+}
+
+TEST(ToleranceSpaceAtDepth, ColumnsFaceTheNearestAngle) {
+  Pair p;
+  p.bushing = testing::SyntheticSms(kBushing, 20, 36, 20e-3, 0.0);
+  for (int i = 0; i < 20; ++i) {
+    for (int k = 0; k < 36; ++k) p.bushing.variation(p.bushing.grid.index(i, k)) = 1e-6 * k;
+  }
+  const ToleranceSpaceGrid space = ToleranceSpaceAtDepth(p.shaft, p.bushing, 20e-3, 1);
+  // Shaft column j at (j + 0.5) * 5 deg; bushing column k at (k + 0.5) * 10 deg: j = 10 (52.5 deg)
+  // is nearest to k = 5 (55 deg), j = 71 (357.5 deg) to k = 35 (355 deg).
+  EXPECT_NEAR(space.value(0, 10), 5e-6 - 40e-7 - 10e-9, 1e-15);
+  EXPECT_NEAR(space.value(0, 71), 35e-6 - 40e-7 - 71e-9, 1e-15);
+}
+
+}  // namespace
+}  // namespace fitfeel::plot
