@@ -83,8 +83,9 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
   HeatMapChart chart;
   chart.title =
       "Contact pressure of " + data.scenario + (data.law.empty() ? "" : " · law " + data.law);
-  chart.subtitle = {"axial resistance F_y = " + FormatNewtons(data.fy_N) +
-                    "   radial resistance F_r = " + FormatNewtons(radial) + direction};
+  chart.subtitle = {"resultants at the run's tick at depth " + Millimetres(data.force_depth_mm) +
+                    ": axial resistance F_y = " + FormatNewtons(data.fy_N) +
+                    ", radial resistance F_r = " + FormatNewtons(radial) + direction};
   chart.panels = {std::move(map)};
   return chart;
 }

@@ -34,6 +34,7 @@ struct PressureMapData {
   Eigen::VectorXd interference;            // delta per cell, m (>= 0)
   double pressure_per_interference = 0.0;  // Pa/m
   double fx_N = 0.0, fy_N = 0.0, fz_N = 0.0;
+  double force_depth_mm = 0.0;  // depth of the tick the forces come from (nearest to depth_mm)
 };
 
 // Pressure map in MPa over axial position (mm) x direction angle (degrees), with the axial and

@@ -127,6 +127,11 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   const std::size_t t = index.at("t_s"), depth = index.at("depth_mm");
   const std::size_t fx = index.at("fx_N"), fy = index.at("fy_N"), fz = index.at("fz_N");
 
+  // The pose columns are optional: all three or none.
+  const bool has_pose = index.count("x_mm") && index.count("z_mm") && index.count("angle_rad");
+  const std::size_t x = has_pose ? index.at("x_mm") : 0, z = has_pose ? index.at("z_mm") : 0;
+  const std::size_t angle = has_pose ? index.at("angle_rad") : 0;
+
   ConstrainedTrace trace;
   std::string line;
   int line_number = 1;
@@ -156,6 +161,11 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
     trace.fx_N.push_back(number(fx));
     trace.fy_N.push_back(number(fy));
     trace.fz_N.push_back(number(fz));
+    if (has_pose) {
+      trace.x_mm.push_back(number(x));
+      trace.z_mm.push_back(number(z));
+      trace.angle_rad.push_back(number(angle));
+    }
   }
   if (trace.t_s.empty()) {
     throw UserError(file.string() +

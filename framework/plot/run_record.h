@@ -35,6 +35,11 @@ struct ConstrainedTrace {
   std::vector<double> fx_N;
   std::vector<double> fy_N;
   std::vector<double> fz_N;
+  // The moving part's radial offset and twist (MatingPose), when the trace has the columns x_mm,
+  // z_mm and angle_rad; empty otherwise.
+  std::vector<double> x_mm;
+  std::vector<double> z_mm;
+  std::vector<double> angle_rad;
 };
 
 struct RunRecord {

@@ -63,6 +63,7 @@ PressureMapData Data() {
   data.fx_N = 0.0;
   data.fy_N = -350.0;
   data.fz_N = -2.0;
+  data.force_depth_mm = 12.0;
   return data;
 }
 
