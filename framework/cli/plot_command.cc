@@ -1,4 +1,5 @@
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -31,7 +32,7 @@ void AddTrace(CLI::App& plot) {
   struct Options {
     std::vector<std::string> dirs;
     std::string output;
-    bool log_axial = false;
+    bool log_scale = false;
   };
   auto options = std::make_shared<Options>();
   auto* cmd = plot.add_subcommand(
@@ -42,15 +43,36 @@ void AddTrace(CLI::App& plot) {
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")
       ->required();
-  cmd->add_flag("--log", options->log_axial,
-                "logarithmic axial-force axis (runs that differ by orders of magnitude)");
+  cmd->add_flag("--log", options->log_scale,
+                "logarithmic force axes (runs that differ by orders of magnitude)");
   cmd->callback([options] {
     const auto outputs = plot::ResolveOutputs(options->output);
     std::vector<plot::RunRecord> runs;
     for (const auto& dir : options->dirs) runs.push_back(plot::LoadRun(dir));
-    plot::Render(plot::MakeTraceChart(runs, options->log_axial), outputs);
+    plot::Render(plot::MakeTraceChart(runs, options->log_scale), outputs);
     PrintWritten(outputs);
   });
+}
+
+// A run's summary names its scenario file as the run was given it: relative to the folder the run
+// started in, which for the bundled scenarios is the source tree. Looked up like `fitfeel run`
+// does: as given, then under $FITFEEL_SOURCE_DIR.
+fs::path FindRunScenario(const std::string& file) {
+  std::error_code ec;
+  if (fs::is_regular_file(file, ec)) return file;
+  std::string searched = "'" + file + "'";
+  const fs::path given(file);
+  if (given.is_relative()) {
+    if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source != nullptr && *source) {
+      const fs::path there = fs::path(source) / given;
+      if (fs::is_regular_file(there, ec)) return there;
+      searched += " and '" + there.string() + "'";
+    } else {
+      searched += " (FITFEEL_SOURCE_DIR is not set)";
+    }
+  }
+  throw UserError("the run's scenario file was not found at " + searched +
+                  "; give --scenario FILE");
 }
 
 // Loads the plugins the way `run` and `validate` do, saying which libraries were refused.
@@ -129,14 +151,8 @@ void AddPressure(CLI::App& plot) {
       }
       file = *run.summary.scenario_file;
     }
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) {
-      throw UserError("the run's scenario file '" + file +
-                      "' was not found (paths are relative to where the run was started); give "
-                      "--scenario FILE");
-    }
     const auto registry = LoadPlugins();
-    Scene scene = LoadScene(file, *registry);
+    Scene scene = LoadScene(FindRunScenario(file), *registry);
     if (scene.name != run.summary.scenario) {
       throw UserError("scenario file '" + file + "' holds scenario '" + scene.name +
                       "', but the run in " + options->dir + " was of '" + run.summary.scenario +

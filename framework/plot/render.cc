@@ -204,11 +204,36 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
     body << "set title " << QuoteForGnuplot(panel.title) << " font ',13'\n";
     body << "set xlabel " << QuoteForGnuplot(panel.x_label) << "\n";
     body << "set ylabel " << QuoteForGnuplot(panel.y_label) << "\n";
+    // gnuplot warns about (and we refuse) an empty autoscaled range, so a flat panel gets an
+    // explicit one around its value.
+    double y_low = std::numeric_limits<double>::infinity(), y_high = -y_low;
+    for (const auto& series : panel.series) {
+      for (std::size_t k = 0; k < series.y.size(); ++k) {
+        const double y = series.y[k];
+        if (std::isfinite(series.x[k]) && std::isfinite(y) && (!panel.log_y || y > 0.0)) {
+          y_low = std::min(y_low, y);
+          y_high = std::max(y_high, y);
+        }
+      }
+    }
+    const bool flat = y_high - y_low <= 1e-9 * std::max(std::abs(y_high), 1e-300);
     if (panel.log_y) {
-      body << "set logscale y\nset yrange [*:*]\n";
+      body << "set logscale y\n";
+      if (flat) {
+        body << "set yrange [" << Num(y_low / 2.0) << ":" << Num(y_high * 2.0) << "]\n";
+      } else {
+        body << "set yrange [*:*]\n";
+      }
     } else {
-      body << "unset logscale y\n"
-           << (panel.y_from_zero ? "set yrange [0:*]\n" : "set yrange [*:*]\n");
+      body << "unset logscale y\n";
+      const double pad = y_high == 0.0 ? 1.0 : 0.1 * std::abs(y_high);
+      if (panel.y_from_zero) {
+        body << "set yrange [0:" << (y_high > 0.0 ? "*" : Num(pad)) << "]\n";
+      } else if (flat) {
+        body << "set yrange [" << Num(y_low - pad) << ":" << Num(y_high + pad) << "]\n";
+      } else {
+        body << "set yrange [*:*]\n";
+      }
     }
     body << "plot ";
     for (std::size_t s = 0; s < panel.series.size(); ++s) {

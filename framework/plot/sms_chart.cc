@@ -24,12 +24,15 @@ std::string Micrometres(double metres) {
 }
 
 std::string SizeText(const PartSpec& part) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%g mm", part.size.nominal / kMillimetre);
-  std::string text = buffer;
-  if (!part.size.iso_code.empty()) return text + " " + part.size.iso_code;
-  return text + " (" + Micrometres(part.size.lower_deviation) + " / " +
-         Micrometres(part.size.upper_deviation) + " on the diameter)";
+  char buffer[96];
+  if (!part.size.iso_code.empty()) {
+    std::snprintf(buffer, sizeof buffer, "%g mm %s", part.size.nominal / kMillimetre,
+                  part.size.iso_code.c_str());
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%g mm %+g/%+g µm", part.size.nominal / kMillimetre,
+                  part.size.lower_deviation / kMicrometre, part.size.upper_deviation / kMicrometre);
+  }
+  return buffer;
 }
 
 // Angles in degrees on [0, 360): the map's vertical axis then reads as a compass around the axis.
@@ -234,7 +237,8 @@ HeatMapChart MakeSmsChart(const std::string& scenario, std::vector<HeatMap> maps
   chart.subtitle = {
       "V: radial deviation from nominal (> 0: shaft fatter, bore wider) · "
       "S_T: radial clearance (< 0: interference)",
-      "colour bars span the tolerance limits"};
+      "labelled colour-bar tics: the size limits (half the diametral deviations) and their "
+      "clearances"};
   chart.panels = std::move(maps);
   return chart;
 }

@@ -36,10 +36,13 @@ void DecimateKeepingPeaks(std::vector<double>* x, std::vector<double>* y, std::s
 }
 
 std::string FormatNewtons(double value) {
-  const double magnitude = std::abs(value);
-  const int decimals = magnitude >= 100.0 ? 0 : magnitude >= 10.0 ? 1 : magnitude >= 1.0 ? 2 : 3;
+  // Whole newtons from 1000 N up, three significant digits below (0.000123 N stays readable).
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f N", decimals, value);
+  if (std::abs(value) >= 1000.0) {
+    std::snprintf(buffer, sizeof buffer, "%.0f N", value);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.3g N", value);
+  }
   return buffer;
 }
 
@@ -56,7 +59,7 @@ std::string StatsText(const ResistanceStats& stats) {
 
 }  // namespace
 
-LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_axial) {
+LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_scale) {
   if (runs.empty()) throw UserError("no run folder to plot");
   LineChart chart;
   chart.title = "Assembly resistance along the insertion (constrained stage)";
@@ -64,13 +67,13 @@ LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_axial) {
                   "insertion depth (mm)",
                   "axial resistance |F_y| (N)",
                   true,
-                  log_axial,
+                  log_scale,
                   {}};
   LinePanel radial{"Radial resistance",
                    "insertion depth (mm)",
                    "radial resistance sqrt(F_x² + F_z²) (N)",
                    true,
-                   false,
+                   log_scale,
                    {}};
   for (const auto& run : runs) {
     const auto& trace = run.trace;

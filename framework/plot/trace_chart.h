@@ -24,9 +24,9 @@ FITFEEL_API std::string FormatNewtons(double value);
 
 // The resistance chart of `fitfeel plot trace`: axial resistance |F_y| (top) and radial resistance
 // sqrt(F_x^2 + F_z^2) (bottom) against insertion depth, one curve per run, labelled with the
-// scenario, the law and the summary's mean/min/max. `log_axial` draws the axial panel on a
-// logarithmic axis, for runs whose resistances differ by orders of magnitude (an interference fit
+// scenario, the law and the summary's mean/min/max. `log_scale` draws both force axes
+// logarithmic, for runs whose resistances differ by orders of magnitude (an interference fit
 // beside a clearance fit). Throws UserError for no runs.
-FITFEEL_API LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_axial = false);
+FITFEEL_API LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_scale = false);
 
 }  // namespace fitfeel::plot

@@ -74,7 +74,7 @@ TEST(MakePressureChart, PressureIsCoefficientTimesInterferenceInMegapascal) {
   EXPECT_NEAR(map.values(15, 40), 5.8333, 1e-9);
   EXPECT_EQ(map.values(0, 0), 0.0);
   EXPECT_THAT(chart.subtitle[0], HasSubstr("F_y = -350 N"));
-  EXPECT_THAT(chart.subtitle[0], HasSubstr("F_r = 2.00 N toward 270°"));
+  EXPECT_THAT(chart.subtitle[0], HasSubstr("F_r = 2 N toward 270°"));
   ASSERT_EQ(map.y_lines.size(), 1u);
   EXPECT_NEAR(map.y_lines[0].value, 270.0, 1e-9);
 }

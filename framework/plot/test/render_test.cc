@@ -93,6 +93,21 @@ TEST(Render, ConstantMapGetsAUsableColourRange) {
   EXPECT_TRUE(testing::IsPng(dir.path() / "zero.png"));
 }
 
+TEST(Render, FlatAndZeroCurvesRenderOnLinearAndLogAxes) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  LineChart chart;
+  chart.title = "flat";
+  chart.panels.push_back(
+      {"constant, log", "x (mm)", "y (N)", true, true, {{"c", {0, 1, 2}, {2, 2, 2}}}});
+  chart.panels.push_back(
+      {"zero, from 0", "x (mm)", "y (N)", true, false, {{"z", {0, 1, 2}, {0, 0, 0}}}});
+  chart.panels.push_back(
+      {"constant", "x (mm)", "y (N)", false, false, {{"c", {0, 1, 2}, {-3, -3, -3}}}});
+  Render(chart, ResolveOutputs(dir.path() / "flat.png"));
+  EXPECT_TRUE(testing::IsPng(dir.path() / "flat.png"));
+}
+
 TEST(Render, MalformedDataIsRefusedBeforeGnuplotRuns) {
   ScratchDir dir;
   const auto out = ResolveOutputs(dir.path() / "x.png");

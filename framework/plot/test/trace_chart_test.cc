@@ -40,8 +40,10 @@ TEST(DecimateKeepingPeaks, ShortCurvesAreUntouched) {
 TEST(FormatNewtons, PrecisionFollowsMagnitude) {
   EXPECT_EQ(FormatNewtons(1099.6), "1100 N");
   EXPECT_EQ(FormatNewtons(12.345), "12.3 N");
-  EXPECT_EQ(FormatNewtons(0.3), "0.300 N");
-  EXPECT_EQ(FormatNewtons(-2.5), "-2.50 N");
+  EXPECT_EQ(FormatNewtons(0.3), "0.3 N");
+  EXPECT_EQ(FormatNewtons(0.00010023), "0.0001 N");
+  EXPECT_EQ(FormatNewtons(588.36), "588 N");
+  EXPECT_EQ(FormatNewtons(-2.5), "-2.5 N");
 }
 
 TEST(MakeTraceChart, OneLabelledCurvePerRunInEachPanel) {
@@ -56,7 +58,7 @@ TEST(MakeTraceChart, OneLabelledCurvePerRunInEachPanel) {
     EXPECT_THAT(panel.y_label, HasSubstr("(N)"));
   }
   EXPECT_THAT(chart.panels[0].series[0].label, HasSubstr("paper-case1-h7js6 · law gps"));
-  EXPECT_THAT(chart.panels[0].series[0].label, HasSubstr("mean 12.0 N, min 10.8 N, max 13.2 N"));
+  EXPECT_THAT(chart.panels[0].series[0].label, HasSubstr("mean 12 N, min 10.8 N, max 13.2 N"));
   EXPECT_THAT(chart.panels[1].series[1].label, HasSubstr("paper-case1-h7g6 · law ve1"));
   // Axial panel plots |fy|; radial plots hypot(fx, fz) = hypot(0.5, 2).
   const auto& axial = chart.panels[0].series[0].y;
