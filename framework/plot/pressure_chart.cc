@@ -83,9 +83,12 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
   HeatMapChart chart;
   chart.title =
       "Contact pressure of " + data.scenario + (data.law.empty() ? "" : " · law " + data.law);
-  chart.subtitle = {"resultants at the run's tick at depth " + Millimetres(data.force_depth_mm) +
-                    ": axial resistance F_y = " + FormatNewtons(data.fy_N) +
-                    ", radial resistance F_r = " + FormatNewtons(radial) + direction};
+  chart.subtitle = {"axial resistance F_y = " + FormatNewtons(data.fy_N) +
+                    "     radial resistance F_r = " + FormatNewtons(radial) + direction};
+  if (std::abs(data.force_depth_mm - data.depth_mm) > 1e-6) {
+    chart.subtitle.push_back("(forces of the run's tick nearest this depth, at " +
+                             Millimetres(data.force_depth_mm) + ")");
+  }
   chart.panels = {std::move(map)};
   return chart;
 }

@@ -378,8 +378,9 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     }
   }
   body << "unset multiplot\n";
-  const int height =
-      kTitleHeight + 22 * static_cast<int>(chart.subtitle.size()) + panels * kHeatPanelHeight;
+  // A lone map gets more height: it is the whole picture, not one of a stack.
+  const int height = kTitleHeight + 22 * static_cast<int>(chart.subtitle.size()) +
+                     (panels == 1 ? 440 : panels * kHeatPanelHeight);
   RenderBody(body.str(), height, outputs, work);
 }
 
