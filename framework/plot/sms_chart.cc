@@ -19,7 +19,8 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 std::string Micrometres(double metres) {
   char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%+.2f µm", metres / kMicrometre);
+  // + 0.0 turns an ISO table's -0 deviation into +0.
+  std::snprintf(buffer, sizeof buffer, "%+.2f µm", metres / kMicrometre + 0.0);
   return buffer;
 }
 
@@ -30,7 +31,8 @@ std::string SizeText(const PartSpec& part) {
                   part.size.iso_code.c_str());
   } else {
     std::snprintf(buffer, sizeof buffer, "%g mm %+g/%+g µm", part.size.nominal / kMillimetre,
-                  part.size.lower_deviation / kMicrometre, part.size.upper_deviation / kMicrometre);
+                  part.size.lower_deviation / kMicrometre + 0.0,
+                  part.size.upper_deviation / kMicrometre + 0.0);
   }
   return buffer;
 }

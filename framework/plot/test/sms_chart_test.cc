@@ -45,6 +45,12 @@ TEST(MakeSkinProfileMap, UnwrapsRowsAndColumnsInMicrometresAndDegrees) {
   EXPECT_THAT(map.colour_label, HasSubstr("(µm)"));
 }
 
+TEST(MakeSkinProfileMap, NegativeZeroLimitPrintsAsPlusZero) {
+  const PartSpec bore = SyntheticPart("bore", Role::kOuter, -0.0, 21e-6, "H7");
+  const HeatMap map = MakeSkinProfileMap(bore, SyntheticSms(bore, 10, 12, 20e-3, 0.0));
+  EXPECT_EQ(map.colour_marks[0].label, "EI/2 +0.00 µm");
+}
+
 TEST(MakeSkinProfileMap, RefusesAShapeThatDoesNotMatchItsGrid) {
   SkinModelShape sms = SyntheticSms(kShaft, 10, 12, 60e-3, 0.0);
   sms.variation.conservativeResize(50);
