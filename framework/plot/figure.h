@@ -24,7 +24,7 @@ struct LinePanel {
   std::string x_label;
   std::string y_label;
   bool y_from_zero = false;  // start the y axis at 0 (magnitudes)
-  bool log_y = false;        // logarithmic y axis; points <= 0 are left out
+  bool log_y = false;        // logarithmic y axis over at most 5 decades; points <= 0 left out
   std::vector<Series> series;
 };
 

@@ -24,6 +24,7 @@ constexpr int kWidth = 1100;
 constexpr int kLinePanelHeight = 400;
 constexpr int kHeatPanelHeight = 330;
 constexpr int kTitleHeight = 70;
+constexpr double kLogDecades = 5.0;
 
 std::string Num(double value) {
   char buffer[64];
@@ -222,7 +223,10 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       if (flat) {
         body << "set yrange [" << Num(y_low / 2.0) << ":" << Num(y_high * 2.0) << "]\n";
       } else {
-        body << "set yrange [*:*]\n";
+        // Near-zero values (a contact just closing) would stretch a log axis over ten decades
+        // and squash everything a reader looks at; the axis keeps kLogDecades below the peak.
+        body << "set yrange [" << Num(std::max(y_low, y_high * std::pow(10.0, -kLogDecades)))
+             << ":*]\n";
       }
     } else {
       body << "unset logscale y\n";
