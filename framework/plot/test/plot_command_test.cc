@@ -119,6 +119,33 @@ TEST(PlotCommand, SmsOfAMissingScenarioExitsTwo) {
   EXPECT_TRUE(NoImages(dir.path()));
 }
 
+// The real cylindrical surface and simulated device plugins on the paper's scenario. They are part
+// of the build once the cylindrical generator and the runtime have landed; before that this build
+// has nothing to load the scenario with.
+const fs::path kPlugins = fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins";
+bool HaveCase1Plugins() {
+  return fs::exists(kPlugins / "libfitfeel_surface_cylindrical.so") &&
+         fs::exists(kPlugins / "libfitfeel_device_simulated.so");
+}
+const fs::path kCase1 = fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "paper-case1-h7js6.yaml";
+
+TEST(PlotCommand, SmsOfThePaperScenarioWritesPngAndSvg) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  if (!HaveCase1Plugins()) GTEST_SKIP() << "no cylindrical surface or simulated device plugin";
+  ScratchDir dir;
+  const Result r = Fitfeel({"sms", kCase1.string(), "-o", "sms"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(testing::IsPng(dir.path() / "sms.png"));
+  EXPECT_TRUE(testing::IsSvg(dir.path() / "sms.svg"));
+  const Result one =
+      Fitfeel({"sms", kCase1.string(), "--part", "shaft", "-o", "shaft.png"}, dir.path());
+  EXPECT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_TRUE(testing::IsPng(dir.path() / "shaft.png"));
+  const Result bad = Fitfeel({"sms", kCase1.string(), "--part", "gear", "-o", "g.png"}, dir.path());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("no part 'gear'"));
+}
+
 TEST(PlotCommand, TraceWritesPngAndSvg) {
   FITFEEL_REQUIRE_GNUPLOT();
   ScratchDir dir;
