@@ -58,6 +58,19 @@ class TempFileGuard {
   std::string path_;
 };
 
+// Whether gnuplot's stderr says anything about the chart. Fontconfig's own complaints (an
+// unwritable font cache in a locked-down CI home, say) concern font lookup, not the data.
+bool HasChartMessages(const std::string& messages) {
+  std::istringstream lines(messages);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (line.rfind("Fontconfig", 0) == 0) continue;
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::string_view Extension(ImageFormat format) {
@@ -167,7 +180,9 @@ void Gnuplot::Run(const fs::path& script, const fs::path& work_dir) const {
   posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
 
   const std::string program = executable_.string();
-  std::vector<char*> argv = {const_cast<char*>(program.c_str()),
+  // -d: ignore the user's ~/.gnuplot and the system gnuplotrc, so charts look the same for all.
+  std::string defaults = "-d";
+  std::vector<char*> argv = {const_cast<char*>(program.c_str()), defaults.data(),
                              const_cast<char*>(script_path.c_str()), nullptr};
   pid_t pid = 0;
   const int spawned = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
@@ -187,7 +202,7 @@ void Gnuplot::Run(const fs::path& script, const fs::path& work_dir) const {
                              std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : -1) +
                              (messages.empty() ? "" : ": " + messages));
   }
-  if (WEXITSTATUS(status) != 0 || !messages.empty()) {
+  if (WEXITSTATUS(status) != 0 || HasChartMessages(messages)) {
     throw std::runtime_error("gnuplot failed (exit status " + std::to_string(WEXITSTATUS(status)) +
                              "): " + messages);
   }

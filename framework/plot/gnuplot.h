@@ -54,9 +54,10 @@ class FITFEEL_API Gnuplot {
   explicit Gnuplot(std::filesystem::path executable) : executable_(std::move(executable)) {}
   const std::filesystem::path& executable() const { return executable_; }
 
-  // Runs `gnuplot <script>` with `work_dir` as its working folder, stdin from /dev/null. Throws
-  // std::runtime_error with gnuplot's messages when it exits non-zero, is killed, or writes
-  // anything to stderr (its warnings mean a chart lost data).
+  // Runs `gnuplot -d <script>` (default settings, no ~/.gnuplot) with `work_dir` as its working
+  // folder, stdin from /dev/null. Throws std::runtime_error with gnuplot's messages when it exits
+  // non-zero, is killed, or writes anything but Fontconfig notes to stderr (its warnings mean a
+  // chart lost data).
   void Run(const std::filesystem::path& script, const std::filesystem::path& work_dir) const;
 
  private:

@@ -78,6 +78,28 @@ TEST(Gnuplot, ScriptErrorIsReportedWithGnuplotsMessage) {
   }
 }
 
+TEST(Gnuplot, WarningsAreErrors) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  testing::WriteFile(dir.path() / "warn.gp", "print 'ok'\nset xrange [1:1]\nplot x\n");
+  try {
+    Gnuplot::Find().Run(dir.path() / "warn.gp", dir.path());
+    FAIL() << "a script with a warning passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("range"));
+  }
+}
+
+TEST(Gnuplot, IgnoresTheUsersInitFile) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  // An init file that would make every run fail; -d must keep gnuplot from reading it.
+  testing::WriteFile(dir.path() / ".gnuplot", "this is not gnuplot\n");
+  testing::WriteFile(dir.path() / "ok.gp", "a = 1\n");
+  testing::ScopedEnv home("HOME", dir.path().c_str());
+  EXPECT_NO_THROW(Gnuplot::Find().Run(dir.path() / "ok.gp", dir.path()));
+}
+
 TEST(Gnuplot, BackquotesInLabelsAreNotRun) {
   FITFEEL_REQUIRE_GNUPLOT();
   ScratchDir dir;
