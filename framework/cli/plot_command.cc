@@ -160,6 +160,7 @@ void AddPressure(CLI::App& plot) {
     }
     // The run's seed rebuilds the skin model shapes it ran on.
     const plot::SceneShapes shapes = plot::GenerateSceneShapes(std::move(scene), run.summary.seed);
+    plot::CheckSameGrids(shapes, run.summary.inner_grid, run.summary.outer_grid);
     const plot::PreparedContact contact = plot::PrepareContact(shapes, run.summary.law);
     plot::Render(plot::MakePressureChart(plot::MakePressureData(
                      run, options->depth_mm, *contact.analyzer, *contact.law, shapes.inner.grid)),

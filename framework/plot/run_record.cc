@@ -100,6 +100,21 @@ RunSummary LoadSummary(const fs::path& file) {
   if (root.contains("seed") && root.at("seed").is_number_unsigned()) {
     summary.seed = root.at("seed").get<std::uint64_t>();
   }
+  if (root.contains("grid") && root.at("grid").is_object()) {
+    const Json& grid = root.at("grid");
+    const auto read = [&](const char* part) -> std::optional<std::pair<int, int>> {
+      if (!grid.contains(part)) return std::nullopt;
+      const Json& g = grid.at(part);
+      if (!g.is_object() || !g.contains("rows") || !g.contains("columns") ||
+          !g.at("rows").is_number_integer() || !g.at("columns").is_number_integer()) {
+        throw UserError(file.string() + ": grid." + part +
+                        ": expected {rows, columns} integers, found " + g.dump());
+      }
+      return std::make_pair(g.at("rows").get<int>(), g.at("columns").get<int>());
+    };
+    summary.inner_grid = read("inner");
+    summary.outer_grid = read("outer");
+  }
   summary.axial = ReadStats(root, "axial_resistance_N", file);
   summary.radial = ReadStats(root, "radial_resistance_N", file);
   return summary;

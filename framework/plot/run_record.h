@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/core/export.h"
@@ -25,6 +26,9 @@ struct RunSummary {
   std::optional<std::uint64_t> seed;
   ResistanceStats axial;   // axial_resistance_N
   ResistanceStats radial;  // radial_resistance_N
+  // grid.inner / grid.outer {rows, columns} of the skin model shapes, when the run recorded them.
+  std::optional<std::pair<int, int>> inner_grid;
+  std::optional<std::pair<int, int>> outer_grid;
 };
 
 // The rows of a run's trace.csv in the constrained stage, in file order (SI is not used here on

@@ -29,6 +29,21 @@ SceneShapes GenerateSceneShapes(Scene scene, std::optional<std::uint64_t> seed) 
   return shapes;
 }
 
+void CheckSameGrids(const SceneShapes& shapes, std::optional<std::pair<int, int>> run_inner,
+                    std::optional<std::pair<int, int>> run_outer) {
+  const auto check = [&](const char* which, const SurfaceGrid& grid,
+                         const std::optional<std::pair<int, int>>& recorded) {
+    if (!recorded || (recorded->first == grid.rows && recorded->second == grid.columns)) return;
+    throw UserError("the scenario now gives the " + std::string(which) + " part a grid of " +
+                    std::to_string(grid.rows) + " x " + std::to_string(grid.columns) +
+                    " cells, the run had " + std::to_string(recorded->first) + " x " +
+                    std::to_string(recorded->second) +
+                    ": the scenario file changed since the run; run it again");
+  };
+  check("inner", shapes.inner.grid, run_inner);
+  check("outer", shapes.outer.grid, run_outer);
+}
+
 PreparedContact PrepareContact(const SceneShapes& shapes, const std::string& law) {
   const Scene& scene = shapes.scene;
   PreparedContact prepared;

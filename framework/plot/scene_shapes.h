@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
@@ -28,6 +29,13 @@ struct SceneShapes {
 // discretizer or generator.
 FITFEEL_API SceneShapes GenerateSceneShapes(Scene scene,
                                             std::optional<std::uint64_t> seed = std::nullopt);
+
+// Throws UserError when the shapes' grids differ from those a run recorded (rows x columns of the
+// inner and outer part): the scenario file changed since the run, so its pictures would not be
+// the run's. Unrecorded grids are not checked.
+FITFEEL_API void CheckSameGrids(const SceneShapes& shapes,
+                                std::optional<std::pair<int, int>> run_inner,
+                                std::optional<std::pair<int, int>> run_outer);
 
 struct PreparedContact {
   std::unique_ptr<ContactAnalyzer> analyzer;

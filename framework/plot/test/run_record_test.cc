@@ -38,6 +38,20 @@ TEST(LoadRun, ReadsSummaryAndOnlyConstrainedRows) {
   EXPECT_DOUBLE_EQ(run.trace.fz_N.front(), 2.0);
 }
 
+TEST(LoadSummary, ReadsTheRecordedGrids) {
+  ScratchDir dir;
+  const auto file = dir.path() / "summary.json";
+  const std::string stats = "{\"mean\": 1, \"min\": 0, \"max\": 2}";
+  WriteFile(file, "{\"scenario\": \"s\", \"axial_resistance_N\": " + stats +
+                      ", \"radial_resistance_N\": " + stats +
+                      ", \"grid\": {\"inner\": {\"rows\": 40, \"columns\": 360}, "
+                      "\"outer\": {\"rows\": 20, \"columns\": 360}}}");
+  const RunSummary summary = LoadSummary(file);
+  EXPECT_EQ(summary.inner_grid, std::make_pair(40, 360));
+  EXPECT_EQ(summary.outer_grid, std::make_pair(20, 360));
+  EXPECT_TRUE(summary.law.empty());
+}
+
 TEST(LoadRun, MissingFolderIsRefused) {
   ScratchDir dir;
   EXPECT_THAT(MessageOf([&] { LoadRun(dir.path() / "absent"); }), HasSubstr("does not exist"));

@@ -86,6 +86,19 @@ TEST(ScenePipeline, SmsAndPressureChartsRender) {
   EXPECT_TRUE(testing::IsPng(dir.path() / "pressure.png"));
 }
 
+TEST(CheckSameGrids, RefusesShapesOfAChangedScenario) {
+  ScratchDir dir;
+  const SceneShapes shapes = GenerateSceneShapes(Load(WriteScenario(dir.path(), "lame")));
+  EXPECT_NO_THROW(CheckSameGrids(shapes, std::make_pair(30, 36), std::make_pair(30, 36)));
+  EXPECT_NO_THROW(CheckSameGrids(shapes, std::nullopt, std::nullopt));
+  try {
+    CheckSameGrids(shapes, std::make_pair(40, 36), std::nullopt);
+    FAIL() << "a changed grid was accepted";
+  } catch (const UserError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("30 x 36 cells, the run had 40 x 36"));
+  }
+}
+
 TEST(PrepareContact, LawWithoutPressureModelIsRefusedClearly) {
   ScratchDir dir;
   const SceneShapes shapes = GenerateSceneShapes(Load(WriteScenario(dir.path(), "ideal")));
