@@ -80,14 +80,9 @@ void PlanarContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
   }
   CheckShape(inner, inner_sms);
   CheckShape(outer, outer_sms);
-  const auto textured = [](const PartSpec& p) {
-    return p.texture.waviness > 0.0 || p.texture.rz > 0.0 || p.texture.ra > 0.0;
-  };
-  if (settings.texture == TextureMode::kExpected && (textured(inner) || textured(outer))) {
-    throw UnsupportedError(
-        "the planar surface does not yet model the expected interference of surface texture "
-        "(model.texture: expected); use model.texture: sampled, or leave texture out");
-  }
+  texture_ = settings.texture == TextureMode::kExpected
+                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
+                 : ExpectedInterferenceTable();
   layout_ = LayoutOf(inner_sms.grid);
   const FaceLayout outer_layout = LayoutOf(outer_sms.grid);
   if (outer_layout.faces != layout_.faces ||
@@ -171,34 +166,44 @@ void PlanarContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
       const std::size_t a = Index(static_cast<int>(k), axis);
       lower_[a] = lo;
       upper_[a] = hi;
-      if (lo <= hi) continue;
-      empty_[a] = 1;
-      // Balance of the two faces' Winkler forces: f(x) = sum_+ w (x - S)+ - sum_- w (-x - S)+ is
-      // nondecreasing, <= 0 at x = hi and >= 0 at x = lo.
-      auto force = [&](double x) {
-        double f = 0.0;
-        for (std::size_t c = 0; c < gap.size(); ++c) {
-          const int face = layout_.face_of(static_cast<int>(c % static_cast<std::size_t>(n)));
-          if (face == plus) f += weight[c] * std::max(0.0, x - gap[c]);
-          if (face == minus) f -= weight[c] * std::max(0.0, -x - gap[c]);
+      // Where the axis sits for the interference sums: the middle of the interval in clearance
+      // (the texture's expected interference is then the least the faces can have, shared evenly
+      // by the two faces, as the cylindrical analyzer takes the polygon's centroid), or the
+      // balance position.
+      double x = 0.5 * (lo + hi);
+      if (lo > hi) {
+        empty_[a] = 1;
+        // Balance of the two faces' Winkler forces: f(x) = sum_+ w (x - S)+ - sum_- w (-x - S)+
+        // is nondecreasing, <= 0 at x = hi and >= 0 at x = lo.
+        auto force = [&](double p) {
+          double f = 0.0;
+          for (std::size_t c = 0; c < gap.size(); ++c) {
+            const int face = layout_.face_of(static_cast<int>(c % static_cast<std::size_t>(n)));
+            if (face == plus) f += weight[c] * std::max(0.0, p - gap[c]);
+            if (face == minus) f -= weight[c] * std::max(0.0, -p - gap[c]);
+          }
+          return f;
+        };
+        double left = hi, right = lo;
+        for (int it = 0;
+             it < 200 && right - left > 1e-15 * (std::abs(left) + std::abs(right)) + 1e-18; ++it) {
+          const double mid = 0.5 * (left + right);
+          (force(mid) < 0.0 ? left : right) = mid;
         }
-        return f;
-      };
-      double left = hi, right = lo;
-      for (int it = 0;
-           it < 200 && right - left > 1e-15 * (std::abs(left) + std::abs(right)) + 1e-18; ++it) {
-        const double mid = 0.5 * (left + right);
-        (force(mid) < 0.0 ? left : right) = mid;
+        x = 0.5 * (left + right);
       }
-      const double x = 0.5 * (left + right);
       balance_[a] = x;
+      // Interference at that position: the sharp max(0, -gap) or, with expected texture, the
+      // expected interference of the equivalent rough-on-smooth contact. None is possible with a
+      // sharp contact inside the interval.
+      if (!empty_[a] && texture_.sharp()) continue;
       const Eigen::Vector2d u_plus =
           axis == 0 ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0);
       for (std::size_t c = 0; c < gap.size(); ++c) {
         const int face = layout_.face_of(static_cast<int>(c % static_cast<std::size_t>(n)));
-        double delta = 0.0;
-        if (face == plus) delta = std::max(0.0, x - gap[c]);
-        if (face == minus) delta = std::max(0.0, -x - gap[c]);
+        if (face != plus && face != minus) continue;
+        const double along = face == plus ? x : -x;
+        const double delta = texture_(gap[c] - along);
         if (delta <= 0.0) continue;
         volume += weight[c] * delta;
         max_delta = std::max(max_delta, delta);
@@ -266,6 +271,7 @@ void PlanarContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   const Eigen::Vector2d away = pose.offset - anchor;
   out->offset_distance = pose.offset.norm();
   out->penetration = away.norm();
+  if (out->penetration > 0.0) out->penetration_direction = away / out->penetration;
   out->offset_angle = out->penetration > 0.0 ? std::atan2(away.y(), away.x())
                                              : std::atan2(pose.offset.y(), pose.offset.x());
   out->assembly_extent = std::max(0.0, out->offset_distance - out->penetration);
@@ -298,7 +304,7 @@ void PlanarContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
       const double along = (face % 2 == 0 ? 1.0 : -1.0) * anchor[axis];
       const Eigen::Index ci = static_cast<Eigen::Index>(i) * n + j;
       const Eigen::Index co = static_cast<Eigen::Index>(r) * n + j;
-      (*delta)[ci] = std::max(0.0, along - (v_outer_[co] - v_inner_[ci]));
+      (*delta)[ci] = texture_(v_outer_[co] - v_inner_[ci] - along);
     }
   }
 }

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/texture_contact.h"
 #include "surfaces/planar/planar_grid.h"
 
 namespace fitfeel::planar {
@@ -30,15 +31,19 @@ namespace fitfeel::planar {
 //
 // Tables per depth step (prepare): per axis the interval, the interference flag and the balance
 // position; the engaged length and area; the interference volume sum(area * delta), its largest
-// delta and resultant at the anchor. Sharp contact: the texture enters only when sampled into V.
+// delta and resultant, at the balance position under interference and at the middle of the
+// interval otherwise. delta is the sharp max(0, -gap), or with TextureMode::kExpected the expected
+// interference E[(X - gap)+] of the equivalent rough-on-smooth texture (texture_contact.h), which
+// is not zero inside the interval when the texture's band reaches across the gap.
 //
 // Per tick: linear interpolation between the two neighbouring steps of every scalar and of the
 // anchor (the nearest point of the interval, or the balance position), as in the cylindrical
 // analyzer, so forces are continuous in depth and offset. O(1), no allocation.
 //
 // ContactState's radial fields in the planar reading: offset_distance = |p|; penetration = the
-// distance from p to the anchor; offset_angle = the direction of p - anchor (the radial spring
-// pushes back along minus it); assembly_extent = offset_distance - penetration, clamped at 0.
+// distance from p to the anchor; penetration_direction = (p - anchor) / penetration (the radial
+// spring pushes back along minus it) and offset_angle its angle; assembly_extent =
+// offset_distance - penetration, clamped at 0.
 class PlanarContactAnalyzer final : public ContactAnalyzer {
  public:
   int depth_steps() const { return static_cast<int>(depth_.size()); }
@@ -72,6 +77,7 @@ class PlanarContactAnalyzer final : public ContactAnalyzer {
   std::vector<double> inner_edges_, outer_edges_;
   double inner_length_ = 0.0, outer_length_ = 0.0;
   Eigen::VectorXd v_inner_, v_outer_, inner_area_;
+  ExpectedInterferenceTable texture_;
 
   double step_ = 0.0, max_depth_ = 0.0;
   std::vector<double> depth_, length_, area_, volume_, max_delta_;

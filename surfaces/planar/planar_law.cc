@@ -67,8 +67,8 @@ void PlanarGpsLaw::DoEvaluate(const ContactState& contact, const MatingMotion& m
   const double pressure = PressurePerInterferenceAt(contact.engaged_length);
   const double k = stiffness_ > 0.0 ? stiffness_ : pressure * contact.engaged_area / faces_;
   const double lateral = k * contact.penetration;
-  out->force.x() = -lateral * std::cos(contact.offset_angle);
-  out->force.z() = -lateral * std::sin(contact.offset_angle);
+  out->force.x() = -lateral * contact.penetration_direction.x();
+  out->force.z() = -lateral * contact.penetration_direction.y();
   const double normal = lateral + pressure * contact.interference_volume;
   out->force.y() = -mu_ * normal * std::tanh(motion.velocity.y() / kFrictionSmoothingVelocity);
 }

@@ -35,8 +35,8 @@ inline constexpr double kFrictionSmoothingVelocity = 1e-3;
 
 // The planar law (paper eqs. 9-12 with the elastic model above):
 //  - lateral: a spring k on the distance of the part from its anchor (the assembly space's
-//    nearest point, or the balance position under interference), along minus the direction the
-//    analyzer reports (eq. 9 in one or two axes);
+//    nearest point, or the balance position under interference), along minus the analyzer's
+//    penetration_direction (eq. 9 in one or two axes);
 //  - axial: F_y = -mu (|F_lateral| + P(L) * V) tanh(v_y / v_s), V the analyzer's interference
 //    volume sum(delta * area) and P(L) the pressure per interference at the engaged length L:
 //    sum p ds = P * V (eq. 11).

@@ -84,6 +84,7 @@ TEST(PlanarLawTest, ClearanceSpringWithCoulombFrictionIsEquationNineInOneAxis) {
   state.engaged_area = 2 * 3e-3 * 40e-3;
   state.penetration = 3e-6;
   state.offset_angle = std::numbers::pi;  // pushed towards -x
+  state.penetration_direction = {-1.0, 0.0};
   MatingMotion motion;
   motion.velocity.y() = 0.01;
   Wrench w;
