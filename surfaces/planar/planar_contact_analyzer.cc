@@ -65,7 +65,9 @@ void PlanarContactAnalyzer::SlicesAt(double depth, std::vector<Slice>* slices) c
     if (hi <= 0.0 || lo >= outer_length_) continue;
     for (std::size_t r = 0; r + 1 < outer_edges_.size(); ++r) {
       const double overlap = std::min(hi, outer_edges_[r + 1]) - std::max(lo, outer_edges_[r]);
-      if (overlap > 0.0) {
+      // A sliver left by rounding where row boundaries coincide is no engagement: it would put
+      // a row that does not face this one into the minima.
+      if (overlap > min_overlap_) {
         slices->push_back({static_cast<int>(i), static_cast<int>(r), overlap});
       }
     }
@@ -105,6 +107,7 @@ void PlanarContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
     for (std::size_t i = 1; i < e->size(); ++i) min_row = std::min(min_row, (*e)[i] - (*e)[i - 1]);
   }
   if (settings.depth_step < 0.0) throw UserError("depth_step must not be negative");
+  min_overlap_ = 1e-9 * min_row;
   // Auto: the shortest row of either part; between row boundaries every tabulated quantity is
   // linear in depth or constant, so a finer step resolves nothing more.
   step_ = settings.depth_step > 0.0 ? settings.depth_step : min_row;

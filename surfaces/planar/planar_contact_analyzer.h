@@ -76,6 +76,7 @@ class PlanarContactAnalyzer final : public ContactAnalyzer {
   int axes_ = 1;
   std::vector<double> inner_edges_, outer_edges_;
   double inner_length_ = 0.0, outer_length_ = 0.0;
+  double min_overlap_ = 0.0;  // slices shorter than this are rounding slivers, m
   Eigen::VectorXd v_inner_, v_outer_, inner_area_;
   ExpectedInterferenceTable texture_;
 

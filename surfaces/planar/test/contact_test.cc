@@ -45,8 +45,8 @@ TEST(PlanarContactTest, UniformClearanceGivesASymmetricIntervalAndASpringBeyondI
   a.Evaluate(pose, &s);
   EXPECT_TRUE(s.engaged);
   EXPECT_FALSE(s.interference);
-  EXPECT_NEAR(s.engaged_length, 40e-3, 1e-15);
-  EXPECT_NEAR(s.engaged_area, 2 * 3e-3 * 40e-3, 1e-15);
+  EXPECT_NEAR(s.engaged_length, 40e-3, 1e-12);
+  EXPECT_NEAR(s.engaged_area, 2 * 3e-3 * 40e-3, 1e-14);
   EXPECT_EQ(s.penetration, 0.0);
   EXPECT_EQ(s.interference_volume, 0.0);
   pose.offset = {c1 + c2 + 4e-6, 0.0};
