@@ -61,6 +61,22 @@ double PairParallelism(const SurfaceGrid& grid, const FaceLayout& layout, int pa
   return worst;
 }
 
+double PairAxisStraightness(const SurfaceGrid& grid, const FaceLayout& layout, int pair,
+                            const Eigen::VectorXd& values) {
+  double worst = 0.0;
+  std::vector<double> y(grid.rows), m(grid.rows);
+  const int strips = layout.columns_per_face;
+  for (int q = 0; q < strips; ++q) {
+    for (int i = 0; i < grid.rows; ++i) {
+      y[i] = grid.row_position[i];
+      m[i] = 0.5 * (values[grid.index(i, 2 * pair * strips + q)] -
+                    values[grid.index(i, (2 * pair + 1) * strips + q)]);
+    }
+    worst = std::max(worst, MinZoneStraightness(y, m).width);
+  }
+  return worst;
+}
+
 std::vector<CharacteristicCheck> EvaluatePlanarCharacteristics(const PartSpec& part,
                                                                const SkinModelShape& sms) {
   const SurfaceGrid& grid = sms.grid;
@@ -102,6 +118,13 @@ std::vector<CharacteristicCheck> EvaluatePlanarCharacteristics(const PartSpec& p
       worst = std::max(worst, PairParallelism(grid, layout, p, sms.variation));
     }
     checks.push_back({"parallelism", worst, 0.0, it->second});
+  }
+  if (auto it = tol.find(FormCharacteristic::kAxisStraightness); it != tol.end()) {
+    double worst = 0.0;
+    for (int p = 0; p < layout.faces / 2; ++p) {
+      worst = std::max(worst, PairAxisStraightness(grid, layout, p, sms.variation));
+    }
+    checks.push_back({"axis_straightness", worst, 0.0, it->second});
   }
   return checks;
 }

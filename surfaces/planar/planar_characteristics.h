@@ -36,9 +36,15 @@ PlaneZone FaceFlatness(const SurfaceGrid& grid, const FaceLayout& layout, int fa
 double PairParallelism(const SurfaceGrid& grid, const FaceLayout& layout, int pair,
                        const Eigen::VectorXd& values);
 
+// Straightness of the pair's median line along y (ISO 1101, a median line's straightness), per
+// strip across the height: the median of a pair of faces normal to +-x sits at x = (V+ - V-) / 2.
+double PairAxisStraightness(const SurfaceGrid& grid, const FaceLayout& layout, int pair,
+                            const Eigen::VectorXd& values);
+
 // Every characteristic of the part's spec, evaluated on the skin model shape: the smallest and the
 // largest two-point size (opposite cells of a pair; ISO 14405-1 default) against the size limits,
-// then straightness, flatness and parallelism (largest over faces) when the spec has them.
+// then straightness, flatness, parallelism and axis straightness (largest over faces or pairs)
+// when the spec has them.
 std::vector<CharacteristicCheck> EvaluatePlanarCharacteristics(const PartSpec& part,
                                                                const SkinModelShape& sms);
 

@@ -99,8 +99,8 @@ SkinModelShape PlanarVariationGenerator::DoGenerate(const PartSpec& part, const 
   const PlanarGeometry& geometry = PlanarGeometryOf(part);
   const FaceLayout layout = LayoutOf(grid);
   if (layout.faces != geometry.faces()) {
-    throw UserError("part '" + part.name + "': its grid has " + std::to_string(layout.faces) +
-                    " faces, its geometry " + std::to_string(geometry.faces()));
+    throw UserError("part '" + part.name + "': its grid does not have the " +
+                    (geometry.faces() == 2 ? "2" : "4") + " faces of its geometry");
   }
   const double ei = part.size.lower_deviation;
   const double es = part.size.upper_deviation;
@@ -116,10 +116,17 @@ SkinModelShape PlanarVariationGenerator::DoGenerate(const PartSpec& part, const 
   const FaceTolerances face_tol{Tolerance(part, FormCharacteristic::kStraightness),
                                 Tolerance(part, FormCharacteristic::kFlatness)};
   const std::optional<double> parallelism = Tolerance(part, FormCharacteristic::kParallelism);
-  const double line_amplitude = Tightest({face_tol.straightness, face_tol.flatness, parallelism});
-  const double twist_amplitude = (face_tol.flatness || parallelism)
-                                     ? Tightest({face_tol.flatness, parallelism})
-                                     : line_amplitude;
+  const std::optional<double> axis = Tolerance(part, FormCharacteristic::kAxisStraightness);
+  // The bow of the pair's median (axis straightness) moves both faces alike; each face's own form
+  // gets what the face tolerances leave after it, so that a draw usually passes at once.
+  const double bow_amplitude =
+      axis ? std::min(*axis, Tightest({face_tol.straightness, face_tol.flatness, axis})) : 0.0;
+  const double line_amplitude = std::max(
+      0.0, Tightest({face_tol.straightness, face_tol.flatness, parallelism}) - bow_amplitude);
+  const double twist_amplitude =
+      std::max(0.0, ((face_tol.flatness || parallelism) ? Tightest({face_tol.flatness, parallelism})
+                                                        : line_amplitude) -
+                        bow_amplitude);
   const double band = 0.5 * (part.texture.waviness + part.texture.rz);
   const bool sample_texture = texture == TextureMode::kSampled && band > 0.0;
 
@@ -129,43 +136,60 @@ SkinModelShape PlanarVariationGenerator::DoGenerate(const PartSpec& part, const 
     // -1 .. 1 across the face's height.
     across[static_cast<std::size_t>(q)] = 2.0 * (q + 0.5) / strips - 1.0;
   }
+  auto cell = [&](int pair, int k, int i, int q) {
+    return grid.index(i, (2 * pair + k) * strips + q);
+  };
 
-  // Form (and sampled texture) of one face into `extra`, checked and regenerated (step 3).
-  auto draw_face = [&](int face, Eigen::VectorXd* form, Eigen::VectorXd* surface) {
-    const std::vector<double> line =
-        FormWave(grid.row_position, geometry.length(), line_amplitude, rng);
-    const std::vector<double> twist =
-        FormWave(grid.row_position, geometry.length(), twist_amplitude, rng);
-    for (int i = 0; i < grid.rows; ++i) {
-      for (int q = 0; q < strips; ++q) {
-        const int c = grid.index(i, face * strips + q);
-        (*form)[c] = line[static_cast<std::size_t>(i)] +
-                     0.5 * across[static_cast<std::size_t>(q)] * twist[static_cast<std::size_t>(i)];
-        (*surface)[c] = sample_texture ? TruncatedNormal(rng, band / 3.0, band) : 0.0;
+  // The pair's form and sampled texture: a bow of the median (+ on one face, - on the other: the
+  // faces are normal to opposite directions), then each face's line wave and twist.
+  auto draw_pair = [&](int pair) {
+    const std::vector<double> bow =
+        FormWave(grid.row_position, geometry.length(), bow_amplitude, rng);
+    for (int k = 0; k < 2; ++k) {
+      const double side = k == 0 ? 1.0 : -1.0;
+      const std::vector<double> line =
+          FormWave(grid.row_position, geometry.length(), line_amplitude, rng);
+      const std::vector<double> twist =
+          FormWave(grid.row_position, geometry.length(), twist_amplitude, rng);
+      for (int i = 0; i < grid.rows; ++i) {
+        const auto ii = static_cast<std::size_t>(i);
+        for (int q = 0; q < strips; ++q) {
+          const int c = cell(pair, k, i, q);
+          sms.form_part[c] =
+              side * bow[ii] + line[ii] + 0.5 * across[static_cast<std::size_t>(q)] * twist[ii];
+          sms.surface_part[c] = sample_texture ? TruncatedNormal(rng, band / 3.0, band) : 0.0;
+        }
       }
     }
   };
-  auto scale_face = [&](int face, double s) {
-    for (int i = 0; i < grid.rows; ++i) {
-      for (int q = 0; q < strips; ++q) {
-        const int c = grid.index(i, face * strips + q);
-        sms.form_part[c] *= s;
-        sms.surface_part[c] *= s;
+  auto scale_pair = [&](int pair, double factor) {
+    for (int k = 0; k < 2; ++k) {
+      for (int i = 0; i < grid.rows; ++i) {
+        for (int q = 0; q < strips; ++q) {
+          const int c = cell(pair, k, i, q);
+          sms.form_part[c] *= factor;
+          sms.surface_part[c] *= factor;
+        }
       }
     }
   };
-  auto generate_face = [&](int face) {
-    for (int attempt = 0;; ++attempt) {
-      draw_face(face, &sms.form_part, &sms.surface_part);
-      const Eigen::VectorXd combined = sms.form_part + sms.surface_part;
-      const double excess = FaceExcess(grid, layout, face, combined, face_tol);
-      if (excess <= 1.0) return;
-      if (attempt + 1 >= kMaxRegenerations) {
-        scale_face(face, std::isfinite(excess) ? kScaleMargin / excess : 0.0);
-        return;
-      }
-      ++sms.regenerations;
+  // Worst value / tolerance over every form and orientation characteristic of the pair. Each is
+  // homogeneous of degree one in the form (and texture) part, so one factor 1 / ratio brings all
+  // of them within their tolerances at once.
+  auto pair_ratio = [&](int pair) {
+    const Eigen::VectorXd combined = sms.form_part + sms.surface_part;
+    auto ratio = [](double value, double tol) {
+      if (tol > 0.0) return value / tol;
+      return value > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+    };
+    double worst = std::max(FaceExcess(grid, layout, 2 * pair, combined, face_tol),
+                            FaceExcess(grid, layout, 2 * pair + 1, combined, face_tol));
+    if (parallelism) {
+      worst = std::max(worst, ratio(PairParallelism(grid, layout, pair, combined), *parallelism));
     }
+    if (axis)
+      worst = std::max(worst, ratio(PairAxisStraightness(grid, layout, pair, combined), *axis));
+    return worst;
   };
 
   for (int pair = 0; pair < layout.faces / 2; ++pair) {
@@ -173,46 +197,36 @@ SkinModelShape PlanarVariationGenerator::DoGenerate(const PartSpec& part, const 
     const double half_deviation = 0.5 * Uniform(rng, ei, es);
     for (int k = 0; k < 2; ++k) {
       for (int i = 0; i < grid.rows; ++i) {
-        for (int q = 0; q < strips; ++q) {
-          sms.dimension_part[grid.index(i, (2 * pair + k) * strips + q)] = half_deviation;
-        }
+        for (int q = 0; q < strips; ++q) sms.dimension_part[cell(pair, k, i, q)] = half_deviation;
       }
     }
+    // Step 3: regenerate, then scale back.
     for (int attempt = 0;; ++attempt) {
-      generate_face(2 * pair);
-      generate_face(2 * pair + 1);
-      if (!parallelism) break;
-      const Eigen::VectorXd combined = sms.form_part + sms.surface_part;
-      const double value = PairParallelism(grid, layout, pair, combined);
-      if (value <= *parallelism) break;
+      draw_pair(pair);
+      const double worst = pair_ratio(pair);
+      if (worst <= 1.0) break;
       if (attempt + 1 >= kMaxRegenerations) {
-        const double s = *parallelism > 0.0 ? kScaleMargin * *parallelism / value : 0.0;
-        scale_face(2 * pair, s);
-        scale_face(2 * pair + 1, s);
+        scale_pair(pair, std::isfinite(worst) ? kScaleMargin / worst : 0.0);
         break;
       }
       ++sms.regenerations;
     }
     // Final clamp into the half-size limits, one factor for the pair.
-    double s = 1.0;
+    double factor = 1.0;
     for (int k = 0; k < 2; ++k) {
       for (int i = 0; i < grid.rows; ++i) {
         for (int q = 0; q < strips; ++q) {
-          const int c = grid.index(i, (2 * pair + k) * strips + q);
+          const int c = cell(pair, k, i, q);
           const double d = sms.dimension_part[c];
           const double e = sms.form_part[c] + sms.surface_part[c];
           const double v = d + e;
           if (v > 0.5 * es || v < 0.5 * ei) ++sms.scaled_back_cells;
-          if (e > 0.0) s = std::min(s, (0.5 * es - d) / e);
-          if (e < 0.0) s = std::min(s, (0.5 * ei - d) / e);
+          if (e > 0.0) factor = std::min(factor, (0.5 * es - d) / e);
+          if (e < 0.0) factor = std::min(factor, (0.5 * ei - d) / e);
         }
       }
     }
-    if (s < 1.0) {
-      s = std::max(0.0, s * kScaleMargin);
-      scale_face(2 * pair, s);
-      scale_face(2 * pair + 1, s);
-    }
+    if (factor < 1.0) scale_pair(pair, std::max(0.0, factor * kScaleMargin));
   }
   sms.variation = sms.dimension_part + sms.form_part + sms.surface_part;
   return sms;

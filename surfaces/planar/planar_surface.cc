@@ -14,7 +14,7 @@ namespace fitfeel::planar {
 
 std::vector<FormCharacteristic> PlanarSurface::form_characteristics() const {
   return {FormCharacteristic::kStraightness, FormCharacteristic::kFlatness,
-          FormCharacteristic::kParallelism};
+          FormCharacteristic::kParallelism, FormCharacteristic::kAxisStraightness};
 }
 
 std::unique_ptr<Discretizer> PlanarSurface::MakeDiscretizer() const {

@@ -102,5 +102,39 @@ TEST(PlanarGeneratorTest, TightStraightnessForcesRegenerationOrScaleBack) {
   EXPECT_GT(regenerations, 0);
 }
 
+TEST(PlanarGeneratorTest, AxisStraightnessIsTheMedianLinesAndIsDrawnWithinItsTolerance) {
+  PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  const SurfaceGrid g = PlanarDiscretizer().Discretize(key, Resolution{});
+  const FaceLayout layout = LayoutOf(g);
+  // A key bent into a parabola a y^2 (each flank moves with the median): median straightness
+  // a L^2 / 4 over a span L (oracles.md); sampled at 16 row centres with no sample at the vertex,
+  // the lowest samples sit half a pitch p off it: a ((L/2)^2 - (p/2)^2), L the centres' span.
+  const double a = 0.02, span = g.row_position[g.rows - 1] - g.row_position[0];
+  const double pitch = g.row_position[1] - g.row_position[0];
+  const double expected = a * (span * span / 4 - pitch * pitch / 4);
+  Eigen::VectorXd bent(g.size());
+  for (int c = 0; c < g.size(); ++c) {
+    const double y = g.row_position[c / g.columns] - 20e-3;
+    bent[c] = (layout.face_of(c % g.columns) == 0 ? 1.0 : -1.0) * a * y * y;
+  }
+  EXPECT_NEAR(PairAxisStraightness(g, layout, 0, bent), expected, 1e-15);
+  EXPECT_NEAR(FaceStraightness(g, layout, 0, bent), expected, 1e-15);
+  EXPECT_NEAR(FaceFlatness(g, layout, 1, bent).width, expected, 1e-15);
+
+  key.form.tolerance[FormCharacteristic::kAxisStraightness] = 10e-6;
+  key.form.tolerance[FormCharacteristic::kFlatness] = 12e-6;
+  double largest = 0.0;
+  for (int seed = 1; seed <= 60; ++seed) {
+    Rng rng(seed);
+    const SkinModelShape sms =
+        PlanarVariationGenerator().Generate(key, g, TextureMode::kExpected, rng);
+    for (const auto& check : EvaluatePlanarCharacteristics(key, sms)) {
+      EXPECT_LE(check.value, check.upper + 1e-12) << seed << " " << check.name;
+    }
+    largest = std::max(largest, PairAxisStraightness(g, layout, 0, sms.variation));
+  }
+  EXPECT_GT(largest, 0.3 * 10e-6);
+}
+
 }  // namespace
 }  // namespace fitfeel::planar
