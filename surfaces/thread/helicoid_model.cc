@@ -150,15 +150,19 @@ std::vector<CharacteristicCheck> EvaluateHelicoidCharacteristics(const PartSpec&
   const double d2_actual = d2 + (constant[0] + constant[1]) / std::sin(beta);
   const double pitch_deviation =
       0.5 * (slope_theta[0] - slope_theta[1]) * 2.0 * kPi / std::cos(beta);
-  auto flank_turn = [&](double tilt) {
-    return std::atan(std::tan(beta) - tilt / std::cos(beta)) - beta;
+  // A flank's half-angle deviation is reported, like every characteristic, as a length: the
+  // normal deviation it causes across the flank's height (r1 to r2), a monotone function of the
+  // angle, against the same function of the limits.
+  const double height = g.outer_radius() - g.inner_radius();
+  auto across_flank = [&](double turn) {
+    return -(std::tan(beta + turn) - std::tan(beta)) * std::cos(beta) * height;
   };
   const double e = g.flank_angle_error();
   return {
       {"pitch_diameter", d2_actual, d2 + part.size.lower_deviation, d2 + part.size.upper_deviation},
       {"pitch_deviation", pitch_deviation, -g.pitch_error(), g.pitch_error()},
-      {"flank_angle_deviation_a", flank_turn(slope_r[0]), -e, e},
-      {"flank_angle_deviation_b", flank_turn(slope_r[1]), -e, e},
+      {"flank_angle_deviation_a", slope_r[0] * height, across_flank(e), across_flank(-e)},
+      {"flank_angle_deviation_b", slope_r[1] * height, across_flank(e), across_flank(-e)},
   };
 }
 

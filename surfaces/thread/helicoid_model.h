@@ -42,7 +42,9 @@ class HelicoidVariationGenerator final : public VariationGenerator {
 
 // The three generated quantities, recovered from a skin model shape by a least-squares fit of
 // V = a + b theta + c (r - r_pitch) per flank (exact for what the generator draws): pitch
-// diameter, pitch deviation and both flanks' half-angle deviations, with their limits.
+// diameter, pitch deviation and both flanks' half-angle deviations, with their limits. All in
+// metres: a half-angle deviation as the normal deviation it causes across the flank's height,
+// -(tan(alpha/2 + d) - tan(alpha/2)) cos(alpha/2) (r2 - r1), a monotone function of d.
 std::vector<CharacteristicCheck> EvaluateHelicoidCharacteristics(const PartSpec& part,
                                                                  const SkinModelShape& sms);
 
