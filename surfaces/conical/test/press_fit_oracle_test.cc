@@ -1,0 +1,201 @@
+// The DIN 7190 closed forms (reference/oracles.md, "Press fit, cone") against the analyzer and
+// law with zero form and texture: a pin advanced a beyond first contact has the uniform radial
+// interference a * C / 2 (diametral a * C) over the hole's whole length.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "framework/core/wrench.h"
+#include "surfaces/conical/conical_contact_analyzer.h"
+#include "surfaces/conical/conical_discretizer.h"
+#include "surfaces/conical/conical_generator.h"
+#include "surfaces/conical/conical_law.h"
+#include "surfaces/conical/test/test_parts.h"
+
+namespace fitfeel::conical {
+namespace {
+
+constexpr double kMu = 0.15;
+constexpr double kTaper = 1.0 / 50.0;
+constexpr double kHoleLength = 20e-3;
+
+struct Model {
+  ConicalContactAnalyzer analyzer;
+  TaperPressFitLaw law;
+};
+
+void Prepare(Model* model, const PartSpec& pin, const PartSpec& hole, Resolution resolution,
+             std::uint64_t seed = 1) {
+  ModelSettings settings;
+  settings.friction = kMu;
+  settings.contact_stiffness = 1e6;
+  settings.resolution = resolution;
+  Rng rng(seed);
+  const ConicalDiscretizer discretizer;
+  const ConicalVariationGenerator generator;
+  const SkinModelShape pin_sms =
+      generator.Generate(pin, discretizer.Discretize(pin, resolution), TextureMode::kExpected, rng);
+  const SkinModelShape hole_sms = generator.Generate(hole, discretizer.Discretize(hole, resolution),
+                                                     TextureMode::kExpected, rng);
+  model->analyzer.Prepare(pin, pin_sms, hole, hole_sms, settings);
+  model->law.Prepare(pin, hole, settings);
+}
+
+Wrench Evaluate(const Model& model, double depth, double velocity, double spin = 0.0,
+                Eigen::Vector2d offset = Eigen::Vector2d::Zero()) {
+  MatingPose pose;
+  pose.depth = depth;
+  pose.offset = offset;
+  ContactState contact;
+  model.analyzer.Evaluate(pose, &contact);
+  MatingMotion motion;
+  motion.velocity.y() = velocity;
+  motion.angular_velocity.y() = spin;
+  Wrench wrench;
+  model.law.Evaluate(contact, motion, &wrench);
+  return wrench;
+}
+
+// Closed form: Lame at the mean diameter of the bore, DIN 7190 forces.
+struct Oracle {
+  double dm = 8e-3 + 0.5 * kTaper * kHoleLength;  // 8.2 mm
+  double tan_alpha = 0.5 * kTaper;
+  double Pressure(double advance, double d2 = 24e-3) const {
+    const double delta = 0.5 * advance * kTaper;  // radial; diametral advance * C
+    const double E = 210e9, nu = 0.3;
+    return (2.0 * delta / dm) /
+           ((1.0 - nu) / E + ((d2 * d2 + dm * dm) / (d2 * d2 - dm * dm) + nu) / E);
+  }
+  double In(double advance) const {
+    return Pressure(advance) * M_PI * dm * kHoleLength * (kMu + tan_alpha);
+  }
+  double Out(double advance) const {
+    return Pressure(advance) * M_PI * dm * kHoleLength * (kMu - tan_alpha);
+  }
+};
+
+TEST(ConicalLame, MatchesTheCylinderOracle) {
+  // oracles.md: d1 = 20 mm, d2 = 30 mm, steel, delta = 1 um -> 5.8333 MPa.
+  const Material steel = test::Steel();
+  EXPECT_NEAR(LamePressurePerInterference(20e-3, 30e-3, steel, steel) * 1e-6, 5.8333e6, 50.0);
+}
+
+TEST(ConicalPressFit, InterferenceIsAdvanceTimesTaper) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  for (double advance : {1e-6, 50e-6, 0.25e-3}) {
+    MatingPose pose;
+    pose.depth = kHoleLength + advance;
+    ContactState contact;
+    model.analyzer.Evaluate(pose, &contact);
+    EXPECT_TRUE(contact.interference);
+    EXPECT_NEAR(2.0 * contact.max_interference, advance * kTaper, 1e-15);  // diametral
+    const double area = M_PI * Oracle().dm * kHoleLength / std::cos(std::atan(0.5 * kTaper));
+    EXPECT_NEAR(contact.engaged_area, area, 1e-12 * area);
+    EXPECT_NEAR(contact.interference_volume, 0.5 * advance * kTaper * area, 1e-12 * area * advance);
+    EXPECT_NEAR(contact.pressure_resultant.norm(), 0.0, 1e-12 * contact.interference_volume);
+  }
+}
+
+TEST(ConicalPressFit, PressInAndOutForcesAreDin7190) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  const Oracle oracle;
+  for (double advance : {10e-6, 0.1e-3, 0.5e-3}) {
+    // 0.1 m/s is 100 smoothing velocities: tanh(100) = 1 to double precision.
+    const Wrench in = Evaluate(model, kHoleLength + advance, 0.1);
+    const Wrench out = Evaluate(model, kHoleLength + advance, -0.1);
+    EXPECT_NEAR(-in.force.y(), oracle.In(advance), 1e-9 * oracle.In(advance)) << advance;
+    EXPECT_NEAR(out.force.y(), oracle.Out(advance), 1e-9 * oracle.In(advance)) << advance;
+    EXPECT_NEAR(in.force.x(), 0.0, 1e-9 * oracle.In(advance));
+    EXPECT_NEAR(in.force.z(), 0.0, 1e-9 * oracle.In(advance));
+  }
+  // Worked figure for the report: 0.1 mm advance (2 um diametral interference).
+  const double p = oracle.Pressure(0.1e-3);
+  RecordProperty("pressure_MPa", std::to_string(p * 1e-6));
+  RecordProperty("F_in_N", std::to_string(oracle.In(0.1e-3)));
+  RecordProperty("F_out_N", std::to_string(oracle.Out(0.1e-3)));
+  EXPECT_NEAR(p * 1e-6, 22.620, 0.001);
+}
+
+TEST(ConicalPressFit, AtRestOnlyTheWedgeRemainsAndFrictionIsSmooth) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  const Oracle oracle;
+  const double advance = 0.1e-3;
+  const double N = oracle.Pressure(advance) * M_PI * oracle.dm * kHoleLength /
+                   std::cos(std::atan(oracle.tan_alpha));
+  const double sin_a = std::sin(std::atan(oracle.tan_alpha));
+  const double cos_a = std::cos(std::atan(oracle.tan_alpha));
+  EXPECT_NEAR(Evaluate(model, kHoleLength + advance, 0.0).force.y(), -N * sin_a, 1e-9 * N);
+  // At the smoothing velocity (along the generatrix) friction is tanh(1) of Coulomb's.
+  const double v = kFrictionSmoothingVelocity / cos_a;
+  EXPECT_NEAR(Evaluate(model, kHoleLength + advance, v).force.y(),
+              -N * (sin_a + kMu * cos_a * std::tanh(1.0)), 1e-9 * N);
+}
+
+TEST(ConicalPressFit, TurningThePinGivesTheFrictionTorque) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  const Oracle oracle;
+  const double advance = 0.1e-3;
+  const double N = oracle.Pressure(advance) * M_PI * oracle.dm * kHoleLength /
+                   std::cos(std::atan(oracle.tan_alpha));
+  const Wrench w = Evaluate(model, kHoleLength + advance, 0.0, 100.0);  // 100 rad/s: Coulomb
+  EXPECT_NEAR(w.torque.y(), -kMu * N * 0.5 * oracle.dm, 1e-9 * N * oracle.dm);
+}
+
+TEST(ConicalPressFit, ClearanceBeforeSeatingAndRadialContact) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  // 1 mm before seating: radial clearance 1 mm * tan(alpha) = 10 um all round.
+  const double depth = kHoleLength - 1e-3;
+  EXPECT_EQ(Evaluate(model, depth, 0.01).force.norm(), 0.0);
+  EXPECT_EQ(Evaluate(model, depth, 0.01, 0.0, Eigen::Vector2d(9.9e-6, 0.0)).force.norm(), 0.0);
+  const Wrench w = Evaluate(model, depth, 0.0, 0.0, Eigen::Vector2d(0.0, 12e-6));
+  EXPECT_LT(w.force.z(), 0.0);  // pushed back towards the axis
+  EXPECT_NEAR(w.force.x(), 0.0, 1e-9 * std::abs(w.force.z()));
+  EXPECT_LT(w.force.y(), 0.0);  // the wedge of the loaded side
+  // Not engaged before the pin reaches the entrance.
+  MatingPose pose;
+  pose.depth = -1e-3;
+  ContactState contact;
+  model.analyzer.Evaluate(pose, &contact);
+  EXPECT_FALSE(contact.engaged);
+}
+
+TEST(ConicalPressFit, ForceGrowsLinearlyWithAdvanceForAnyResolution) {
+  const Oracle oracle;
+  for (Resolution r : {Resolution{8, 8}, Resolution{13, 24}, Resolution{200, 72}}) {
+    Model model;
+    Prepare(&model, test::Pin(), test::Hole(), r);
+    for (double advance : {0.03e-3, 0.3e-3}) {
+      EXPECT_NEAR(-Evaluate(model, kHoleLength + advance, 0.1).force.y(), oracle.In(advance),
+                  1e-9 * oracle.In(advance));
+    }
+  }
+}
+
+TEST(ConicalPressFit, WithFormTheMeanForceStaysNearTheOracle) {
+  // Over many seeds, form deviations of a few um redistribute the pressure but a deep advance
+  // (10 um diametral) keeps every cell in contact, where the model is linear: the force then
+  // differs from the oracle only by the mean of S_T, i.e. the actual sizes.
+  PartSpec pin = test::Pin();
+  PartSpec hole = test::Hole();
+  pin.form.tolerance[FormCharacteristic::kRoundness] = 2e-6;
+  pin.form.tolerance[FormCharacteristic::kAxisStraightness] = 2e-6;
+  hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 2e-6;
+  const Oracle oracle;
+  const double advance = 0.5e-3;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Model model;
+    Prepare(&model, pin, hole, Resolution{20, 36}, seed);
+    const double f = -Evaluate(model, kHoleLength + advance, 0.1).force.y();
+    // Form zero-mean to within its amplitude (2 um) against 5 um radial interference.
+    EXPECT_GT(f, 0.4 * oracle.In(advance)) << seed;
+    EXPECT_LT(f, 1.6 * oracle.In(advance)) << seed;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::conical
