@@ -1,4 +1,5 @@
 #include "surfaces/conical/conical_contact_analyzer.h"
+#include "surfaces/conical/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +18,8 @@ void ConicalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSha
   const SurfaceGrid& pg = inner_sms.grid;
   const SurfaceGrid& hg = outer_sms.grid;
   if (pg.columns != hg.columns) {
-    throw UserError("taper pin and hole must share their column count (" +
-                    std::to_string(pg.columns) + " vs " + std::to_string(hg.columns) + ")");
+    throw UserError("taper pin and hole must share their column count (" + NumberText(pg.columns) +
+                    " vs " + NumberText(hg.columns) + ")");
   }
   pin_rows_ = pg.rows;
   hole_rows_ = hg.rows;

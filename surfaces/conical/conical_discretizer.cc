@@ -1,4 +1,5 @@
 #include "surfaces/conical/conical_discretizer.h"
+#include "surfaces/conical/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,11 +32,11 @@ SurfaceGrid ConicalDiscretizer::DoDiscretize(const PartSpec& part,
   // on each side; an axis needs three sections to be anything but straight.
   if (columns < 8 || columns % 2 != 0) {
     throw UserError("part '" + part.name + "': a cone needs an even number of columns >= 8, not " +
-                    std::to_string(columns));
+                    NumberText(columns));
   }
   if (rows < 3) {
     throw UserError("part '" + part.name + "': a cone needs at least 3 rows, not " +
-                    std::to_string(rows));
+                    NumberText(rows));
   }
   SurfaceGrid grid;
   grid.rows = rows;

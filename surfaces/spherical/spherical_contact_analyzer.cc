@@ -1,4 +1,5 @@
 #include "surfaces/spherical/spherical_contact_analyzer.h"
+#include "surfaces/spherical/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +18,8 @@ void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelS
   const SurfaceGrid& bg = inner_sms.grid;
   const SurfaceGrid& sg = outer_sms.grid;
   if (bg.columns != sg.columns) {
-    throw UserError("ball and socket must share their column count (" + std::to_string(bg.columns) +
-                    " vs " + std::to_string(sg.columns) + ")");
+    throw UserError("ball and socket must share their column count (" + NumberText(bg.columns) +
+                    " vs " + NumberText(sg.columns) + ")");
   }
   rows_ = sg.rows;
   columns_ = sg.columns;

@@ -1,4 +1,5 @@
 #include "surfaces/spherical/spherical_discretizer.h"
+#include "surfaces/spherical/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,12 +32,11 @@ SurfaceGrid SphericalDiscretizer::DoDiscretize(const PartSpec& part,
   // at least four points on each side.
   if (columns < 8 || columns % 2 != 0) {
     throw UserError("part '" + part.name +
-                    "': a sphere needs an even number of columns >= 8, not " +
-                    std::to_string(columns));
+                    "': a sphere needs an even number of columns >= 8, not " + NumberText(columns));
   }
   if (rows < 2) {
     throw UserError("part '" + part.name + "': a sphere needs at least 2 rows, not " +
-                    std::to_string(rows));
+                    NumberText(rows));
   }
   SurfaceGrid grid;
   grid.rows = rows;
