@@ -1,6 +1,19 @@
+// The framework's conformance suite on test/conformance.yaml. The scene's device is the registry's
+// test device (the SMS and the contact model do not depend on it): its folder joins the plugin
+// search path before the suite builds its registry.
+#include <cstdlib>
+#include <string>
+
 #include "framework/conformance/surface_conformance.h"
 
-// The suite's macro instantiates at global scope names declared in fitfeel::conformance.
-using namespace fitfeel::conformance;  // NOLINT(google-build-using-namespace)
+namespace {
+const bool kTestDeviceOnPath = [] {
+  const std::string path = std::string(FITFEEL_TEST_BUILD_DIR) + "/test-plugins/good";
+  return ::setenv("FITFEEL_PLUGIN_PATH", path.c_str(), 1) == 0;
+}();
+}  // namespace
 
+// The macro expands at global scope (it replaces operator new to count allocations in the tick),
+// so the suite's names are brought in.
+using namespace fitfeel::conformance;  // NOLINT(build/namespaces)
 FITFEEL_SURFACE_CONFORMANCE(Conical, "surfaces/conical/test/conformance.yaml");
