@@ -12,7 +12,10 @@ namespace fitfeel::conical {
 
 void ConicalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                        const PartSpec& outer, const SkinModelShape& outer_sms,
-                                       const ModelSettings&) {
+                                       const ModelSettings& settings) {
+  texture_ = settings.texture == TextureMode::kExpected
+                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
+                 : ExpectedInterferenceTable();
   const ConicalGeometry& pin = GeometryOf(inner);
   const ConicalGeometry& hole = GeometryOf(outer);
   const SurfaceGrid& pg = inner_sms.grid;
@@ -68,7 +71,7 @@ void ConicalContactAnalyzer::ForEachCell(const MatingPose& pose, Visit&& visit) 
     for (int j = 0; j < columns_; ++j) {
       const double hole_v = (1.0 - f) * hole_v_(k, j) + f * hole_v_(k1, j);
       const double gap = clearance + hole_v - pin_v_(i, j) - pose.offset.dot(direction_.col(j));
-      visit(j, area, gap < 0.0 ? -gap : 0.0, i);
+      visit(j, area, texture_(gap), i);
     }
   }
 }

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/texture_contact.h"
 
 namespace fitfeel::conical {
 
@@ -21,8 +22,11 @@ namespace fitfeel::conical {
 //
 // Every contact, whether from clearance closed by the offset or from interference, is elastic
 // (a Winkler bed: each cell's pressure is the Lame pressure of its own interference), so there is
-// no separate clearance spring and the force is continuous at first contact. Texture in
-// `expected` mode is not added (see README: not implemented for this surface yet).
+// no separate clearance spring and the force is continuous at first contact. With texture in
+// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
+// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h),
+// so contact starts smoothly before the nominal surfaces touch; in `sampled` mode the texture is
+// in V and the contact is sharp, max(0, -gap).
 //
 // Per tick: one pass over the pin's m x n cells, no allocation (bounded, about 3000 cells at the
 // auto resolution of a 40 mm pin).
@@ -51,11 +55,12 @@ class ConicalContactAnalyzer final : public ContactAnalyzer {
   double tan_alpha_ = 0.0;
   double taper_ = 0.0;
   double hole_small_diameter_ = 0.0;
-  double area_factor_ = 0.0;    // pi / cos(alpha) / n
-  Eigen::VectorXd pin_row_;     // t of each pin row centre
-  Eigen::MatrixXd pin_v_;       // pin variation, rows x columns
-  Eigen::MatrixXd hole_v_;      // hole variation, rows x columns
-  Eigen::Matrix2Xd direction_;  // u_j = (cos beta_j, sin beta_j)
+  double area_factor_ = 0.0;           // pi / cos(alpha) / n
+  Eigen::VectorXd pin_row_;            // t of each pin row centre
+  Eigen::MatrixXd pin_v_;              // pin variation, rows x columns
+  Eigen::MatrixXd hole_v_;             // hole variation, rows x columns
+  Eigen::Matrix2Xd direction_;         // u_j = (cos beta_j, sin beta_j)
+  ExpectedInterferenceTable texture_;  // sharp unless texture is `expected`
 };
 
 }  // namespace fitfeel::conical

@@ -12,7 +12,10 @@ namespace fitfeel::spherical {
 
 void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                          const PartSpec& outer, const SkinModelShape& outer_sms,
-                                         const ModelSettings&) {
+                                         const ModelSettings& settings) {
+  texture_ = settings.texture == TextureMode::kExpected
+                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
+                 : ExpectedInterferenceTable();
   GeometryOf(inner);
   const SphericalGeometry& socket = GeometryOf(outer);
   const SurfaceGrid& bg = inner_sms.grid;
@@ -68,7 +71,7 @@ void SphericalContactAnalyzer::ForEachCell(const MatingPose& pose, Visit&& visit
       const int k = i * columns_ + j;
       const double shift = pose.offset.x() * normal_(0, k) + pose.offset.y() * normal_(2, k);
       const double gap = socket_v_(i, j) - ball_v - shift;
-      visit(k, gap < 0.0 ? -gap : 0.0);
+      visit(k, texture_(gap));
     }
   }
 }

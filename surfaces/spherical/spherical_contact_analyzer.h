@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/texture_contact.h"
 
 namespace fitfeel::spherical {
 
@@ -20,8 +21,10 @@ namespace fitfeel::spherical {
 // between its columns) at the material point that the rotation has brought under the cell, so the
 // contact is continuous in the angle. The socket's band is the contact band (the ball's is wider,
 // CheckPair requires it). Every contact is elastic (Winkler bed of thick-shell pressures), so there
-// is no separate clearance spring and the force is continuous at first contact. Texture in
-// `expected` mode is not added (README: not implemented for this surface yet).
+// is no separate clearance spring and the force is continuous at first contact. With texture in
+// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
+// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h);
+// in `sampled` mode the texture is in V and the contact is sharp, max(0, -gap).
 //
 // Sums reported: interference_volume = sum delta * ds, pressure_resultant = sum delta * ds *
 // (n_x, n_z) (the axial component of the resultant is not reported: ContactState has no field
@@ -48,7 +51,8 @@ class SphericalContactAnalyzer final : public ContactAnalyzer {
   // Ball rows bracketing each socket row, and the weight of the upper one (prepare-time).
   std::vector<int> ball_row_;
   std::vector<double> ball_row_weight_;
-  Eigen::Matrix3Xd normal_;  // socket cell normals
+  Eigen::Matrix3Xd normal_;            // socket cell normals
+  ExpectedInterferenceTable texture_;  // sharp unless texture is `expected`
 };
 
 }  // namespace fitfeel::spherical

@@ -199,3 +199,50 @@ TEST(ConicalPressFit, WithFormTheMeanForceStaysNearTheOracle) {
 
 }  // namespace
 }  // namespace fitfeel::conical
+
+namespace fitfeel::conical {
+namespace {
+
+TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
+  // Only the pin is rough: Rz = 6 um gives sigma = (A + Rz)/6 = 1 um and limits +-3 sigma, the
+  // N(0,1) truncated to [-3, 3] of reference/oracles.md. With zero form, every cell sees the same
+  // nominal gap g = (L - s) tan(alpha), so the interference volume is E[(X - g)+] times the area.
+  PartSpec pin = test::Pin();
+  pin.texture.rz = 6e-6;
+  const PartSpec hole = test::Hole();
+  ModelSettings settings;
+  settings.friction = 0.15;
+  settings.contact_stiffness = 1e6;
+  settings.texture = TextureMode::kExpected;
+  const Resolution r{20, 36};
+  Rng rng(1);
+  const ConicalDiscretizer discretizer;
+  const ConicalVariationGenerator generator;
+  const SkinModelShape pin_sms =
+      generator.Generate(pin, discretizer.Discretize(pin, r), TextureMode::kExpected, rng);
+  const SkinModelShape hole_sms =
+      generator.Generate(hole, discretizer.Discretize(hole, r), TextureMode::kExpected, rng);
+  ConicalContactAnalyzer analyzer;
+  analyzer.Prepare(pin, pin_sms, hole, hole_sms, settings);
+  const double area = M_PI * 8.2e-3 * 20e-3 / std::cos(std::atan(0.01));
+  // oracles.md table: g = -1, 0, 1, 2 sigma -> E[(X - g)+] = 1.080451, 0.395578, 0.080451,
+  // 0.006777.
+  const double table[][2] = {{-1.0, 1.080451}, {0.0, 0.395578}, {1.0, 0.080451}, {2.0, 0.006777}};
+  for (const auto& [g, expected] : table) {
+    MatingPose pose;
+    pose.depth = 20e-3 - g * 1e-6 / 0.01;  // gap g um
+    ContactState contact;
+    analyzer.Evaluate(pose, &contact);
+    // Per unit of the overlapped area (for g > 0 the pin's tip stops short of the hole's small
+    // end by g / tan(alpha)); the table's 1e-6 sigma interpolation error and 6 printed digits.
+    const double overlap = area *
+                           (std::min(pose.depth, 20e-3) *
+                            (8e-3 + 0.02 * (20e-3 - 0.5 * std::min(pose.depth, 20e-3)))) /
+                           (20e-3 * 8.2e-3);
+    EXPECT_NEAR(contact.engaged_area, overlap, 1e-12 * area) << g;
+    EXPECT_NEAR(contact.interference_volume / contact.engaged_area, expected * 1e-6, 2e-12) << g;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::conical

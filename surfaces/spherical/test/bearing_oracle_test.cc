@@ -156,3 +156,38 @@ TEST(KnuckleBearing, TurningTheBallInAPerfectSocketChangesNothingAtColumnSteps) 
 
 }  // namespace
 }  // namespace fitfeel::spherical
+
+namespace fitfeel::spherical {
+namespace {
+
+TEST(KnuckleTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
+  // Only the socket is rough (Rz = 6 um: sigma = 1 um, limits +-3 sigma, oracles.md's truncated
+  // N(0,1)); a ball of actual size nominal - 2 g um leaves the uniform gap g.
+  PartSpec socket = test::Socket();
+  socket.texture.rz = 6e-6;
+  const double table[][2] = {{-1.0, 1.080451}, {0.0, 0.395578}, {1.0, 0.080451}, {2.0, 0.006777}};
+  for (const auto& [g, expected] : table) {
+    PartSpec ball = test::Ball();
+    ball.size.lower_deviation = ball.size.upper_deviation = -2.0 * g * 1e-6;
+    ModelSettings settings;
+    settings.friction = kMu;
+    settings.contact_stiffness = 1e6;
+    settings.texture = TextureMode::kExpected;
+    const Resolution r{10, 36};
+    Rng rng(1);
+    const SphericalDiscretizer discretizer;
+    const SphericalVariationGenerator generator;
+    const SkinModelShape ball_sms =
+        generator.Generate(ball, discretizer.Discretize(ball, r), TextureMode::kExpected, rng);
+    const SkinModelShape socket_sms =
+        generator.Generate(socket, discretizer.Discretize(socket, r), TextureMode::kExpected, rng);
+    SphericalContactAnalyzer analyzer;
+    analyzer.Prepare(ball, ball_sms, socket, socket_sms, settings);
+    ContactState contact;
+    analyzer.Evaluate(MatingPose{}, &contact);
+    EXPECT_NEAR(contact.interference_volume / (2.0 * M_PI * kA * kB), expected * 1e-6, 2e-12) << g;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::spherical
