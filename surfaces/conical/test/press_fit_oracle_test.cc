@@ -246,3 +246,42 @@ TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
 
 }  // namespace
 }  // namespace fitfeel::conical
+
+namespace fitfeel::conical {
+namespace {
+
+// Largest change of |F| between neighbouring depths of a sweep.
+double LargestJump(const Model& model, double from, double to, int samples) {
+  double largest = 0.0, previous = 0.0;
+  for (int k = 0; k <= samples; ++k) {
+    const double f = Evaluate(model, from + (to - from) * k / samples, 0.01).force.norm();
+    if (k > 0) largest = std::max(largest, std::abs(f - previous));
+    previous = f;
+  }
+  return largest;
+}
+
+TEST(ConicalPressFit, ForceIsContinuousInDepthThroughSeatingForAnyForm) {
+  // Property over seeds: with form and sizes drawn, the force through first contact and 0.3 mm of
+  // advance has no step: its largest jump shrinks in proportion to the sample step.
+  PartSpec pin = test::Pin();
+  PartSpec hole = test::Hole();
+  pin.size.lower_deviation = -58e-6;
+  hole.size.upper_deviation = 58e-6;
+  pin.form.tolerance[FormCharacteristic::kRoundness] = 6e-6;
+  pin.form.tolerance[FormCharacteristic::kAxisStraightness] = 15e-6;
+  hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 15e-6;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Model model;
+    Prepare(&model, pin, hole, Resolution{13, 24}, seed);
+    // Contact lies between the nominal seating and 5.8 mm past it (h10 / H10 at 1:50).
+    const double from = kHoleLength - 0.2e-3, to = kHoleLength + 6.1e-3;
+    const double coarse = LargestJump(model, from, to, 4000);
+    const double fine = LargestJump(model, from, to, 16000);
+    EXPECT_GT(coarse, 0.0) << seed;
+    EXPECT_LE(fine, 0.5 * coarse) << seed;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::conical
