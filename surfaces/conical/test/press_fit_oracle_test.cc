@@ -176,25 +176,31 @@ TEST(ConicalPressFit, ForceGrowsLinearlyWithAdvanceForAnyResolution) {
   }
 }
 
-TEST(ConicalPressFit, WithFormTheMeanForceStaysNearTheOracle) {
-  // Over many seeds, form deviations of a few um redistribute the pressure but a deep advance
-  // (10 um diametral) keeps every cell in contact, where the model is linear: the force then
-  // differs from the oracle only by the mean of S_T, i.e. the actual sizes.
+TEST(ConicalPressFit, WithFormTheForceStaysNearTheOracle) {
+  // Over many seeds: sizes within +-2 um (diametral) and form of 2 um redistribute the pressure,
+  // but 1 mm of advance (20 um diametral, 10 um radial interference) keeps every cell in contact,
+  // where the model is linear: the force differs from the oracle by the mean of S_T only, at most
+  // (2 + 2) / 2 um radial from sizes plus the form amplitudes (1 um each): within +-50 %.
+  // (A size zone is needed: with none, the final clamp would leave no room for form.)
   PartSpec pin = test::Pin();
   PartSpec hole = test::Hole();
+  pin.size.lower_deviation = hole.size.lower_deviation = -2e-6;
+  pin.size.upper_deviation = hole.size.upper_deviation = 2e-6;
   pin.form.tolerance[FormCharacteristic::kRoundness] = 2e-6;
   pin.form.tolerance[FormCharacteristic::kAxisStraightness] = 2e-6;
   hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 2e-6;
   const Oracle oracle;
-  const double advance = 0.5e-3;
+  const double advance = 1e-3;
+  int off_oracle = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     Model model;
     Prepare(&model, pin, hole, Resolution{20, 36}, seed);
     const double f = -Evaluate(model, kHoleLength + advance, 0.1).force.y();
-    // Form zero-mean to within its amplitude (2 um) against 5 um radial interference.
-    EXPECT_GT(f, 0.4 * oracle.In(advance)) << seed;
-    EXPECT_LT(f, 1.6 * oracle.In(advance)) << seed;
+    EXPECT_GT(f, 0.5 * oracle.In(advance)) << seed;
+    EXPECT_LT(f, 1.5 * oracle.In(advance)) << seed;
+    if (std::abs(f / oracle.In(advance) - 1.0) > 1e-3) ++off_oracle;
   }
+  EXPECT_GE(off_oracle, 15);  // the drawn sizes and form do reach the force
 }
 
 }  // namespace
