@@ -7,6 +7,7 @@
 #include "framework/core/error.h"
 #include "surfaces/conical/conical_discretizer.h"
 #include "surfaces/conical/conical_geometry.h"
+#include "surfaces/conical/conical_surface.h"
 #include "surfaces/conical/test/test_parts.h"
 
 namespace fitfeel::conical {
@@ -77,6 +78,40 @@ TEST(ConicalGeometry, RefusesBadInputAtTheKey) {
   expect_error(hole, "{length: 20 mm, taper: '1:50'}", "outer_diameter");
   // The hub must have a wall at the bore's large end (8.4 mm here).
   expect_error(hole, "{length: 20 mm, taper: '1:50', outer_diameter: 8.3 mm}", "outer_diameter");
+}
+
+}  // namespace
+}  // namespace fitfeel::conical
+
+namespace fitfeel::conical {
+namespace {
+
+TEST(ConicalSurface, CheckPairRefusesAnotherTaperOrSize) {
+  const ConfigNode parts(YAML::Load("{pin: {size: 8 mm h10, geometry: {length: 40 mm, taper: "
+                                    "'1:50'}}, hole: {size: 10 mm H10, geometry: {length: 20 mm, "
+                                    "taper: '1:48', outer_diameter: 24 mm}}}"),
+                         "test.yaml", "parts");
+  const ConicalSurface surface;
+  const PartSpec pin = test::Pin();
+  EXPECT_NO_THROW(surface.CheckPair(pin, test::Hole(), parts));
+  PartSpec steeper = test::Hole();
+  steeper.geometry = std::make_shared<ConicalGeometry>(Role::kOuter, 8e-3, 20e-3, 1.0 / 48, 24e-3);
+  try {
+    surface.CheckPair(pin, steeper, parts);
+    ADD_FAILURE() << "accepted a 1:48 hole for a 1:50 pin";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.key_path(), "parts.hole.geometry.taper") << e.what();
+    EXPECT_NE(e.expected().find("1:50"), std::string::npos) << e.what();
+  }
+  PartSpec bigger = test::Hole();
+  bigger.size.nominal = 10e-3;
+  bigger.geometry = std::make_shared<ConicalGeometry>(Role::kOuter, 10e-3, 20e-3, 0.02, 24e-3);
+  try {
+    surface.CheckPair(pin, bigger, parts);
+    ADD_FAILURE() << "accepted a 10 mm hole for an 8 mm pin";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.key_path(), "parts.hole.size") << e.what();
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "framework/core/error.h"
 #include "surfaces/spherical/spherical_discretizer.h"
 #include "surfaces/spherical/spherical_geometry.h"
+#include "surfaces/spherical/spherical_surface.h"
 #include "surfaces/spherical/test/test_parts.h"
 
 namespace fitfeel::spherical {
@@ -80,6 +81,36 @@ TEST(SphericalGeometry, ParsesAndRefusesAtTheKey) {
 TEST(SphericalGeometry, RefusesUnusableResolutions) {
   EXPECT_THROW(SphericalDiscretizer().Discretize(test::Ball(), Resolution{10, 7}), UserError);
   EXPECT_THROW(SphericalDiscretizer().Discretize(test::Ball(), Resolution{1, 12}), UserError);
+}
+
+}  // namespace
+}  // namespace fitfeel::spherical
+
+namespace fitfeel::spherical {
+namespace {
+
+TEST(SphericalSurface, CheckPairRefusesAnotherSphereOrANarrowBall) {
+  const ConfigNode parts(YAML::Load("{ball: {size: 20 mm h7, geometry: {width: 8 mm}}, socket: "
+                                    "{size: 22 mm H7, geometry: {width: 10 mm, outer_diameter: "
+                                    "30 mm}}}"),
+                         "test.yaml", "parts");
+  const SphericalSurface surface;
+  EXPECT_TRUE(surface.rotational());
+  EXPECT_NO_THROW(surface.CheckPair(test::Ball(), test::Socket(), parts));
+  try {
+    surface.CheckPair(test::Ball(8e-3), test::Socket(), parts);
+    ADD_FAILURE() << "accepted a ball band narrower than the socket's";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.key_path(), "parts.ball.geometry.width") << e.what();
+  }
+  PartSpec bigger = test::Socket();
+  bigger.size.nominal = 22e-3;
+  try {
+    surface.CheckPair(test::Ball(), bigger, parts);
+    ADD_FAILURE() << "accepted a 22 mm socket for a 20 mm ball";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.key_path(), "parts.socket.size") << e.what();
+  }
 }
 
 }  // namespace
