@@ -13,7 +13,4 @@ const bool kTestDeviceOnPath = [] {
 }();
 }  // namespace
 
-// The macro expands at global scope (it replaces operator new to count allocations in the tick),
-// so the suite's names are brought in.
-using namespace fitfeel::conformance;  // NOLINT(build/namespaces)
 FITFEEL_SURFACE_CONFORMANCE(Spherical, "surfaces/spherical/test/conformance.yaml");
