@@ -78,6 +78,8 @@ void ConicalContactAnalyzer::ForEachCell(const MatingPose& pose, Visit&& visit) 
 
 void ConicalContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
   *out = ContactState{};
+  // A non-finite pose (a device glitch) is no contact rather than NaN forces.
+  if (!std::isfinite(pose.depth) || !pose.offset.allFinite()) return;
   const double lo = std::max(pose.depth - pin_length_, 0.0);
   const double hi = std::min(pose.depth, hole_length_);
   out->engaged_length = std::max(hi - lo, 0.0);

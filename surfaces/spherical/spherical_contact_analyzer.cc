@@ -79,6 +79,8 @@ void SphericalContactAnalyzer::ForEachCell(const MatingPose& pose, Visit&& visit
 void SphericalContactAnalyzer::DoEvaluate(const MatingPose& pose,
                                           ContactState* out) const noexcept {
   *out = ContactState{};
+  // A non-finite pose (a device glitch) is no contact rather than NaN forces.
+  if (!std::isfinite(pose.angle) || !pose.offset.allFinite()) return;
   out->engaged = true;
   out->engaged_length = width_;
   out->engaged_area = cell_area_ * rows_ * columns_;

@@ -2,6 +2,7 @@
 // law with zero form and texture: a pin advanced a beyond first contact has the uniform radial
 // interference a * C / 2 (diametral a * C) over the hole's whole length.
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -287,6 +288,24 @@ TEST(ConicalPressFit, ForceIsContinuousInDepthThroughSeatingForAnyForm) {
     EXPECT_GT(coarse, 0.0) << seed;
     EXPECT_LE(fine, 0.5 * coarse) << seed;
   }
+}
+
+}  // namespace
+}  // namespace fitfeel::conical
+
+namespace fitfeel::conical {
+namespace {
+
+TEST(ConicalPressFit, NonFinitePosesGiveNoContact) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{8, 8});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double depth : {nan, std::numeric_limits<double>::infinity()}) {
+    const Wrench w = Evaluate(model, depth, 0.01);
+    EXPECT_TRUE(w.AllFinite());
+    EXPECT_EQ(w.force.norm(), 0.0);
+  }
+  EXPECT_EQ(Evaluate(model, 20.1e-3, 0.01, 0.0, Eigen::Vector2d(nan, 0.0)).force.norm(), 0.0);
 }
 
 }  // namespace

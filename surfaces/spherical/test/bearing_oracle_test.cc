@@ -2,6 +2,7 @@
 // delta = 1 um -> p = 14.07 MPa) through the analyzer and law with zero form and texture and a
 // uniform interference, and the friction torque against its integral.
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -235,6 +236,22 @@ TEST(KnuckleBearing, TorqueIsContinuousInTheAngleForAnyForm) {
     EXPECT_GT(coarse, 0.0) << seed;
     EXPECT_LE(fine, 0.5 * coarse) << seed;
   }
+}
+
+}  // namespace
+}  // namespace fitfeel::spherical
+
+namespace fitfeel::spherical {
+namespace {
+
+TEST(KnuckleBearing, NonFinitePosesGiveNoContact) {
+  Model model;
+  Prepare(&model, test::Ball(), test::Socket(), Resolution{8, 8}, 1e-6);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Wrench a = Evaluate(model, nan, 10.0);
+  const Wrench b = Evaluate(model, 0.0, 10.0, Eigen::Vector2d(0.0, nan));
+  EXPECT_TRUE(a.AllFinite() && b.AllFinite());
+  EXPECT_EQ(a.force.norm() + a.torque.norm() + b.force.norm() + b.torque.norm(), 0.0);
 }
 
 }  // namespace
