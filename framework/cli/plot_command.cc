@@ -113,7 +113,7 @@ void AddSms(CLI::App& plot) {
         plot::GenerateSceneShapes(LoadScene(options->scenario, *registry, load), options->seed);
     const Scene& scene = shapes.scene;
     plot::Render(plot::MakeSceneSmsChart(scene.name, scene.inner, shapes.inner, scene.outer,
-                                         shapes.outer, options->part),
+                                         shapes.outer, !scene.surface->rotational(), options->part),
                  outputs);
     PrintWritten(outputs);
   });

@@ -1,6 +1,7 @@
 #include "framework/plot/scene_charts.h"
 
 #include <cstdio>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/plot/sms_chart.h"
@@ -9,22 +10,37 @@ namespace fitfeel::plot {
 
 HeatMapChart MakeSceneSmsChart(const std::string& scenario, const PartSpec& inner,
                                const SkinModelShape& inner_sms, const PartSpec& outer,
-                               const SkinModelShape& outer_sms, const std::string& only_part) {
+                               const SkinModelShape& outer_sms, bool translational,
+                               const std::string& only_part) {
   if (!only_part.empty()) {
-    if (only_part == inner.name)
+    if (only_part == inner.name) {
       return MakeSmsChart(scenario, {MakeSkinProfileMap(inner, inner_sms)});
-    if (only_part == outer.name)
+    }
+    if (only_part == outer.name) {
       return MakeSmsChart(scenario, {MakeSkinProfileMap(outer, outer_sms)});
+    }
     throw UserError("scenario '" + scenario + "' has no part '" + only_part + "'; its parts are '" +
                     inner.name + "' and '" + outer.name + "'");
   }
-  const double depth = FullInsertionDepth(inner_sms, outer_sms);
-  char where[96];
-  std::snprintf(where, sizeof where, "at full insertion (depth %g mm)", depth * 1e3);
-  return MakeSmsChart(
-      scenario, {MakeSkinProfileMap(inner, inner_sms), MakeSkinProfileMap(outer, outer_sms),
-                 MakeToleranceSpaceMap(inner, outer,
-                                       ToleranceSpaceAtDepth(inner_sms, outer_sms, depth), where)});
+  std::vector<HeatMap> maps = {MakeSkinProfileMap(inner, inner_sms),
+                               MakeSkinProfileMap(outer, outer_sms)};
+  std::string omitted;
+  if (!translational) {
+    omitted = "no tolerance-space map: the parts mate by rotation, not by insertion";
+  } else {
+    try {
+      const double depth = FullInsertionDepth(inner_sms, outer_sms);
+      char where[96];
+      std::snprintf(where, sizeof where, "at full insertion (depth %g mm)", depth * 1e3);
+      maps.push_back(MakeToleranceSpaceMap(
+          inner, outer, ToleranceSpaceAtDepth(inner_sms, outer_sms, depth), where));
+    } catch (const UserError& e) {
+      omitted = std::string("no tolerance-space map: ") + e.what();
+    }
+  }
+  HeatMapChart chart = MakeSmsChart(scenario, std::move(maps));
+  if (!omitted.empty()) chart.subtitle.push_back(omitted);
+  return chart;
 }
 
 PressureMapData MakePressureData(const RunRecord& run, double depth_mm,

@@ -15,12 +15,13 @@ namespace fitfeel::plot {
 
 // Charts of a prepared scene, whatever built it (the runtime's Prepare, or a test).
 
-// `fitfeel plot sms`: the unwrapped skin profile of each part and the tolerance space at full
-// insertion (FullInsertionDepth); with `only_part` set, that part's profile alone. Throws
-// UserError naming the parts when `only_part` is neither.
+// `fitfeel plot sms`: the unwrapped skin profile of each part and, for parts mated by insertion
+// (`translational`), the tolerance space at full insertion (FullInsertionDepth); a subtitle says
+// why that map is missing when it cannot be drawn. With `only_part` set, that part's profile
+// alone. Throws UserError naming the parts when `only_part` is neither.
 FITFEEL_API HeatMapChart MakeSceneSmsChart(const std::string& scenario, const PartSpec& inner,
                                            const SkinModelShape& inner_sms, const PartSpec& outer,
-                                           const SkinModelShape& outer_sms,
+                                           const SkinModelShape& outer_sms, bool translational,
                                            const std::string& only_part = "");
 
 // `fitfeel plot pressure`: the interference map of the analyzer at `depth_mm` (with the radial

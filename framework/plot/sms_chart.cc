@@ -40,6 +40,28 @@ std::string SizeText(const PartSpec& part) {
 // Angles in degrees on [0, 360): the map's vertical axis then reads as a compass around the axis.
 Eigen::VectorXd Degrees(const Eigen::VectorXd& radians) { return radians / kDegree; }
 
+bool StrictlyIncreasing(const Eigen::VectorXd& v) {
+  for (Eigen::Index k = 1; k < v.size(); ++k) {
+    if (!(v(k) > v(k - 1))) return false;
+  }
+  return v.size() > 0;
+}
+
+// The vertical axis of an unwrapped map: direction angles in degrees for a surface of revolution
+// (they increase around it), column numbers otherwise (a flat face's columns share its normal's
+// angle, one face after the other).
+void SetColumnAxis(const Eigen::VectorXd& angles, HeatMap* map) {
+  if (StrictlyIncreasing(angles)) {
+    map->y = Degrees(angles);
+    map->y_label = "direction angle (°)";
+    map->y_tic_step = 90.0;
+  } else {
+    map->y = Eigen::VectorXd::LinSpaced(angles.size(), 0.0, static_cast<double>(angles.size() - 1));
+    map->y_label = "column (face by face)";
+    map->y_tic_step = 0.0;
+  }
+}
+
 }  // namespace
 
 RadialLimits VariationLimits(const PartSpec& part) {
@@ -66,10 +88,9 @@ HeatMap MakeSkinProfileMap(const PartSpec& part, const SkinModelShape& sms) {
   map.title = part.name + " (" + (inner ? "inner" : "outer") + ", " + SizeText(part) +
               "): skin profile variation V";
   map.x_label = "axial position (mm)";
-  map.y_label = "direction angle (°)";
   map.colour_label = "V (µm)";
   map.x = grid.row_position / kMillimetre;
-  map.y = Degrees(grid.column_angle);
+  SetColumnAxis(grid.column_angle, &map);
   map.values.resize(grid.rows, grid.columns);
   for (int i = 0; i < grid.rows; ++i) {
     for (int j = 0; j < grid.columns; ++j) {
@@ -82,7 +103,6 @@ HeatMap MakeSkinProfileMap(const PartSpec& part, const SkinModelShape& sms) {
   const std::string high = inner ? "es/2 " : "ES/2 ";
   map.colour_marks = {{limits.lower / kMicrometre, low + Micrometres(limits.lower)},
                       {limits.upper / kMicrometre, high + Micrometres(limits.upper)}};
-  map.y_tic_step = 90.0;
   return map;
 }
 
@@ -172,13 +192,26 @@ ToleranceSpaceGrid ToleranceSpaceAtDepth(const SkinModelShape& inner, const Skin
 
   const SurfaceGrid& ig = inner.grid;
   const SurfaceGrid& og = outer.grid;
+  // Columns face each other one to one when the grids share their angles (surfaces of revolution
+  // of equal n, or flat faces split alike); otherwise by nearest direction angle around the axis.
   std::vector<int> facing(static_cast<std::size_t>(ig.columns));
+  const bool same_columns =
+      ig.columns == og.columns && (ig.column_angle - og.column_angle).cwiseAbs().maxCoeff() < 1e-12;
+  if (!same_columns &&
+      !(StrictlyIncreasing(ig.column_angle) && StrictlyIncreasing(og.column_angle))) {
+    throw UserError(
+        "the parts' columns do not face each other (different flat-face layouts), so "
+        "their tolerance space has no map");
+  }
   for (int j = 0; j < ig.columns; ++j) {
-    int best = 0;
-    for (int k = 1; k < og.columns; ++k) {
-      if (AngleGap(og.column_angle(k), ig.column_angle(j)) <
-          AngleGap(og.column_angle(best), ig.column_angle(j))) {
-        best = k;
+    int best = j;
+    if (!same_columns) {
+      best = 0;
+      for (int k = 1; k < og.columns; ++k) {
+        if (AngleGap(og.column_angle(k), ig.column_angle(j)) <
+            AngleGap(og.column_angle(best), ig.column_angle(j))) {
+          best = k;
+        }
       }
     }
     facing[static_cast<std::size_t>(j)] = best;
@@ -213,10 +246,9 @@ HeatMap MakeToleranceSpaceMap(const PartSpec& inner, const PartSpec& outer,
   HeatMap map;
   map.title = "tolerance space S_T = V_" + outer.name + " − V_" + inner.name + " " + where;
   map.x_label = "distance past the " + outer.name + "'s entrance (mm)";
-  map.y_label = "direction angle (°)";
   map.colour_label = "S_T (µm)";
   map.x = space.axial / kMillimetre;
-  map.y = Degrees(space.angle);
+  SetColumnAxis(space.angle, &map);
   map.values = space.value / kMicrometre;
   map.colour_min = limits.lower / kMicrometre;
   map.colour_max = limits.upper / kMicrometre;
@@ -228,7 +260,6 @@ HeatMap MakeToleranceSpaceMap(const PartSpec& inner, const PartSpec& outer,
       {limits.lower / kMicrometre, describe(limits.lower, true) + Micrometres(limits.lower)},
       {limits.upper / kMicrometre, describe(limits.upper, false) + Micrometres(limits.upper)}};
   if (limits.lower < 0.0 && limits.upper > 0.0) map.colour_marks.push_back({0.0, "contact 0"});
-  map.y_tic_step = 90.0;
   return map;
 }
 

@@ -1,10 +1,13 @@
 #include "framework/plot/scene_charts.h"
 
+#include <numbers>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
 #include "framework/plot/render.h"
+#include "framework/plot/sms_chart.h"
 #include "framework/plot/test/synthetic_sms.h"
 #include "framework/plot/test/test_support.h"
 
@@ -61,14 +64,15 @@ class NoPressureLaw final : public ResistanceLaw {
 TEST(MakeSceneSmsChart, BothPartsAndTheToleranceSpaceOrOnePart) {
   const auto shaft = testing::SyntheticSms(kShaft, 60, 72, 60e-3, 0.0);
   const auto bushing = testing::SyntheticSms(kBushing, 20, 72, 20e-3, 1.0);
-  const HeatMapChart all = MakeSceneSmsChart("s", kShaft, shaft, kBushing, bushing);
+  const HeatMapChart all = MakeSceneSmsChart("s", kShaft, shaft, kBushing, bushing, true);
   ASSERT_EQ(all.panels.size(), 3u);
   EXPECT_THAT(all.panels[2].title, HasSubstr("full insertion (depth 20 mm)"));
-  const HeatMapChart one = MakeSceneSmsChart("s", kShaft, shaft, kBushing, bushing, "bushing");
+  const HeatMapChart one =
+      MakeSceneSmsChart("s", kShaft, shaft, kBushing, bushing, true, "bushing");
   ASSERT_EQ(one.panels.size(), 1u);
   EXPECT_THAT(one.panels[0].title, HasSubstr("bushing"));
   try {
-    MakeSceneSmsChart("s", kShaft, shaft, kBushing, bushing, "pin");
+    MakeSceneSmsChart("s", kShaft, shaft, kBushing, bushing, true, "pin");
     FAIL() << "an unknown part was accepted";
   } catch (const UserError& e) {
     EXPECT_THAT(e.what(), HasSubstr("no part 'pin'; its parts are 'shaft' and 'bushing'"));
@@ -132,6 +136,55 @@ TEST(MakePressureData, RendersPngAndSvg) {
          ResolveOutputs(dir.path() / "pressure"));
   EXPECT_TRUE(testing::IsPng(dir.path() / "pressure.png"));
   EXPECT_TRUE(testing::IsSvg(dir.path() / "pressure.svg"));
+}
+
+}  // namespace
+}  // namespace fitfeel::plot
+
+namespace fitfeel::plot {
+namespace {
+
+// A key-like grid: four flat faces of three strips each, the strips of a face sharing its angle.
+SkinModelShape FlatFaces(const PartSpec& part, int rows, double length, int strips) {
+  SkinModelShape sms = testing::SyntheticSms(part, rows, 4 * strips, length, 0.0);
+  for (int j = 0; j < 4 * strips; ++j)
+    sms.grid.column_angle(j) = (j / strips) * 0.5 * std::numbers::pi;
+  return sms;
+}
+
+TEST(MakeSceneSmsChart, RotationalMatingHasNoToleranceSpaceAndSaysWhy) {
+  const auto ball = testing::SyntheticSms(kShaft, 20, 36, 20e-3, 0.0);
+  const auto socket = testing::SyntheticSms(kBushing, 20, 36, 20e-3, 1.0);
+  const HeatMapChart chart = MakeSceneSmsChart("s", kShaft, ball, kBushing, socket, false);
+  EXPECT_EQ(chart.panels.size(), 2u);
+  EXPECT_THAT(chart.subtitle.back(), HasSubstr("mate by rotation"));
+}
+
+TEST(MakeSceneSmsChart, FlatFacesUseColumnNumbersAndFaceOneToOne) {
+  const auto key = FlatFaces(kShaft, 30, 30e-3, 3);
+  const auto keyway = FlatFaces(kBushing, 10, 10e-3, 3);
+  const HeatMapChart chart = MakeSceneSmsChart("key", kShaft, key, kBushing, keyway, true);
+  ASSERT_EQ(chart.panels.size(), 3u);
+  EXPECT_EQ(chart.panels[0].y_label, "column (face by face)");
+  EXPECT_EQ(chart.panels[0].y(11), 11.0);
+  const ToleranceSpaceGrid space = ToleranceSpaceAtDepth(key, keyway, 10e-3, 1);
+  // Column 4 (second face, second strip) faces column 4: at 0.5 mm in, key row 20 and keyway row 0.
+  EXPECT_NEAR(space.value(0, 4), keyway.variation(4) - key.variation(20 * 12 + 4), 1e-15);
+
+  const auto other = FlatFaces(kBushing, 10, 10e-3, 2);  // a different face split
+  const HeatMapChart partial = MakeSceneSmsChart("key", kShaft, key, kBushing, other, true);
+  EXPECT_EQ(partial.panels.size(), 2u);
+  EXPECT_THAT(partial.subtitle.back(), HasSubstr("columns do not face each other"));
+}
+
+TEST(MakeSceneSmsChart, FlatFacesRender) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  const auto key = FlatFaces(kShaft, 30, 30e-3, 3);
+  const auto keyway = FlatFaces(kBushing, 10, 10e-3, 3);
+  Render(MakeSceneSmsChart("key", kShaft, key, kBushing, keyway, true),
+         ResolveOutputs(dir.path() / "key.png"));
+  EXPECT_TRUE(testing::IsPng(dir.path() / "key.png"));
 }
 
 }  // namespace

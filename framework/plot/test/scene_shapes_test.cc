@@ -72,7 +72,7 @@ TEST(ScenePipeline, SmsAndPressureChartsRender) {
   ScratchDir dir;
   const SceneShapes shapes = GenerateSceneShapes(Load(WriteScenario(dir.path(), "lame")));
   const Scene& scene = shapes.scene;
-  Render(MakeSceneSmsChart(scene.name, scene.inner, shapes.inner, scene.outer, shapes.outer),
+  Render(MakeSceneSmsChart(scene.name, scene.inner, shapes.inner, scene.outer, shapes.outer, true),
          ResolveOutputs(dir.path() / "sms"));
   EXPECT_TRUE(testing::IsPng(dir.path() / "sms.png"));
   EXPECT_TRUE(testing::IsSvg(dir.path() / "sms.svg"));
