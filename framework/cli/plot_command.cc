@@ -1,11 +1,182 @@
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
+#include "framework/plot/gnuplot.h"
+#include "framework/plot/pressure_chart.h"
+#include "framework/plot/render.h"
+#include "framework/plot/run_record.h"
+#include "framework/plot/scene_charts.h"
+#include "framework/plot/scene_shapes.h"
+#include "framework/plot/trace_chart.h"
+#include "framework/plugin/registry.h"
+#include "framework/scenario/scene.h"
 
 namespace fitfeel::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+void PrintWritten(const std::vector<plot::OutputFile>& outputs) {
+  for (const auto& output : outputs) std::cout << "wrote " << output.path.string() << "\n";
+}
+
+void AddTrace(CLI::App& plot) {
+  struct Options {
+    std::vector<std::string> dirs;
+    std::string output;
+    bool log_scale = false;
+  };
+  auto options = std::make_shared<Options>();
+  auto* cmd = plot.add_subcommand(
+      "trace", "Axial and radial resistance against insertion depth, one curve per run folder");
+  cmd->add_option("DIR", options->dirs, "run folders holding trace.csv and summary.json")
+      ->required()
+      ->expected(1, -1);
+  cmd->add_option("-o,--output", options->output,
+                  "image file: .png, .svg, or no extension for both")
+      ->required();
+  cmd->add_flag("--log", options->log_scale,
+                "logarithmic force axes (runs that differ by orders of magnitude)");
+  cmd->callback([options] {
+    const auto outputs = plot::ResolveOutputs(options->output);
+    std::vector<plot::RunRecord> runs;
+    for (const auto& dir : options->dirs) runs.push_back(plot::LoadRun(dir));
+    plot::Render(plot::MakeTraceChart(runs, options->log_scale), outputs);
+    PrintWritten(outputs);
+  });
+}
+
+// A run's summary names its scenario file as the run was given it: relative to the folder the run
+// started in, which for the bundled scenarios is the source tree. Looked up like `fitfeel run`
+// does: as given, then under $FITFEEL_SOURCE_DIR.
+fs::path FindRunScenario(const std::string& file) {
+  std::error_code ec;
+  if (fs::is_regular_file(file, ec)) return file;
+  std::string searched = "'" + file + "'";
+  const fs::path given(file);
+  if (given.is_relative()) {
+    if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source != nullptr && *source) {
+      const fs::path there = fs::path(source) / given;
+      if (fs::is_regular_file(there, ec)) return there;
+      searched += " and '" + there.string() + "'";
+    } else {
+      searched += " (FITFEEL_SOURCE_DIR is not set)";
+    }
+  }
+  throw UserError("the run's scenario file was not found at " + searched +
+                  "; give --scenario FILE");
+}
+
+// Loads the plugins the way `run` and `validate` do, saying which libraries were refused.
+std::unique_ptr<PluginRegistry> LoadPlugins() {
+  auto registry = std::make_unique<PluginRegistry>();
+  registry->LoadAll();
+  for (const RefusedLibrary& refused : registry->refused()) {
+    std::cerr << "fitfeel: note: plugin library " << refused.library.string()
+              << " was not loaded: " << refused.reason << "\n";
+  }
+  return registry;
+}
+
+void AddSms(CLI::App& plot) {
+  struct Options {
+    std::string scenario;
+    std::string part;
+    std::optional<std::uint64_t> seed;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  auto* cmd = plot.add_subcommand(
+      "sms",
+      "Unwrapped skin profile variation of each mating surface and the tolerance space at full "
+      "insertion");
+  cmd->add_option("SCENARIO", options->scenario, "scenario file (YAML)")->required();
+  cmd->add_option("--part", options->part, "draw only this part's skin profile");
+  cmd->add_option("--seed", options->seed, "seed of the skin model shapes (default: run.seed)");
+  cmd->add_option("-o,--output", options->output,
+                  "image file: .png, .svg, or no extension for both")
+      ->required();
+  cmd->callback([options] {
+    const auto outputs = plot::ResolveOutputs(options->output);
+    const auto registry = LoadPlugins();
+    LoadOptions load;
+    load.allow_non_rendering = true;  // a surface without laws still has skin model shapes
+    const plot::SceneShapes shapes =
+        plot::GenerateSceneShapes(LoadScene(options->scenario, *registry, load), options->seed);
+    const Scene& scene = shapes.scene;
+    plot::Render(plot::MakeSceneSmsChart(scene.name, scene.inner, shapes.inner, scene.outer,
+                                         shapes.outer, !scene.surface->rotational(), options->part),
+                 outputs);
+    PrintWritten(outputs);
+  });
+}
+
+void AddPressure(CLI::App& plot) {
+  struct Options {
+    std::string dir;
+    double depth_mm = 0.0;
+    std::string scenario;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  auto* cmd = plot.add_subcommand(
+      "pressure",
+      "Contact pressure map of a run at one insertion depth, with the resultant forces");
+  cmd->add_option("DIR", options->dir, "run folder holding trace.csv and summary.json")->required();
+  cmd->add_option("--depth", options->depth_mm,
+                  "insertion depth in mm, inside the run's constrained range")
+      ->required();
+  cmd->add_option("--scenario", options->scenario,
+                  "scenario file of the run (default: the one its summary.json names)");
+  cmd->add_option("-o,--output", options->output,
+                  "image file: .png, .svg, or no extension for both")
+      ->required();
+  cmd->callback([options] {
+    const auto outputs = plot::ResolveOutputs(options->output);
+    const plot::RunRecord run = plot::LoadRun(options->dir);
+    plot::RowAtDepth(run.trace, options->depth_mm);  // refuse a depth the run never reached
+    std::string file = options->scenario;
+    if (file.empty()) {
+      if (!run.summary.scenario_file) {
+        throw UserError(options->dir +
+                        "/summary.json names no scenario file; give --scenario FILE");
+      }
+      file = *run.summary.scenario_file;
+    }
+    const auto registry = LoadPlugins();
+    Scene scene = LoadScene(FindRunScenario(file), *registry);
+    if (scene.name != run.summary.scenario) {
+      throw UserError("scenario file '" + file + "' holds scenario '" + scene.name +
+                      "', but the run in " + options->dir + " was of '" + run.summary.scenario +
+                      "'");
+    }
+    // The run's seed rebuilds the skin model shapes it ran on.
+    const plot::SceneShapes shapes = plot::GenerateSceneShapes(std::move(scene), run.summary.seed);
+    plot::CheckSameGrids(shapes, run.summary.inner_grid, run.summary.outer_grid);
+    const plot::PreparedContact contact = plot::PrepareContact(shapes, run.summary.law);
+    plot::Render(plot::MakePressureChart(plot::MakePressureData(
+                     run, options->depth_mm, *contact.analyzer, *contact.law, shapes.inner.grid)),
+                 outputs);
+    PrintWritten(outputs);
+  });
+}
+
+}  // namespace
 
 void AddPlotCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("plot", "(being built)");
-  cmd->callback([] { throw UnsupportedError("'plot' is not implemented in this build yet"); });
+  auto* cmd = app.add_subcommand("plot", "Draw charts of runs and skin model shapes (gnuplot)");
+  cmd->require_subcommand(1);
+  AddTrace(*cmd);
+  AddSms(*cmd);
+  AddPressure(*cmd);
 }
 
 }  // namespace fitfeel::cli

@@ -97,6 +97,16 @@ void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& mo
   DoEvaluate(contact, motion, out);
 }
 
+double ResistanceLaw::PressurePerInterference() const {
+  const double coefficient = DoPressurePerInterference();
+  assert(coefficient >= 0.0);
+  return coefficient;
+}
+
+double ResistanceLaw::DoPressurePerInterference() const {
+  throw UnsupportedError("this resistance law reports no contact pressure per unit interference");
+}
+
 std::shared_ptr<const Geometry> SurfaceType::ParseGeometry(const PartSpec& part,
                                                            const ConfigNode& geometry) const {
   auto parsed = DoParseGeometry(part, geometry);

@@ -26,12 +26,16 @@ class FITFEEL_API ResistanceLaw {
   // Per tick: no allocation, no locks, no exceptions, no I/O.
   void Evaluate(const ContactState& contact, const MatingMotion& motion,
                 Wrench* out) const noexcept;
+  // Not for the tick: contact pressure per unit radial interference delta(P_ij), Pa/m, after
+  // Prepare (eq. 10's coefficient), for pressure maps. UnsupportedError for a law without one.
+  double PressurePerInterference() const;
 
  protected:
   virtual void DoPrepare(const PartSpec& inner, const PartSpec& outer,
                          const ModelSettings& settings) = 0;
   virtual void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                           Wrench* out) const noexcept = 0;
+  virtual double DoPressurePerInterference() const;
 };
 
 }  // namespace fitfeel

@@ -50,6 +50,7 @@ class GpsLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
+  double DoPressurePerInterference() const override { return pressure_per_interference_; }
 
  private:
   double mu_ = 0.0;

@@ -1,0 +1,18 @@
+#!/bin/sh
+# Regenerates the case-study figures of the README (paper case study 1: H7/js6, H7/g6 and VE1)
+# from a Release build. Run from anywhere: sh docs/figures/regenerate.sh
+set -eu
+root=$(cd "$(dirname "$0")/../.." && pwd)
+fitfeel="$root/build/bin/fitfeel"
+figures="$root/docs/figures"
+runs=$(mktemp -d)
+trap 'rm -rf "$runs"' EXIT
+cd "$root"  # the runs' summaries name their scenario files relative to here
+
+for scenario in h7js6 h7g6 ve1; do
+  "$fitfeel" run "scenarios/paper-case1-$scenario.yaml" --out "$runs/$scenario" >/dev/null
+done
+"$fitfeel" plot trace "$runs/h7js6" "$runs/h7g6" "$runs/ve1" --log -o "$figures/case1-trace.png"
+"$fitfeel" plot sms scenarios/paper-case1-h7js6.yaml -o "$figures/case1-sms-h7js6.png"
+"$fitfeel" plot sms scenarios/paper-case1-h7g6.yaml -o "$figures/case1-sms-h7g6.png"
+"$fitfeel" plot pressure "$runs/h7js6" --depth 20 -o "$figures/case1-pressure-h7js6.png"

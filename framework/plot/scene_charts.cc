@@ -1,0 +1,71 @@
+#include "framework/plot/scene_charts.h"
+
+#include <cstdio>
+#include <vector>
+
+#include "framework/core/error.h"
+#include "framework/plot/sms_chart.h"
+
+namespace fitfeel::plot {
+
+HeatMapChart MakeSceneSmsChart(const std::string& scenario, const PartSpec& inner,
+                               const SkinModelShape& inner_sms, const PartSpec& outer,
+                               const SkinModelShape& outer_sms, bool translational,
+                               const std::string& only_part) {
+  if (!only_part.empty()) {
+    if (only_part == inner.name) {
+      return MakeSmsChart(scenario, {MakeSkinProfileMap(inner, inner_sms)});
+    }
+    if (only_part == outer.name) {
+      return MakeSmsChart(scenario, {MakeSkinProfileMap(outer, outer_sms)});
+    }
+    throw UserError("scenario '" + scenario + "' has no part '" + only_part + "'; its parts are '" +
+                    inner.name + "' and '" + outer.name + "'");
+  }
+  std::vector<HeatMap> maps = {MakeSkinProfileMap(inner, inner_sms),
+                               MakeSkinProfileMap(outer, outer_sms)};
+  std::string omitted;
+  if (!translational) {
+    omitted = "no tolerance-space map: the parts mate by rotation, not by insertion";
+  } else {
+    try {
+      const double depth = FullInsertionDepth(inner_sms, outer_sms);
+      char where[96];
+      std::snprintf(where, sizeof where, "at full insertion (depth %g mm)", depth * 1e3);
+      maps.push_back(MakeToleranceSpaceMap(
+          inner, outer, ToleranceSpaceAtDepth(inner_sms, outer_sms, depth), where));
+    } catch (const UserError& e) {
+      omitted = std::string("no tolerance-space map: ") + e.what();
+    }
+  }
+  HeatMapChart chart = MakeSmsChart(scenario, std::move(maps));
+  if (!omitted.empty()) chart.subtitle.push_back(omitted);
+  return chart;
+}
+
+PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
+                                 const ContactAnalyzer& analyzer, const ResistanceLaw& law,
+                                 const SurfaceGrid& inner_grid) {
+  const ConstrainedTrace& trace = run.trace;
+  const std::size_t row = RowAtDepth(trace, depth_mm);
+  MatingPose pose;
+  pose.depth = depth_mm * 1e-3;
+  if (!trace.x_mm.empty()) {
+    pose.offset = Eigen::Vector2d(trace.x_mm[row], trace.z_mm[row]) * 1e-3;
+    pose.angle = trace.angle_rad[row];
+  }
+  PressureMapData data;
+  data.scenario = run.summary.scenario;
+  data.law = run.summary.law;
+  data.depth_mm = depth_mm;
+  data.grid = inner_grid;
+  analyzer.InterferenceMap(pose, &data.interference);
+  data.pressure_per_interference = law.PressurePerInterference();
+  data.fx_N = trace.fx_N[row];
+  data.fy_N = trace.fy_N[row];
+  data.fz_N = trace.fz_N[row];
+  data.force_depth_mm = trace.depth_mm[row];
+  return data;
+}
+
+}  // namespace fitfeel::plot

@@ -1,0 +1,96 @@
+#include "framework/plot/trace_chart.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "framework/core/error.h"
+
+namespace fitfeel::plot {
+
+void DecimateKeepingPeaks(std::vector<double>* x, std::vector<double>* y, std::size_t max_points) {
+  const std::size_t n = x->size();
+  if (n <= max_points || max_points < 2) return;
+  const std::size_t buckets = max_points / 2;
+  std::vector<double> out_x, out_y;
+  out_x.reserve(2 * buckets);
+  out_y.reserve(2 * buckets);
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const std::size_t begin = b * n / buckets;
+    const std::size_t end = (b + 1) * n / buckets;
+    std::size_t low = begin, high = begin;
+    for (std::size_t k = begin; k < end; ++k) {
+      if ((*y)[k] < (*y)[low]) low = k;
+      if ((*y)[k] > (*y)[high]) high = k;
+    }
+    const std::size_t first = std::min(low, high), second = std::max(low, high);
+    out_x.push_back((*x)[first]);
+    out_y.push_back((*y)[first]);
+    if (second != first) {
+      out_x.push_back((*x)[second]);
+      out_y.push_back((*y)[second]);
+    }
+  }
+  *x = std::move(out_x);
+  *y = std::move(out_y);
+}
+
+std::string FormatNewtons(double value) {
+  // Whole newtons from 1000 N up, three significant digits below (0.000123 N stays readable).
+  char buffer[64];
+  if (std::abs(value) >= 1000.0) {
+    std::snprintf(buffer, sizeof buffer, "%.0f N", value);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%.3g N", value);
+  }
+  return buffer;
+}
+
+namespace {
+
+std::string RunName(const RunSummary& summary) {
+  return summary.scenario + (summary.law.empty() ? "" : " · law " + summary.law);
+}
+
+std::string StatsText(const ResistanceStats& stats) {
+  return "mean " + FormatNewtons(stats.mean) + ", min " + FormatNewtons(stats.min) + ", max " +
+         FormatNewtons(stats.max);
+}
+
+}  // namespace
+
+LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_scale) {
+  if (runs.empty()) throw UserError("no run folder to plot");
+  LineChart chart;
+  chart.title = "Assembly resistance along the insertion (constrained stage)";
+  LinePanel axial{"Axial resistance",
+                  "insertion depth (mm)",
+                  "axial resistance |F_y| (N)",
+                  true,
+                  log_scale,
+                  {}};
+  LinePanel radial{"Radial resistance",
+                   "insertion depth (mm)",
+                   "radial resistance sqrt(F_x² + F_z²) (N)",
+                   true,
+                   log_scale,
+                   {}};
+  for (const auto& run : runs) {
+    const auto& trace = run.trace;
+    std::vector<double> depth = trace.depth_mm, fy(trace.fy_N.size()), fr(trace.fx_N.size());
+    for (std::size_t k = 0; k < fy.size(); ++k) {
+      fy[k] = std::abs(trace.fy_N[k]);
+      fr[k] = std::hypot(trace.fx_N[k], trace.fz_N[k]);
+    }
+    std::vector<double> depth_radial = depth;
+    DecimateKeepingPeaks(&depth, &fy, kMaxCurvePoints);
+    DecimateKeepingPeaks(&depth_radial, &fr, kMaxCurvePoints);
+    const std::string name = RunName(run.summary);
+    axial.series.push_back({name + ": " + StatsText(run.summary.axial), depth, fy});
+    radial.series.push_back({name + ": " + StatsText(run.summary.radial), depth_radial, fr});
+  }
+  chart.panels = {std::move(axial), std::move(radial)};
+  return chart;
+}
+
+}  // namespace fitfeel::plot
