@@ -1,6 +1,7 @@
 #include "framework/stability/wall_experiment.h"
 
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,37 @@ TEST(WallExperiment, DirectRenderingIsStableInsideAndUnstableOutsideTheBound) {
         }
       }
     }
+  }
+}
+
+// Random devices, rates, virtual dampings and hands (fixed seed): both sides of the bound hold
+// wherever the hand's contact frequency on the wall stays well below the sampling's, omega T <=
+// 0.5 at 1.25 times the bound's stiffness, i.e. (omega T)^2 = 2.5 (b - |B|) / (m rate) <= 0.25.
+// Beyond that the zero-order hold's lag is no longer T / 2 and the backward difference no longer
+// a damping of B, and the bound drifts away from the boundary (by 25 % near omega T = 0.7 with
+// |B| = b / 2).
+TEST(WallExperiment, BothSidesOfTheBoundOverRandomDraws) {
+  std::mt19937_64 rng(20261122);
+  auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+  };
+  int drawn = 0;
+  while (drawn < 60) {
+    const double b = std::exp(uniform(std::log(0.5), std::log(20.0)));
+    const double rate = std::exp(uniform(std::log(200.0), std::log(5000.0)));
+    const double mass = std::exp(uniform(std::log(0.02), std::log(2.0)));
+    const double damping = -uniform(0.0, 0.6) * b;
+    if (2.5 * (b + damping) / (mass * rate) > 0.25) continue;
+    ++drawn;
+    WallExperiment e = Direct("PHANTOM Desktop", rate, damping, mass);
+    e.spec.damping = b;
+    const double bound = BoundStiffness(e.spec, damping, rate);
+    SCOPED_TRACE("b " + std::to_string(b) + " rate " + std::to_string(rate) + " m " +
+                 std::to_string(mass) + " B " + std::to_string(damping));
+    e.stiffness = kStableShare * bound;
+    EXPECT_TRUE(RunWallExperiment(e).stable);
+    e.stiffness = kUnstableShare * bound;
+    EXPECT_FALSE(RunWallExperiment(e).stable);
   }
 }
 
