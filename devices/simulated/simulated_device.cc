@@ -1,0 +1,154 @@
+#include "devices/simulated/simulated_device.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "framework/core/error.h"
+
+namespace fitfeel::simulated {
+namespace {
+
+void Require(bool ok, const std::string& what) {
+  if (!ok) throw UserError("simulated device: " + what);
+}
+
+bool InRange(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+}  // namespace
+
+void Validate(const Settings& s) {
+  if (s.mode == Settings::Mode::kConstantSpeed) {
+    Require(InRange(s.speed, 0.0, 1.0) && s.speed > 0.0, "speed must be in (0, 1] m/s");
+    Require(InRange(s.start_offset, 0.0, 1.0), "start_offset must be in [0, 1] m");
+    Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
+    Require(InRange(s.radial_damping, 0.0, 1e6), "radial_damping must be in [0, 1e6] N*s/m");
+    return;
+  }
+  Require(!s.waypoints.empty(), "a scripted run needs at least one waypoint");
+  for (std::size_t i = 0; i < s.waypoints.size(); ++i) {
+    const auto& w = s.waypoints[i];
+    Require(InRange(w.time, 0.0, 1e5), "waypoint times must be in [0, 1e5] s");
+    Require(w.position.allFinite() && w.position.cwiseAbs().maxCoeff() <= 10.0,
+            "waypoint positions must be within 10 m of the entrance");
+    Require(i == 0 || w.time > s.waypoints[i - 1].time, "waypoint times must increase strictly");
+  }
+  Require(InRange(s.hand_mass, 0.0, 1e3) && s.hand_mass > 0.0, "hand mass must be in (0, 1000] kg");
+  Require(InRange(s.hand_stiffness, 0.0, 1e8) && s.hand_stiffness > 0.0,
+          "hand stiffness must be in (0, 1e8] N/m");
+  Require(InRange(s.hand_damping, 0.0, 1e6), "hand damping must be in [0, 1e6] N*s/m");
+}
+
+SimulatedDevice::SimulatedDevice() = default;
+
+void SimulatedDevice::Configure(const Settings& settings) {
+  Validate(settings);
+  settings_ = settings;
+}
+
+double SimulatedDevice::mass() const {
+  return settings_.mode == Settings::Mode::kScripted ? settings_.hand_mass
+                                                     : settings_.radial_load / kStandardGravity;
+}
+
+DeviceSpec SimulatedDevice::spec() const {
+  DeviceSpec spec;
+  spec.native_rate = 1.0 / period_;
+  // A simulated robot has no motor to saturate.
+  spec.max_force = std::numeric_limits<double>::infinity();
+  spec.max_continuous_force = spec.max_force;
+  const double m = mass();
+  const double c = settings_.mode == Settings::Mode::kScripted ? settings_.hand_damping
+                                                               : settings_.radial_damping;
+  if (settings_.mode == Settings::Mode::kScripted) {
+    spec.model = "simulated hand (scripted waypoints)";
+  } else {
+    spec.model = "simulated robot (constant speed, constant radial load)";
+  }
+  spec.damping = c;
+  // Stability bound of the explicit contact force on the symplectic-Euler mass (see header);
+  // a part held rigidly on the axis (no mass) cannot be destabilised by a contact stiffness.
+  spec.max_stiffness = m > 0.0 ? (4.0 + 2.0 * period_ * c / m) * m / (period_ * period_)
+                               : std::numeric_limits<double>::infinity();
+  spec.workspace = Eigen::Vector3d::Constant(20.0);
+  return spec;
+}
+
+void SimulatedDevice::DoStart(double period) {
+  Validate(settings_);
+  period_ = period;
+  time_ = 0.0;
+  delivered_.SetZero();
+  velocity_.setZero();
+  if (settings_.mode == Settings::Mode::kConstantSpeed) {
+    position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
+  } else {
+    Eigen::Vector3d v;
+    Target(0.0, &position_, &v);
+  }
+}
+
+void SimulatedDevice::Target(double time, Eigen::Vector3d* position,
+                             Eigen::Vector3d* velocity) const noexcept {
+  const auto& w = settings_.waypoints;
+  velocity->setZero();
+  if (time <= w.front().time) {
+    *position = w.front().position;
+    return;
+  }
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    if (time < w[i].time) {
+      const double span = w[i].time - w[i - 1].time;
+      *velocity = (w[i].position - w[i - 1].position) / span;
+      *position = w[i - 1].position + (time - w[i - 1].time) * *velocity;
+      return;
+    }
+  }
+  *position = w.back().position;
+}
+
+void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
+  time_ = time;
+  if (settings_.mode == Settings::Mode::kConstantSpeed) {
+    // Computed from the time, never accumulated: the axial position is exact at every tick.
+    position_.y() = -settings_.start_offset + settings_.speed * time;
+    velocity_.y() = settings_.speed;
+  }
+  out->time = time;
+  out->position = position_;
+  out->orientation = Eigen::Quaterniond::Identity();
+  out->velocity = velocity_;
+  out->angular_velocity.setZero();
+  out->buttons = 0;
+  out->delivered = delivered_;
+}
+
+void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
+  delivered_ = wrench;
+  const double h = period_;
+  if (settings_.mode == Settings::Mode::kConstantSpeed) {
+    const double m = mass();
+    // Held on the axis by the robot until the leading end is inside; with no weight, no mass.
+    if (m <= 0.0 || position_.y() < 0.0) return;
+    const double c = settings_.radial_damping;
+    const Eigen::Vector2d force(wrench.force.x(), wrench.force.z() - settings_.radial_load);
+    Eigen::Vector2d v(velocity_.x(), velocity_.z());
+    v = (v + h * force / m) / (1.0 + h * c / m);
+    velocity_.x() = v.x();
+    velocity_.z() = v.y();
+    position_.x() += h * v.x();
+    position_.z() += h * v.y();
+    return;
+  }
+  // Scripted hand: backward Euler for its spring-damper towards the target at the end of the
+  // step, the rendered force explicit.
+  Eigen::Vector3d target, target_velocity;
+  Target(time_ + h, &target, &target_velocity);
+  const double m = settings_.hand_mass, k = settings_.hand_stiffness, b = settings_.hand_damping;
+  velocity_ =
+      (m * velocity_ + h * (k * (target - position_) + b * target_velocity + wrench.force)) /
+      (m + h * b + h * h * k);
+  position_ += h * velocity_;
+}
+
+}  // namespace fitfeel::simulated
