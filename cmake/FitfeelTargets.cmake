@@ -29,11 +29,13 @@ function(fitfeel_add_test name)
   target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock
                                         GTest::gtest_main ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
-  get_property(plugins GLOBAL PROPERTY FITFEEL_PLUGIN_TARGETS)
+  # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees are
+  # passed as compile definitions instead.
+  target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+                                             FITFEEL_TEST_BUILD_DIR="${CMAKE_BINARY_DIR}")
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     PROPERTIES LABELS "${ARG_LABELS}"
-               ENVIRONMENT "FITFEEL_SOURCE_DIR=${PROJECT_SOURCE_DIR};FITFEEL_BUILD_DIR=${CMAKE_BINARY_DIR}"
     DISCOVERY_TIMEOUT 60)
 endfunction()
 

@@ -37,6 +37,6 @@ FITFEEL_API std::string DescribeDimension(Dimension dimension);
 FITFEEL_API double ParseQuantity(std::string_view text, Dimension dimension);
 
 // Formats an SI value in a unit suited to its magnitude, e.g. 2.0e-5 m -> "20 um".
-FITFEEL_API std::string FormatQuantity(double si_value, Dimension dimension);
+FITFEEL_API std::string FormatQuantity(double value_si, Dimension dimension);
 
 }  // namespace fitfeel

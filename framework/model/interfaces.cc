@@ -107,6 +107,20 @@ void SurfaceType::CheckPair(const PartSpec& inner, const PartSpec& outer,
 
 void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode&) const {}
 
+std::vector<CharacteristicCheck> SurfaceType::EvaluateCharacteristics(
+    const PartSpec& part, const SkinModelShape& sms) const {
+  if (sms.variation.size() != sms.grid.size() || sms.grid.size() == 0) {
+    throw UserError("part '" + part.name + "': skin model shape does not match its grid");
+  }
+  return DoEvaluateCharacteristics(part, sms);
+}
+
+std::vector<CharacteristicCheck> SurfaceType::DoEvaluateCharacteristics(
+    const PartSpec& part, const SkinModelShape&) const {
+  throw UnsupportedError("part '" + part.name +
+                         "': this surface type cannot evaluate its characteristics yet");
+}
+
 std::unique_ptr<ResistanceLaw> SurfaceType::MakeLaw(std::string_view name) const {
   const auto names = law_names();
   if (std::find(names.begin(), names.end(), name) == names.end()) {

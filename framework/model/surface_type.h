@@ -15,6 +15,15 @@
 
 namespace fitfeel {
 
+// One evaluated characteristic of a skin model shape against the tolerance it came from.
+struct CharacteristicCheck {
+  std::string name;        // "two_point_size_max", "roundness", "axis_straightness", ...
+  double value = 0.0;      // evaluated, m
+  double lower = 0.0;      // allowed range, m (a form tolerance is [0, t])
+  double upper = 0.0;
+  bool pass() const { return value >= lower && value <= upper; }
+};
+
 // What a surface plugin registers: one kind of mating surface (cylindrical, planar, ...) with the
 // four model interfaces of the design card. Objects it makes keep their plugin library loaded (the
 // registry never unloads a library).
@@ -42,6 +51,12 @@ class FITFEEL_API SurfaceType {
   // The constrained motion: translation along the mating axis, or rotation about it / the centre.
   virtual bool rotational() const { return false; }
 
+  // Evaluates every characteristic of `part`'s spec (size limits, each form tolerance) on a
+  // generated skin model shape, as a metrologist would (minimum zone where ISO defaults to it).
+  // Used by `fitfeel sms` and by the conformance suite. Not for the tick.
+  std::vector<CharacteristicCheck> EvaluateCharacteristics(const PartSpec& part,
+                                                           const SkinModelShape& sms) const;
+
   virtual std::unique_ptr<Discretizer> MakeDiscretizer() const = 0;
   virtual std::unique_ptr<VariationGenerator> MakeVariationGenerator() const = 0;
   virtual std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const = 0;
@@ -54,6 +69,9 @@ class FITFEEL_API SurfaceType {
   virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                            const ConfigNode& pair_node) const;
   virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
+  // Default: throws UnsupportedError (a surface type without a metrology binding yet).
+  virtual std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
+      const PartSpec& part, const SkinModelShape& sms) const;
 };
 
 }  // namespace fitfeel

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -13,6 +14,17 @@ namespace fitfeel {
 
 class SurfaceType;
 class Device;
+
+// "surface", "device", or "unknown kind N".
+FITFEEL_API std::string PluginKindName(std::uint32_t kind);
+
+// True for a stable dotted lowercase id: at least two dot-separated segments, each starting with a
+// letter and holding only a-z, 0-9 and '_' (fitfeel.surface.cylindrical, fitfeel.device.simulated).
+FITFEEL_API bool IsValidPluginId(std::string_view id);
+
+// One search folder as messages and `fitfeel plugins` show it: the path, where it comes from
+// ("(FITFEEL_PLUGIN_PATH)", "(build tree)", "(install prefix)") and "[does not exist]" if absent.
+FITFEEL_API std::string DescribeSearchFolder(const std::filesystem::path& folder);
 
 // One registered entry, as `fitfeel plugins` lists it.
 struct PluginInfo {
@@ -46,7 +58,8 @@ class FITFEEL_API PluginRegistry {
   // Scans every folder of the search path for lib*.so and loads each; a library that fails its
   // checks is recorded in refused() and skipped; the first library to claim an id keeps it.
   void LoadAll();
-  // Loads one library; throws PluginError saying exactly what is wrong with it.
+  // Loads one library; throws PluginError naming the library and exactly what is wrong with it
+  // (expected vs found). Loading a library this registry already accepted is a no-op.
   void LoadLibrary(const std::filesystem::path& library);
   // Registers an in-process entry (tests, built-ins); throws PluginError on a duplicate id.
   void AddEntry(const FitfeelPluginEntry& entry);
@@ -62,6 +75,9 @@ class FITFEEL_API PluginRegistry {
   std::shared_ptr<Device> MakeDevice(std::string_view id) const;
 
  private:
+  // Finds `id`, checks its kind and calls its factory; throws PluginError.
+  void* Make(std::string_view id, std::uint32_t kind) const;
+
   struct Impl;
   std::vector<std::filesystem::path> search_path_;
   std::vector<RefusedLibrary> refused_;

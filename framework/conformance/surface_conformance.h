@@ -1,0 +1,251 @@
+#pragma once
+
+// The conformance suite every surface plugin instantiates, header-only. A plugin's test folder
+// holds a small scenario of its surface type and one line:
+//
+//   FITFEEL_SURFACE_CONFORMANCE(Cylindrical, "surfaces/cylindrical/test/conformance.yaml");
+//
+// The scenario is loaded through the plugin registry, so the suite also proves the plugin
+// registers and validates like any other. Paths are relative to the repository root (ctest runs
+// tests there). A surface type without a resistance law (renders_forces() == false) gets the
+// geometric tests and skips the force tests with a message saying why.
+
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/resistance_law.h"
+#include "framework/model/surface_type.h"
+#include "framework/plugin/registry.h"
+#include "framework/scenario/scene.h"
+
+namespace fitfeel::conformance {
+
+// Counts heap allocations made by this thread while armed; the instantiating translation unit
+// replaces the global operator new to feed it (FITFEEL_SURFACE_CONFORMANCE does that).
+struct AllocationCounter {
+  static inline thread_local bool armed = false;
+  static inline thread_local std::size_t count = 0;
+};
+
+// How many seeds the property tests draw; plugins with slow generators may pass fewer.
+inline constexpr int kDefaultSeeds = 60;
+
+template <typename Traits>
+class SurfaceConformance : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    registry_ = std::make_unique<PluginRegistry>();
+    registry_->LoadAll();
+    LoadOptions options;
+    options.allow_non_rendering = true;
+    scene_ = LoadScene(Traits::kScenario, *registry_, options);
+  }
+
+  const PartSpec& part(int k) const { return k == 0 ? scene_.inner : scene_.outer; }
+
+  SkinModelShape Generate(const PartSpec& p, std::uint64_t seed) const {
+    const auto discretizer = scene_.surface->MakeDiscretizer();
+    const auto generator = scene_.surface->MakeVariationGenerator();
+    const SurfaceGrid grid = discretizer->Discretize(p, scene_.model.resolution);
+    Rng rng(seed);
+    return generator->Generate(p, grid, scene_.model.texture, rng);
+  }
+
+  // Prepares analyzer and law for the scene's parts at `seed`; null law if the surface renders no
+  // forces.
+  void PrepareModel(std::uint64_t seed, std::unique_ptr<ContactAnalyzer>* analyzer,
+                    std::unique_ptr<ResistanceLaw>* law) const {
+    const auto discretizer = scene_.surface->MakeDiscretizer();
+    const auto generator = scene_.surface->MakeVariationGenerator();
+    Rng rng(seed);
+    const SkinModelShape inner = generator->Generate(
+        scene_.inner, discretizer->Discretize(scene_.inner, scene_.model.resolution),
+        scene_.model.texture, rng);
+    const SkinModelShape outer = generator->Generate(
+        scene_.outer, discretizer->Discretize(scene_.outer, scene_.model.resolution),
+        scene_.model.texture, rng);
+    *analyzer = scene_.surface->MakeContactAnalyzer();
+    (*analyzer)->Prepare(scene_.inner, inner, scene_.outer, outer, scene_.model);
+    *law = scene_.surface->MakeLaw(scene_.model.law);
+    (*law)->Prepare(scene_.inner, scene_.outer, scene_.model);
+  }
+
+  // Largest change of the force magnitude between neighbouring samples of a sweep of `samples`
+  // poses from `from` to `to`.
+  static double LargestJump(const ContactAnalyzer& analyzer, const ResistanceLaw& law,
+                            const MatingPose& from, const MatingPose& to, int samples) {
+    MatingMotion motion;
+    motion.velocity.y() = 0.01;
+    ContactState contact;
+    Wrench wrench;
+    double previous = 0.0;
+    double largest = 0.0;
+    for (int k = 0; k <= samples; ++k) {
+      const double s = static_cast<double>(k) / samples;
+      MatingPose pose;
+      pose.depth = from.depth + s * (to.depth - from.depth);
+      pose.offset = from.offset + s * (to.offset - from.offset);
+      pose.angle = from.angle + s * (to.angle - from.angle);
+      analyzer.Evaluate(pose, &contact);
+      law.Evaluate(contact, motion, &wrench);
+      const double magnitude = wrench.force.norm() + wrench.torque.norm();
+      if (k > 0) largest = std::max(largest, std::abs(magnitude - previous));
+      previous = magnitude;
+    }
+    return largest;
+  }
+
+  std::unique_ptr<PluginRegistry> registry_;
+  Scene scene_;
+};
+
+TYPED_TEST_SUITE_P(SurfaceConformance);
+
+TYPED_TEST_P(SurfaceConformance, CellAreasSumToTheNominalArea) {
+  for (int k = 0; k < 2; ++k) {
+    const PartSpec& p = this->part(k);
+    const SurfaceGrid grid =
+        this->scene_.surface->MakeDiscretizer()->Discretize(p, this->scene_.model.resolution);
+    ASSERT_GT(grid.size(), 0);
+    EXPECT_NEAR(grid.area.sum(), p.geometry->nominal_area(), 1e-9 * p.geometry->nominal_area())
+        << p.name;
+    EXPECT_TRUE((grid.area.array() > 0.0).all()) << p.name;
+  }
+}
+
+TYPED_TEST_P(SurfaceConformance, ZeroTolerancesGiveZeroVariation) {
+  for (int k = 0; k < 2; ++k) {
+    PartSpec p = this->part(k);
+    p.size.lower_deviation = 0.0;
+    p.size.upper_deviation = 0.0;
+    for (auto& [characteristic, tolerance] : p.form.tolerance) tolerance = 0.0;
+    p.texture = TextureSpec{};
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      const SkinModelShape sms = this->Generate(p, seed);
+      EXPECT_EQ(sms.variation.cwiseAbs().maxCoeff(), 0.0) << p.name << " seed " << seed;
+    }
+  }
+}
+
+TYPED_TEST_P(SurfaceConformance, EverySkinModelShapeMeetsItsTolerances) {
+  // 0.1 nm: far below any tolerance, above the rounding of evaluation in double precision.
+  constexpr double kSlack = 1e-10;
+  for (int k = 0; k < 2; ++k) {
+    const PartSpec& p = this->part(k);
+    for (int seed = 1; seed <= TypeParam::kSeeds; ++seed) {
+      const SkinModelShape sms = this->Generate(p, seed);
+      const auto checks = this->scene_.surface->EvaluateCharacteristics(p, sms);
+      ASSERT_FALSE(checks.empty()) << p.name;
+      for (const auto& check : checks) {
+        EXPECT_GE(check.value, check.lower - kSlack)
+            << p.name << " seed " << seed << ": " << check.name;
+        EXPECT_LE(check.value, check.upper + kSlack)
+            << p.name << " seed " << seed << ": " << check.name;
+      }
+    }
+  }
+}
+
+TYPED_TEST_P(SurfaceConformance, SameSeedGivesTheSameShape) {
+  for (int k = 0; k < 2; ++k) {
+    const PartSpec& p = this->part(k);
+    const SkinModelShape a = this->Generate(p, 7);
+    const SkinModelShape b = this->Generate(p, 7);
+    const SkinModelShape c = this->Generate(p, 8);
+    ASSERT_EQ(a.variation.size(), b.variation.size());
+    EXPECT_TRUE((a.variation.array() == b.variation.array()).all()) << p.name;
+    if (a.variation.cwiseAbs().maxCoeff() > 0.0) {
+      EXPECT_FALSE((a.variation.array() == c.variation.array()).all()) << p.name;
+    }
+  }
+}
+
+TYPED_TEST_P(SurfaceConformance, ForceIsContinuousAcrossContactOnset) {
+  if (!this->scene_.surface->renders_forces()) {
+    GTEST_SKIP() << "no resistance law: " << this->scene_.surface->limitation();
+  }
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+  this->PrepareModel(11, &analyzer, &law);
+  const double length = this->scene_.inner.geometry->mating_length();
+  const double reach = this->scene_.inner.size.upper_deviation -
+                       this->scene_.outer.size.lower_deviation + 50e-6;
+  // Radially from the axis to well past first contact at mid engagement, and axially through the
+  // entrance, where the overlap starts. A continuous force has jumps that halve with the step;
+  // a step in the force keeps its jump whatever the step.
+  MatingPose radial_from, radial_to, axial_from, axial_to;
+  radial_from.depth = radial_to.depth = 0.5 * length;
+  radial_to.offset = Eigen::Vector2d(0.6, -0.8) * std::abs(reach);
+  axial_from.depth = -0.05 * length;
+  axial_to.depth = 0.3 * length;
+  for (const auto& [from, to] : {std::pair{radial_from, radial_to}, std::pair{axial_from, axial_to}}) {
+    const double coarse = this->LargestJump(*analyzer, *law, from, to, 2000);
+    const double fine = this->LargestJump(*analyzer, *law, from, to, 8000);
+    EXPECT_LE(fine, 0.5 * coarse + 1e-9) << "a force step that does not shrink with the sample step";
+  }
+}
+
+TYPED_TEST_P(SurfaceConformance, EvaluateNeverAllocates) {
+  if (!this->scene_.surface->renders_forces()) {
+    GTEST_SKIP() << "no resistance law: " << this->scene_.surface->limitation();
+  }
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+  this->PrepareModel(5, &analyzer, &law);
+  const double length = this->scene_.inner.geometry->mating_length();
+  ContactState contact;
+  Wrench wrench;
+  MatingMotion motion;
+  motion.velocity.y() = 0.01;
+  AllocationCounter::count = 0;
+  AllocationCounter::armed = true;
+  for (int k = 0; k < 1000; ++k) {
+    MatingPose pose;
+    pose.depth = (k / 1000.0) * length;
+    pose.offset = Eigen::Vector2d(1e-6 * std::sin(k), -1e-6 * std::cos(k));
+    analyzer->Evaluate(pose, &contact);
+    law->Evaluate(contact, motion, &wrench);
+  }
+  AllocationCounter::armed = false;
+  EXPECT_EQ(AllocationCounter::count, 0u);
+  EXPECT_TRUE(wrench.AllFinite());
+}
+
+REGISTER_TYPED_TEST_SUITE_P(SurfaceConformance, CellAreasSumToTheNominalArea,
+                            ZeroTolerancesGiveZeroVariation,
+                            EverySkinModelShapeMeetsItsTolerances, SameSeedGivesTheSameShape,
+                            ForceIsContinuousAcrossContactOnset, EvaluateNeverAllocates);
+
+}  // namespace fitfeel::conformance
+
+// Replaces the global allocation functions of the test binary so the suite can count heap use in
+// the tick path; use FITFEEL_SURFACE_CONFORMANCE once per test binary.
+#define FITFEEL_CONFORMANCE_COUNT_ALLOCATIONS()                                  \
+  void* operator new(std::size_t size) {                                        \
+    if (::fitfeel::conformance::AllocationCounter::armed) {                     \
+      ++::fitfeel::conformance::AllocationCounter::count;                       \
+    }                                                                           \
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;                  \
+    throw std::bad_alloc();                                                     \
+  }                                                                             \
+  void operator delete(void* p) noexcept { std::free(p); }                      \
+  void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+// One line per surface plugin: a name and the repository-relative path of its scenario.
+#define FITFEEL_SURFACE_CONFORMANCE(Name, scenario_path)                                     \
+  FITFEEL_CONFORMANCE_COUNT_ALLOCATIONS()                                                   \
+  struct Name##ConformanceTraits {                                                          \
+    static constexpr const char* kScenario = scenario_path;                                 \
+    static constexpr int kSeeds = ::fitfeel::conformance::kDefaultSeeds;                    \
+  };                                                                                        \
+  INSTANTIATE_TYPED_TEST_SUITE_P(Name, SurfaceConformance,                                  \
+                                 ::testing::Types<Name##ConformanceTraits>)
