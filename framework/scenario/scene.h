@@ -47,8 +47,15 @@ struct Scene {
   RunSettings run;
 };
 
+struct LoadOptions {
+  // Accept a surface type that renders no forces (the thread stub), for inspecting its skin model
+  // shapes and for the conformance suite; `fitfeel run` never sets it.
+  bool allow_non_rendering = false;
+};
+
 // Parses, validates and resolves plugins for one scenario file. Throws ScenarioError
 // (file:line:column, key path, expected, found) for any problem, before anything runs.
-FITFEEL_API Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry);
+FITFEEL_API Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
+                            const LoadOptions& options = {});
 
 }  // namespace fitfeel
