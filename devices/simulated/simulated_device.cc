@@ -51,25 +51,31 @@ double SimulatedDevice::mass() const {
                                                      : settings_.radial_load / kStandardGravity;
 }
 
+double SimulatedDevice::ExplicitStabilityBound() const {
+  const double m = mass();
+  const double c = settings_.mode == Settings::Mode::kScripted ? settings_.hand_damping
+                                                               : settings_.radial_damping;
+  // A part held rigidly on the axis (no mass) cannot be destabilised by a contact stiffness.
+  return m > 0.0 ? (4.0 + 2.0 * period_ * c / m) * m / (period_ * period_)
+                 : std::numeric_limits<double>::infinity();
+}
+
 DeviceSpec SimulatedDevice::spec() const {
   DeviceSpec spec;
   spec.native_rate = 1.0 / period_;
   // A simulated robot has no motor to saturate.
   spec.max_force = std::numeric_limits<double>::infinity();
   spec.max_continuous_force = spec.max_force;
-  const double m = mass();
-  const double c = settings_.mode == Settings::Mode::kScripted ? settings_.hand_damping
-                                                               : settings_.radial_damping;
   if (settings_.mode == Settings::Mode::kScripted) {
     spec.model = "simulated hand (scripted waypoints)";
+    spec.damping = settings_.hand_damping;
   } else {
     spec.model = "simulated robot (constant speed, constant radial load)";
+    spec.damping = settings_.radial_damping;
   }
-  spec.damping = c;
-  // Stability bound of the explicit contact force on the symplectic-Euler mass (see header);
-  // a part held rigidly on the axis (no mass) cannot be destabilised by a contact stiffness.
-  spec.max_stiffness = m > 0.0 ? (4.0 + 2.0 * period_ * c / m) * m / (period_ * period_)
-                               : std::numeric_limits<double>::infinity();
+  // The contact is integrated implicitly with the stiffness the runtime hands over, so any
+  // contact stiffness is stable; ExplicitStabilityBound() is the limit without it.
+  spec.max_stiffness = std::numeric_limits<double>::infinity();
   spec.workspace = Eigen::Vector3d::Constant(20.0);
   return spec;
 }
@@ -80,6 +86,7 @@ void SimulatedDevice::DoStart(double period) {
   time_ = 0.0;
   delivered_.SetZero();
   velocity_.setZero();
+  stiffness_ = 0.0;
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
   } else {
@@ -133,7 +140,7 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
     const double c = settings_.radial_damping;
     const Eigen::Vector2d force(wrench.force.x(), wrench.force.z() - settings_.radial_load);
     Eigen::Vector2d v(velocity_.x(), velocity_.z());
-    v = (v + h * force / m) / (1.0 + h * c / m);
+    v = (m * v + h * force) / (m + h * c + h * h * stiffness_);
     velocity_.x() = v.x();
     velocity_.z() = v.y();
     position_.x() += h * v.x();
@@ -141,13 +148,13 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
     return;
   }
   // Scripted hand: backward Euler for its spring-damper towards the target at the end of the
-  // step, the rendered force explicit.
+  // step and for the contact's stiffness, the rendered force at the current position.
   Eigen::Vector3d target, target_velocity;
   Target(time_ + h, &target, &target_velocity);
   const double m = settings_.hand_mass, k = settings_.hand_stiffness, b = settings_.hand_damping;
   velocity_ =
       (m * velocity_ + h * (k * (target - position_) + b * target_velocity + wrench.force)) /
-      (m + h * b + h * h * k);
+      (m + h * b + h * h * (k + stiffness_));
   position_ += h * velocity_;
 }
 

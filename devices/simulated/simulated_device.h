@@ -48,13 +48,17 @@ struct Settings {
 // carries the weight and holds the part on the axis, as the paper's robot positions the shaft
 // before inserting it. With no radial load there is no mass to move: the part stays on the axis.
 //
-// Integration is semi-implicit (symplectic) Euler with the damping taken implicitly:
-//   v' = (v + h (F + W) / m) / (1 + h c / m),   x' = x + h v'.
-// Symplectic Euler keeps an undamped oscillator's energy bounded (no numerical drift in or out),
-// which explicit Euler would pump up and implicit Euler would bleed away; the implicit damping
-// term can never destabilise it. A contact stiffness k sampled at period h on the mass m stays
-// stable while k < (4 + 2 h c / m) m / h^2; spec().max_stiffness reports that bound (0.82 N/um
-// for a 2 N shaft at 1 kHz without damping).
+// Integration is semi-implicit (symplectic) Euler with the damping, and the contact stiffness k
+// the runtime hands over (Device::SetEnvironmentStiffness, 0 when free), taken implicitly:
+//   v' = (m v + h (F + W)) / (m + h c + h^2 k),   x' = x + h v'.
+// In free flight (k = 0) this is symplectic Euler, which keeps an oscillator's energy bounded
+// where explicit Euler pumps it up and implicit Euler bleeds it away. In contact the force of the
+// next position is linearised as F - k (x' - x): without that, a contact of stiffness k on the
+// mass m sampled at period h is stable only while k < (4 + 2 h c / m) m / h^2 (0.82 N/um for a
+// 2 N shaft at 1 kHz), and a steel press fit is about 3.7 N/nm: its natural frequency (~21 kHz)
+// is far above the tick's, so the part must reach its equilibrium within a tick, which the
+// linearised step does (for m << h^2 k it is a Newton step to F = -W). kExplicitStabilityBound
+// gives the bound for a device that is not told the stiffness.
 //
 // Scripted: the leading end is a hand of mass m_h held by a spring k_h and damper b_h to a target
 // moving in straight lines between waypoints (held at the first before it and at the last after
@@ -71,12 +75,16 @@ class SimulatedDevice final : public Device {
   DeviceSpec spec() const override;
   // Radial (constant speed) or hand (scripted) mass, kg.
   double mass() const;
+  // Largest contact stiffness an explicit contact force keeps stable on this mass at the period,
+  // N/m: what applies when the runtime does not hand over the stiffness.
+  double ExplicitStabilityBound() const;
 
  protected:
   void DoConfigure(const ConfigNode& node) override;  // simulated_config.cc
   void DoStart(double period) override;
   void DoRead(double time, DeviceState* out) noexcept override;
   void DoWrite(const Wrench& wrench) noexcept override;
+  void DoSetEnvironmentStiffness(double stiffness) noexcept override { stiffness_ = stiffness; }
 
  private:
   void Target(double time, Eigen::Vector3d* position, Eigen::Vector3d* velocity) const noexcept;
@@ -87,6 +95,7 @@ class SimulatedDevice final : public Device {
   Eigen::Vector3d position_{0.0, 0.0, 0.0};
   Eigen::Vector3d velocity_{0.0, 0.0, 0.0};
   Wrench delivered_;
+  double stiffness_ = 0.0;  // of the contact behind the next wrench, N/m
 };
 
 // Throws UserError naming the first setting out of range.

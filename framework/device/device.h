@@ -54,6 +54,12 @@ class FITFEEL_API Device {
   void Read(double time, DeviceState* out) noexcept;
   // Per tick: the wrench to apply (already scaled and bounded by the safety chain).
   void Write(const Wrench& wrench) noexcept;
+  // Per tick, before Write: the stiffness (N/m) of the contact the next wrench comes from, 0 when
+  // free. A device that simulates its own inertia integrates the contact implicitly with it (a
+  // press fit is far stiffer than an explicit step at 1 kHz can hold); hardware ignores it.
+  void SetEnvironmentStiffness(double stiffness) noexcept {
+    DoSetEnvironmentStiffness(stiffness >= 0.0 && stiffness < 1e300 ? stiffness : 0.0);
+  }
 
   virtual DeviceSpec spec() const = 0;
   virtual ClockOwner clock_owner() const { return ClockOwner::kFramework; }
@@ -69,6 +75,7 @@ class FITFEEL_API Device {
   virtual void DoStop() noexcept {}
   virtual void DoRead(double time, DeviceState* out) noexcept = 0;
   virtual void DoWrite(const Wrench& wrench) noexcept = 0;
+  virtual void DoSetEnvironmentStiffness(double) noexcept {}
 };
 
 }  // namespace fitfeel

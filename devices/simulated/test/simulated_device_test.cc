@@ -97,12 +97,13 @@ TEST(SimulatedRobotTest, SettlesOnASpringAtTheStaticEquilibrium) {
   EXPECT_NEAR(s.velocity.z(), 0.0, 1e-12);
 }
 
-TEST(SimulatedRobotTest, UndampedContactIsStableBelowTheReportedBoundAndNotAbove) {
+TEST(SimulatedRobotTest, WithoutTheStiffnessAnExplicitContactIsStableOnlyBelowTheBound) {
   const double load = 2.0;
   SimulatedDevice probe;
   probe.Configure(Robot(load));
   probe.Start(kPeriod);
-  const double bound = probe.spec().max_stiffness;
+  const double bound = probe.ExplicitStabilityBound();
+  EXPECT_TRUE(std::isinf(probe.spec().max_stiffness));
   EXPECT_NEAR(bound, 4.0 * (load / kStandardGravity) / (kPeriod * kPeriod), 1e-6);
   for (double factor : {0.9, 1.1}) {
     SimulatedDevice device;
@@ -137,6 +138,32 @@ TEST(SimulatedRobotTest, UndampedContactIsStableBelowTheReportedBoundAndNotAbove
       EXPECT_LT(min_z, -1e3 * load / k);  // grows without bound
     }
   }
+}
+
+TEST(SimulatedRobotTest, ASteelPressFitToldItsStiffnessSettlesWithinTicks) {
+  // 3.665 N/nm (the Lame radial stiffness of the case study's joint): 4500 times the explicit
+  // bound. Handed the stiffness, the part lands on the contact and rests at -W/k.
+  const double load = 2.0, k = 3.665e9;
+  SimulatedDevice device;
+  device.Configure(Robot(load));
+  device.Start(kPeriod);
+  DeviceState state;
+  double max_height = -1.0;
+  for (int t = 0; t < 600; ++t) {
+    device.Read(t * kPeriod, &state);
+    // A floor 12 um below the axis: the part falls onto it after the entrance (tick 200).
+    const double floor = -12e-6;
+    Wrench w;
+    const bool contact = state.position.z() < floor;
+    if (contact) w.force.z() = -k * (state.position.z() - floor);
+    device.SetEnvironmentStiffness(contact ? k : 0.0);
+    device.Write(w);
+    if (t > 220) max_height = std::max(max_height, state.position.z());
+  }
+  device.Read(600 * kPeriod, &state);
+  EXPECT_NEAR(state.position.z(), -12e-6 - load / k, 1e-12);
+  EXPECT_NEAR(state.velocity.z(), 0.0, 1e-9);
+  EXPECT_LT(max_height, -12e-6 + 1e-9);  // never bounced off
 }
 
 TEST(SimulatedHandTest, FollowsTheWaypointsAndYieldsToAForceByItsStiffness) {

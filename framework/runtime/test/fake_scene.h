@@ -148,6 +148,7 @@ class KinematicDevice final : public Device {
   const Wrench& last() const { return last_; }
   bool started() const { return started_; }
   bool stopped() const { return stopped_; }
+  double stiffness() const { return stiffness_; }
 
  protected:
   void DoConfigure(const ConfigNode&) override {}
@@ -158,6 +159,7 @@ class KinematicDevice final : public Device {
     out->position = Eigen::Vector3d(offset_.x(), start_y_ + speed_ * time, offset_.y());
     out->velocity = Eigen::Vector3d(0.0, speed_, 0.0);
   }
+  void DoSetEnvironmentStiffness(double k) noexcept override { stiffness_ = k; }
   void DoWrite(const Wrench& w) noexcept override {
     last_ = w;
     ++writes_;
@@ -169,6 +171,7 @@ class KinematicDevice final : public Device {
   Wrench last_;
   int writes_ = 0;
   bool started_ = false, stopped_ = false;
+  double stiffness_ = -1.0;
 };
 
 inline Scene MakeFakeScene(std::uint64_t seed, double duration = 1.0,

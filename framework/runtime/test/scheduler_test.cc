@@ -109,6 +109,26 @@ TEST(SchedulerTest, HandsOverAtTheEntranceAndBack) {
   EXPECT_EQ(reverse.trace()[299].stage, StageId::kPositioning);
 }
 
+TEST(SchedulerTest, HandsTheContactStiffnessToTheDeviceOnlyInContact) {
+  const PreparedScene prepared = Prepare(testing::MakeFakeScene(1));
+  const auto& analyzer = static_cast<const testing::FakeAnalyzer&>(*prepared.analyzer);
+  const PositioningStage positioning;
+  const ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
+  SchedulerSettings settings{1000.0, 0.2, ClockMode::kVirtual, 3.5e9};
+  // Inside the clearance: never in contact.
+  testing::KinematicDevice free(-1e-3, 10e-3, {0.0, 0.5 * analyzer.clearance()});
+  free.Start(1e-3);
+  Scheduler a(free, positioning, constrained, settings);
+  a.Run();
+  EXPECT_EQ(free.stiffness(), 0.0);
+  // Beyond it once engaged.
+  testing::KinematicDevice pressed(-1e-3, 10e-3, {0.0, -(analyzer.clearance() + 1e-6)});
+  pressed.Start(1e-3);
+  Scheduler b(pressed, positioning, constrained, settings);
+  b.Run();
+  EXPECT_EQ(pressed.stiffness(), 3.5e9);
+}
+
 TEST(SchedulerTest, SameSeedGivesIdenticalTracesAnotherSeedDoesNot) {
   const auto a = RunWithSeed(7);
   const auto b = RunWithSeed(7);
