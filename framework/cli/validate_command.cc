@@ -1,11 +1,32 @@
+#include <iostream>
+#include <memory>
+#include <string>
+
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
+#include "framework/plugin/registry.h"
+#include "framework/scenario/scene.h"
+#include "framework/scenario/scene_summary.h"
 
 namespace fitfeel::cli {
 
+// `fitfeel validate FILE`: loads the plugins and the scene exactly as `run` would, prints what
+// the scene holds and "valid". It writes no file; a bad scene throws ScenarioError (exit code 2).
 void AddValidateCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("validate", "(being built)");
-  cmd->callback([] { throw UnsupportedError("'validate' is not implemented in this build yet"); });
+  auto* cmd = app.add_subcommand(
+      "validate", "Check a scenario file (units, ranges, plugins) without running it");
+  auto file = std::make_shared<std::string>();
+  cmd->add_option("file", *file, "Scenario file (YAML)")->required();
+  cmd->callback([file] {
+    PluginRegistry registry;
+    registry.LoadAll();
+    for (const RefusedLibrary& refused : registry.refused()) {
+      std::cerr << "fitfeel: note: plugin library " << refused.library.string()
+                << " was not loaded: " << refused.reason << "\n";
+    }
+    const Scene scene = LoadScene(*file, registry);
+    std::cout << DescribeScene(scene) << "valid\n";
+  });
 }
 
 }  // namespace fitfeel::cli

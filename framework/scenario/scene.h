@@ -27,6 +27,7 @@ struct RunSettings {
   ClockMode clock = ClockMode::kVirtual;
   bool write_trace = true;
   bool write_summary = true;
+  bool write_recording = false;
 };
 
 // A fully parsed and checked scenario, in SI units. Nothing has run yet: the device is configured

@@ -1,0 +1,210 @@
+#include "framework/core/config_node.h"
+
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <system_error>
+#include <utility>
+
+#include "framework/core/quantity_parse.h"
+
+namespace fitfeel {
+namespace {
+
+std::string JoinPath(const std::string& parent, std::string_view key) {
+  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+}
+
+std::string Join(const std::vector<std::string_view>& items) {
+  std::string out;
+  for (std::string_view item : items) out += (out.empty() ? "" : ", ") + std::string(item);
+  return out;
+}
+
+// yaml-cpp marks are 0-based; editors and compilers count from 1.
+SourceLocation LocationOf(const YAML::Mark& mark, const std::string& file) {
+  if (mark.is_null() || mark.line < 0) return SourceLocation{file, 0, 0};
+  return SourceLocation{file, mark.line + 1, mark.column + 1};
+}
+
+std::string RangeText(Dimension dimension, double min, double max, bool min_inclusive) {
+  const bool has_min = std::isfinite(min);
+  const bool has_max = std::isfinite(max);
+  const std::string lo = FormatQuantity(min, dimension);
+  const std::string hi = FormatQuantity(max, dimension);
+  if (has_min && has_max) return (min_inclusive ? "in [" : "in (") + lo + ", " + hi + "]";
+  if (has_min) return (min_inclusive ? ">= " : "> ") + lo;
+  if (has_max) return "<= " + hi;
+  return "";
+}
+
+}  // namespace
+
+ConfigNode::ConfigNode(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+
+SourceLocation ConfigNode::location() const { return LocationOf(node_.Mark(), file_); }
+
+bool ConfigNode::is_map() const { return node_.IsDefined() && node_.IsMap(); }
+bool ConfigNode::is_sequence() const { return node_.IsDefined() && node_.IsSequence(); }
+bool ConfigNode::is_scalar() const { return node_.IsDefined() && node_.IsScalar(); }
+
+std::string ConfigNode::Describe() const {
+  if (!node_.IsDefined() || node_.IsNull()) return "nothing";
+  if (node_.IsMap()) return "a map";
+  if (node_.IsSequence()) return "a list";
+  return "'" + node_.Scalar() + "'";
+}
+
+void ConfigNode::Fail(const std::string& expected, const std::string& found) const {
+  throw ScenarioError(location(), path_, expected, found);
+}
+
+std::vector<std::string> ConfigNode::Keys() const {
+  if (!is_map()) Fail("a map", Describe());
+  std::vector<std::string> keys;
+  std::set<std::string> seen;
+  for (const auto& item : node_) {
+    const YAML::Node& key = item.first;
+    if (!key.IsScalar()) {
+      throw ScenarioError(LocationOf(key.Mark(), file_), path_, "a plain key (a name)",
+                          key.IsMap() ? "a map as a key" : "a list as a key");
+    }
+    // yaml-cpp 0.7 keeps both entries of a repeated key and lookups see only the first, so a
+    // repeated key would silently drop a value the user wrote.
+    if (!seen.insert(key.Scalar()).second) {
+      throw ScenarioError(LocationOf(key.Mark(), file_), JoinPath(path_, key.Scalar()),
+                          "each key once", "'" + key.Scalar() + "' a second time");
+    }
+    keys.push_back(key.Scalar());
+  }
+  return keys;
+}
+
+bool ConfigNode::Has(std::string_view key) const {
+  if (!is_map()) return false;
+  for (const auto& item : node_) {
+    if (item.first.IsScalar() && item.first.Scalar() == key) return true;
+  }
+  return false;
+}
+
+void ConfigNode::ExpectOnlyKeys(const std::vector<std::string_view>& allowed) const {
+  Keys();  // map, plain keys, no repeats
+  for (const auto& item : node_) {
+    const std::string& key = item.first.Scalar();
+    bool known = false;
+    for (std::string_view a : allowed) known = known || a == key;
+    if (!known) {
+      throw ScenarioError(LocationOf(item.first.Mark(), file_), JoinPath(path_, key),
+                          allowed.empty() ? "no keys here" : "one of the keys " + Join(allowed),
+                          "unknown key '" + key + "'");
+    }
+  }
+}
+
+std::optional<ConfigNode> ConfigNode::Find(std::string_view key) const {
+  if (!is_map()) Fail("a map", Describe());
+  for (const auto& item : node_) {
+    if (item.first.IsScalar() && item.first.Scalar() == key) {
+      return ConfigNode(item.second, file_, JoinPath(path_, key));
+    }
+  }
+  return std::nullopt;
+}
+
+ConfigNode ConfigNode::Child(std::string_view key) const {
+  std::optional<ConfigNode> child = Find(key);
+  if (!child) {
+    // Reported where the enclosing map starts: that is where the key has to be added.
+    std::string present;
+    for (const auto& item : node_) {
+      if (item.first.IsScalar()) present += (present.empty() ? "" : ", ") + item.first.Scalar();
+    }
+    throw ScenarioError(location(), JoinPath(path_, key),
+                        "key '" + std::string(key) + "' (required)",
+                        present.empty() ? "an empty map" : "only the keys " + present);
+  }
+  return *child;
+}
+
+std::vector<ConfigNode> ConfigNode::Items() const {
+  if (!is_sequence()) Fail("a list", Describe());
+  std::vector<ConfigNode> items;
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    items.emplace_back(node_[i], file_, path_ + "[" + std::to_string(i) + "]");
+  }
+  return items;
+}
+
+std::string ConfigNode::AsString() const {
+  if (!is_scalar()) Fail("a text value", Describe());
+  return node_.Scalar();
+}
+
+double ConfigNode::AsQuantity(Dimension dimension) const {
+  if (!is_scalar()) Fail(DescribeDimension(dimension), Describe());
+  internal::QuantityParse parsed = internal::TryParseQuantity(node_.Scalar(), dimension);
+  if (!parsed.problem.empty()) Fail(DescribeDimension(dimension), parsed.problem);
+  return parsed.value;
+}
+
+double ConfigNode::AsQuantityIn(Dimension dimension, double min, double max,
+                                bool min_inclusive) const {
+  const double value = AsQuantity(dimension);
+  const bool above = min_inclusive ? value >= min : value > min;
+  if (!above || value > max) {
+    Fail(internal::DimensionName(dimension) + " " + RangeText(dimension, min, max, min_inclusive),
+         Describe());
+  }
+  return value;
+}
+
+long ConfigNode::AsInteger(long min, long max) const {
+  std::string expected = "an integer";
+  if (min != std::numeric_limits<long>::min() && max != std::numeric_limits<long>::max()) {
+    expected += " in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  } else if (min != std::numeric_limits<long>::min()) {
+    expected += " >= " + std::to_string(min);
+  } else if (max != std::numeric_limits<long>::max()) {
+    expected += " <= " + std::to_string(max);
+  }
+  if (!is_scalar()) Fail(expected, Describe());
+  std::string_view text = node_.Scalar();
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  long value = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || result.ptr != text.data() + text.size()) Fail(expected, Describe());
+  if (result.ec == std::errc::result_out_of_range) Fail(expected, Describe() + " (too large)");
+  if (value < min || value > max) Fail(expected, Describe());
+  return value;
+}
+
+bool ConfigNode::AsBool() const {
+  if (!is_scalar()) Fail("true or false", Describe());
+  bool value = false;
+  if (!YAML::convert<bool>::decode(node_, value)) Fail("true or false", Describe());
+  return value;
+}
+
+std::string ConfigNode::AsOneOf(const std::vector<std::string_view>& choices) const {
+  const std::string expected = "one of " + Join(choices);
+  if (!is_scalar()) Fail(expected, Describe());
+  const std::string& text = node_.Scalar();
+  for (std::string_view choice : choices) {
+    if (choice == text) return text;
+  }
+  Fail(expected, Describe());
+}
+
+double ConfigNode::QuantityOr(std::string_view key, Dimension dimension, double fallback) const {
+  std::optional<ConfigNode> child = Find(key);
+  return child ? child->AsQuantity(dimension) : fallback;
+}
+
+std::string ConfigNode::StringOr(std::string_view key, std::string fallback) const {
+  std::optional<ConfigNode> child = Find(key);
+  return child ? child->AsString() : std::move(fallback);
+}
+
+}  // namespace fitfeel

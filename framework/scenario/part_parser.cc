@@ -1,0 +1,193 @@
+#include "framework/scenario/part_parser.h"
+
+#include <cctype>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "framework/core/error.h"
+#include "framework/core/quantity.h"
+#include "framework/core/quantity_parse.h"
+#include "framework/iso286/iso286.h"
+
+namespace fitfeel::scenario {
+namespace {
+
+const char* const kSizeForms =
+    "a size as '<nominal> <ISO 286 class>' (e.g. '20 mm H7', '20 mm g6') or a map "
+    "{nominal, lower, upper} of deviations";
+
+// Letters then grade digits, as ISO 286 writes a tolerance class: H7, g6, js6, ZC11, IT is not a
+// class. Anything else in that position is not a code, so the message can say so.
+bool LooksLikeIsoClass(const std::string& text) {
+  std::size_t i = 0;
+  while (i < text.size() && std::isalpha(static_cast<unsigned char>(text[i]))) ++i;
+  const std::size_t letters = i;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+  const std::size_t digits = i - letters;
+  return i == text.size() && letters >= 1 && letters <= 2 && digits >= 1 && digits <= 2;
+}
+
+SizeSpec ParseIsoSize(const ConfigNode& node, Role role) {
+  const std::string text = node.AsString();
+  const std::size_t end = text.find_last_not_of(" \t");
+  const std::size_t split = end == std::string::npos ? end : text.find_last_of(" \t", end);
+  if (split == std::string::npos) node.Fail(kSizeForms, node.Describe());
+  const std::string code = text.substr(split + 1, end - split);
+  const std::string nominal_text = text.substr(0, split);
+  if (!LooksLikeIsoClass(code)) {
+    node.Fail(kSizeForms, node.Describe() + " ('" + code + "' is not an ISO 286 tolerance class)");
+  }
+  const internal::QuantityParse nominal =
+      internal::TryParseQuantity(nominal_text, Dimension::kLength);
+  if (!nominal.problem.empty()) {
+    node.Fail(kSizeForms, node.Describe() + ": the nominal size " + nominal.problem);
+  }
+  if (!(nominal.value > 0.0)) {
+    node.Fail("a positive nominal size", node.Describe());
+  }
+  iso286::Limits found;
+  try {
+    found = iso286::Lookup(nominal.value, code);
+  } catch (const std::invalid_argument& e) {
+    node.Fail("an ISO 286 tolerance class defined at this nominal size",
+              node.Describe() + " (" + e.what() + ")");
+  }
+  if (found.is_hole != (role == Role::kOuter)) {
+    node.Fail(
+        role == Role::kOuter
+            ? "a hole tolerance class (upper-case letter, e.g. H7) for an outer part"
+            : "a shaft tolerance class (lower-case letter, e.g. g6, js6) for an inner part",
+        node.Describe() + " (" + code + " is a " + (found.is_hole ? "hole" : "shaft") + " class)");
+  }
+  SizeSpec size;
+  size.nominal = found.nominal;
+  size.lower_deviation = found.lower_deviation;
+  size.upper_deviation = found.upper_deviation;
+  size.iso_code = found.code.empty() ? code : found.code;
+  return size;
+}
+
+SizeSpec ParseExplicitSize(const ConfigNode& node) {
+  node.ExpectOnlyKeys({"nominal", "lower", "upper"});
+  SizeSpec size;
+  size.nominal = node.Child("nominal").AsQuantityIn(Dimension::kLength, 0.0, limits::kMaxNominal,
+                                                    /*min_inclusive=*/false);
+  const ConfigNode lower = node.Child("lower");
+  const ConfigNode upper = node.Child("upper");
+  size.lower_deviation = lower.AsQuantity(Dimension::kLength);
+  size.upper_deviation = upper.AsQuantity(Dimension::kLength);
+  if (!(size.nominal + size.lower_deviation > 0.0)) {
+    lower.Fail("a lower deviation above -" + FormatQuantity(size.nominal, Dimension::kLength) +
+                   " (the smallest size must be positive)",
+               lower.Describe());
+  }
+  // A tolerance zone of zero width cannot be manufactured, and an inverted pair is a typing error.
+  if (!(size.upper_deviation > size.lower_deviation)) {
+    upper.Fail("an upper deviation greater than the lower deviation (" +
+                   FormatQuantity(size.lower_deviation, Dimension::kLength) + ")",
+               upper.Describe() + (size.upper_deviation < size.lower_deviation
+                                       ? " (the limits are inverted)"
+                                       : " (a tolerance zone of zero width)"));
+  }
+  return size;
+}
+
+FormSpec ParseForm(const ConfigNode& node, const SurfaceType& surface,
+                   const std::string& surface_id, double nominal) {
+  const std::vector<FormCharacteristic> supported = surface.form_characteristics();
+  std::string names;
+  for (FormCharacteristic c : supported) names += (names.empty() ? "" : ", ") + ToString(c);
+  const std::string expected = "a form characteristic that " + surface_id + " models (" +
+                               (names.empty() ? "none" : names) + ")";
+  FormSpec form;
+  node.Keys();  // a map of plain keys, none repeated
+  for (const auto& item : node.yaml()) {
+    const std::string key = item.first.Scalar();
+    const FormCharacteristic* match = nullptr;
+    for (const FormCharacteristic& c : supported) {
+      if (ToString(c) == key) match = &c;
+    }
+    if (match == nullptr) {
+      bool known = false;
+      for (int i = 0; i <= static_cast<int>(FormCharacteristic::kSphericity); ++i) {
+        known = known || ToString(static_cast<FormCharacteristic>(i)) == key;
+      }
+      // Reported at the key, like every other unknown key.
+      const YAML::Mark mark = item.first.Mark();
+      throw ScenarioError({node.file(), mark.line + 1, mark.column + 1}, node.path() + "." + key,
+                          expected,
+                          known ? "'" + key + "', which this surface type does not model"
+                                : "unknown key '" + key + "'");
+    }
+    // A form deviation as large as the part itself describes no real part.
+    const ConfigNode value(item.second, node.file(), node.path() + "." + key);
+    form.tolerance[*match] = value.AsQuantityIn(Dimension::kLength, 0.0, nominal);
+  }
+  return form;
+}
+
+TextureSpec ParseTexture(const ConfigNode& node) {
+  node.ExpectOnlyKeys({"waviness", "Ra", "Rz"});
+  TextureSpec texture;
+  auto optional = [&](const char* key) {
+    std::optional<ConfigNode> child = node.Find(key);
+    return child ? child->AsQuantityIn(Dimension::kLength, 0.0, limits::kMaxTexture) : 0.0;
+  };
+  texture.waviness = optional("waviness");
+  texture.ra = optional("Ra");
+  texture.rz = optional("Rz");
+  // Rz is a peak-to-valley height and Ra a mean absolute deviation of the same profile, so Rz >= Ra
+  // always holds for a real surface.
+  if (texture.rz < texture.ra) {
+    const std::string expected = "Rz >= Ra (" + FormatQuantity(texture.ra, Dimension::kLength) +
+                                 "): a peak-to-valley height is never below the mean deviation";
+    if (std::optional<ConfigNode> rz = node.Find("Rz")) {
+      rz->Fail(expected, rz->Describe() + " (Ra > Rz is physically impossible)");
+    }
+    throw ScenarioError(
+        node.location(), node.path() + ".Rz", expected,
+        "no Rz (taken as 0) with Ra = " + FormatQuantity(texture.ra, Dimension::kLength));
+  }
+  return texture;
+}
+
+Material ParseMaterial(const ConfigNode& node) {
+  node.ExpectOnlyKeys({"name", "youngs_modulus", "poisson"});
+  Material material;
+  material.name = node.StringOr("name", "");
+  material.youngs_modulus = node.QuantityIn("youngs_modulus", Dimension::kPressure,
+                                            limits::kMinYoungsModulus, limits::kMaxYoungsModulus);
+  material.poisson = node.Child("poisson").AsQuantityIn(
+      Dimension::kDimensionless, limits::kMinPoisson, limits::kMaxPoisson, /*min_inclusive=*/false);
+  return material;
+}
+
+}  // namespace
+
+SizeSpec ParseSize(const ConfigNode& node, Role role) {
+  if (node.is_scalar()) return ParseIsoSize(node, role);
+  if (node.is_map()) return ParseExplicitSize(node);
+  node.Fail(kSizeForms, node.Describe());
+}
+
+PartSpec ParsePart(const std::string& name, const ConfigNode& node, const SurfaceType& surface,
+                   const std::string& surface_id) {
+  node.ExpectOnlyKeys({"role", "size", "geometry", "form", "texture", "material"});
+  PartSpec part;
+  part.name = name;
+  part.role =
+      node.Child("role").AsOneOf({"inner", "outer"}) == "inner" ? Role::kInner : Role::kOuter;
+  part.size = ParseSize(node.Child("size"), part.role);
+  if (std::optional<ConfigNode> form = node.Find("form")) {
+    part.form = ParseForm(*form, surface, surface_id, part.size.nominal);
+  }
+  if (std::optional<ConfigNode> texture = node.Find("texture")) {
+    part.texture = ParseTexture(*texture);
+  }
+  part.material = ParseMaterial(node.Child("material"));
+  return part;
+}
+
+}  // namespace fitfeel::scenario

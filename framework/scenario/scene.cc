@@ -1,0 +1,278 @@
+#include "framework/scenario/scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "framework/core/error.h"
+#include "framework/core/quantity.h"
+#include "framework/plugin/registry.h"
+#include "framework/scenario/part_parser.h"
+#include "framework/scenario/yaml_file.h"
+
+namespace fitfeel {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The scheduler's rate: below 100 Hz a haptic loop is felt as vibration, above 10 kHz no device
+// or OS timer keeps the period.
+constexpr double kMinRate = 100.0;
+constexpr double kMaxRate = 10e3;
+// A run is a session at a device or a batch computation; an hour bounds its pre-allocated trace.
+constexpr double kMaxDuration = 3600.0;
+// Coulomb coefficients of dry or lubricated metal and polymer pairs stay below about 1.5.
+constexpr double kMaxFriction = 1.5;
+// Grid bounds: a row or column count above 10000, or more than four million cells, would not be
+// prepared within the design card's second and describes no feature of a machined surface.
+constexpr long kMaxGridSide = 10000;
+constexpr long kMaxGridCells = 4'000'000;
+
+std::string Join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out.empty() ? "none" : out;
+}
+
+std::vector<std::string> LoadedIds(const PluginRegistry& registry, FitfeelPluginKind kind) {
+  std::vector<std::string> ids;
+  for (const PluginInfo& info : registry.plugins()) {
+    if (info.kind == kind) ids.push_back(info.id);
+  }
+  return ids;
+}
+
+// Names end up in output paths and summaries, so they stay portable.
+bool IsPlainName(const std::string& name) {
+  if (name.empty()) return false;
+  return std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+}
+
+std::shared_ptr<SurfaceType> ResolveSurface(const ConfigNode& node, const PluginRegistry& registry,
+                                            const LoadOptions& options, std::string* id) {
+  *id = node.AsString();
+  std::shared_ptr<SurfaceType> surface;
+  try {
+    surface = registry.MakeSurface(*id);
+  } catch (const PluginError& e) {
+    node.Fail(
+        "a loaded surface plugin id (" + Join(LoadedIds(registry, kFitfeelSurfacePlugin)) + ")",
+        node.Describe() + " (" + e.what() + ")");
+  }
+  if (surface == nullptr) throw std::logic_error("plugin registry returned no surface object");
+  if (!surface->renders_forces() && !options.allow_non_rendering) {
+    node.Fail("a surface type that renders forces",
+              node.Describe() + ", which cannot yet: " + surface->limitation());
+  }
+  if (surface->law_names().empty() && !options.allow_non_rendering) {
+    node.Fail("a surface type that offers a resistance law", node.Describe() + " offers none");
+  }
+  return surface;
+}
+
+struct Parts {
+  PartSpec inner;
+  PartSpec outer;
+  Role moving = Role::kInner;
+};
+
+Parts ParseParts(const ConfigNode& root, const SurfaceType& surface,
+                 const std::string& surface_id) {
+  const ConfigNode node = root.Child("parts");
+  const std::vector<std::string> names = node.Keys();
+  if (names.size() != 2) {
+    node.Fail("exactly two parts, one with role inner and one with role outer",
+              std::to_string(names.size()) + " part" + (names.size() == 1 ? "" : "s") +
+                  (names.empty() ? "" : " (" + Join(names) + ")"));
+  }
+  // Roles first, so a duplicate is reported before either part's details.
+  std::vector<Role> roles;
+  for (const std::string& name : names) {
+    const ConfigNode part = node.Child(name);
+    if (!IsPlainName(name)) {
+      part.Fail("a part name of letters, digits, '_', '-' or '.'", "'" + name + "'");
+    }
+    if (!part.is_map()) part.Fail("a map describing the part (role, size, ...)", part.Describe());
+    const ConfigNode role = part.Child("role");
+    roles.push_back(role.AsOneOf({"inner", "outer"}) == "inner" ? Role::kInner : Role::kOuter);
+    if (roles.size() == 2 && roles[0] == roles[1]) {
+      role.Fail("one part with role inner and one with role outer",
+                role.Describe() + " for both '" + names[0] + "' and '" + names[1] + "'");
+    }
+  }
+  Parts parts;
+  for (const std::string& name : names) {
+    const ConfigNode node_of_part = node.Child(name);
+    PartSpec part = scenario::ParsePart(name, node_of_part, surface, surface_id);
+    // The plugin sees everything else the scenario said of the part (size, form, ...).
+    part.geometry = surface.ParseGeometry(part, node_of_part.Child("geometry"));
+    if (part.geometry == nullptr) {
+      throw std::logic_error("surface plugin " + surface_id + " returned no geometry for part '" +
+                             name + "'");
+    }
+    (part.role == Role::kInner ? parts.inner : parts.outer) = std::move(part);
+  }
+  surface.CheckPair(parts.inner, parts.outer, node);
+  const std::string moving = root.Child("moving").AsOneOf({names[0], names[1]});
+  parts.moving = moving == parts.inner.name ? Role::kInner : Role::kOuter;
+  return parts;
+}
+
+Resolution ParseResolution(const ConfigNode& node) {
+  const char* const expected = "auto or a map {rows, columns} of positive integers";
+  if (node.is_scalar()) {
+    if (node.AsString() == "auto") return Resolution{};
+    node.Fail(expected, node.Describe());
+  }
+  if (!node.is_map()) node.Fail(expected, node.Describe());
+  node.ExpectOnlyKeys({"rows", "columns"});
+  Resolution resolution;
+  resolution.rows = static_cast<int>(node.Child("rows").AsInteger(1, kMaxGridSide));
+  resolution.columns = static_cast<int>(node.Child("columns").AsInteger(1, kMaxGridSide));
+  const long cells = static_cast<long>(resolution.rows) * resolution.columns;
+  if (cells > kMaxGridCells) {
+    node.Fail("at most " + std::to_string(kMaxGridCells) + " cells (rows x columns)",
+              std::to_string(resolution.rows) + " x " + std::to_string(resolution.columns) + " = " +
+                  std::to_string(cells) + " cells");
+  }
+  return resolution;
+}
+
+ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
+                         const std::string& surface_id, const Parts& parts) {
+  node.ExpectOnlyKeys(
+      {"law", "friction", "contact_stiffness", "resolution", "texture", "depth_step", "options"});
+  ModelSettings model;
+  const std::vector<std::string> laws = surface.law_names();
+  // Empty only for a surface type loaded for inspection (LoadOptions::allow_non_rendering).
+  if (!laws.empty()) model.law = laws.front();
+  if (std::optional<ConfigNode> law = node.Find("law")) {
+    model.law = law->AsString();
+    if (std::find(laws.begin(), laws.end(), model.law) == laws.end()) {
+      law->Fail("a resistance law that " + surface_id + " offers (" + Join(laws) + ")",
+                law->Describe());
+    }
+  }
+  model.friction = node.QuantityIn("friction", Dimension::kDimensionless, 0.0, kMaxFriction);
+  model.contact_stiffness = node.Child("contact_stiffness")
+                                .AsQuantityIn(Dimension::kStiffness, 0.0, kInfinity,
+                                              /*min_inclusive=*/false);
+  if (std::optional<ConfigNode> resolution = node.Find("resolution")) {
+    model.resolution = ParseResolution(*resolution);
+  }
+  if (std::optional<ConfigNode> texture = node.Find("texture")) {
+    model.texture = texture->AsOneOf({"expected", "sampled"}) == "expected" ? TextureMode::kExpected
+                                                                            : TextureMode::kSampled;
+  }
+  if (std::optional<ConfigNode> step = node.Find("depth_step")) {
+    if (!(step->is_scalar() && step->AsString() == "auto")) {
+      // A tabulation step longer than the engagement would leave a table of a single entry.
+      const double longest =
+          std::min(parts.inner.geometry->mating_length(), parts.outer.geometry->mating_length());
+      model.depth_step =
+          step->AsQuantityIn(Dimension::kLength, 0.0, longest > 0.0 ? longest : kInfinity,
+                             /*min_inclusive=*/false);
+    }
+  }
+  if (std::optional<ConfigNode> options = node.Find("options")) {
+    if (!options->is_map()) options->Fail("a map of surface-specific options", options->Describe());
+    options->Keys();  // no repeated keys
+    model.extra = *options;
+  }
+  return model;
+}
+
+RunSettings ParseRun(const ConfigNode& node) {
+  node.ExpectOnlyKeys({"rate", "duration", "seed", "clock", "outputs"});
+  RunSettings run;
+  if (std::optional<ConfigNode> rate = node.Find("rate")) {
+    run.rate = rate->AsQuantityIn(Dimension::kFrequency, kMinRate, kMaxRate);
+  }
+  run.duration = node.Child("duration")
+                     .AsQuantityIn(Dimension::kTime, 0.0, kMaxDuration,
+                                   /*min_inclusive=*/false);
+  if (std::optional<ConfigNode> seed = node.Find("seed")) {
+    run.seed = static_cast<std::uint64_t>(seed->AsInteger(0));
+  }
+  if (std::optional<ConfigNode> clock = node.Find("clock")) {
+    run.clock = clock->AsOneOf({"virtual", "realtime"}) == "virtual" ? ClockMode::kVirtual
+                                                                     : ClockMode::kRealTime;
+  }
+  if (std::optional<ConfigNode> outputs = node.Find("outputs")) {
+    run.write_trace = run.write_summary = run.write_recording = false;
+    std::vector<std::string> seen;
+    for (const ConfigNode& item : outputs->Items()) {
+      const std::string output = item.AsOneOf({"trace", "summary", "recording"});
+      if (std::find(seen.begin(), seen.end(), output) != seen.end()) {
+        item.Fail("each output once", item.Describe() + " a second time");
+      }
+      seen.push_back(output);
+      if (output == "trace") run.write_trace = true;
+      if (output == "summary") run.write_summary = true;
+      if (output == "recording") run.write_recording = true;
+    }
+  }
+  return run;
+}
+
+}  // namespace
+
+Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
+                const LoadOptions& options) {
+  const ConfigNode root = scenario::LoadYamlFile(file);
+  root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "model", "device",
+                       "safety", "run"});
+  // Every required section is present before any is interpreted, so a missing one is reported
+  // first rather than after an unrelated plugin error.
+  for (const char* key : {"scenario", "surface", "parts", "moving", "model", "device", "run"}) {
+    root.Child(key);
+  }
+
+  Scene scene;
+  scene.file = file;
+  const ConfigNode name = root.Child("scenario");
+  scene.name = name.AsString();
+  if (!IsPlainName(scene.name)) {
+    name.Fail("a scenario name of letters, digits, '_', '-' or '.' (it names outputs)",
+              name.Describe());
+  }
+  scene.description = root.StringOr("description", "");
+
+  scene.surface = ResolveSurface(root.Child("surface"), registry, options, &scene.surface_id);
+  Parts parts = ParseParts(root, *scene.surface, scene.surface_id);
+  scene.moving = parts.moving;
+  scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);
+  scene.inner = std::move(parts.inner);
+  scene.outer = std::move(parts.outer);
+
+  const ConfigNode device = root.Child("device");
+  if (!device.is_map()) {
+    device.Fail("a map with the key plugin and the device plugin's own keys", device.Describe());
+  }
+  const ConfigNode plugin = device.Child("plugin");
+  scene.device_id = plugin.AsString();
+  try {
+    scene.device = registry.MakeDevice(scene.device_id);
+  } catch (const PluginError& e) {
+    plugin.Fail(
+        "a loaded device plugin id (" + Join(LoadedIds(registry, kFitfeelDevicePlugin)) + ")",
+        plugin.Describe() + " (" + e.what() + ")");
+  }
+  if (scene.device == nullptr) throw std::logic_error("plugin registry returned no device object");
+  scene.device->Configure(device);
+
+  if (std::optional<ConfigNode> safety = root.Find("safety")) {
+    if (!safety->is_map()) safety->Fail("a map of safety settings", safety->Describe());
+    safety->Keys();  // no repeated keys; the safety chain checks the keys themselves
+    scene.safety = *safety;
+  }
+  scene.run = ParseRun(root.Child("run"));
+  return scene;
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,92 @@
+#include "framework/scenario/scene_summary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "framework/core/quantity.h"
+
+namespace fitfeel {
+namespace {
+
+std::string Number(double value, const char* format = "%g") {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+std::string Length(double metres) { return FormatQuantity(metres, Dimension::kLength); }
+
+// Deviations in um, as ISO 286 tables print them.
+// Adding 0.0 turns a table's -0 (an H hole's EI) into +0.
+std::string Micrometres(double metres) { return Number(metres * 1e6 + 0.0, "%+.4g"); }
+
+std::string DescribePart(const PartSpec& part, bool moving) {
+  const std::string indent = "             ";
+  std::string out = "  " + std::string(part.role == Role::kInner ? "inner " : "outer ") + "     " +
+                    part.name + (moving ? " (moving)" : "") + "\n";
+  const SizeSpec& size = part.size;
+  out += indent + "size " + Length(size.nominal) +
+         (size.iso_code.empty() ? "" : " " + size.iso_code) + ": deviations " +
+         Micrometres(size.lower_deviation) + " .. " + Micrometres(size.upper_deviation) +
+         " um (limits " + Number((size.nominal + size.lower_deviation) * 1e3, "%.4f") + " .. " +
+         Number((size.nominal + size.upper_deviation) * 1e3, "%.4f") + " mm)\n";
+  if (part.geometry) out += indent + "geometry " + part.geometry->Describe() + "\n";
+  std::string form;
+  for (const auto& [characteristic, tolerance] : part.form.tolerance) {
+    form += (form.empty() ? "" : ", ") + ToString(characteristic) + " " + Length(tolerance);
+  }
+  out += indent + "form " + (form.empty() ? "none given (ideal form)" : form) + "\n";
+  const TextureSpec& texture = part.texture;
+  if (texture.waviness == 0.0 && texture.ra == 0.0 && texture.rz == 0.0) {
+    out += indent + "texture none given (smooth)\n";
+  } else {
+    out += indent + "texture waviness " + Length(texture.waviness) + ", Ra " + Length(texture.ra) +
+           ", Rz " + Length(texture.rz) + "\n";
+  }
+  const Material& material = part.material;
+  out += indent + "material " + (material.name.empty() ? "" : material.name + ", ") + "E " +
+         FormatQuantity(material.youngs_modulus, Dimension::kPressure) + ", nu " +
+         Number(material.poisson) + "\n";
+  return out;
+}
+
+}  // namespace
+
+std::string DescribeScene(const Scene& scene) {
+  std::string out = "scenario     " + scene.name + " (" + scene.file.string() + ")\n";
+  if (!scene.description.empty()) out += "description  " + scene.description + "\n";
+  out += "surface      " + scene.surface_id + "\n";
+  out += "parts\n";
+  out += DescribePart(scene.inner, scene.moving == Role::kInner);
+  out += DescribePart(scene.outer, scene.moving == Role::kOuter);
+  const ModelSettings& model = scene.model;
+  out += "model        law " + model.law + ", friction " + Number(model.friction) +
+         ", contact stiffness " + FormatQuantity(model.contact_stiffness, Dimension::kStiffness) +
+         ", resolution " +
+         (model.resolution.is_auto() ? std::string("auto")
+                                     : std::to_string(model.resolution.rows) + " x " +
+                                           std::to_string(model.resolution.columns)) +
+         ", texture " + (model.texture == TextureMode::kExpected ? "expected" : "sampled") +
+         ", depth step " + (model.depth_step > 0.0 ? Length(model.depth_step) : "auto") + "\n";
+  out += "device       " + scene.device_id;
+  if (scene.device) {
+    const std::string model_name = scene.device->spec().model;
+    if (!model_name.empty()) out += " (" + model_name + ")";
+  }
+  out += "\n";
+  const RunSettings& run = scene.run;
+  const double ticks = std::floor(run.duration * run.rate + 0.5);
+  std::string outputs;
+  if (run.write_trace) outputs += "trace";
+  if (run.write_summary) outputs += std::string(outputs.empty() ? "" : ", ") + "summary";
+  if (run.write_recording) outputs += std::string(outputs.empty() ? "" : ", ") + "recording";
+  out += "run          " + FormatQuantity(run.rate, Dimension::kFrequency) + " for " +
+         FormatQuantity(run.duration, Dimension::kTime) + " (" + Number(ticks, "%.0f") +
+         " ticks), seed " + std::to_string(run.seed) + ", clock " +
+         (run.clock == ClockMode::kVirtual ? "virtual" : "realtime") + ", outputs " +
+         (outputs.empty() ? "none" : outputs) + "\n";
+  return out;
+}
+
+}  // namespace fitfeel

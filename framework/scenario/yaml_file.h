@@ -1,0 +1,13 @@
+#pragma once
+
+#include <filesystem>
+
+#include "framework/core/config_node.h"
+
+namespace fitfeel::scenario {
+
+// Reads one scenario file into its root node. A file that cannot be read, is not valid YAML
+// (reported at the parser's line:column) or holds more than one document throws ScenarioError.
+ConfigNode LoadYamlFile(const std::filesystem::path& file);
+
+}  // namespace fitfeel::scenario
