@@ -98,6 +98,11 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       result.notes.push_back("warning: " + std::to_string(result.stats.guard_faults) +
                              " ticks produced a non-finite wrench; zero was sent instead");
     }
+    if (scene.run.write_recording) {
+      result.notes.push_back(
+          "note: run.outputs asks for a recording, which this build does not write yet (the "
+          "device recording writer is not wired into the run); trace and summary are written");
+    }
     result.summary = MakeSummary(info, scheduler.trace(), result.stats);
     if (!options.out_dir.empty()) {
       result.paths = WriteOutputs(options.out_dir, info, scheduler.trace(), result.stats,
