@@ -28,6 +28,12 @@ struct ContactState {
   double offset_angle = 0.0;         // gamma, rad
   double assembly_extent = 0.0;      // S_A(gamma), m (0 when the assembly space is empty)
   double penetration = 0.0;          // max(0, delta d - S_A(gamma)), m
+  // Unit vector along which the moving axis has left the positions it may take (the assembly
+  // space, or the energy-minimising axis position under interference); the radial spring pushes
+  // back along minus it. Zero when penetration is zero. An assembly space that is not centred on
+  // the fixed axis is not left along gamma, so eq. 9's direction generalises to this one (and its
+  // penetration to the distance from the assembly space).
+  Eigen::Vector2d penetration_direction{0.0, 0.0};
   // Interference (eqs. 10-12): sum over overlapping cells of delta(P_ij) * area (m^3), with
   // texture taken as its expected interference where the settings ask for it; a law multiplies it
   // by its pressure per unit interference.

@@ -107,6 +107,10 @@ void SurfaceType::CheckPair(const PartSpec& inner, const PartSpec& outer,
 
 void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode&) const {}
 
+void SurfaceType::CheckOptions(const ConfigNode& options) const { DoCheckOptions(options); }
+
+void SurfaceType::DoCheckOptions(const ConfigNode& options) const { options.ExpectOnlyKeys({}); }
+
 std::vector<CharacteristicCheck> SurfaceType::EvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
   if (sms.variation.size() != sms.grid.size() || sms.grid.size() == 0) {

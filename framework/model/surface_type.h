@@ -39,6 +39,9 @@ class FITFEEL_API SurfaceType {
   // Checks the pair as a whole once both parts are parsed (e.g. the nominal sizes agree);
   // throws ScenarioError at `pair_node`.
   void CheckPair(const PartSpec& inner, const PartSpec& outer, const ConfigNode& pair_node) const;
+  // Checks the scenario's `model.options` map (surface-specific model switches) at load time;
+  // throws ScenarioError at the offending key.
+  void CheckOptions(const ConfigNode& options) const;
 
   // Form characteristics this surface type models; others in a scenario are refused.
   virtual std::vector<FormCharacteristic> form_characteristics() const = 0;
@@ -69,6 +72,8 @@ class FITFEEL_API SurfaceType {
   virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                            const ConfigNode& pair_node) const;
   virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
+  // Default: the surface takes no options, so any key is unknown.
+  virtual void DoCheckOptions(const ConfigNode& options) const;
   // Default: throws UnsupportedError (a surface type without a metrology binding yet).
   virtual std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const;

@@ -182,6 +182,7 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   if (std::optional<ConfigNode> options = node.Find("options")) {
     if (!options->is_map()) options->Fail("a map of surface-specific options", options->Describe());
     options->Keys();  // no repeated keys
+    surface.CheckOptions(*options);
     model.extra = *options;
   }
   return model;

@@ -67,6 +67,9 @@ class FakeCylinder : public SurfaceType {
     }
   }
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view) const override { return nullptr; }
+  void DoCheckOptions(const ConfigNode& options) const override {
+    options.ExpectOnlyKeys({"tabulate"});
+  }
 };
 
 class FakeThread final : public FakeCylinder {

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <vector>
+
+#include "framework/core/export.h"
+#include "framework/model/gps_spec.h"
+
+namespace fitfeel {
+
+// A normal distribution N(mean, sigma^2) truncated to [lower, upper].
+struct TruncatedGaussian {
+  double mean = 0.0;
+  double sigma = 1.0;
+  double lower = -3.0;
+  double upper = 3.0;
+};
+
+// Closed forms of reference/oracles.md for X ~ TruncatedGaussian and a gap g. They are the
+// expected interference of a rough contact whose height difference X meets a gap g (paper eq. 6):
+// no special cases beyond g <= lower (all of X interferes) and g >= upper (none does).
+FITFEEL_API double ExceedanceProbability(const TruncatedGaussian& x, double gap);  // P(X > g)
+FITFEEL_API double ExpectedInterference(const TruncatedGaussian& x, double gap);   // E[(X-g)+]
+FITFEEL_API double ExpectedSquaredInterference(const TruncatedGaussian& x,
+                                               double gap);  // E[((X-g)+)^2]
+
+// Texture of one surface (paper eq. 6): heights Gaussian, limited to +-(A/2 + Rz/2).
+// sigma is not fixed by the paper; we put the limit at 3 sigma (sigma = (A + Rz)/6 per surface),
+// the usual reading of a "limit" of a Gaussian process band (99.73 % inside).
+FITFEEL_API TruncatedGaussian SurfaceTexture(const TextureSpec& texture);
+
+// The equivalent rough-on-smooth contact of two textured surfaces (paper, after Greenwood and
+// Tripp [30]): heights add, so the limit is the sum of the two limits (-(A+Rz), A+Rz) for equal
+// surfaces, and, the two textures being independent, the variances add (sigma_eq^2 = s1^2 + s2^2).
+// For equal surfaces the limit therefore sits at 3*sqrt(2) = 4.24 sigma_eq. Returns sigma = 0 when
+// neither surface has texture.
+FITFEEL_API TruncatedGaussian EquivalentTexture(const TextureSpec& a, const TextureSpec& b);
+
+// Expected interference E[(X - g)+] of a texture as a lookup table, for prepare-time loops over
+// millions of cells: linear interpolation on a uniform grid over [lower, upper], exact (X's mean
+// minus g) below it and zero above it. With the default 4097 points the interpolation error is
+// below 1e-6 sigma. A zero-sigma texture gives the sharp max(0, -g).
+class FITFEEL_API ExpectedInterferenceTable {
+ public:
+  ExpectedInterferenceTable() = default;
+  explicit ExpectedInterferenceTable(const TruncatedGaussian& texture, int points = 4097);
+
+  bool sharp() const { return sharp_; }
+  double upper() const { return upper_; }
+  // E[(X - g)+], or max(0, -g) for a sharp contact.
+  double operator()(double gap) const noexcept;
+
+ private:
+  bool sharp_ = true;
+  double lower_ = 0.0;
+  double upper_ = 0.0;
+  double mean_ = 0.0;
+  double step_ = 0.0;
+  std::vector<double> values_;
+};
+
+}  // namespace fitfeel
