@@ -55,6 +55,10 @@ SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceG
   return sms;
 }
 
+void VariationGenerator::Configure(const ConfigNode& options) { DoConfigure(options); }
+
+void VariationGenerator::DoConfigure(const ConfigNode& options) { options.ExpectOnlyKeys({}); }
+
 void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                               const PartSpec& outer, const SkinModelShape& outer_sms,
                               const ModelSettings& settings) {

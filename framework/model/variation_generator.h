@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
@@ -25,8 +26,13 @@ class FITFEEL_API VariationGenerator {
   virtual ~VariationGenerator();
   SkinModelShape Generate(const PartSpec& part, const SurfaceGrid& grid, TextureMode texture,
                           Rng& rng) const;
+  // Applies the surface type's keys of the scenario's `model.options` (ModelSettings::extra),
+  // once, before Generate; throws ScenarioError at an unknown or malformed key. Whoever prepares
+  // a scene calls it when `extra` is present. The default accepts no key.
+  void Configure(const ConfigNode& options);
 
  protected:
+  virtual void DoConfigure(const ConfigNode& options);
   virtual SkinModelShape DoGenerate(const PartSpec& part, const SurfaceGrid& grid,
                                     TextureMode texture, Rng& rng) const = 0;
 };

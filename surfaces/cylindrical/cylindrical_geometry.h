@@ -2,6 +2,9 @@
 
 #include <string>
 
+#include <memory>
+
+#include "framework/core/config_node.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::cylindrical {
@@ -22,7 +25,9 @@ class CylindricalGeometry final : public Geometry {
   double diameter() const { return diameter_; }              // mating diameter d1, m
   double length() const { return length_; }                  // length of the mating surface, m
   double outer_diameter() const { return outer_diameter_; }  // outer part: hub outer d2, m
-  double bore_diameter() const { return bore_diameter_; }    // inner part: bore of a hollow shaft (0 = solid), m
+  double bore_diameter() const {
+    return bore_diameter_;
+  }  // inner part: bore of a hollow shaft (0 = solid), m
 
   double nominal_area() const override;
   double mating_length() const override { return length_; }
@@ -35,5 +40,15 @@ class CylindricalGeometry final : public Geometry {
   double outer_diameter_;
   double bore_diameter_;
 };
+
+// Parses one part's `geometry` node: `length` (> 0) for both parts; `outer_diameter` (the hub's
+// d2, > d, required) for the outer part; optional `bore_diameter` (hollow shaft, 0 <= di < d)
+// for the inner part. d is part.size.nominal. Throws ScenarioError at the offending key.
+std::shared_ptr<const CylindricalGeometry> ParseCylindricalGeometry(const PartSpec& part,
+                                                                    const ConfigNode& geometry);
+
+// Both parts of a cylindrical fit share one nominal diameter; throws ScenarioError at `pair_node`.
+void CheckCylindricalPair(const PartSpec& inner, const PartSpec& outer,
+                          const ConfigNode& pair_node);
 
 }  // namespace fitfeel::cylindrical

@@ -1,0 +1,52 @@
+// Scenario-facing part of the replay device.
+#include <limits>
+
+#include "devices/replay/replay_device.h"
+#include "framework/device/device_specs.h"
+
+namespace fitfeel {
+
+void ReplayDevice::DoConfigure(const ConfigNode& node) {
+  node.ExpectOnlyKeys({"plugin", "file", "speed", "start", "loop", "model", "spec"});
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  ReplaySettings settings;
+  const ConfigNode file = node.Child("file");
+  settings.file = file.AsString();
+  if (settings.file.is_relative()) {
+    settings.file = std::filesystem::path(node.file()).parent_path() / settings.file;
+  }
+  if (!std::filesystem::exists(settings.file)) {
+    file.Fail("an existing recording file", "'" + settings.file.string() + "' (no such file)");
+  }
+  if (auto n = node.Find("speed")) {
+    settings.speed = n->AsQuantityIn(Dimension::kDimensionless, 0.0, kInf, false);
+  }
+  if (auto n = node.Find("start")) settings.start = n->AsQuantityIn(Dimension::kTime, 0.0, kInf);
+  if (auto n = node.Find("loop")) settings.loop = n->AsBool();
+  if (auto n = node.Find("model")) {
+    settings.model = n->AsString();
+    if (!FindDeviceSpec(settings.model)) n->Fail("a known device model", n->Describe());
+  }
+  if (auto n = node.Find("spec")) {
+    // Overrides apply on top of the model's spec: the key's, else the recording's.
+    DeviceSpec base;
+    if (!settings.model.empty()) {
+      base = LookupDeviceSpec(settings.model);
+    } else if (auto known = FindDeviceSpec(ReadRecording(settings.file).info.device_model)) {
+      base = *known;
+    }
+    settings.spec = ParseDeviceSpec(*n, base);
+    if (settings.spec->model.empty()) settings.spec->model = "replay";
+    try {
+      ValidateDeviceSpec(*settings.spec);
+    } catch (const UserError& e) {
+      n->Fail(
+          "a complete device spec (max_force, max_continuous_force, max_stiffness, damping, "
+          "workspace) or a known model to start from",
+          e.what());
+    }
+  }
+  Configure(settings);
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,81 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "framework/core/error.h"
+#include "framework/core/export.h"
+#include "framework/core/wrench.h"
+
+namespace fitfeel {
+
+// One tick of the device stream, SI, scene frame. A plain struct the runtime fills into a buffer
+// it allocated before the run; nothing here does I/O in the tick.
+struct RecordedSample {
+  double time = 0.0;  // s since the start of the run
+  Eigen::Vector3d position{0.0, 0.0, 0.0};
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d velocity{0.0, 0.0, 0.0};
+  Eigen::Vector3d angular_velocity{0.0, 0.0, 0.0};
+  std::uint32_t buttons = 0;
+  Wrench commanded;  // what the framework wrote to the device (after the safety chain)
+  Wrench delivered;  // what the device reported delivering (DeviceState::delivered)
+};
+
+// Header facts of a recording.
+struct RecordingInfo {
+  std::string device_model;  // the device's spec model, empty when unknown
+};
+
+struct Recording {
+  RecordingInfo info;
+  std::vector<RecordedSample> samples;
+};
+
+// A recording file that is malformed, truncated or without units. what() reads
+// "<file>:<line>: <reason>".
+class FITFEEL_API RecordingError : public UserError {
+ public:
+  RecordingError(std::filesystem::path file, int line, std::string reason);
+  ~RecordingError() override;
+  const std::filesystem::path& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::filesystem::path file_;
+  int line_ = 0;
+  std::string reason_;
+};
+
+// File format, version 1 (text, one sample per line, whitespace-separated):
+//   # fitfeel-recording 1
+//   # device: PHANTOM Desktop          (optional metadata lines "# key: value")
+//   t_s x_m y_m z_m qw_1 qx_1 qy_1 qz_1 vx_m/s ... buttons_bits fx_cmd_N ... tz_dlv_N*m
+//   <27 numbers per line>
+//   # end: <sample count> samples
+// Every column name ends in its unit after the last '_'. Numbers are written in the shortest form
+// that reads back to the same double, so a recording round-trips bit for bit. The end line makes a
+// truncated file detectable.
+inline constexpr int kRecordingFormatVersion = 1;
+FITFEEL_API const std::vector<std::string>& RecordingColumns();
+
+// Writes after the run. Checks every sample first (finite values, strictly increasing time) and
+// writes to a temporary file renamed into place, so a failure never leaves a half-written file.
+// Throws UserError (bad sample, unwritable path).
+FITFEEL_API void WriteRecording(const std::filesystem::path& file, const RecordingInfo& info,
+                                std::span<const RecordedSample> samples);
+
+// Reads and checks a recording; throws RecordingError with the line and reason for a missing or
+// unknown format line, a column without or with the wrong unit, a wrong field count, a field that
+// is not a finite number, time not strictly increasing, a non-unit quaternion, or a missing or
+// inconsistent end line (truncation).
+FITFEEL_API Recording ReadRecording(const std::filesystem::path& file);
+
+}  // namespace fitfeel

@@ -1,0 +1,168 @@
+#include "framework/metrology/linear_program.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/LU>
+
+namespace fitfeel::metrology {
+namespace {
+
+// Revised simplex for min cost . y s.t. M y = r (r >= 0), y >= 0, over the columns of M plus d
+// artificial identity columns (indices N .. N+d-1). The basis inverse is recomputed from scratch
+// each pivot: with d <= ~8 that costs nothing next to pricing N columns.
+class DualSimplex {
+ public:
+  DualSimplex(const Eigen::MatrixXd& M, const Eigen::VectorXd& r) : M_(M), r_(r) {
+    d_ = static_cast<int>(M.rows());
+    n_ = static_cast<int>(M.cols());
+    basis_.resize(d_);
+    for (int i = 0; i < d_; ++i) basis_[i] = n_ + i;
+  }
+
+  Eigen::VectorXd Column(int k) const {
+    if (k < n_) return M_.col(k);
+    return Eigen::VectorXd::Unit(d_, k - n_);
+  }
+
+  // Runs simplex with the given costs (size n_ + d_); artificial columns may enter only if
+  // `allow_artificial`. Returns false if unbounded.
+  bool Run(const Eigen::VectorXd& cost, bool allow_artificial, int* iterations) {
+    const double tol = 1e-10;
+    int degenerate_run = 0;
+    const long max_iterations = 50L * (n_ + d_) + 1000;
+    for (long it = 0; it < max_iterations; ++it) {
+      Eigen::MatrixXd B(d_, d_);
+      Eigen::VectorXd cb(d_);
+      for (int i = 0; i < d_; ++i) {
+        B.col(i) = Column(basis_[i]);
+        cb(i) = cost(basis_[i]);
+      }
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu(B);
+      const Eigen::VectorXd xb = lu.solve(r_);
+      pi_ = lu.transpose().solve(cb);
+      // Pricing: Dantzig (most negative reduced cost), or Bland (lowest index) to break cycles.
+      const bool bland = degenerate_run > 20;
+      int entering = -1;
+      double best = -tol;
+      const int limit = allow_artificial ? n_ + d_ : n_;
+      std::vector<char> in_basis(n_ + d_, 0);
+      for (int i = 0; i < d_; ++i) in_basis[basis_[i]] = 1;
+      reduced_.noalias() = cost.head(n_) - M_.transpose() * pi_;
+      for (int k = 0; k < limit; ++k) {
+        if (in_basis[k]) continue;
+        const double reduced = k < n_ ? reduced_(k) : cost(k) - pi_(k - n_);
+        if (reduced < best) {
+          entering = k;
+          best = reduced;
+          if (bland) break;
+        }
+      }
+      if (entering < 0) return true;
+      const Eigen::VectorXd w = lu.solve(Column(entering));
+      int leaving = -1;
+      double ratio = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < d_; ++i) {
+        if (w(i) > tol) {
+          const double q = std::max(0.0, xb(i)) / w(i);
+          if (q < ratio - 1e-14 ||
+              (q <= ratio + 1e-14 && leaving >= 0 && bland && basis_[i] < basis_[leaving])) {
+            ratio = q;
+            leaving = i;
+          }
+        }
+      }
+      if (leaving < 0) return false;
+      degenerate_run = ratio < 1e-14 ? degenerate_run + 1 : 0;
+      basis_[leaving] = entering;
+      ++*iterations;
+    }
+    throw std::runtime_error("linear program: simplex did not converge");
+  }
+
+  // After phase 1, replaces artificial basics (at level zero) by real columns where possible.
+  void DriveOutArtificials() {
+    for (int i = 0; i < d_; ++i) {
+      if (basis_[i] < n_) continue;
+      Eigen::MatrixXd B(d_, d_);
+      for (int q = 0; q < d_; ++q) B.col(q) = Column(basis_[q]);
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu(B);
+      std::vector<char> in_basis(n_, 0);
+      for (int q = 0; q < d_; ++q)
+        if (basis_[q] < n_) in_basis[basis_[q]] = 1;
+      int best = -1;
+      double best_value = 1e-9;
+      for (int k = 0; k < n_; ++k) {
+        if (in_basis[k]) continue;
+        const double v = std::abs(lu.solve(Column(k))(i));
+        if (v > best_value) {
+          best_value = v;
+          best = k;
+        }
+      }
+      if (best >= 0) basis_[i] = best;  // a redundant row keeps its artificial (harmless)
+    }
+  }
+
+  const Eigen::VectorXd& pi() const { return pi_; }
+  int d() const { return d_; }
+  int n() const { return n_; }
+
+ private:
+  const Eigen::MatrixXd& M_;
+  const Eigen::VectorXd& r_;
+  int d_ = 0;
+  int n_ = 0;
+  std::vector<int> basis_;
+  Eigen::VectorXd pi_;
+  Eigen::VectorXd reduced_;
+};
+
+}  // namespace
+
+LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c, const Eigen::MatrixXd& A,
+                                          const Eigen::VectorXd& b) {
+  const int d = static_cast<int>(c.size());
+  const int n = static_cast<int>(A.rows());
+  if (A.cols() != d || b.size() != n || d == 0) {
+    throw std::invalid_argument("linear program: inconsistent dimensions");
+  }
+  // Dual in standard form; rows with a negative right-hand side are negated so that the
+  // artificial basis starts feasible. sign(i) records it: the primal x is sign .* pi.
+  Eigen::MatrixXd M = A.transpose();
+  Eigen::VectorXd r = -c;
+  Eigen::VectorXd sign = Eigen::VectorXd::Ones(d);
+  for (int i = 0; i < d; ++i) {
+    if (r(i) < 0.0) {
+      r(i) = -r(i);
+      M.row(i) *= -1.0;
+      sign(i) = -1.0;
+    }
+  }
+  DualSimplex simplex(M, r);
+  LinearProgramResult result;
+  Eigen::VectorXd phase1 = Eigen::VectorXd::Zero(n + d);
+  phase1.tail(d).setOnes();
+  if (!simplex.Run(phase1, true, &result.iterations)) {
+    throw std::runtime_error("linear program: phase 1 unbounded (internal error)");
+  }
+  // Phase-1 optimum: sum of artificials = r . pi.
+  if (r.dot(simplex.pi()) > 1e-9 * (1.0 + r.lpNorm<Eigen::Infinity>())) {
+    throw std::runtime_error("linear program: the primal is unbounded (dual infeasible)");
+  }
+  simplex.DriveOutArtificials();
+  Eigen::VectorXd phase2(n + d);
+  phase2.head(n) = b;
+  phase2.tail(d).setZero();
+  if (!simplex.Run(phase2, false, &result.iterations)) {
+    throw std::runtime_error("linear program: the primal constraints are infeasible");
+  }
+  result.x = sign.cwiseProduct(simplex.pi());
+  result.objective = c.dot(result.x);
+  return result;
+}
+
+}  // namespace fitfeel::metrology

@@ -1,0 +1,64 @@
+// ConfigNode-facing part of the safety settings, kept apart from the per-tick code.
+#include <limits>
+
+#include "framework/safety/safety_settings.h"
+
+namespace fitfeel {
+
+SafetySettings ParseSafetySettings(const ConfigNode& node) {
+  SafetySettings settings;
+  if (!node.is_map()) {
+    if (node.yaml().IsNull()) return settings;
+    node.Fail("a map of safety settings", node.Describe());
+  }
+  node.ExpectOnlyKeys({"force_scale", "physical_full_scale", "continuous_window", "coupling",
+                       "coupling_stiffness", "coupling_damping", "proxy_mass",
+                       "credit_device_damping", "passivity_controller", "passivity_max_damping"});
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (node.Has("force_scale") && node.Has("physical_full_scale")) {
+    node.Child("physical_full_scale")
+        .Fail("either force_scale or physical_full_scale, not both", "both");
+  }
+  if (auto n = node.Find("force_scale")) {
+    settings.force_scale = n->AsQuantityIn(Dimension::kDimensionless, 0.0, kInf, false);
+  }
+  if (auto n = node.Find("physical_full_scale")) {
+    settings.physical_full_scale = n->AsQuantityIn(Dimension::kForce, 0.0, kInf, false);
+  }
+  if (auto n = node.Find("continuous_window")) {
+    settings.continuous_window = n->AsQuantityIn(Dimension::kTime, 0.0, kInf, false);
+  }
+  if (auto n = node.Find("coupling")) {
+    settings.coupling = n->AsOneOf({"spring_damper", "direct"}) == "direct"
+                            ? CouplingMode::kDirect
+                            : CouplingMode::kSpringDamper;
+  }
+  if (auto n = node.Find("coupling_stiffness")) {
+    settings.coupling_stiffness = n->AsQuantityIn(Dimension::kStiffness, 0.0, kInf, false);
+  }
+  if (auto n = node.Find("coupling_damping")) {
+    settings.coupling_damping = n->AsQuantityIn(Dimension::kDamping, 0.0, kInf);
+  }
+  if (auto n = node.Find("proxy_mass")) {
+    settings.proxy_mass = n->AsQuantityIn(Dimension::kMass, 0.0, kInf);
+  }
+  if (auto n = node.Find("credit_device_damping")) settings.credit_device_damping = n->AsBool();
+  if (auto n = node.Find("passivity_controller")) settings.passivity_controller = n->AsBool();
+  if (auto n = node.Find("passivity_max_damping")) {
+    settings.passivity_max_damping = n->AsQuantityIn(Dimension::kDamping, 0.0, kInf);
+  }
+  return settings;
+}
+
+}  // namespace fitfeel
+
+#include "framework/safety/safety_chain.h"
+
+namespace fitfeel {
+
+void SafetyChain::Configure(const std::optional<ConfigNode>& safety, const DeviceSpec& spec,
+                            double period) {
+  Configure(safety ? ParseSafetySettings(*safety) : SafetySettings{}, spec, period);
+}
+
+}  // namespace fitfeel

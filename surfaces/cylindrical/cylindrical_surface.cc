@@ -1,0 +1,67 @@
+#include "surfaces/cylindrical/cylindrical_surface.h"
+
+#include <cmath>
+#include <string>
+
+#include "framework/metrology/sms_conformance.h"
+#include "surfaces/cylindrical/contact_factory.h"
+#include "surfaces/cylindrical/cylindrical_discretizer.h"
+#include "surfaces/cylindrical/cylindrical_geometry.h"
+#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+
+namespace fitfeel::cylindrical {
+std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const {
+  return {FormCharacteristic::kAxisStraightness, FormCharacteristic::kGeneratrixStraightness,
+          FormCharacteristic::kRoundness, FormCharacteristic::kCylindricity};
+}
+
+std::vector<std::string> CylindricalSurface::law_names() const { return LawNames(); }
+
+std::unique_ptr<Discretizer> CylindricalSurface::MakeDiscretizer() const {
+  return std::make_unique<CylindricalDiscretizer>();
+}
+
+std::unique_ptr<VariationGenerator> CylindricalSurface::MakeVariationGenerator() const {
+  return std::make_unique<CylindricalVariationGenerator>();
+}
+
+std::unique_ptr<ContactAnalyzer> CylindricalSurface::MakeContactAnalyzer() const {
+  return cylindrical::MakeContactAnalyzer();
+}
+
+std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view name) const {
+  return cylindrical::MakeLaw(name);
+}
+
+void CylindricalSurface::DoCheckOptions(const ConfigNode& options) const {
+  CylindricalVariationGenerator generator;
+  generator.Configure(options);
+}
+
+std::vector<CharacteristicCheck> CylindricalSurface::DoEvaluateCharacteristics(
+    const PartSpec& part, const SkinModelShape& sms) const {
+  const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(part, sms);
+  std::vector<CharacteristicCheck> checks;
+  for (const auto& item : report.items) {
+    if (!item.specified) continue;
+    if (item.name == "size") {
+      checks.push_back({"two_point_size_min", item.value_low, item.limit_low, item.limit_high});
+      checks.push_back({"two_point_size_max", item.value, item.limit_low, item.limit_high});
+    } else {
+      checks.push_back({item.name, item.value, item.limit_low, item.limit_high});
+    }
+  }
+  return checks;
+}
+
+std::shared_ptr<const Geometry> CylindricalSurface::DoParseGeometry(
+    const PartSpec& part, const ConfigNode& geometry) const {
+  return ParseCylindricalGeometry(part, geometry);
+}
+
+void CylindricalSurface::DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                                     const ConfigNode& pair_node) const {
+  CheckCylindricalPair(inner, outer, pair_node);
+}
+
+}  // namespace fitfeel::cylindrical

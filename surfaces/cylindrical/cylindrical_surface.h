@@ -1,0 +1,34 @@
+#pragma once
+
+#include "framework/model/surface_type.h"
+
+namespace fitfeel::cylindrical {
+
+// Shaft in bushing, pin in hole: the paper's cylindrical mating (plugin
+// fitfeel.surface.cylindrical). Geometry keys: `length` for both parts, `outer_diameter` (hub
+// outer diameter d2 > d) for the outer part, optional `bore_diameter` (hollow shaft, < d) for the
+// inner part; the mating diameter d is the part's nominal size.
+class CylindricalSurface final : public SurfaceType {
+ public:
+  std::vector<FormCharacteristic> form_characteristics() const override;
+  std::vector<std::string> law_names() const override;
+  std::unique_ptr<Discretizer> MakeDiscretizer() const override;
+  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
+  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
+
+ protected:
+  std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
+                                                  const ConfigNode& geometry) const override;
+  void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                   const ConfigNode& pair_node) const override;
+  std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
+  // model.options: the generator's keys (size_draw, size_limit), checked by configuring one.
+  void DoCheckOptions(const ConfigNode& options) const override;
+  // framework/metrology's evaluation (EvaluateCylindricalSms): two-point sizes as
+  // two_point_size_min / two_point_size_max against the size limits, then each specified form
+  // tolerance.
+  std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
+      const PartSpec& part, const SkinModelShape& sms) const override;
+};
+
+}  // namespace fitfeel::cylindrical

@@ -1,0 +1,73 @@
+// Issue 3, "Done when": over 100 seeds, every generated skin model shape of the three paper
+// scenarios meets every tolerance it came from. The scenarios are loaded through the plugin
+// registry like `fitfeel run` loads them; only their device (irrelevant to the shapes) is swapped
+// for the registry's test device, so the test does not depend on the device plugins.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "framework/model/surface_type.h"
+#include "framework/plugin/registry.h"
+#include "framework/scenario/scene.h"
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path WithTestDevice(const std::string& scenario) {
+  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string device = "fitfeel.device.simulated";
+  const auto at = yaml.find(device);
+  if (at != std::string::npos) yaml.replace(at, device.size(), "fitfeel.test.still_device");
+  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_cylindrical_scenarios";
+  fs::create_directories(dir);
+  const fs::path file = dir / scenario;
+  std::ofstream(file) << yaml;
+  return file;
+}
+
+TEST(CylindricalScenarioConformance, PaperScenariosMeetTheirTolerancesOverAHundredSeeds) {
+  PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins",
+                           fs::path(FITFEEL_TEST_BUILD_DIR) / "test-plugins" / "good"});
+  registry.LoadAll();
+  for (const char* scenario :
+       {"paper-case1-h7js6.yaml", "paper-case1-h7g6.yaml", "paper-case1-ve1.yaml"}) {
+    const Scene scene = LoadScene(WithTestDevice(scenario), registry);
+    ASSERT_EQ(scene.surface_id, "fitfeel.surface.cylindrical");
+    const auto discretizer = scene.surface->MakeDiscretizer();
+    const auto generator = scene.surface->MakeVariationGenerator();
+    if (scene.model.extra) generator->Configure(*scene.model.extra);
+    const SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
+    const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
+    int checked = 0;
+    for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+      Rng rng(seed);  // as the runtime draws them: inner, then outer
+      const SkinModelShape inner =
+          generator->Generate(scene.inner, inner_grid, scene.model.texture, rng);
+      const SkinModelShape outer =
+          generator->Generate(scene.outer, outer_grid, scene.model.texture, rng);
+      for (const auto& [part, sms] : {std::pair{&scene.inner, &inner}, {&scene.outer, &outer}}) {
+        const auto checks = scene.surface->EvaluateCharacteristics(*part, *sms);
+        ASSERT_GE(checks.size(), 2u);
+        for (const CharacteristicCheck& c : checks) {
+          ++checked;
+          EXPECT_GE(c.value, c.lower - 1e-12)
+              << scenario << " seed " << seed << " " << part->name << " " << c.name;
+          EXPECT_LE(c.value, c.upper + 1e-12)
+              << scenario << " seed " << seed << " " << part->name << " " << c.name;
+        }
+      }
+    }
+    EXPECT_GE(checked, 100 * 2 * 4) << scenario;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel
