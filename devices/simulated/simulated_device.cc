@@ -87,6 +87,7 @@ void SimulatedDevice::DoStart(double period) {
   delivered_.SetZero();
   velocity_.setZero();
   stiffness_ = 0.0;
+  has_anchor_ = false;
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
   } else {
@@ -140,7 +141,19 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
     const double c = settings_.radial_damping;
     const Eigen::Vector2d force(wrench.force.x(), wrench.force.z() - settings_.radial_load);
     Eigen::Vector2d v(velocity_.x(), velocity_.z());
-    v = (m * v + h * force) / (m + h * c + h * h * stiffness_);
+    const double k = stiffness_;
+    Eigen::Vector2d anchor_travel(0.0, 0.0);
+    if (k > 0.0) {
+      const Eigen::Vector2d x(position_.x(), position_.z());
+      const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());
+      const Eigen::Vector2d anchor = x + contact / k;
+      if (has_anchor_) anchor_travel = anchor - previous_anchor_;
+      previous_anchor_ = anchor;
+      has_anchor_ = true;
+    } else {
+      has_anchor_ = false;
+    }
+    v = (m * v + h * (force + k * anchor_travel)) / (m + h * c + h * h * k);
     velocity_.x() = v.x();
     velocity_.z() = v.y();
     position_.x() += h * v.x();

@@ -60,6 +60,14 @@ struct Settings {
 // linearised step does (for m << h^2 k it is a Newton step to F = -W). kExplicitStabilityBound
 // gives the bound for a device that is not told the stiffness.
 //
+// The contact is not still: as the part advances, the position the contact holds it at (the
+// energy-minimising axis under interference, the assembly space's edge in clearance) moves with
+// depth, and a step that assumed it fixed would lag it by a tick, which a stiff contact turns into
+// a large spurious force (K times the anchor's travel per tick, several N in the case study). With
+// F = -K (x - a) the anchor is a = x + F / K, read off each tick; it is extrapolated linearly to
+// the next tick (exact for an anchor moving at constant rate) and the step solves for
+// F(x') = F - K (x' - x) + K (a' - a). Without contact history (first tick in contact) a' = a.
+//
 // Scripted: the leading end is a hand of mass m_h held by a spring k_h and damper b_h to a target
 // moving in straight lines between waypoints (held at the first before it and at the last after
 // it), plus the rendered force. The hand's own spring-damper is integrated implicitly (backward
@@ -96,6 +104,9 @@ class SimulatedDevice final : public Device {
   Eigen::Vector3d velocity_{0.0, 0.0, 0.0};
   Wrench delivered_;
   double stiffness_ = 0.0;  // of the contact behind the next wrench, N/m
+  // Radial anchor of the contact at the previous tick (constant speed), valid while in contact.
+  Eigen::Vector2d previous_anchor_{0.0, 0.0};
+  bool has_anchor_ = false;
 };
 
 // Throws UserError naming the first setting out of range.

@@ -20,6 +20,9 @@ struct StageOutput {
   MatingPose pose;             // where the moving part is relative to the fixed one
   ContactState contact;        // filled by the constrained stage
   StageId next = StageId::kPositioning;  // stage for the next tick (hand-over)
+  // Radial stiffness of the contact at this pose, -dF/dx along the force (N/m); 0 when free. A
+  // simulated device integrates its inertia implicitly with it, the safety chain's coupling too.
+  double stiffness = 0.0;
 };
 
 // One stage of the assembly. Prepare may allocate; Evaluate is the per-tick path.

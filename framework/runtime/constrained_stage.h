@@ -23,6 +23,11 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept override;
 
  private:
+  // -dF/dx of the radial force along its own direction, by a second evaluation 1 nm deeper
+  // (exact for the piecewise-linear laws of eqs. 9-12 away from a kink); 0 without contact.
+  double RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
+                         const Wrench& wrench) const noexcept;
+
   const ContactAnalyzer& analyzer_;
   const ResistanceLaw& law_;
 };

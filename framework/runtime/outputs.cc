@@ -57,7 +57,7 @@ void WriteFile(const fs::path& path, const std::string& text) {
 std::string TraceHeader() {
   return "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us,x_mm,y_mm,z_mm,angle_rad,tx_Nm,ty_Nm,tz_Nm,"
          "engaged,interference,offset_um,assembly_extent_um,penetration_um,max_interference_um,"
-         "guard_fault";
+         "stiffness_N_per_um,guard_fault";
 }
 
 std::string TraceRow(const TickRecord& r) {
@@ -89,6 +89,7 @@ std::string TraceRow(const TickRecord& r) {
   add(r.contact.assembly_extent * 1e6);
   add(r.contact.penetration * 1e6);
   add(r.contact.max_interference * 1e6);
+  add(r.stiffness * 1e-6);
   row += r.guard_fault ? ",1" : ",0";
   return row;
 }

@@ -34,6 +34,7 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   out->wrench.SetZero();
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
+  out->stiffness = 0.0;
   // cos(tilt) is the y component of the part's axis (the orientation's y column).
   const double cos_tilt = device.orientation.normalized().toRotationMatrix()(1, 1);
   const bool aligned = cos_tilt >= cos_alignment_tolerance_;

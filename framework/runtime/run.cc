@@ -68,7 +68,6 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   settings.rate = scene.run.rate;
   settings.duration = scene.run.duration;
   settings.clock = scene.run.clock;
-  settings.contact_stiffness = scene.model.contact_stiffness;
   {
     DeviceRun device_run(*scene.device, 1.0 / scene.run.rate);
     const DeviceSpec spec = scene.device->spec();

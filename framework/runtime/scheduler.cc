@@ -89,9 +89,6 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
     throw UserError("scheduler: rate must be in (0, 100 kHz], got " +
                     std::to_string(settings.rate) + " Hz");
   }
-  if (!(settings.contact_stiffness >= 0.0) || !std::isfinite(settings.contact_stiffness)) {
-    throw UserError("scheduler: contact stiffness must be a finite stiffness >= 0");
-  }
   if (!(settings.duration > 0.0) || !std::isfinite(settings.duration)) {
     throw UserError("scheduler: duration must be a positive number of seconds");
   }
@@ -136,9 +133,7 @@ bool Scheduler::Tick(double time) noexcept {
   // (framework/safety) turn the model wrench into the device wrench here; until they are wired,
   // the device receives the model wrench and bounds it itself.
   const Wrench& device_wrench = output_.wrench;
-  const bool in_contact = stage == StageId::kConstrained &&
-                          (output_.contact.penetration > 0.0 || output_.contact.interference);
-  device_.SetEnvironmentStiffness(in_contact ? settings_.contact_stiffness : 0.0);
+  device_.SetEnvironmentStiffness(output_.stiffness);
   device_.Write(device_wrench);
   const std::int64_t end = NowNs();
 
@@ -148,6 +143,7 @@ bool Scheduler::Tick(double time) noexcept {
   record.pose = output_.pose;
   record.contact = output_.contact;
   record.wrench = output_.wrench;
+  record.stiffness = output_.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;
   record.guard_fault = fault;

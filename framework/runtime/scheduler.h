@@ -17,9 +17,6 @@ struct SchedulerSettings {
   double rate = 1000.0;   // Hz
   double duration = 0.0;  // s; the run has round(duration * rate) ticks
   ClockMode clock = ClockMode::kVirtual;
-  // The model's contact stiffness (N/m), handed to the device while the part is in contact
-  // (Device::SetEnvironmentStiffness) so that a simulated device can integrate it implicitly.
-  double contact_stiffness = 0.0;
 };
 
 // One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench

@@ -16,6 +16,7 @@ struct TickRecord {
   MatingPose pose;
   ContactState contact;
   Wrench wrench;            // model wrench on the moving part after the finite guard, N / N*m
+  double stiffness = 0.0;   // radial contact stiffness handed to the device, N/m
   double compute_us = 0.0;  // wall time from device read to device write, us (a measurement)
   StageId stage = StageId::kPositioning;
   bool guard_fault = false;  // the stage produced a non-finite wrench; zero was sent

@@ -166,6 +166,28 @@ TEST(SimulatedRobotTest, ASteelPressFitToldItsStiffnessSettlesWithinTicks) {
   EXPECT_LT(max_height, -12e-6 + 1e-9);  // never bounced off
 }
 
+TEST(SimulatedRobotTest, FollowsAMovingStiffContactWithoutLagForce) {
+  // A bilateral contact whose anchor sinks at 2 um/s (as the energy-minimising axis does with
+  // depth under interference): F = -k (z - a(t)). The part must follow it with F balancing the
+  // weight, not lag it by a tick (which would cost k * 2 nm = 7 N here).
+  const double load = 2.0, k = 3.665e9, rate = -2e-6;
+  SimulatedDevice device;
+  device.Configure(Robot(load));
+  device.Start(kPeriod);
+  DeviceState state;
+  double last_force = 0.0;
+  for (int t = 0; t < 800; ++t) {
+    device.Read(t * kPeriod, &state);
+    const double anchor = -5e-6 + rate * t * kPeriod;
+    Wrench w;
+    if (state.position.y() >= 0.0) w.force.z() = -k * (state.position.z() - anchor);
+    device.SetEnvironmentStiffness(state.position.y() >= 0.0 ? k : 0.0);
+    device.Write(w);
+    last_force = w.force.z();
+  }
+  EXPECT_NEAR(last_force, load, 1e-3);
+}
+
 TEST(SimulatedHandTest, FollowsTheWaypointsAndYieldsToAForceByItsStiffness) {
   Settings s;
   s.mode = Settings::Mode::kScripted;

@@ -81,6 +81,10 @@ TEST(ConstrainedStageTest, EvaluatesAnalyzerAndLawAndHandsBackWhenWithdrawn) {
   EXPECT_NEAR(out.wrench.force.z(), 1e5 * 2e-6, 1e-9);
   EXPECT_NEAR(out.wrench.force.x(), 0.0, 1e-9);
   EXPECT_LT(out.wrench.force.y(), 0.0);
+  // The fake law's radial spring, found by the stage's own difference.
+  EXPECT_NEAR(out.stiffness, 1e5, 1e-3);
+  stage.Evaluate(At(0.0, 5e-3, -0.5 * analyzer.clearance()), &out);
+  EXPECT_EQ(out.stiffness, 0.0);
 
   stage.Evaluate(At(0.0, -1e-6, 0.0), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
