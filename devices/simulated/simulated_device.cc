@@ -88,6 +88,7 @@ void SimulatedDevice::DoStart(double period) {
   velocity_.setZero();
   stiffness_ = 0.0;
   has_anchor_ = false;
+  plane_valid_ = false;
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
   } else {
@@ -139,21 +140,48 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
     // Held on the axis by the robot until the leading end is inside; with no weight, no mass.
     if (m <= 0.0 || position_.y() < 0.0) return;
     const double c = settings_.radial_damping;
-    const Eigen::Vector2d force(wrench.force.x(), wrench.force.z() - settings_.radial_load);
+    const Eigen::Vector2d load(0.0, -settings_.radial_load);
+    const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());
+    const Eigen::Vector2d x(position_.x(), position_.z());
     Eigen::Vector2d v(velocity_.x(), velocity_.z());
     const double k = stiffness_;
-    Eigen::Vector2d anchor_travel(0.0, 0.0);
     if (k > 0.0) {
-      const Eigen::Vector2d x(position_.x(), position_.z());
-      const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());
       const Eigen::Vector2d anchor = x + contact / k;
-      if (has_anchor_) anchor_travel = anchor - previous_anchor_;
+      const Eigen::Vector2d travel =
+          has_anchor_ ? Eigen::Vector2d(anchor - previous_anchor_) : Eigen::Vector2d(0.0, 0.0);
       previous_anchor_ = anchor;
       has_anchor_ = true;
+      v = (m * v + h * (contact + load + k * travel)) / (m + h * c + h * h * k);
+      // The contact as a plane for the next tick (through the anchor expected then, normal along
+      // the force), in case the next pose lands just outside it.
+      const double magnitude = contact.norm();
+      plane_valid_ = magnitude > 0.0;
+      if (plane_valid_) {
+        plane_normal_ = contact / magnitude;
+        plane_point_ = anchor + travel;
+        plane_stiffness_ = k;
+      }
     } else {
       has_anchor_ = false;
+      v = (m * v + h * (contact + load)) / (m + h * c);
+      // A tick without contact right after one with contact is usually the part resting a hair
+      // outside the surface it was pushed back to. A free step from there would fall g h^2
+      // (9.8 um at 1 kHz, more than most fits' clearance) deep into that surface within one
+      // tick; if it would cross the remembered plane, the step meets it as the contact step
+      // above would, along its normal (tangentially the part stays free). Only for one tick:
+      // a part that is still free next tick has really left the contact.
+      const Eigen::Vector2d free = x + h * v;
+      if (plane_valid_ && (free - plane_point_).dot(plane_normal_) < 0.0) {
+        const Eigen::Vector2d& n = plane_normal_;
+        const double kp = plane_stiffness_;
+        const Eigen::Vector2d v0(velocity_.x(), velocity_.z());
+        const double vn =
+            (m * v0.dot(n) + h * ((contact + load).dot(n) + kp * (plane_point_ - x).dot(n))) /
+            (m + h * c + h * h * kp);
+        v += (vn - v.dot(n)) * n;
+      }
+      plane_valid_ = false;
     }
-    v = (m * v + h * (force + k * anchor_travel)) / (m + h * c + h * h * k);
     velocity_.x() = v.x();
     velocity_.z() = v.y();
     position_.x() += h * v.x();

@@ -67,6 +67,8 @@ struct Settings {
 // F = -K (x - a) the anchor is a = x + F / K, read off each tick; it is extrapolated linearly to
 // the next tick (exact for an anchor moving at constant rate) and the step solves for
 // F(x') = F - K (x' - x) + K (a' - a). Without contact history (first tick in contact) a' = a.
+// A free tick right after a contact tick keeps that contact as a one-sided plane for the step
+// (see DoWrite): a free fall of one tick is g h^2 = 9.8 um, deeper than most fits' clearance.
 //
 // Scripted: the leading end is a hand of mass m_h held by a spring k_h and damper b_h to a target
 // moving in straight lines between waypoints (held at the first before it and at the last after
@@ -107,6 +109,11 @@ class SimulatedDevice final : public Device {
   // Radial anchor of the contact at the previous tick (constant speed), valid while in contact.
   Eigen::Vector2d previous_anchor_{0.0, 0.0};
   bool has_anchor_ = false;
+  // The contact of the previous tick as a plane (constant speed), valid for one free tick.
+  Eigen::Vector2d plane_point_{0.0, 0.0};
+  Eigen::Vector2d plane_normal_{0.0, 0.0};
+  double plane_stiffness_ = 0.0;
+  bool plane_valid_ = false;
 };
 
 // Throws UserError naming the first setting out of range.

@@ -188,6 +188,30 @@ TEST(SimulatedRobotTest, FollowsAMovingStiffContactWithoutLagForce) {
   EXPECT_NEAR(last_force, load, 1e-3);
 }
 
+TEST(SimulatedRobotTest, OneFreeTickAfterContactDoesNotDropThePartIntoTheSurface) {
+  // Resting on a stiff floor; at tick 400 the contact reports nothing for one tick (the part was
+  // pushed a hair outside it). A free step would fall g h^2 = 9.8 um and come back with
+  // k * 9.8 um = 36 kN; the remembered plane keeps it on the surface.
+  const double load = 2.0, k = 3.665e9, floor = -12e-6;
+  SimulatedDevice device;
+  device.Configure(Robot(load));
+  device.Start(kPeriod);
+  DeviceState state;
+  double after = 0.0;
+  for (int t = 0; t < 410; ++t) {
+    device.Read(t * kPeriod, &state);
+    Wrench w;
+    const bool contact = state.position.z() < floor && t != 400;
+    if (contact) w.force.z() = -k * (state.position.z() - floor);
+    device.SetEnvironmentStiffness(contact ? k : 0.0);
+    device.Write(w);
+    if (t > 400) after = std::max(after, std::abs(w.force.z()));
+  }
+  EXPECT_LT(after, 2.0 * load);
+  EXPECT_GT(after, 0.5 * load);
+  EXPECT_NEAR(state.position.z(), floor - load / k, 1e-11);
+}
+
 TEST(SimulatedHandTest, FollowsTheWaypointsAndYieldsToAForceByItsStiffness) {
   Settings s;
   s.mode = Settings::Mode::kScripted;
