@@ -114,6 +114,7 @@ class SimulatedDevice final : public Device {
   Eigen::Vector2d plane_normal_{0.0, 0.0};
   double plane_stiffness_ = 0.0;
   bool plane_valid_ = false;
+  double previous_stiffness_ = 0.0;  // slope used in the previous tick, N/m
 };
 
 // Throws UserError naming the first setting out of range.
