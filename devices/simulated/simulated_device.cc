@@ -91,6 +91,8 @@ void SimulatedDevice::DoStart(double period) {
   has_anchor_ = false;
   plane_valid_ = false;
   previous_stiffness_ = 0.0;
+  gap_ = std::numeric_limits<double>::infinity();
+  gap_direction_.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
   } else {
@@ -151,15 +153,18 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
     // makes the step overshoot (a Newton step on a kink), too stiff a one only slows the
     // approach, so the step takes the larger of the probe and 0.9 of the previous tick's slope:
     // a dip of one tick is bridged, a real softening is followed within ~20 ticks.
+    Eigen::Vector2d anchor_velocity(0.0, 0.0);
     const double k = stiffness_ > 0.0 ? std::max(stiffness_, 0.9 * previous_stiffness_) : 0.0;
     previous_stiffness_ = k > 0.0 ? k : 0.9 * previous_stiffness_;
     if (k > 0.0) {
-      const Eigen::Vector2d anchor = x + contact / k;
+      // The anchor from the probed slope (the law's own), not the bridged one used to step.
+      const Eigen::Vector2d anchor = x + contact / stiffness_;
       const Eigen::Vector2d travel =
           has_anchor_ ? Eigen::Vector2d(anchor - previous_anchor_) : Eigen::Vector2d(0.0, 0.0);
       previous_anchor_ = anchor;
       has_anchor_ = true;
       v = (m * v + h * (contact + load + k * travel)) / (m + h * c + h * h * k);
+      anchor_velocity = travel / h;
       // The contact as a plane for the next tick (through the anchor expected then, normal along
       // the force), in case the next pose lands just outside it.
       const double magnitude = contact.norm();
@@ -179,6 +184,13 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
       // above would, along its normal (tangentially the part stays free). Only for one tick:
       // a part that is still free next tick has really left the contact.
       const Eigen::Vector2d free = x + h * v;
+      if (std::isfinite(gap_) && previous_stiffness_ > 0.0 && gap_direction_.norm() > 0.5) {
+        // The surface at the end of the free way, as a plane facing the part.
+        plane_point_ = x + gap_ * gap_direction_;
+        plane_normal_ = -gap_direction_;
+        plane_stiffness_ = previous_stiffness_;
+        plane_valid_ = true;
+      }
       if (plane_valid_ && (free - plane_point_).dot(plane_normal_) < 0.0) {
         const Eigen::Vector2d& n = plane_normal_;
         const double kp = plane_stiffness_;
@@ -190,10 +202,20 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
       }
       plane_valid_ = false;
     }
-    velocity_.x() = v.x();
-    velocity_.z() = v.y();
     position_.x() += h * v.x();
     position_.z() += h * v.y();
+    // v is the step's mean velocity. Its end velocity differs in contact: a contact far stiffer
+    // than the tick resolves (h^2 k >> m) has settled within the step, so the part ends moving
+    // with the contact's anchor, not with the velocity that carried it there (which, kept, would
+    // fling it micrometres per tick into free flight). That makes such a contact inelastic at the
+    // tick's scale; a soft one (h^2 k << m) keeps v.
+    Eigen::Vector2d end = v;
+    if (k > 0.0) {
+      const double settled = h * h * k / (m + h * h * k);
+      end = (1.0 - settled) * v + settled * anchor_velocity;
+    }
+    velocity_.x() = end.x();
+    velocity_.z() = end.y();
     return;
   }
   // Scripted hand: backward Euler for its spring-damper towards the target at the end of the

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -69,6 +70,8 @@ struct Settings {
 // F(x') = F - K (x' - x) + K (a' - a). Without contact history (first tick in contact) a' = a.
 // A free tick right after a contact tick keeps that contact as a one-sided plane for the step
 // (see DoWrite): a free fall of one tick is g h^2 = 9.8 um, deeper than most fits' clearance.
+// When the runtime says how far the free way reaches (SetEnvironmentGap), the surface there is
+// such a plane too, with the last contact stiffness.
 //
 // Scripted: the leading end is a hand of mass m_h held by a spring k_h and damper b_h to a target
 // moving in straight lines between waypoints (held at the first before it and at the last after
@@ -95,6 +98,10 @@ class SimulatedDevice final : public Device {
   void DoRead(double time, DeviceState* out) noexcept override;
   void DoWrite(const Wrench& wrench) noexcept override;
   void DoSetEnvironmentStiffness(double stiffness) noexcept override { stiffness_ = stiffness; }
+  void DoSetEnvironmentGap(double gap, const Eigen::Vector2d& direction) noexcept override {
+    gap_ = gap;
+    gap_direction_ = direction;
+  }
 
  private:
   void Target(double time, Eigen::Vector3d* position, Eigen::Vector3d* velocity) const noexcept;
@@ -114,7 +121,9 @@ class SimulatedDevice final : public Device {
   Eigen::Vector2d plane_normal_{0.0, 0.0};
   double plane_stiffness_ = 0.0;
   bool plane_valid_ = false;
-  double previous_stiffness_ = 0.0;  // slope used in the previous tick, N/m
+  double previous_stiffness_ = 0.0;                       // slope used in the previous tick, N/m
+  double gap_ = std::numeric_limits<double>::infinity();  // free way along gap_direction_, m
+  Eigen::Vector2d gap_direction_{0.0, 0.0};
 };
 
 // Throws UserError naming the first setting out of range.

@@ -1,6 +1,7 @@
 #include "framework/runtime/constrained_stage.h"
 
 #include <cmath>
+#include <limits>
 
 #include "framework/core/error.h"
 #include "framework/runtime/positioning_stage.h"
@@ -23,6 +24,16 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   law_.Evaluate(out->contact, motion, &out->wrench);
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
   out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
+  out->gap = std::numeric_limits<double>::infinity();
+  out->gap_direction.setZero();
+  const ContactState& c = out->contact;
+  // In clearance, S_A(gamma) - delta d is the free way outwards along the offset: where a part
+  // resting against the bore (offset towards the wall it rests on) would fall to.
+  if (out->stiffness == 0.0 && c.engaged && !c.interference && c.offset_distance > 0.0 &&
+      c.assembly_extent >= c.offset_distance) {
+    out->gap = c.assembly_extent - c.offset_distance;
+    out->gap_direction = out->pose.offset / out->pose.offset.norm();
+  }
 }
 
 double ConstrainedStage::RadialStiffness(const MatingPose& pose, const MatingMotion& motion,

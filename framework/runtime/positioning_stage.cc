@@ -1,6 +1,7 @@
 #include "framework/runtime/positioning_stage.h"
 
 #include <cmath>
+#include <limits>
 
 #include "framework/core/error.h"
 
@@ -35,6 +36,8 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
   out->stiffness = 0.0;
+  out->gap = std::numeric_limits<double>::infinity();
+  out->gap_direction.setZero();
   // cos(tilt) is the y component of the part's axis (the orientation's y column).
   const double cos_tilt = device.orientation.normalized().toRotationMatrix()(1, 1);
   const bool aligned = cos_tilt >= cos_alignment_tolerance_;

@@ -134,6 +134,7 @@ bool Scheduler::Tick(double time) noexcept {
   // the device receives the model wrench and bounds it itself.
   const Wrench& device_wrench = output_.wrench;
   device_.SetEnvironmentStiffness(output_.stiffness);
+  device_.SetEnvironmentGap(output_.gap, output_.gap_direction);
   device_.Write(device_wrench);
   const std::int64_t end = NowNs();
 
