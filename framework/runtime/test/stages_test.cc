@@ -83,8 +83,13 @@ TEST(ConstrainedStageTest, EvaluatesAnalyzerAndLawAndHandsBackWhenWithdrawn) {
   EXPECT_LT(out.wrench.force.y(), 0.0);
   // The fake law's radial spring, found by the stage's own difference.
   EXPECT_NEAR(out.stiffness, 1e5, 1e-3);
+  EXPECT_TRUE(std::isinf(out.gap));  // in contact: no free way
   stage.Evaluate(At(0.0, 5e-3, -0.5 * analyzer.clearance()), &out);
   EXPECT_EQ(out.stiffness, 0.0);
+  // Free: half the clearance left, downwards along the offset.
+  EXPECT_NEAR(out.gap, 0.5 * analyzer.clearance(), 1e-18);
+  EXPECT_NEAR(out.gap_direction.y(), -1.0, 1e-15);
+  EXPECT_NEAR(out.gap_direction.x(), 0.0, 1e-15);
 
   stage.Evaluate(At(0.0, -1e-6, 0.0), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
