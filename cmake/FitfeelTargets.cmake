@@ -1,9 +1,9 @@
 # Helpers shared by every folder: one call builds a plugin, a test or a benchmark the same way.
 
-# fitfeel_add_plugin(<name> SOURCES ...) builds a loadable module into the build tree's plugin
-# folder. Only its register.cc may export a symbol (the registration hook).
+# fitfeel_add_plugin(<name> SOURCES ... [LIBS ...] [OUTPUT_DIR dir] [EXPORT_ALL]) builds a
+# loadable module into the build tree's plugin folder. Only the registration hook is exported.
 function(fitfeel_add_plugin name)
-  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "EXPORT_ALL" "OUTPUT_DIR" "SOURCES;LIBS" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
   if(NOT ARG_OUTPUT_DIR)
@@ -12,6 +12,14 @@ function(fitfeel_add_plugin name)
   set_target_properties(${name} PROPERTIES
     PREFIX "lib"
     LIBRARY_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
+  # Only the registration hook is exported, whatever the standard library instantiates.
+  # EXPORT_ALL is for test plugins that deliberately export something else.
+  if(NOT ARG_EXPORT_ALL)
+    target_link_options(${name} PRIVATE
+                        -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/plugin_exports.map)
+    set_property(TARGET ${name} APPEND PROPERTY LINK_DEPENDS
+                 ${PROJECT_SOURCE_DIR}/cmake/plugin_exports.map)
+  endif()
   if(ARG_OUTPUT_DIR STREQUAL FITFEEL_BUILD_PLUGIN_DIR)
     install(TARGETS ${name} LIBRARY DESTINATION lib/fitfeel/plugins)
     set_property(GLOBAL APPEND PROPERTY FITFEEL_PLUGIN_TARGETS ${name})

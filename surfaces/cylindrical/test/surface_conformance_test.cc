@@ -13,12 +13,4 @@ const bool kTestDeviceOnPath = [] {
 }();
 }  // namespace
 
-// The macro replaces the global operator new (to count allocations in the tick), so it is expanded
-// at global scope, with the suite's names brought in.
-// GCC 12 flags the macro's free() in the replaced operator delete as mismatched with `new` once
-// both are inlined, although the replaced operator new allocates with malloc: a false positive.
-using namespace fitfeel::conformance;  // NOLINT(build/namespaces)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 FITFEEL_SURFACE_CONFORMANCE(Cylindrical, "surfaces/cylindrical/test/sms_scene.yaml");
-#pragma GCC diagnostic pop

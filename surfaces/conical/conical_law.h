@@ -1,0 +1,49 @@
+#pragma once
+
+#include "framework/model/gps_spec.h"
+#include "framework/model/resistance_law.h"
+
+namespace fitfeel::conical {
+
+// Contact pressure per unit radial interference of a solid pin of diameter d in a thick-walled hub
+// of outer diameter d2 (Lame, the paper's eq. 10, reference/oracles.md), Pa/m:
+//   p / delta = (2 / d) / ( (1 - nu1)/E1 + ((d2^2 + d^2)/(d2^2 - d^2) + nu2)/E2 ).
+double LamePressurePerInterference(double d, double d2, const Material& pin, const Material& hub);
+
+// Coulomb friction regularised as mu * N * tanh(|v| / v_s) along the sliding velocity, continuous
+// through zero velocity. v_s = 1 mm/s, the upper end of the Stribeck velocities of steel on steel
+// (0.1-1 mm/s, Armstrong-Helouvry, Dupont and Canudas de Wit, Automatica 30(7), 1994), the same
+// choice as the cylindrical plugin: below it a Coulomb law describes nothing real anyway.
+inline constexpr double kFrictionSmoothingVelocity = 1e-3;
+
+// Taper press fit (DIN 7190). Each cell's pressure is p = P * delta with P the Lame pressure per
+// unit interference at the hole's mean diameter dm (DIN 7190 evaluates the taper at dm; over a 1:50
+// taper of a 20 mm hub the local diameter varies by +-2.5 %, P by less), so the summed normal
+// force is N = P * sum(delta * ds) over the slant cell areas ds. On the pin:
+//   wedge (axial part of the normal force): F_y = -N sin(alpha)   (pushes the pin out)
+//   friction: -mu N cos(alpha) along the axial sliding, -mu N rm about the axis when it turns,
+//             split by the direction of the combined sliding velocity (v_y, omega_y * rm)
+//   radial:   F_(x,z) = -P cos(alpha) * sum(delta * ds * u_j)
+// With a uniform interference over the hole's length L: N = p pi dm L / cos(alpha), so
+//   F_in  = N (sin a + mu cos a) = p pi dm L (mu + tan a)
+//   F_out = N (mu cos a - sin a) = p pi dm L (mu - tan a)      (DIN 7190, oracles.md)
+// The returned wrench acts on the pin (the inner part), in the hole's mating frame.
+class TaperPressFitLaw final : public ResistanceLaw {
+ public:
+  double pressure_per_interference() const { return pressure_per_interference_; }
+
+ protected:
+  void DoPrepare(const PartSpec& inner, const PartSpec& outer,
+                 const ModelSettings& settings) override;
+  void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                  Wrench* out) const noexcept override;
+
+ private:
+  double mu_ = 0.0;
+  double sin_alpha_ = 0.0;
+  double cos_alpha_ = 0.0;
+  double mean_radius_ = 0.0;
+  double pressure_per_interference_ = 0.0;
+};
+
+}  // namespace fitfeel::conical

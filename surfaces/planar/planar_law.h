@@ -1,0 +1,65 @@
+#pragma once
+
+#include "framework/model/resistance_law.h"
+
+namespace fitfeel::planar {
+
+// Elastic model of a key (or square shaft) compressed between two opposite walls (README.md).
+//
+// Two compliances in series, per unit area of flank (m/Pa):
+//  - the key as an elastic block compressed across its width b in plane strain (long along y, so
+//    its length cannot stretch; free to bulge in height): c_key = b (1 - nu1^2) / E1;
+//  - each wall as an elastic half-space loaded uniformly over the contact strip h x L (the mean
+//    surface displacement of Boussinesq's solution): c_wall = (1 - nu2^2) J(h, L) / (pi E2 h L),
+//    J(a, b) = the integral of 1/|r - r'| over the rectangle twice
+//            = 2/3 (a^3 + b^3 - d^3) + 2 a b (a asinh(b/a) + b asinh(a/b)),  d = sqrt(a^2 + b^2).
+//    (For a square J/(a^2 sqrt(a^2)) = 2.97, i.e. Timoshenko's 0.95 factor of a flexible square
+//    footing.) The walls of a keyway or square hole are backed by the whole shaft or hub, deep
+//    compared with a flank height of a few millimetres: a half-space, not a thin layer.
+// A uniform interference delta per face (half-size convention: the key is 2 delta wider than the
+// gap) closes 2 delta across key + two walls, so
+//     p = 2 delta / (c_key + 2 c_wall),
+// and the press-in friction over both flanks of engaged length L is F = mu * 2 * p * h * L.
+double BlockCompliance(double width, double youngs_modulus, double poisson);
+double RectangleSelfPotential(double a, double b);  // J(a, b), m^3
+double HalfSpaceStripCompliance(double height, double length, double youngs_modulus,
+                                double poisson);
+// Pressure per unit local interference (Pa/m): p = P * delta, P = 2 / (c_key + 2 c_wall).
+double PressurePerInterference(double width, double height, double length, double e_key,
+                               double nu_key, double e_wall, double nu_wall);
+
+// Coulomb friction regularised as mu N tanh(v / v_s), v_s = 1 mm/s: continuous through zero
+// velocity; the same choice and reason as the cylindrical law (Stribeck velocities of steel on
+// steel are 0.1-1 mm/s, where a Coulomb law does not apply anyway).
+inline constexpr double kFrictionSmoothingVelocity = 1e-3;
+
+// The planar law (paper eqs. 9-12 with the elastic model above):
+//  - lateral: a spring k on the distance of the part from its anchor (the assembly space's
+//    nearest point, or the balance position under interference), along minus the analyzer's
+//    penetration_direction (eq. 9 in one or two axes);
+//  - axial: F_y = -mu (|F_lateral| + P(L) * V) tanh(v_y / v_s), V the analyzer's interference
+//    volume sum(delta * area) and P(L) the pressure per interference at the engaged length L:
+//    sum p ds = P * V (eq. 11).
+// k is the scene's contact_stiffness, or with 0 (auto) the elastic stiffness of one face pushed by
+// the offset: P(L) * (engaged area / faces), the same elastic model as the interference term.
+// Each term vanishes where the other case of the paper applies; the force is continuous.
+class PlanarGpsLaw final : public ResistanceLaw {
+ public:
+  double PressurePerInterferenceAt(double engaged_length) const noexcept;
+
+ protected:
+  void DoPrepare(const PartSpec& inner, const PartSpec& outer,
+                 const ModelSettings& settings) override;
+  void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                  Wrench* out) const noexcept override;
+
+ private:
+  double mu_ = 0.0;
+  double stiffness_ = 0.0;
+  double c_key_ = 0.0;
+  double height_ = 0.0;
+  double wall_factor_ = 0.0;  // (1 - nu2^2) / (pi E2)
+  int faces_ = 2;
+};
+
+}  // namespace fitfeel::planar

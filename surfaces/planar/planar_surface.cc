@@ -1,0 +1,71 @@
+#include "surfaces/planar/planar_surface.h"
+
+#include <cmath>
+
+#include "framework/core/quantity.h"
+#include "surfaces/planar/planar_characteristics.h"
+#include "surfaces/planar/planar_contact_analyzer.h"
+#include "surfaces/planar/planar_generator.h"
+#include "surfaces/planar/planar_geometry.h"
+#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_law.h"
+
+namespace fitfeel::planar {
+
+std::vector<FormCharacteristic> PlanarSurface::form_characteristics() const {
+  return {FormCharacteristic::kStraightness, FormCharacteristic::kFlatness,
+          FormCharacteristic::kParallelism, FormCharacteristic::kAxisStraightness};
+}
+
+std::unique_ptr<Discretizer> PlanarSurface::MakeDiscretizer() const {
+  return std::make_unique<PlanarDiscretizer>();
+}
+
+std::unique_ptr<VariationGenerator> PlanarSurface::MakeVariationGenerator() const {
+  return std::make_unique<PlanarVariationGenerator>();
+}
+
+std::unique_ptr<ContactAnalyzer> PlanarSurface::MakeContactAnalyzer() const {
+  return std::make_unique<PlanarContactAnalyzer>();
+}
+
+std::shared_ptr<const Geometry> PlanarSurface::DoParseGeometry(const PartSpec& part,
+                                                               const ConfigNode& geometry) const {
+  return ParsePlanarGeometry(part, geometry);
+}
+
+void PlanarSurface::DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                                const ConfigNode& pair_node) const {
+  const PlanarGeometry& a = PlanarGeometryOf(inner);
+  const PlanarGeometry& b = PlanarGeometryOf(outer);
+  // The variations of both parts are deviations from one nominal width (eq. 8 subtracts them).
+  if (std::abs(a.width() - b.width()) > 1e-12) {
+    pair_node.Fail("equal nominal sizes of '" + inner.name + "' and '" + outer.name +
+                       "' (a key and its keyway share the nominal width)",
+                   FormatQuantity(a.width(), Dimension::kLength) + " and " +
+                       FormatQuantity(b.width(), Dimension::kLength));
+  }
+  if (a.faces() != b.faces()) {
+    pair_node.Fail("the same number of faces on '" + inner.name + "' and '" + outer.name + "'",
+                   std::to_string(a.faces()) + " and " + std::to_string(b.faces()));
+  }
+  // Cells face each other strip by strip: both parts describe the same contact strip.
+  if (std::abs(a.height() - b.height()) > 1e-12) {
+    pair_node.Fail("the same contact height on '" + inner.name + "' and '" + outer.name +
+                       "' (the flank height in contact)",
+                   FormatQuantity(a.height(), Dimension::kLength) + " and " +
+                       FormatQuantity(b.height(), Dimension::kLength));
+  }
+}
+
+std::unique_ptr<ResistanceLaw> PlanarSurface::DoMakeLaw(std::string_view name) const {
+  if (name == "gps") return std::make_unique<PlanarGpsLaw>();
+  return nullptr;
+}
+
+std::vector<CharacteristicCheck> PlanarSurface::DoEvaluateCharacteristics(
+    const PartSpec& part, const SkinModelShape& sms) const {
+  return EvaluatePlanarCharacteristics(part, sms);
+}
+
+}  // namespace fitfeel::planar

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/model/surface_type.h"
+
+namespace fitfeel::planar {
+
+// fitfeel.surface.planar: a parallel key in its keyway, a square shaft in its square hole (paper
+// Table 1: size, straightness, flatness; and parallelism of a pair of faces).
+class PlanarSurface final : public SurfaceType {
+ public:
+  std::vector<FormCharacteristic> form_characteristics() const override;
+  std::vector<std::string> law_names() const override { return {"gps"}; }
+
+  std::unique_ptr<Discretizer> MakeDiscretizer() const override;
+  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
+  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
+
+ protected:
+  std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
+                                                  const ConfigNode& geometry) const override;
+  void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                   const ConfigNode& pair_node) const override;
+  std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
+  std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
+      const PartSpec& part, const SkinModelShape& sms) const override;
+};
+
+}  // namespace fitfeel::planar

@@ -1,0 +1,123 @@
+// The planar law against hand calculations of its elastic model (README.md).
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "surfaces/planar/planar_contact_analyzer.h"
+#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_law.h"
+#include "surfaces/planar/test/test_support.h"
+
+namespace fitfeel::planar {
+namespace {
+
+using testing::MakePart;
+
+TEST(PlanarElasticModelTest, RectangleSelfPotentialMatchesBoussinesqFootingFactors) {
+  // A flexible square footing settles on average 0.946 p B (1 - nu^2) / E (Timoshenko & Goodier):
+  // J(1, 1) / pi = 0.9464.
+  EXPECT_NEAR(RectangleSelfPotential(1.0, 1.0) / std::numbers::pi, 0.94640, 1e-5);
+  EXPECT_NEAR(RectangleSelfPotential(1.0, 1.0), 2.973210, 1e-6);
+  // Symmetric and homogeneous of degree 3.
+  EXPECT_NEAR(RectangleSelfPotential(3e-3, 40e-3), RectangleSelfPotential(40e-3, 3e-3), 1e-20);
+  EXPECT_NEAR(RectangleSelfPotential(3e-3, 40e-3), 1e-9 * RectangleSelfPotential(3.0, 40.0), 1e-18);
+  // Hand value for the key flank strip h = 3 mm, L = 40 mm.
+  EXPECT_NEAR(RectangleSelfPotential(3e-3, 40e-3), 2.741890e-6, 1e-12);
+}
+
+TEST(PlanarElasticModelTest, KeyOfEightMillimetresHandCalculation) {
+  // Steel key 8 x 7, flank in contact h = 3 mm, L = 40 mm; E = 210 GPa, nu = 0.3, delta = 1 um.
+  // c_key  = 8e-3 * 0.91 / 210e9                       = 3.46667e-14 m/Pa
+  // c_wall = 0.91 * 2.74189e-6 / (pi 210e9 * 1.2e-4)   = 3.15167e-14 m/Pa
+  // p = 2 delta / (c_key + 2 c_wall)                    = 20.4708 MPa
+  EXPECT_NEAR(BlockCompliance(8e-3, 210e9, 0.3), 3.466667e-14, 1e-19);
+  EXPECT_NEAR(HalfSpaceStripCompliance(3e-3, 40e-3, 210e9, 0.3), 3.151672e-14, 1e-19);
+  const double p = 1e-6 * PressurePerInterference(8e-3, 3e-3, 40e-3, 210e9, 0.3, 210e9, 0.3);
+  EXPECT_NEAR(p, 20.4708e6, 0.0001e6);
+}
+
+TEST(PlanarLawTest, UniformInterferencePressInForceMatchesTheHandCalculation) {
+  // Through the analyzer: key 1 um per flank wider than its keyway, fully engaged, mu = 0.15,
+  // 10 mm/s. F = mu * 2 * p * h * L = 0.15 * 2 * 20.4708 MPa * 3 mm * 40 mm = 736.95 N.
+  PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);
+  SkinModelShape k, s;
+  k.grid = PlanarDiscretizer().Discretize(key, Resolution{});
+  s.grid = PlanarDiscretizer().Discretize(slot, Resolution{});
+  k.variation = Eigen::VectorXd::Constant(k.grid.size(), 1e-6);
+  s.variation = Eigen::VectorXd::Zero(s.grid.size());
+  ModelSettings settings;
+  settings.friction = 0.15;
+  PlanarContactAnalyzer analyzer;
+  analyzer.Prepare(key, k, slot, s, settings);
+  PlanarGpsLaw law;
+  law.Prepare(key, slot, settings);
+  ContactState state;
+  MatingPose pose;
+  pose.depth = 50e-3;
+  analyzer.Evaluate(pose, &state);
+  MatingMotion motion;
+  motion.velocity.y() = 0.01;
+  Wrench w;
+  law.Evaluate(state, motion, &w);
+  EXPECT_NEAR(w.force.y(), -736.95, 0.01);
+  // The balance position is found to 1e-18 m; the auto stiffness is 2.5e9 N/m.
+  EXPECT_NEAR(w.force.x(), 0.0, 1e-6);
+  // Pulled out, friction reverses.
+  motion.velocity.y() = -0.01;
+  law.Evaluate(state, motion, &w);
+  EXPECT_NEAR(w.force.y(), 736.95, 0.01);
+}
+
+TEST(PlanarLawTest, ClearanceSpringWithCoulombFrictionIsEquationNineInOneAxis) {
+  PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);
+  ModelSettings settings;
+  settings.friction = 0.2;
+  settings.contact_stiffness = 2e6;  // 2 N/um
+  PlanarGpsLaw law;
+  law.Prepare(key, slot, settings);
+  ContactState state;
+  state.engaged = true;
+  state.engaged_length = 40e-3;
+  state.engaged_area = 2 * 3e-3 * 40e-3;
+  state.penetration = 3e-6;
+  state.offset_angle = std::numbers::pi;  // pushed towards -x
+  state.penetration_direction = {-1.0, 0.0};
+  MatingMotion motion;
+  motion.velocity.y() = 0.01;
+  Wrench w;
+  law.Evaluate(state, motion, &w);
+  EXPECT_NEAR(w.force.x(), 6.0, 1e-9);  // pushed back towards +x by k e
+  EXPECT_NEAR(w.force.z(), 0.0, 1e-9);
+  EXPECT_NEAR(w.force.y(), -0.2 * 6.0 * std::tanh(10.0), 1e-9);
+  // Auto stiffness: the elastic model's stiffness of one flank, P(L) * h * L.
+  settings.contact_stiffness = 0.0;
+  law.Prepare(key, slot, settings);
+  law.Evaluate(state, motion, &w);
+  const double k =
+      PressurePerInterference(8e-3, 3e-3, 40e-3, 210e9, 0.3, 210e9, 0.3) * 3e-3 * 40e-3;
+  EXPECT_NEAR(w.force.x(), k * 3e-6, 1e-6 * k * 3e-6);
+}
+
+TEST(PlanarLawTest, NoForceWhenNotEngagedOrAtRest) {
+  PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);
+  ModelSettings settings;
+  settings.friction = 0.15;
+  PlanarGpsLaw law;
+  law.Prepare(key, slot, settings);
+  ContactState state;
+  state.interference_volume = 1e-12;
+  Wrench w;
+  law.Evaluate(state, MatingMotion{}, &w);
+  EXPECT_EQ(w.force.norm(), 0.0);
+  state.engaged = true;
+  state.engaged_length = 10e-3;
+  law.Evaluate(state, MatingMotion{}, &w);
+  EXPECT_EQ(w.force.y(), 0.0);  // at rest the regularised friction is zero
+}
+
+}  // namespace
+}  // namespace fitfeel::planar

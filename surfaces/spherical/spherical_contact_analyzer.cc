@@ -1,0 +1,105 @@
+#include "surfaces/spherical/spherical_contact_analyzer.h"
+#include "surfaces/spherical/number_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "framework/core/error.h"
+#include "surfaces/spherical/spherical_geometry.h"
+
+namespace fitfeel::spherical {
+
+void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
+                                         const PartSpec& outer, const SkinModelShape& outer_sms,
+                                         const ModelSettings& settings) {
+  texture_ = settings.texture == TextureMode::kExpected
+                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
+                 : ExpectedInterferenceTable();
+  GeometryOf(inner);
+  const SphericalGeometry& socket = GeometryOf(outer);
+  const SurfaceGrid& bg = inner_sms.grid;
+  const SurfaceGrid& sg = outer_sms.grid;
+  if (bg.columns != sg.columns) {
+    throw UserError("ball and socket must share their column count (" + NumberText(bg.columns) +
+                    " vs " + NumberText(sg.columns) + ")");
+  }
+  rows_ = sg.rows;
+  columns_ = sg.columns;
+  width_ = socket.width();
+  cell_area_ = sg.area(0);
+  socket_v_.resize(rows_, columns_);
+  for (int i = 0; i < rows_; ++i) {
+    for (int j = 0; j < columns_; ++j) socket_v_(i, j) = outer_sms.variation(sg.index(i, j));
+  }
+  ball_v_.resize(bg.rows, columns_);
+  for (int i = 0; i < bg.rows; ++i) {
+    for (int j = 0; j < columns_; ++j) ball_v_(i, j) = inner_sms.variation(bg.index(i, j));
+  }
+  ball_row_.resize(rows_);
+  ball_row_weight_.resize(rows_);
+  const double ball_pitch = bg.rows > 1 ? bg.row_position(1) - bg.row_position(0) : 1.0;
+  for (int i = 0; i < rows_; ++i) {
+    const double u =
+        bg.rows > 1
+            ? std::clamp((sg.row_position(i) - bg.row_position(0)) / ball_pitch, 0.0, bg.rows - 1.0)
+            : 0.0;
+    ball_row_[i] = std::min(static_cast<int>(u), std::max(bg.rows - 2, 0));
+    ball_row_weight_[i] = bg.rows > 1 ? u - ball_row_[i] : 0.0;
+  }
+  normal_ = sg.normal;
+}
+
+template <class Visit>
+void SphericalContactAnalyzer::ForEachCell(const MatingPose& pose, Visit&& visit) const noexcept {
+  const double pitch = 2.0 * M_PI / columns_;
+  const int last_ball_row = static_cast<int>(ball_v_.rows()) - 1;
+  for (int j = 0; j < columns_; ++j) {
+    // The ball's material point under socket column j was at beta_j - angle before the rotation.
+    double u = std::fmod(j - pose.angle / pitch, static_cast<double>(columns_));
+    if (u < 0.0) u += columns_;
+    int j0 = static_cast<int>(u);
+    const double fj = u - j0;
+    j0 %= columns_;
+    const int j1 = (j0 + 1) % columns_;
+    for (int i = 0; i < rows_; ++i) {
+      const int r0 = ball_row_[i];
+      const int r1 = std::min(r0 + 1, last_ball_row);
+      const double fr = ball_row_weight_[i];
+      const double ball_v = (1.0 - fr) * ((1.0 - fj) * ball_v_(r0, j0) + fj * ball_v_(r0, j1)) +
+                            fr * ((1.0 - fj) * ball_v_(r1, j0) + fj * ball_v_(r1, j1));
+      const int k = i * columns_ + j;
+      const double shift = pose.offset.x() * normal_(0, k) + pose.offset.y() * normal_(2, k);
+      const double gap = socket_v_(i, j) - ball_v - shift;
+      visit(k, texture_(gap));
+    }
+  }
+}
+
+void SphericalContactAnalyzer::DoEvaluate(const MatingPose& pose,
+                                          ContactState* out) const noexcept {
+  *out = ContactState{};
+  // A non-finite pose (a device glitch) is no contact rather than NaN forces.
+  if (!std::isfinite(pose.angle) || !pose.offset.allFinite()) return;
+  out->engaged = true;
+  out->engaged_length = width_;
+  out->engaged_area = cell_area_ * rows_ * columns_;
+  out->offset_distance = pose.offset.norm();
+  out->offset_angle = std::atan2(pose.offset.y(), pose.offset.x());
+  ForEachCell(pose, [&](int k, double delta) {
+    if (delta > 0.0) {
+      out->interference_volume += delta * cell_area_;
+      out->max_interference = std::max(out->max_interference, delta);
+      out->pressure_resultant += delta * cell_area_ * Eigen::Vector2d(normal_(0, k), normal_(2, k));
+    }
+  });
+  out->interference = out->interference_volume > 0.0;
+}
+
+void SphericalContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
+                                                 Eigen::VectorXd* delta) const {
+  delta->setZero(rows_ * columns_);
+  ForEachCell(pose, [&](int k, double d) { (*delta)(k) = d; });
+}
+
+}  // namespace fitfeel::spherical

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/texture_contact.h"
+
+namespace fitfeel::spherical {
+
+// Contact of a ball (inner ring, inner) in a socket (outer ring, outer) of a spherical plain
+// bearing. The ball is captive: it cannot leave the socket along the axis, so the pose's depth is
+// not a degree of freedom here (it is ignored, and the parts are always engaged). The pose's angle
+// is the ball's rotation about the bearing axis y, its offset (x, z) the radial displacement e of
+// the ball's centre from the socket's.
+//
+// Per socket cell k (row i at height y, column j at beta_j, unit normal n_k from the centre):
+//   gap = V_socket(k) - V_ball(y, beta_j - angle) - e . n_k,     delta = max(0, -gap)
+// with the ball's variation interpolated bilinearly (in y between its rows, in beta periodically
+// between its columns) at the material point that the rotation has brought under the cell, so the
+// contact is continuous in the angle. The socket's band is the contact band (the ball's is wider,
+// CheckPair requires it). Every contact is elastic (Winkler bed of thick-shell pressures), so there
+// is no separate clearance spring and the force is continuous at first contact. With texture in
+// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
+// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h);
+// in `sampled` mode the texture is in V and the contact is sharp, max(0, -gap).
+//
+// Sums reported: interference_volume = sum delta * ds, pressure_resultant = sum delta * ds *
+// (n_x, n_z) (the axial component of the resultant is not reported: ContactState has no field
+// for it, and it vanishes for a band symmetric about the equator unless the form is asymmetric).
+//
+// Per tick: one pass over the socket's m x n cells, no allocation.
+class SphericalContactAnalyzer final : public ContactAnalyzer {
+ protected:
+  void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+                 const SkinModelShape& outer_sms, const ModelSettings& settings) override;
+  void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
+  void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+
+ private:
+  template <class Visit>
+  void ForEachCell(const MatingPose& pose, Visit&& visit) const noexcept;
+
+  int rows_ = 0;     // socket rows
+  int columns_ = 0;  // shared column count
+  double width_ = 0.0;
+  double cell_area_ = 0.0;
+  Eigen::MatrixXd socket_v_;  // rows x columns
+  Eigen::MatrixXd ball_v_;    // ball rows x columns
+  // Ball rows bracketing each socket row, and the weight of the upper one (prepare-time).
+  std::vector<int> ball_row_;
+  std::vector<double> ball_row_weight_;
+  Eigen::Matrix3Xd normal_;            // socket cell normals
+  ExpectedInterferenceTable texture_;  // sharp unless texture is `expected`
+};
+
+}  // namespace fitfeel::spherical

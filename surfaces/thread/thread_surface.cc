@@ -1,0 +1,52 @@
+#include "surfaces/thread/thread_surface.h"
+
+#include <cmath>
+
+#include "framework/core/error.h"
+#include "framework/core/quantity.h"
+#include "surfaces/thread/helicoid_geometry.h"
+#include "surfaces/thread/helicoid_model.h"
+
+namespace fitfeel::thread {
+
+std::unique_ptr<Discretizer> ThreadSurface::MakeDiscretizer() const {
+  return std::make_unique<HelicoidDiscretizer>();
+}
+
+std::unique_ptr<VariationGenerator> ThreadSurface::MakeVariationGenerator() const {
+  return std::make_unique<HelicoidVariationGenerator>();
+}
+
+std::unique_ptr<ContactAnalyzer> ThreadSurface::MakeContactAnalyzer() const {
+  throw UnsupportedError(kLimitation);
+}
+
+std::unique_ptr<ResistanceLaw> ThreadSurface::DoMakeLaw(std::string_view) const {
+  throw UnsupportedError(kLimitation);
+}
+
+std::shared_ptr<const Geometry> ThreadSurface::DoParseGeometry(const PartSpec& part,
+                                                               const ConfigNode& geometry) const {
+  return ParseHelicoidGeometry(part, geometry);
+}
+
+void ThreadSurface::DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                                const ConfigNode& pair_node) const {
+  const HelicoidGeometry& a = HelicoidGeometryOf(inner);
+  const HelicoidGeometry& b = HelicoidGeometryOf(outer);
+  auto differ = [](double x, double y) { return std::abs(x - y) > 1e-12 * std::max(1.0, x); };
+  // A bolt screws into a nut of its own nominal thread only.
+  if (differ(a.diameter(), b.diameter()) || differ(a.pitch(), b.pitch()) ||
+      differ(a.flank_angle(), b.flank_angle())) {
+    pair_node.Fail("the same nominal diameter, pitch and flank angle on '" + inner.name +
+                       "' and '" + outer.name + "'",
+                   a.Describe() + " and " + b.Describe());
+  }
+}
+
+std::vector<CharacteristicCheck> ThreadSurface::DoEvaluateCharacteristics(
+    const PartSpec& part, const SkinModelShape& sms) const {
+  return EvaluateHelicoidCharacteristics(part, sms);
+}
+
+}  // namespace fitfeel::thread

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/model/surface_type.h"
+
+namespace fitfeel::thread {
+
+// The message every refusal of this surface type carries.
+inline constexpr const char* kLimitation =
+    "threaded (helicoid) mating has no resistance law yet: the stub parses and validates the "
+    "helicoid, discretizes both flanks and generates pitch-diameter, pitch and flank-angle "
+    "deviations, but the contact of a screw advancing by rotation (the constrained motion couples "
+    "turn and advance; the flank load has axial, radial and tangential parts) is not modelled";
+
+// fitfeel.surface.thread: a stub that registers, validates and discretizes, and refuses to
+// render forces (renders_forces() is false; analyzers and laws throw UnsupportedError).
+class ThreadSurface final : public SurfaceType {
+ public:
+  std::vector<FormCharacteristic> form_characteristics() const override { return {}; }
+  std::vector<std::string> law_names() const override { return {}; }
+  bool renders_forces() const override { return false; }
+  std::string limitation() const override { return kLimitation; }
+  bool rotational() const override { return true; }
+
+  std::unique_ptr<Discretizer> MakeDiscretizer() const override;
+  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
+  // Throws UnsupportedError with kLimitation.
+  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
+
+ protected:
+  std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
+                                                  const ConfigNode& geometry) const override;
+  void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
+                   const ConfigNode& pair_node) const override;
+  // Throws UnsupportedError with kLimitation.
+  std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
+  std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
+      const PartSpec& part, const SkinModelShape& sms) const override;
+};
+
+}  // namespace fitfeel::thread
