@@ -1,11 +1,181 @@
+// fitfeel run [FILE] [--out DIR] [--seed N] [--realtime|--virtual]
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
 #include "framework/cli/commands.h"
 #include "framework/core/error.h"
+#include "framework/plugin/registry.h"
+#include "framework/runtime/run.h"
+#include "framework/scenario/scene.h"
 
 namespace fitfeel::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
+
+struct RunArgs {
+  std::string file;
+  std::string out;
+  std::optional<std::uint64_t> seed;
+  bool realtime = false;
+  bool virtual_clock = false;
+};
+
+// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
+fs::path FindDefaultScenario() {
+  const fs::path here = kDefaultScenario;
+  if (fs::exists(here)) return here;
+  std::string searched = "'" + fs::absolute(here).string() + "'";
+  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
+    const fs::path there = fs::path(source) / kDefaultScenario;
+    if (fs::exists(there)) return there;
+    searched += " and '" + there.string() + "'";
+  } else {
+    searched += " (FITFEEL_SOURCE_DIR is not set)";
+  }
+  throw UserError("no scenario file given and the default '" + std::string(kDefaultScenario) +
+                  "' was not found: looked in " + searched);
+}
+
+// A progress line on a terminal for runs longer than a second, drawn from a thread of its own:
+// the tick loop only publishes its tick count.
+class Progress {
+ public:
+  void Start(const Scheduler* scheduler) {
+    if (!isatty(STDERR_FILENO)) return;
+    thread_ = std::thread([this, scheduler] { Draw(scheduler); });
+  }
+  void Stop() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+    if (drawn_) std::fprintf(stderr, "\r\033[K");
+  }
+  ~Progress() { Stop(); }
+
+ private:
+  void Draw(const Scheduler* scheduler) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (wake_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_; })) return;
+    const auto planned = scheduler->planned_ticks();
+    do {
+      const auto done = scheduler->ticks_done();
+      std::fprintf(stderr, "\r  running: %llu / %llu ticks (%.0f %%)",
+                   static_cast<unsigned long long>(done), static_cast<unsigned long long>(planned),
+                   100.0 * static_cast<double>(done) / static_cast<double>(planned));
+      std::fflush(stderr);
+      drawn_ = true;
+    } while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stop_; }));
+  }
+
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  bool drawn_ = false;
+};
+
+std::string Stat(const nlohmann::json& s, const char* unit) {
+  if (s["mean"].is_null()) return "none (no constrained tick)";
+  char buffer[160];
+  std::snprintf(buffer, sizeof(buffer), "mean %.4g %s, min %.4g %s, max %.4g %s",
+                s["mean"].get<double>(), unit, s["min"].get<double>(), unit, s["max"].get<double>(),
+                unit);
+  return buffer;
+}
+
+void PrintSummary(const RunResult& r) {
+  const auto& j = r.summary;
+  const auto& s = r.stats;
+  std::printf("fitfeel run: %s (%s)\n", r.info.scenario.c_str(),
+              r.info.scenario_file.string().c_str());
+  std::printf("  seed %llu, law %s, device %s, %s clock\n",
+              static_cast<unsigned long long>(r.info.seed), r.info.law.c_str(),
+              r.info.device.c_str(), r.info.clock.c_str());
+  std::printf("  prepare %.3f s (grid %dx%d inner, %dx%d outer)\n", r.info.prepare_seconds,
+              r.info.inner_rows, r.info.inner_columns, r.info.outer_rows, r.info.outer_columns);
+  std::printf("  %llu ticks at %g Hz in %.3f s, %llu constrained, deadline misses %llu\n",
+              static_cast<unsigned long long>(s.ticks), r.info.rate, s.wall_seconds,
+              static_cast<unsigned long long>(j["constrained_ticks"].get<std::uint64_t>()),
+              static_cast<unsigned long long>(s.deadline_misses));
+  std::printf("  tick compute  p50 %.2f us, p99 %.2f us, max %.2f us\n", s.compute_us.p50,
+              s.compute_us.p99, s.compute_us.max);
+  if (s.realtime) {
+    std::printf("  period jitter p50 %.1f us, p99 %.1f us, max %.1f us (%s)\n", s.jitter_us.p50,
+                s.jitter_us.p99, s.jitter_us.max, s.realtime_note.c_str());
+  }
+  std::printf("  axial resistance  %s\n", Stat(j["axial_resistance_N"], "N").c_str());
+  std::printf("  radial resistance %s\n", Stat(j["radial_resistance_N"], "N").c_str());
+  if (j.contains("torque_Nm")) {
+    std::printf("  resisting torque  %s\n", Stat(j["torque_Nm"], "N*m").c_str());
+  }
+  for (const auto& note : r.notes) std::printf("  %s\n", note.c_str());
+  if (!r.paths.trace.empty()) std::printf("  trace   %s\n", r.paths.trace.string().c_str());
+  if (!r.paths.summary.empty()) std::printf("  summary %s\n", r.paths.summary.string().c_str());
+}
+
+void Run(const RunArgs& args) {
+  const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
+  PluginRegistry registry;
+  registry.LoadAll();
+  // Every check of the scenario happens here, before anything runs or any file is created.
+  Scene scene = LoadScene(file, registry);
+
+  RunOptions options;
+  options.out_dir = args.out.empty() ? fs::path("out") / scene.name : fs::path(args.out);
+  options.seed = args.seed;
+  if (args.realtime) options.clock = ClockMode::kRealTime;
+  if (args.virtual_clock) options.clock = ClockMode::kVirtual;
+  Progress progress;
+  options.watch = [&progress](const Scheduler* scheduler) {
+    if (scheduler) {
+      progress.Start(scheduler);
+    } else {
+      progress.Stop();
+    }
+  };
+  const RunResult result = RunScene(std::move(scene), options);
+  PrintSummary(result);
+}
+
+}  // namespace
 
 void AddRunCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("run", "(being built)");
-  cmd->callback([] { throw UnsupportedError("'run' is not implemented in this build yet"); });
+  auto args = std::make_shared<RunArgs>();
+  auto* cmd = app.add_subcommand(
+      "run",
+      "Run a scenario: build the skin model shapes, drive the device at the scenario's rate and "
+      "write DIR/trace.csv and DIR/summary.json");
+  cmd->add_option("file", args->file,
+                  std::string("scenario file (default: ") + kDefaultScenario +
+                      ", looked up in the current folder, then in FITFEEL_SOURCE_DIR)");
+  cmd->add_option("--out", args->out, "output folder (default: out/<scenario name>)");
+  cmd->add_option("--seed", args->seed,
+                  "seed of the scene's random generator (overrides run.seed)");
+  auto* realtime = cmd->add_flag("--realtime", args->realtime,
+                                 "real-time clock: absolute 1 kHz deadlines (overrides run.clock)");
+  auto* virtual_clock = cmd->add_flag("--virtual", args->virtual_clock,
+                                      "virtual clock: as fast as possible, deterministic");
+  realtime->excludes(virtual_clock);
+  cmd->callback([args] { Run(*args); });
 }
 
 }  // namespace fitfeel::cli

@@ -16,12 +16,12 @@ namespace fitfeel {
 // Limits and native properties of a haptic device (data, overridable by the scenario).
 struct DeviceSpec {
   std::string model;
-  double max_force = 0.0;             // N, peak
-  double max_continuous_force = 0.0;  // N
-  double max_stiffness = 0.0;         // N/m, largest stable rendered stiffness
-  double damping = 0.0;               // N*s/m, physical damping usable for passivity
+  double max_force = 0.0;                    // N, peak
+  double max_continuous_force = 0.0;         // N
+  double max_stiffness = 0.0;                // N/m, largest stable rendered stiffness
+  double damping = 0.0;                      // N*s/m, physical damping usable for passivity
   Eigen::Vector3d workspace{0.0, 0.0, 0.0};  // extent of the reachable box, m
-  double native_rate = 1000.0;        // Hz
+  double native_rate = 1000.0;               // Hz
 };
 
 // One sample of the device (or hand) state, in the scene frame: y is the mating axis.
@@ -54,6 +54,18 @@ class FITFEEL_API Device {
   void Read(double time, DeviceState* out) noexcept;
   // Per tick: the wrench to apply (already scaled and bounded by the safety chain).
   void Write(const Wrench& wrench) noexcept;
+  // Per tick, before Write: the stiffness (N/m) of the contact the next wrench comes from, 0 when
+  // free. A device that simulates its own inertia integrates the contact implicitly with it (a
+  // press fit is far stiffer than an explicit step at 1 kHz can hold); hardware ignores it.
+  void SetEnvironmentStiffness(double stiffness) noexcept {
+    DoSetEnvironmentStiffness(stiffness >= 0.0 && stiffness < 1e300 ? stiffness : 0.0);
+  }
+  // Per tick, before Write, when not in contact: the part can move `gap` (m) along the unit
+  // `direction` in the (x, z) cross-section before it touches (infinity: unknown). A simulated
+  // device whose free step would cross that distance meets the surface instead of falling into it.
+  void SetEnvironmentGap(double gap, const Eigen::Vector2d& direction) noexcept {
+    DoSetEnvironmentGap(gap >= 0.0 ? gap : 0.0, direction);
+  }
 
   virtual DeviceSpec spec() const = 0;
   virtual ClockOwner clock_owner() const { return ClockOwner::kFramework; }
@@ -69,6 +81,8 @@ class FITFEEL_API Device {
   virtual void DoStop() noexcept {}
   virtual void DoRead(double time, DeviceState* out) noexcept = 0;
   virtual void DoWrite(const Wrench& wrench) noexcept = 0;
+  virtual void DoSetEnvironmentStiffness(double) noexcept {}
+  virtual void DoSetEnvironmentGap(double, const Eigen::Vector2d&) noexcept {}
 };
 
 }  // namespace fitfeel

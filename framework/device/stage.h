@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <string_view>
 
 #include "framework/core/export.h"
@@ -16,10 +17,17 @@ FITFEEL_API std::string_view ToString(StageId stage);
 
 // Output of one stage tick.
 struct StageOutput {
-  Wrench wrench;               // on the moving part, scene frame
-  MatingPose pose;             // where the moving part is relative to the fixed one
-  ContactState contact;        // filled by the constrained stage
+  Wrench wrench;                         // on the moving part, scene frame
+  MatingPose pose;                       // where the moving part is relative to the fixed one
+  ContactState contact;                  // filled by the constrained stage
   StageId next = StageId::kPositioning;  // stage for the next tick (hand-over)
+  // Radial stiffness of the contact at this pose, -dF/dx along the force (N/m); 0 when free. A
+  // simulated device integrates its inertia implicitly with it, the safety chain's coupling too.
+  double stiffness = 0.0;
+  // Free space in front of the part when it is not in contact: the distance (m) it can move along
+  // `gap_direction` (unit, in the (x, z) cross-section) before touching; infinity when unknown.
+  double gap = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d gap_direction{0.0, 0.0};
 };
 
 // One stage of the assembly. Prepare may allocate; Evaluate is the per-tick path.

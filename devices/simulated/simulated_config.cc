@@ -1,0 +1,66 @@
+// The scenario's `device` node for fitfeel.device.simulated, checked key by key with units.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "devices/simulated/simulated_device.h"
+#include "framework/core/config_node.h"
+
+namespace fitfeel::simulated {
+namespace {
+
+double Optional(const ConfigNode& node, std::string_view key, Dimension dimension, double lo,
+                double hi, double fallback) {
+  const auto child = node.Find(key);
+  return child ? child->AsQuantityIn(dimension, lo, hi) : fallback;
+}
+
+}  // namespace
+
+void SimulatedDevice::DoConfigure(const ConfigNode& node) {
+  Settings s;
+  const auto mode = node.Find("mode");
+  const std::string name = mode ? mode->AsOneOf({"constant_speed", "scripted"}) : "constant_speed";
+  if (name == "constant_speed") {
+    node.ExpectOnlyKeys(
+        {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping"});
+    s.mode = Settings::Mode::kConstantSpeed;
+    // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
+    // robot holds; 1 m of approach is the size of a workcell.
+    s.speed = node.Child("speed").AsQuantityIn(Dimension::kVelocity, 0.0, 1.0, false);
+    s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
+    s.start_offset = Optional(node, "start_offset", Dimension::kLength, 0.0, 1.0, 1e-3);
+    s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
+  } else {
+    node.ExpectOnlyKeys({"plugin", "mode", "hand", "waypoints"});
+    s.mode = Settings::Mode::kScripted;
+    const ConfigNode hand = node.Child("hand");
+    hand.ExpectOnlyKeys({"mass", "stiffness", "damping"});
+    s.hand_mass = hand.Child("mass").AsQuantityIn(Dimension::kMass, 0.0, 1e3, false);
+    s.hand_stiffness = hand.Child("stiffness").AsQuantityIn(Dimension::kStiffness, 0.0, 1e8, false);
+    s.hand_damping = Optional(hand, "damping", Dimension::kDamping, 0.0, 1e6, 0.0);
+    const ConfigNode list = node.Child("waypoints");
+    if (!list.is_sequence() || list.Items().empty()) {
+      list.Fail("a list of waypoints {time, position}", list.Describe());
+    }
+    for (const ConfigNode& item : list.Items()) {
+      item.ExpectOnlyKeys({"time", "position"});
+      Waypoint w;
+      w.time = item.Child("time").AsQuantityIn(Dimension::kTime, 0.0, 1e5);
+      if (!s.waypoints.empty() && !(w.time > s.waypoints.back().time)) {
+        item.Child("time").Fail("a time after the previous waypoint's",
+                                item.Child("time").Describe());
+      }
+      const ConfigNode position = item.Child("position");
+      const auto xyz = position.is_sequence() ? position.Items() : std::vector<ConfigNode>{};
+      if (xyz.size() != 3)
+        position.Fail("[x, y, z] with units, e.g. [0 mm, -5 mm, 0 mm]", position.Describe());
+      for (int i = 0; i < 3; ++i)
+        w.position[i] = xyz[i].AsQuantityIn(Dimension::kLength, -10.0, 10.0);
+      s.waypoints.push_back(w);
+    }
+  }
+  Configure(s);
+}
+
+}  // namespace fitfeel::simulated

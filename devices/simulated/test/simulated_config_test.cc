@@ -1,0 +1,77 @@
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "devices/simulated/simulated_device.h"
+#include "framework/core/config_node.h"
+#include "framework/core/error.h"
+// After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
+#include <gtest/gtest.h>
+
+namespace fitfeel::simulated {
+namespace {
+
+ConfigNode Node(const std::string& yaml) {
+  return ConfigNode(YAML::Load(yaml), "scene.yaml", "device");
+}
+
+std::string ErrorOf(const std::string& yaml) {
+  SimulatedDevice device;
+  try {
+    device.Configure(Node(yaml));
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SimulatedConfigTest, ReadsTheRobotWithUnits) {
+  SimulatedDevice device;
+  device.Configure(
+      Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nradial_load: 2 N\n"
+           "start_offset: 5 mm\n"));
+  const Settings& s = device.settings();
+  EXPECT_EQ(s.mode, Settings::Mode::kConstantSpeed);
+  EXPECT_DOUBLE_EQ(s.speed, 0.01);
+  EXPECT_DOUBLE_EQ(s.radial_load, 2.0);
+  EXPECT_DOUBLE_EQ(s.start_offset, 5e-3);
+  EXPECT_DOUBLE_EQ(s.radial_damping, 0.0);
+}
+
+TEST(SimulatedConfigTest, ReadsAScriptedHand) {
+  SimulatedDevice device;
+  device.Configure(Node(R"(mode: scripted
+hand: {mass: 500 g, stiffness: 0.5 N/mm, damping: 30 N*s/m}
+waypoints:
+  - {time: 0 s, position: [0 mm, -10 mm, 0 mm]}
+  - {time: 2 s, position: [0 mm, 15 mm, 0 mm]}
+)"));
+  const Settings& s = device.settings();
+  EXPECT_EQ(s.mode, Settings::Mode::kScripted);
+  EXPECT_DOUBLE_EQ(s.hand_mass, 0.5);
+  EXPECT_DOUBLE_EQ(s.hand_stiffness, 500.0);
+  ASSERT_EQ(s.waypoints.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.waypoints[1].position.y(), 15e-3);
+  EXPECT_DOUBLE_EQ(s.waypoints[1].time, 2.0);
+}
+
+TEST(SimulatedConfigTest, RefusesBadKeysWithTheirPath) {
+  EXPECT_NE(ErrorOf("speed: 10 mm").find("device.speed"), std::string::npos);
+  EXPECT_NE(ErrorOf("speed: 10 mm/s\nradial_lod: 2 N").find("radial_lod"), std::string::npos);
+  EXPECT_NE(ErrorOf("speed: -1 mm/s").find("device.speed"), std::string::npos);
+  EXPECT_NE(ErrorOf("radial_load: 2 N").find("speed"), std::string::npos);
+  EXPECT_NE(ErrorOf("mode: teleport\nspeed: 1 mm/s").find("device.mode"), std::string::npos);
+  EXPECT_NE(ErrorOf("mode: scripted\nhand: {mass: 1 kg, stiffness: 1 N/mm}\nwaypoints:\n"
+                    "  - {time: 1 s, position: [0 mm, 0 mm]}")
+                .find("position"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("mode: scripted\nhand: {mass: 1 kg, stiffness: 1 N/mm}\nwaypoints:\n"
+                    "  - {time: 1 s, position: [0 mm, 0 mm, 0 mm]}\n"
+                    "  - {time: 1 s, position: [0 mm, 1 mm, 0 mm]}")
+                .find("time"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("speed: 10 mm/s").find("no error"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fitfeel::simulated

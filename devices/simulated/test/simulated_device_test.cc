@@ -1,0 +1,274 @@
+#include "devices/simulated/simulated_device.h"
+
+#include <cmath>
+
+#include "framework/core/error.h"
+// After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
+#include <gtest/gtest.h>
+
+namespace fitfeel::simulated {
+namespace {
+
+constexpr double kPeriod = 1e-3;
+
+Settings Robot(double load, double damping = 0.0) {
+  Settings s;
+  s.speed = 10e-3;
+  s.start_offset = 2e-3;
+  s.radial_load = load;
+  s.radial_damping = damping;
+  return s;
+}
+
+// Runs `ticks` ticks with a rendered force given by `force(state)`; returns the last state read.
+template <typename F>
+DeviceState Drive(SimulatedDevice& device, int ticks, F force) {
+  DeviceState state;
+  for (int k = 0; k < ticks; ++k) {
+    device.Read(k * kPeriod, &state);
+    device.Write(force(state));
+  }
+  device.Read(ticks * kPeriod, &state);
+  return state;
+}
+
+Wrench NoForce(const DeviceState&) { return Wrench{}; }
+
+TEST(SimulatedRobotTest, AxialPositionAfterNTicksIsExact) {
+  SimulatedDevice device;
+  device.Configure(Robot(0.0));
+  device.Start(kPeriod);
+  for (int n : {0, 1, 137, 5000}) {
+    SimulatedDevice d;
+    d.Configure(Robot(0.0));
+    d.Start(kPeriod);
+    const DeviceState s = Drive(d, n, NoForce);
+    EXPECT_EQ(s.position.y(), -2e-3 + 10e-3 * (n * kPeriod)) << n;
+    EXPECT_EQ(s.velocity.y(), 10e-3);
+    // No weight: held on the axis whatever force is rendered.
+    EXPECT_EQ(s.position.x(), 0.0);
+    EXPECT_EQ(s.position.z(), 0.0);
+  }
+  const DeviceState pushed = Drive(device, 400, [](const DeviceState&) {
+    Wrench w;
+    w.force = Eigen::Vector3d(5.0, -50.0, 5.0);
+    return w;
+  });
+  EXPECT_EQ(pushed.position, Eigen::Vector3d(0.0, -2e-3 + 10e-3 * 0.4, 0.0));
+}
+
+TEST(SimulatedRobotTest, WeightActsOnlyInsideTheEntranceAsAFreeFallOfTheShaftsMass) {
+  SimulatedDevice device;
+  device.Configure(Robot(2.0));
+  EXPECT_DOUBLE_EQ(device.mass(), 2.0 / kStandardGravity);
+  device.Start(kPeriod);
+  // 2 mm before the entrance at 10 mm/s: carried for 200 ticks.
+  DeviceState s = Drive(device, 200, NoForce);
+  EXPECT_EQ(s.position.z(), 0.0);
+  EXPECT_EQ(s.position.y(), 0.0);
+  // From tick 200 on, n steps of symplectic Euler under g fall g h^2 n (n + 1) / 2.
+  SimulatedDevice falling;
+  falling.Configure(Robot(2.0));
+  falling.Start(kPeriod);
+  const int n = 50;
+  s = Drive(falling, 200 + n, NoForce);
+  EXPECT_NEAR(s.position.z(), -kStandardGravity * kPeriod * kPeriod * n * (n + 1) / 2.0, 1e-15);
+  EXPECT_NEAR(s.velocity.z(), -kStandardGravity * kPeriod * n, 1e-13);
+  EXPECT_EQ(s.position.x(), 0.0);
+}
+
+// A radial contact spring below the part: F_z = -k (z - z0) when z < z0.
+Wrench Floor(const DeviceState& s, double k, double z0) {
+  Wrench w;
+  if (s.position.z() < z0) w.force.z() = -k * (s.position.z() - z0);
+  return w;
+}
+
+TEST(SimulatedRobotTest, SettlesOnASpringAtTheStaticEquilibrium) {
+  const double load = 2.0, k = 2e5;  // 0.2 N/um, a quarter of the stability bound
+  SimulatedDevice device;
+  // Damping of 0.7 of critical for the part on that spring, so that it settles in ~10 ms.
+  const double m = load / kStandardGravity;
+  device.Configure(Robot(load, 2 * 0.7 * std::sqrt(k * m)));
+  device.Start(kPeriod);
+  const DeviceState s =
+      Drive(device, 1200, [&](const DeviceState& st) { return Floor(st, k, 0.0); });
+  EXPECT_NEAR(s.position.z(), -load / k, 1e-12);  // 10 um down
+  EXPECT_NEAR(s.velocity.z(), 0.0, 1e-12);
+}
+
+TEST(SimulatedRobotTest, WithoutTheStiffnessAnExplicitContactIsStableOnlyBelowTheBound) {
+  const double load = 2.0;
+  SimulatedDevice probe;
+  probe.Configure(Robot(load));
+  probe.Start(kPeriod);
+  const double bound = probe.ExplicitStabilityBound();
+  EXPECT_TRUE(std::isinf(probe.spec().max_stiffness));
+  EXPECT_NEAR(bound, 4.0 * (load / kStandardGravity) / (kPeriod * kPeriod), 1e-6);
+  for (double factor : {0.9, 1.1}) {
+    SimulatedDevice device;
+    device.Configure(Robot(load));
+    device.Start(kPeriod);
+    const double k = factor * bound;
+    // Bilateral spring, so that the oscillation cannot leave it.
+    double min_z = 0.0, sum_z = 0.0;
+    const int ticks = 3000;
+    DeviceState state;
+    for (int t = 0; t < ticks; ++t) {
+      device.Read(t * kPeriod, &state);
+      if (t >= 1200) {
+        min_z = std::min(min_z, state.position.z());
+        sum_z += state.position.z();
+      }
+      Wrench w;
+      if (state.position.y() >= 0.0) w.force.z() = -k * state.position.z();
+      device.Write(w);
+    }
+    if (factor < 1.0) {
+      // Symplectic Euler: a bounded oscillation about the equilibrium -W/k. Starting at rest on
+      // the axis, its invariant ellipse reaches W/k / sqrt(1 - k h^2 / 4m) below the equilibrium
+      // (the discrete map's stretch, 3.2x at 0.9 of the bound), and never further.
+      const double m = load / kStandardGravity;
+      const double reach =
+          (load / k) * (1.0 + 1.0 / std::sqrt(1.0 - k * kPeriod * kPeriod / (4 * m)));
+      EXPECT_GT(min_z, -1.01 * reach);
+      EXPECT_LT(min_z, -0.9 * reach);
+      EXPECT_NEAR(sum_z / (ticks - 1200), -load / k, 0.2 * load / k);
+    } else {
+      EXPECT_LT(min_z, -1e3 * load / k);  // grows without bound
+    }
+  }
+}
+
+TEST(SimulatedRobotTest, ASteelPressFitToldItsStiffnessSettlesWithinTicks) {
+  // 3.665 N/nm (the Lame radial stiffness of the case study's joint): 4500 times the explicit
+  // bound. Handed the stiffness, the part lands on the contact and rests at -W/k.
+  const double load = 2.0, k = 3.665e9;
+  SimulatedDevice device;
+  device.Configure(Robot(load));
+  device.Start(kPeriod);
+  DeviceState state;
+  double max_height = -1.0;
+  for (int t = 0; t < 600; ++t) {
+    device.Read(t * kPeriod, &state);
+    // A floor 12 um below the axis: the part falls onto it after the entrance (tick 200).
+    const double floor = -12e-6;
+    Wrench w;
+    const bool contact = state.position.z() < floor;
+    if (contact) w.force.z() = -k * (state.position.z() - floor);
+    device.SetEnvironmentStiffness(contact ? k : 0.0);
+    device.Write(w);
+    if (t > 220) max_height = std::max(max_height, state.position.z());
+  }
+  device.Read(600 * kPeriod, &state);
+  EXPECT_NEAR(state.position.z(), -12e-6 - load / k, 1e-12);
+  EXPECT_NEAR(state.velocity.z(), 0.0, 1e-9);
+  EXPECT_LT(max_height, -12e-6 + 1e-9);  // never bounced off
+}
+
+TEST(SimulatedRobotTest, FollowsAMovingStiffContactWithoutLagForce) {
+  // A bilateral contact whose anchor sinks at 2 um/s (as the energy-minimising axis does with
+  // depth under interference): F = -k (z - a(t)). The part must follow it with F balancing the
+  // weight, not lag it by a tick (which would cost k * 2 nm = 7 N here).
+  const double load = 2.0, k = 3.665e9, rate = -2e-6;
+  SimulatedDevice device;
+  device.Configure(Robot(load));
+  device.Start(kPeriod);
+  DeviceState state;
+  double last_force = 0.0;
+  for (int t = 0; t < 800; ++t) {
+    device.Read(t * kPeriod, &state);
+    const double anchor = -5e-6 + rate * t * kPeriod;
+    Wrench w;
+    if (state.position.y() >= 0.0) w.force.z() = -k * (state.position.z() - anchor);
+    device.SetEnvironmentStiffness(state.position.y() >= 0.0 ? k : 0.0);
+    device.Write(w);
+    last_force = w.force.z();
+  }
+  EXPECT_NEAR(last_force, load, 1e-3);
+}
+
+TEST(SimulatedRobotTest, OneFreeTickAfterContactDoesNotDropThePartIntoTheSurface) {
+  // Resting on a stiff floor; at tick 400 the contact reports nothing for one tick (the part was
+  // pushed a hair outside it). A free step would fall g h^2 = 9.8 um and come back with
+  // k * 9.8 um = 36 kN; the remembered plane keeps it on the surface.
+  const double load = 2.0, k = 3.665e9, floor = -12e-6;
+  SimulatedDevice device;
+  device.Configure(Robot(load));
+  device.Start(kPeriod);
+  DeviceState state;
+  double after = 0.0;
+  for (int t = 0; t < 410; ++t) {
+    device.Read(t * kPeriod, &state);
+    Wrench w;
+    const bool contact = state.position.z() < floor && t != 400;
+    if (contact) w.force.z() = -k * (state.position.z() - floor);
+    device.SetEnvironmentStiffness(contact ? k : 0.0);
+    device.Write(w);
+    if (t > 400) after = std::max(after, std::abs(w.force.z()));
+  }
+  EXPECT_LT(after, 2.0 * load);
+  EXPECT_GT(after, 0.5 * load);
+  EXPECT_NEAR(state.position.z(), floor - load / k, 1e-11);
+}
+
+TEST(SimulatedHandTest, FollowsTheWaypointsAndYieldsToAForceByItsStiffness) {
+  Settings s;
+  s.mode = Settings::Mode::kScripted;
+  s.hand_mass = 0.5;
+  s.hand_stiffness = 500.0;
+  s.hand_damping = 2 * std::sqrt(500.0 * 0.5);  // critically damped
+  s.waypoints = {{0.0, {0.0, -5e-3, 0.0}}, {0.5, {0.0, 5e-3, 1e-3}}};
+  SimulatedDevice device;
+  device.Configure(s);
+  device.Start(kPeriod);
+  DeviceState state = Drive(device, 0, NoForce);
+  EXPECT_EQ(state.position, Eigen::Vector3d(0.0, -5e-3, 0.0));
+  // Half way along the 20 mm/s ramp: the damper acts on the velocity error, so the hand tracks
+  // a ramp without steady lag once the start transient (time constant sqrt(m/k) = 32 ms) is gone.
+  state = Drive(device, 250, NoForce);
+  EXPECT_NEAR(state.position.y(), 0.0, 1e-5);
+  EXPECT_NEAR(state.position.z(), 0.5e-3, 1e-6);
+  EXPECT_NEAR(state.velocity.y(), 20e-3, 0.2e-3);
+  // Long after the last waypoint it rests on it; a constant 1 N along -y then moves it by F / k.
+  SimulatedDevice held;
+  held.Configure(s);
+  held.Start(kPeriod);
+  state = Drive(held, 3000, NoForce);
+  EXPECT_NEAR((state.position - Eigen::Vector3d(0.0, 5e-3, 1e-3)).norm(), 0.0, 1e-9);
+  SimulatedDevice pushed;
+  pushed.Configure(s);
+  pushed.Start(kPeriod);
+  state = Drive(pushed, 3000, [](const DeviceState&) {
+    Wrench w;
+    w.force.y() = -1.0;
+    return w;
+  });
+  EXPECT_NEAR(state.position.y(), 5e-3 - 1.0 / 500.0, 1e-9);
+  EXPECT_NEAR(state.velocity.norm(), 0.0, 1e-9);
+}
+
+TEST(SimulatedDeviceTest, RefusesSettingsOutOfRange) {
+  SimulatedDevice device;
+  Settings s = Robot(2.0);
+  s.speed = 0.0;
+  EXPECT_THROW(device.Configure(s), UserError);
+  s = Robot(-1.0);
+  EXPECT_THROW(device.Configure(s), UserError);
+  s = Robot(2.0);
+  s.start_offset = std::nan("");
+  EXPECT_THROW(device.Configure(s), UserError);
+  s = Settings{};
+  s.mode = Settings::Mode::kScripted;
+  s.hand_mass = 1.0;
+  s.hand_stiffness = 100.0;
+  EXPECT_THROW(device.Configure(s), UserError);  // no waypoints
+  s.waypoints = {{1.0, Eigen::Vector3d::Zero()}, {1.0, Eigen::Vector3d::Zero()}};
+  EXPECT_THROW(device.Configure(s), UserError);  // not increasing
+  s.waypoints = {{0.0, Eigen::Vector3d::Zero()}};
+  s.hand_mass = 0.0;
+  EXPECT_THROW(device.Configure(s), UserError);
+}
+
+}  // namespace
+}  // namespace fitfeel::simulated

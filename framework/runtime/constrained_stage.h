@@ -1,0 +1,35 @@
+#pragma once
+
+#include "framework/core/export.h"
+#include "framework/device/stage.h"
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/resistance_law.h"
+
+namespace fitfeel {
+
+// Mating under constraint (paper section 3): the device pose becomes a MatingPose in the fixed
+// part's mating frame (see positioning_stage.h for the frame convention), the contact analyzer
+// answers from its prepared tables and the law turns the contact state into the wrench on the
+// moving part. Withdrawing the part past the entrance (depth < 0) hands back to positioning.
+// Evaluate allocates nothing: both collaborators are prepared and only read.
+class FITFEEL_API ConstrainedStage final : public Stage {
+ public:
+  // Both must be prepared and outlive the stage. Throws UserError if the analyzer is not prepared.
+  ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law);
+
+  StageId id() const override { return StageId::kConstrained; }
+
+ protected:
+  void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept override;
+
+ private:
+  // -dF/dx of the radial force along its own direction, by a second evaluation 1 nm deeper
+  // (exact for the piecewise-linear laws of eqs. 9-12 away from a kink); 0 without contact.
+  double RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
+                         const Wrench& wrench) const noexcept;
+
+  const ContactAnalyzer& analyzer_;
+  const ResistanceLaw& law_;
+};
+
+}  // namespace fitfeel

@@ -1,0 +1,205 @@
+#include "framework/runtime/outputs.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <system_error>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+void AppendNumber(std::string* out, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  out->append(buffer, result.ptr);
+}
+
+// Running mean, minimum and maximum of a sample.
+struct Summary {
+  double sum = 0.0;
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+  std::uint64_t count = 0;
+  void Add(double v) {
+    sum += v;
+    min = std::min(min, v);
+    max = std::max(max, v);
+    ++count;
+  }
+  nlohmann::json ToJson() const {
+    if (count == 0) return {{"mean", nullptr}, {"min", nullptr}, {"max", nullptr}};
+    return {{"mean", sum / static_cast<double>(count)}, {"min", min}, {"max", max}};
+  }
+};
+
+nlohmann::json ToJson(const Percentiles& p) {
+  return {{"p50", p.p50}, {"p99", p.p99}, {"max", p.max}};
+}
+
+void WriteFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw UserError("cannot create '" + path.string() + "'");
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();
+  if (!out) throw UserError("cannot write '" + path.string() + "' (disk full?)");
+}
+
+}  // namespace
+
+std::string TraceHeader() {
+  return "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us,x_mm,y_mm,z_mm,angle_rad,tx_Nm,ty_Nm,tz_Nm,"
+         "engaged,interference,offset_um,assembly_extent_um,penetration_um,max_interference_um,"
+         "stiffness_N_per_um,guard_fault";
+}
+
+std::string TraceRow(const TickRecord& r) {
+  std::string row;
+  row.reserve(256);
+  auto add = [&row](double v) {
+    row += ',';
+    AppendNumber(&row, v);
+  };
+  AppendNumber(&row, r.time);
+  row += ',';
+  row += ToString(r.stage);
+  add(r.pose.depth * 1e3);
+  add(r.wrench.force.x());
+  add(r.wrench.force.y());
+  add(r.wrench.force.z());
+  // Compute time to 0.01 us: finer digits are clock noise and would only bloat the file.
+  add(std::round(r.compute_us * 100.0) / 100.0);
+  add(r.position.x() * 1e3);
+  add(r.position.y() * 1e3);
+  add(r.position.z() * 1e3);
+  add(r.pose.angle);
+  add(r.wrench.torque.x());
+  add(r.wrench.torque.y());
+  add(r.wrench.torque.z());
+  row += r.contact.engaged ? ",1" : ",0";
+  row += r.contact.interference ? ",1" : ",0";
+  add(r.contact.offset_distance * 1e6);
+  add(r.contact.assembly_extent * 1e6);
+  add(r.contact.penetration * 1e6);
+  add(r.contact.max_interference * 1e6);
+  add(r.stiffness * 1e-6);
+  row += r.guard_fault ? ",1" : ",0";
+  return row;
+}
+
+nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& trace,
+                           const RunStats& stats) {
+  Summary axial, fy, radial, torque, depth;
+  std::uint64_t interference_ticks = 0;
+  for (const auto& r : trace) {
+    if (r.stage != StageId::kConstrained) continue;
+    axial.Add(std::abs(r.wrench.force.y()));
+    fy.Add(r.wrench.force.y());
+    radial.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
+    torque.Add(r.wrench.torque.norm());
+    depth.Add(r.pose.depth * 1e3);
+    if (r.contact.interference) ++interference_ticks;
+  }
+  nlohmann::json j;
+  j["scenario"] = info.scenario;
+  j["scenario_file"] = info.scenario_file.string();
+  j["seed"] = info.seed;
+  j["surface"] = info.surface;
+  j["law"] = info.law;
+  j["device"] = info.device;
+  j["clock"] = info.clock;
+  j["rate_Hz"] = info.rate;
+  j["duration_s"] = info.duration;
+  j["friction"] = info.friction;
+  j["contact_stiffness_N_per_m"] = info.contact_stiffness;
+  j["ticks"] = stats.ticks;
+  j["planned_ticks"] = stats.planned_ticks;
+  j["constrained_ticks"] = axial.count;
+  j["interference_ticks"] = interference_ticks;
+  j["deadline_misses"] = stats.deadline_misses;
+  j["guard_faults"] = stats.guard_faults;
+  j["tick_us"] = ToJson(stats.compute_us);
+  if (stats.realtime) {
+    j["period_jitter_us"] = ToJson(stats.jitter_us);
+    j["wake_lateness_us"] = ToJson(stats.lateness_us);
+    j["realtime_note"] = stats.realtime_note;
+  }
+  j["wall_s"] = stats.wall_seconds;
+  j["axial_resistance_N"] = axial.ToJson();
+  j["fy_N"] = fy.ToJson();
+  j["radial_resistance_N"] = radial.ToJson();
+  if (info.rotational) j["torque_Nm"] = torque.ToJson();
+  j["depth_mm"] = depth.ToJson();
+  j["prepare_s"] = {{"discretize", info.discretize_seconds},
+                    {"generate", info.generate_seconds},
+                    {"analyze", info.analyze_seconds},
+                    {"total", info.prepare_seconds}};
+  j["grid"] = {{"inner", {{"rows", info.inner_rows}, {"columns", info.inner_columns}}},
+               {"outer", {{"rows", info.outer_rows}, {"columns", info.outer_columns}}}};
+  return j;
+}
+
+OutputPaths WriteOutputs(const fs::path& dir, const RunInfo& info,
+                         const std::vector<TickRecord>& trace, const RunStats& stats,
+                         bool write_trace, bool write_summary) {
+  OutputPaths paths;
+  if (!write_trace && !write_summary) return paths;
+  std::error_code ec;
+  const bool created_dir = !fs::exists(dir, ec);
+  if (created_dir && !fs::create_directories(dir, ec) && ec) {
+    throw UserError("cannot create output folder '" + dir.string() + "': " + ec.message());
+  }
+  if (!fs::is_directory(dir, ec)) {
+    throw UserError("output path '" + dir.string() + "' is not a folder");
+  }
+
+  struct Pending {
+    fs::path temporary;
+    fs::path final;
+  };
+  std::vector<Pending> pending;
+  std::vector<fs::path> renamed;
+  const std::string suffix = ".tmp-" + std::to_string(::getpid());
+  try {
+    if (write_trace) {
+      std::string text = TraceHeader() + "\n";
+      text.reserve(text.size() + trace.size() * 200);
+      for (const auto& r : trace) {
+        text += TraceRow(r);
+        text += '\n';
+      }
+      pending.push_back({dir / (".trace.csv" + suffix), dir / "trace.csv"});
+      WriteFile(pending.back().temporary, text);
+      paths.trace = pending.back().final;
+    }
+    if (write_summary) {
+      const std::string text = MakeSummary(info, trace, stats).dump(2) + "\n";
+      pending.push_back({dir / (".summary.json" + suffix), dir / "summary.json"});
+      WriteFile(pending.back().temporary, text);
+      paths.summary = pending.back().final;
+    }
+    for (const auto& p : pending) {
+      fs::rename(p.temporary, p.final, ec);
+      if (ec) {
+        throw UserError("cannot move '" + p.temporary.string() + "' to '" + p.final.string() +
+                        "': " + ec.message());
+      }
+      renamed.push_back(p.final);
+    }
+  } catch (...) {
+    for (const auto& p : pending) fs::remove(p.temporary, ec);
+    for (const auto& f : renamed) fs::remove(f, ec);
+    if (created_dir) fs::remove(dir, ec);  // only removes it if empty
+    throw;
+  }
+  return paths;
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/core/export.h"
+#include "framework/runtime/tick_record.h"
+
+namespace fitfeel {
+
+// What the outputs say about the run besides its ticks.
+struct RunInfo {
+  std::string scenario;
+  std::filesystem::path scenario_file;
+  std::uint64_t seed = 0;
+  std::string surface;
+  std::string law;
+  std::string device;
+  std::string clock;      // "virtual" | "realtime"
+  double rate = 0.0;      // Hz
+  double duration = 0.0;  // s
+  bool rotational = false;
+  double friction = 0.0;
+  double contact_stiffness = 0.0;  // N/m
+  // Prepare times, s.
+  double discretize_seconds = 0.0;
+  double generate_seconds = 0.0;
+  double analyze_seconds = 0.0;
+  double prepare_seconds = 0.0;
+  int inner_rows = 0, inner_columns = 0, outer_rows = 0, outer_columns = 0;
+};
+
+struct OutputPaths {
+  std::filesystem::path trace;    // empty when not written
+  std::filesystem::path summary;  // empty when not written
+};
+
+// Header of trace.csv, the output contract's columns first. fy is the axial resistance (the
+// paper's y, along the mating axis), fx and fz the radial components; all on the moving part.
+FITFEEL_API std::string TraceHeader();
+// One row of trace.csv (no newline). Numbers in their shortest exact decimal form.
+FITFEEL_API std::string TraceRow(const TickRecord& record);
+
+// summary.json's content. Resistance statistics are taken over the ticks of the constrained stage:
+// axial_resistance_N over |fy|, radial_resistance_N over sqrt(fx^2 + fz^2) (the paper's F_r),
+// and for a rotational surface torque_Nm over |torque|; null when no tick was constrained.
+FITFEEL_API nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& trace,
+                                       const RunStats& stats);
+
+// Writes DIR/trace.csv and DIR/summary.json (those asked for), creating DIR if needed. Every file
+// is written under a temporary name in DIR and renamed into place only once all are complete; on
+// any failure the temporaries, the files renamed so far and a DIR this call created are removed
+// and UserError is thrown, so a failed run leaves no file behind.
+FITFEEL_API OutputPaths WriteOutputs(const std::filesystem::path& dir, const RunInfo& info,
+                                     const std::vector<TickRecord>& trace, const RunStats& stats,
+                                     bool write_trace = true, bool write_summary = true);
+
+}  // namespace fitfeel

@@ -1,0 +1,74 @@
+#include "framework/runtime/prepare.h"
+
+#include <chrono>
+#include <utility>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+PreparedScene::PreparedScene() = default;
+PreparedScene::~PreparedScene() = default;
+PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
+PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
+
+PreparedScene Prepare(const Scene& scene) {
+  if (!scene.surface) {
+    throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
+  }
+  if (!scene.surface->renders_forces()) {
+    throw UnsupportedError("surface type '" + scene.surface_id +
+                           "' cannot render forces yet: " + scene.surface->limitation());
+  }
+  const auto start = Clock::now();
+  PreparedScene prepared;
+  prepared.surface = scene.surface;
+  prepared.rotational = scene.surface->rotational();
+  prepared.rng.seed(scene.run.seed);
+
+  // One discretizer and generator for both parts: the surface type decides the grid of each part
+  // from its own geometry. The inner part is drawn first: the order of draws is part of the
+  // determinism contract (same scene and seed, same skin model shapes).
+  auto t = Clock::now();
+  const auto discretizer = scene.surface->MakeDiscretizer();
+  const auto generator = scene.surface->MakeVariationGenerator();
+  if (!discretizer || !generator) {
+    throw UnsupportedError("surface type '" + scene.surface_id +
+                           "' provides no discretizer or variation generator");
+  }
+  SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
+  SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
+  prepared.discretize_seconds = SecondsSince(t);
+
+  t = Clock::now();
+  prepared.inner_sms = std::make_unique<SkinModelShape>(
+      generator->Generate(scene.inner, inner_grid, scene.model.texture, prepared.rng));
+  prepared.outer_sms = std::make_unique<SkinModelShape>(
+      generator->Generate(scene.outer, outer_grid, scene.model.texture, prepared.rng));
+  prepared.generate_seconds = SecondsSince(t);
+
+  t = Clock::now();
+  prepared.analyzer = scene.surface->MakeContactAnalyzer();
+  if (!prepared.analyzer) {
+    throw UnsupportedError("surface type '" + scene.surface_id + "' provides no contact analyzer");
+  }
+  prepared.analyzer->Prepare(scene.inner, *prepared.inner_sms, scene.outer, *prepared.outer_sms,
+                             scene.model);
+  prepared.law = scene.surface->MakeLaw(scene.model.law);
+  prepared.law->Prepare(scene.inner, scene.outer, scene.model);
+  prepared.analyze_seconds = SecondsSince(t);
+
+  prepared.total_seconds = SecondsSince(start);
+  return prepared;
+}
+
+}  // namespace fitfeel

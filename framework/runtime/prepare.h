@@ -1,0 +1,50 @@
+#pragma once
+
+#include <memory>
+
+#include "framework/core/export.h"
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/resistance_law.h"
+#include "framework/model/skin_model_shape.h"
+#include "framework/model/surface_type.h"
+#include "framework/model/variation_generator.h"
+#include "framework/scenario/scene.h"
+
+namespace fitfeel {
+
+// Everything a run needs that depends only on the scene, built once before the tick loop: the skin
+// model shapes of both parts, the contact analyzer's tables and the prepared law. The stages hold
+// references into it, so it must outlive them (it is move-only and keeps its objects on the heap,
+// so moving it does not invalidate those references).
+struct FITFEEL_API PreparedScene {
+  PreparedScene();
+  ~PreparedScene();
+  PreparedScene(PreparedScene&&) noexcept;
+  PreparedScene& operator=(PreparedScene&&) noexcept;
+
+  // The scene's only random generator, seeded from run.seed. Prepare draws the inner part's skin
+  // model shape first, then the outer part's; whatever is prepared later (a stage, a device
+  // script) continues from here, so a scene and seed give the same run bit for bit.
+  Rng rng;
+  std::shared_ptr<const SurfaceType> surface;  // keeps the surface plugin's objects alive
+  std::unique_ptr<SkinModelShape> inner_sms;
+  std::unique_ptr<SkinModelShape> outer_sms;
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+  bool rotational = false;  // the constrained motion is a rotation (torque is reported)
+
+  // Wall time of each prepare step, s.
+  double discretize_seconds = 0.0;
+  double generate_seconds = 0.0;
+  double analyze_seconds = 0.0;
+  double total_seconds = 0.0;
+};
+
+// Builds the prepared scene: seeds the generator from scene.run.seed, discretizes and generates
+// the skin model shape of the inner part and then of the outer part with the surface's
+// Discretizer and VariationGenerator, prepares the contact analyzer and the law. Throws
+// UnsupportedError for a surface type that cannot render forces, UserError for anything the
+// surface plugin refuses.
+FITFEEL_API PreparedScene Prepare(const Scene& scene);
+
+}  // namespace fitfeel

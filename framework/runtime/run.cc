@@ -1,0 +1,114 @@
+#include "framework/runtime/run.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "framework/core/error.h"
+#include "framework/core/quantity.h"
+#include "framework/runtime/constrained_stage.h"
+#include "framework/runtime/positioning_stage.h"
+#include "framework/runtime/prepare.h"
+
+namespace fitfeel {
+namespace {
+
+// Stops the device however the run ends.
+struct DeviceRun {
+  explicit DeviceRun(Device& d, double period) : device(d) { device.Start(period); }
+  ~DeviceRun() { device.Stop(); }
+  DeviceRun(const DeviceRun&) = delete;
+  DeviceRun& operator=(const DeviceRun&) = delete;
+  Device& device;
+};
+
+std::string FormatStiffness(double n_per_m) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.3g N/mm", n_per_m * 1e-3);
+  return buffer;
+}
+
+}  // namespace
+
+RunResult RunScene(Scene scene, const RunOptions& options) {
+  if (options.seed) scene.run.seed = *options.seed;
+  if (options.clock) scene.run.clock = *options.clock;
+  if (!scene.device) {
+    throw UserError("scene '" + scene.name + "' has no device '" + scene.device_id + "'");
+  }
+
+  RunResult result;
+  PreparedScene prepared = Prepare(scene);
+  PositioningStage positioning;
+  ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
+
+  RunInfo& info = result.info;
+  info.scenario = scene.name;
+  info.scenario_file = scene.file;
+  info.seed = scene.run.seed;
+  info.surface = scene.surface_id;
+  info.law = scene.model.law;
+  info.device = scene.device_id;
+  info.clock = scene.run.clock == ClockMode::kRealTime ? "realtime" : "virtual";
+  info.rate = scene.run.rate;
+  info.duration = scene.run.duration;
+  info.rotational = prepared.rotational;
+  info.friction = scene.model.friction;
+  info.contact_stiffness = scene.model.contact_stiffness;
+  info.discretize_seconds = prepared.discretize_seconds;
+  info.generate_seconds = prepared.generate_seconds;
+  info.analyze_seconds = prepared.analyze_seconds;
+  info.prepare_seconds = prepared.total_seconds;
+  info.inner_rows = prepared.inner_sms->grid.rows;
+  info.inner_columns = prepared.inner_sms->grid.columns;
+  info.outer_rows = prepared.outer_sms->grid.rows;
+  info.outer_columns = prepared.outer_sms->grid.columns;
+
+  SchedulerSettings settings;
+  settings.rate = scene.run.rate;
+  settings.duration = scene.run.duration;
+  settings.clock = scene.run.clock;
+  {
+    DeviceRun device_run(*scene.device, 1.0 / scene.run.rate);
+    const DeviceSpec spec = scene.device->spec();
+    if (spec.max_stiffness > 0.0 && scene.model.contact_stiffness > spec.max_stiffness) {
+      result.notes.push_back(
+          "note: contact stiffness " + FormatStiffness(scene.model.contact_stiffness) +
+          " exceeds what the device '" + scene.device_id + "' renders stably (" +
+          FormatStiffness(spec.max_stiffness) + " at " +
+          std::to_string(std::lround(settings.rate)) +
+          " Hz): expect chatter until the safety chain's virtual coupling is in place");
+    }
+    Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    if (options.watch) options.watch(&scheduler);
+    try {
+      scheduler.Run();
+    } catch (...) {
+      if (options.watch) options.watch(nullptr);
+      throw;
+    }
+    if (options.watch) options.watch(nullptr);
+    result.stats = scheduler.stats();
+    if (!result.stats.realtime_note.empty() &&
+        result.stats.realtime_note.find("not permitted") != std::string::npos) {
+      result.notes.push_back(result.stats.realtime_note);
+    }
+    if (result.stats.guard_faults > 0) {
+      result.notes.push_back("warning: " + std::to_string(result.stats.guard_faults) +
+                             " ticks produced a non-finite wrench; zero was sent instead");
+    }
+    if (scene.run.write_recording) {
+      result.notes.push_back(
+          "note: run.outputs asks for a recording, which this build does not write yet (the "
+          "device recording writer is not wired into the run); trace and summary are written");
+    }
+    result.summary = MakeSummary(info, scheduler.trace(), result.stats);
+    if (!options.out_dir.empty()) {
+      result.paths = WriteOutputs(options.out_dir, info, scheduler.trace(), result.stats,
+                                  scene.run.write_trace, scene.run.write_summary);
+    }
+  }
+  return result;
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/core/export.h"
+#include "framework/runtime/outputs.h"
+#include "framework/runtime/scheduler.h"
+#include "framework/scenario/scene.h"
+
+namespace fitfeel {
+
+struct RunOptions {
+  std::filesystem::path out_dir;      // where trace.csv and summary.json go; empty: nowhere
+  std::optional<ClockMode> clock;     // overrides run.clock
+  std::optional<std::uint64_t> seed;  // overrides run.seed
+  // Called with the scheduler just before its loop starts and with null once it has ended, on
+  // the calling thread; the scheduler's ticks_done() may be polled from another thread between.
+  std::function<void(const Scheduler*)> watch;
+};
+
+struct RunResult {
+  RunInfo info;
+  RunStats stats;
+  OutputPaths paths;
+  nlohmann::json summary;
+  std::vector<std::string> notes;  // one line each, for the user (stiffness beyond the device...)
+};
+
+// A whole run of a loaded scene: Prepare, the two stages, the device started at run.rate, the
+// scheduler, and the outputs written atomically. Throws UserError/UnsupportedError before any
+// file is created when the scene cannot run.
+FITFEEL_API RunResult RunScene(Scene scene, const RunOptions& options);
+
+}  // namespace fitfeel

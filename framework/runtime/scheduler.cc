@@ -1,0 +1,248 @@
+#include "framework/runtime/scheduler.h"
+
+#include <pthread.h>
+#include <sched.h>
+#include <sys/prctl.h>
+#include <time.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <thread>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+std::int64_t NowNs() noexcept {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+
+timespec ToTimespec(std::int64_t ns) {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(ns / 1000000000LL);
+  ts.tv_nsec = static_cast<long>(ns % 1000000000LL);
+  return ts;
+}
+
+// The trace buffer is sized before the loop; beyond this the run is refused rather than swapped.
+constexpr double kMaxTraceBytes = 2.0 * 1024 * 1024 * 1024;
+
+// Priority of the real-time loop under SCHED_FIFO: above ordinary real-time helpers (IRQ threads
+// run at 50 by default on PREEMPT_RT) and below the kernel's watchdogs at 99.
+constexpr int kFifoPriority = 80;
+
+// Sets up the calling thread for the 1 kHz loop and says what it got, in one line.
+std::string SetUpRealTimeThread() {
+  std::string note;
+  // Default timer slack (50 us) would let the kernel defer each wake-up by that much.
+  if (prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL) != 0) {
+    note += "timer slack not set (" + std::string(std::strerror(errno)) + "); ";
+  } else {
+    note += "timer slack 1 ns; ";
+  }
+  sched_param param{};
+  param.sched_priority = std::min(kFifoPriority, sched_get_priority_max(SCHED_FIFO));
+  const int rc = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param);
+  if (rc != 0) {
+    note += "note: SCHED_FIFO not permitted (" + std::string(std::strerror(rc)) +
+            "), running at normal priority: expect more jitter";
+  } else {
+    note += "SCHED_FIFO priority " + std::to_string(param.sched_priority);
+  }
+  return note;
+}
+
+}  // namespace
+
+Percentiles ComputePercentiles(std::vector<double> values) {
+  Percentiles out;
+  if (values.empty()) return out;
+  const auto n = values.size();
+  // Nearest-rank percentiles: the smallest value with at least p of the sample at or below it.
+  auto rank = [n](double p) {
+    const auto r = static_cast<std::size_t>(std::ceil(p * static_cast<double>(n)));
+    return std::clamp<std::size_t>(r, 1, n) - 1;
+  };
+  const auto k50 = rank(0.50);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k50), values.end());
+  out.p50 = values[k50];
+  const auto k99 = rank(0.99);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k99), values.end());
+  out.p99 = values[k99];
+  out.max = *std::max_element(values.begin(), values.end());
+  return out;
+}
+
+Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
+                     const SchedulerSettings& settings)
+    : device_(device), stages_{&positioning, &constrained}, settings_(settings) {
+  if (positioning.id() != StageId::kPositioning || constrained.id() != StageId::kConstrained) {
+    throw UserError("scheduler: stages given in the wrong order");
+  }
+  if (!(settings.rate > 0.0) || !std::isfinite(settings.rate) || settings.rate > 100000.0) {
+    throw UserError("scheduler: rate must be in (0, 100 kHz], got " +
+                    std::to_string(settings.rate) + " Hz");
+  }
+  if (!(settings.duration > 0.0) || !std::isfinite(settings.duration)) {
+    throw UserError("scheduler: duration must be a positive number of seconds");
+  }
+  period_ = 1.0 / settings.rate;
+  const double ticks = std::round(settings.duration * settings.rate);
+  if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
+  if (ticks * static_cast<double>(sizeof(TickRecord)) > kMaxTraceBytes) {
+    throw UserError("scheduler: a run of " + std::to_string(settings.duration) + " s at " +
+                    std::to_string(settings.rate) +
+                    " Hz needs a trace buffer of more than 2 GiB; "
+                    "shorten run.duration");
+  }
+  planned_ticks_ = static_cast<std::uint64_t>(ticks);
+  // Sized (and its pages touched) here, so that the loop never allocates or faults them in.
+  trace_.resize(planned_ticks_);
+  wake_ns_.assign(planned_ticks_, 0.0);
+  deadline_ns_.assign(planned_ticks_, 0.0);
+  end_ns_.assign(planned_ticks_, 0.0);
+}
+
+void Scheduler::Rewind() noexcept {
+  trace_.resize(planned_ticks_);  // within capacity: no allocation
+  ticks_done_.store(0, std::memory_order_relaxed);
+  current_ = StageId::kPositioning;
+}
+
+bool Scheduler::Tick(double time) noexcept {
+  const std::uint64_t k = ticks_done_.load(std::memory_order_relaxed);
+  if (k >= trace_.size() || !device_.active()) return false;
+  const std::int64_t start = NowNs();
+  device_.Read(time, &state_);
+  const StageId stage = current_;
+  stages_[static_cast<int>(stage)]->Evaluate(state_, &output_);
+
+  // Wrench guard: a device must never receive NaN or infinity.
+  const bool fault = !output_.wrench.AllFinite();
+  if (fault) {
+    output_.wrench.SetZero();
+    ++guard_faults_;
+  }
+  // Safety chain call site: force scaling, virtual coupling, saturation and the passivity monitor
+  // (framework/safety) turn the model wrench into the device wrench here; until they are wired,
+  // the device receives the model wrench and bounds it itself.
+  const Wrench& device_wrench = output_.wrench;
+  device_.SetEnvironmentStiffness(output_.stiffness);
+  device_.SetEnvironmentGap(output_.gap, output_.gap_direction);
+  device_.Write(device_wrench);
+  const std::int64_t end = NowNs();
+
+  TickRecord& record = trace_[k];
+  record.time = time;
+  record.position = state_.position;
+  record.pose = output_.pose;
+  record.contact = output_.contact;
+  record.wrench = output_.wrench;
+  record.stiffness = output_.stiffness;
+  record.compute_us = static_cast<double>(end - start) * 1e-3;
+  record.stage = stage;
+  record.guard_fault = fault;
+  wake_ns_[k] = static_cast<double>(start);
+  end_ns_[k] = static_cast<double>(end);
+  current_ = output_.next;
+  ticks_done_.store(k + 1, std::memory_order_relaxed);
+  return true;
+}
+
+void Scheduler::Run() {
+  Rewind();
+  guard_faults_ = 0;
+  stats_ = RunStats{};
+  stats_.planned_ticks = planned_ticks_;
+  const std::int64_t start = NowNs();
+  if (device_.clock_owner() == ClockOwner::kDevice) {
+    RunDeviceClock();
+  } else if (settings_.clock == ClockMode::kRealTime) {
+    RunRealTime();
+  } else {
+    RunVirtual();
+  }
+  stats_.wall_seconds = static_cast<double>(NowNs() - start) * 1e-9;
+  ComputeStats();
+}
+
+void Scheduler::RunVirtual() {
+  for (std::uint64_t k = 0; k < planned_ticks_; ++k) {
+    // k / rate rather than an accumulated sum: no drift, and the same double on every run.
+    if (!Tick(static_cast<double>(k) / settings_.rate)) break;
+  }
+}
+
+void Scheduler::RunRealTime() {
+  stats_.realtime = true;
+  std::string note;
+  int sleep_error = 0;
+  // A thread of our own, so that SCHED_FIFO and the timer slack apply to the loop alone.
+  std::thread loop([&] {
+    note = SetUpRealTimeThread();
+    // The first deadline is one period ahead: the set-up above is not part of the first tick.
+    const std::int64_t origin = NowNs() + static_cast<std::int64_t>(std::llround(1e9 * period_));
+    for (std::uint64_t k = 0; k < planned_ticks_; ++k) {
+      // Deadlines from the origin, never accumulated: rounding cannot drift over a long run.
+      const std::int64_t deadline =
+          origin + std::llround(static_cast<double>(k) * 1e9 / settings_.rate);
+      const timespec when = ToTimespec(deadline);
+      int rc;
+      do {
+        rc = clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &when, nullptr);
+      } while (rc == EINTR);
+      if (rc != 0) {
+        sleep_error = rc;
+        break;
+      }
+      deadline_ns_[k] = static_cast<double>(deadline);
+      if (!Tick(static_cast<double>(k) / settings_.rate)) break;
+    }
+  });
+  loop.join();
+  stats_.realtime_note = note;
+  if (sleep_error != 0) {
+    throw std::runtime_error("clock_nanosleep failed: " + std::string(std::strerror(sleep_error)));
+  }
+}
+
+void Scheduler::RunDeviceClock() {
+  stats_.realtime = true;
+  stats_.realtime_note = "clock owned by the device's servo thread";
+  device_.RunServoLoop(settings_.duration, [this](double time) { return Tick(time); });
+}
+
+void Scheduler::ComputeStats() {
+  const std::uint64_t n = ticks_done_.load(std::memory_order_relaxed);
+  trace_.resize(n);  // shrinking never allocates
+  stats_.ticks = n;
+  stats_.guard_faults = guard_faults_;
+  std::vector<double> compute(n);
+  for (std::uint64_t k = 0; k < n; ++k) compute[k] = trace_[k].compute_us;
+  stats_.compute_us = ComputePercentiles(std::move(compute));
+  stats_.achieved_rate = stats_.wall_seconds > 0.0 ? n / stats_.wall_seconds : 0.0;
+  if (!stats_.realtime) return;
+
+  const double period_ns = 1e9 * period_;
+  const bool own_clock = device_.clock_owner() != ClockOwner::kDevice;
+  std::vector<double> jitter;
+  std::vector<double> lateness;
+  for (std::uint64_t k = 0; k < n; ++k) {
+    if (k > 0) jitter.push_back(std::abs((wake_ns_[k] - wake_ns_[k - 1]) - period_ns) * 1e-3);
+    // A tick misses its deadline when it is not done before the next one is due. Under the
+    // device's clock, the next call is due one period after this one began.
+    const double due = (own_clock ? deadline_ns_[k] : wake_ns_[k]) + period_ns;
+    if (end_ns_[k] > due) ++stats_.deadline_misses;
+    if (own_clock) lateness.push_back((wake_ns_[k] - deadline_ns_[k]) * 1e-3);
+  }
+  stats_.jitter_us = ComputePercentiles(std::move(jitter));
+  stats_.lateness_us = ComputePercentiles(std::move(lateness));
+}
+
+}  // namespace fitfeel

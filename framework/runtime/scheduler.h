@@ -1,0 +1,80 @@
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "framework/core/export.h"
+#include "framework/device/device.h"
+#include "framework/device/stage.h"
+#include "framework/runtime/tick_record.h"
+#include "framework/scenario/scene.h"
+
+namespace fitfeel {
+
+struct SchedulerSettings {
+  double rate = 1000.0;   // Hz
+  double duration = 0.0;  // s; the run has round(duration * rate) ticks
+  ClockMode clock = ClockMode::kVirtual;
+};
+
+// One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench
+// guard (and the safety chain's call site), device Write, record into a buffer sized before the
+// loop. Two clocks:
+//  - virtual: ticks run back to back with scheduled times k / rate; the physics (everything but
+//    the measured compute time) is bit-for-bit deterministic for a scene and seed.
+//  - real time: a thread of its own wakes at absolute deadlines (clock_nanosleep with
+//    TIMER_ABSTIME on CLOCK_MONOTONIC), with 1 ns timer slack and SCHED_FIFO when permitted.
+// A device that owns the clock (ClockOwner::kDevice) calls the same tick from its servo thread
+// through Device::RunServoLoop.
+class FITFEEL_API Scheduler {
+ public:
+  // Devices and stages are borrowed and must outlive the scheduler; the device must be started.
+  // Throws UserError for a rate or duration out of range or a buffer too large to hold.
+  Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
+            const SchedulerSettings& settings);
+
+  // Runs every tick (or until the device becomes inactive). Allocates before the loop only.
+  void Run();
+
+  // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
+  // Returns false once the buffer is full or the device is inactive. No allocation, lock or I/O.
+  bool Tick(double time) noexcept;
+  // Empties the buffer so that it can be filled again (benchmarks); keeps its capacity.
+  void Rewind() noexcept;
+
+  const std::vector<TickRecord>& trace() const { return trace_; }
+  const RunStats& stats() const { return stats_; }
+  std::uint64_t planned_ticks() const { return planned_ticks_; }
+  // Ticks done so far; safe to read from another thread (progress display).
+  std::uint64_t ticks_done() const { return ticks_done_.load(std::memory_order_relaxed); }
+
+ private:
+  void RunVirtual();
+  void RunRealTime();
+  void RunDeviceClock();
+  void ComputeStats();
+
+  Device& device_;
+  std::array<const Stage*, 2> stages_;
+  SchedulerSettings settings_;
+  double period_ = 0.0;
+  std::uint64_t planned_ticks_ = 0;
+
+  StageId current_ = StageId::kPositioning;
+  DeviceState state_;
+  StageOutput output_;
+  std::vector<TickRecord> trace_;
+  std::vector<double> wake_ns_;  // real time: absolute wake-up of each tick, ns
+  std::vector<double> deadline_ns_;
+  std::vector<double> end_ns_;
+  std::uint64_t guard_faults_ = 0;
+  std::atomic<std::uint64_t> ticks_done_{0};
+  RunStats stats_;
+};
+
+// Median, 99th percentile and maximum of `values` (copied; empty gives zeros).
+FITFEEL_API Percentiles ComputePercentiles(std::vector<double> values);
+
+}  // namespace fitfeel

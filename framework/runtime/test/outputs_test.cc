@@ -1,0 +1,146 @@
+#include "framework/runtime/outputs.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "framework/core/error.h"
+#include "framework/runtime/run.h"
+#include "framework/runtime/test/fake_scene.h"
+// After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
+#include <gtest/gtest.h>
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("fitfeel-outputs-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::vector<std::string> Lines(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// Drops the tick_us column (7th), the only measured one.
+std::vector<std::string> WithoutTickTime(std::vector<std::string> lines) {
+  for (auto& line : lines) {
+    std::size_t pos = 0;
+    for (int i = 0; i < 6; ++i) pos = line.find(',', pos) + 1;
+    const std::size_t end = line.find(',', pos);
+    line.erase(pos, end - pos);
+  }
+  return lines;
+}
+
+TEST(OutputsTest, RunWritesTheContractsFilesAndNothingElse) {
+  const fs::path dir = FreshDir("run");
+  RunOptions options;
+  options.out_dir = dir;
+  const RunResult result = RunScene(testing::MakeFakeScene(5, 0.5), options);
+  EXPECT_EQ(result.paths.trace, dir / "trace.csv");
+  EXPECT_EQ(result.paths.summary, dir / "summary.json");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 2u);  // no temporaries left
+
+  const auto lines = Lines(dir / "trace.csv");
+  ASSERT_EQ(lines.size(), 501u);
+  EXPECT_EQ(lines[0].rfind("t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us", 0), 0u);
+  EXPECT_EQ(lines[1].rfind("0,positioning,-1,0,0,0,", 0), 0u);
+  EXPECT_NE(lines[500].find(",constrained,"), std::string::npos);
+
+  std::ifstream in(dir / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  for (const char* key :
+       {"scenario", "scenario_file", "seed", "law", "ticks", "deadline_misses", "tick_us",
+        "axial_resistance_N", "radial_resistance_N", "prepare_s", "grid"}) {
+    EXPECT_TRUE(summary.contains(key)) << key;
+  }
+  EXPECT_EQ(summary["scenario"], "fake");
+  EXPECT_EQ(summary["seed"], 5);
+  EXPECT_EQ(summary["ticks"], 500);
+  EXPECT_EQ(summary["constrained_ticks"], 399);  // ticks 101..499
+  EXPECT_TRUE(summary["tick_us"].contains("p99"));
+  const auto& axial = summary["axial_resistance_N"];
+  EXPECT_LE(axial["min"].get<double>(), axial["mean"].get<double>());
+  EXPECT_LE(axial["mean"].get<double>(), axial["max"].get<double>());
+  EXPECT_GT(axial["max"].get<double>(), 0.0);
+  EXPECT_EQ(summary["grid"]["inner"]["columns"], 8);
+  EXPECT_EQ(result.summary, summary);
+
+  // The same seed again gives the same file except for the measured compute time.
+  const fs::path again = FreshDir("again");
+  options.out_dir = again;
+  RunScene(testing::MakeFakeScene(5, 0.5), options);
+  EXPECT_EQ(WithoutTickTime(Lines(dir / "trace.csv")), WithoutTickTime(Lines(again / "trace.csv")));
+  fs::remove_all(dir);
+  fs::remove_all(again);
+}
+
+TEST(OutputsTest, AFailedPrepareCreatesNoFolder) {
+  const fs::path dir = FreshDir("prepare");
+  RunOptions options;
+  options.out_dir = dir;
+  auto failing = std::make_shared<testing::FakeSurface>(false, true);
+  EXPECT_THROW(RunScene(testing::MakeFakeScene(1, 0.5, nullptr, failing), options), UserError);
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(OutputsTest, AFailedRenameLeavesNoFileBehind) {
+  const fs::path dir = FreshDir("rename");
+  // summary.json is a non-empty folder: the trace is written and renamed, then the summary's
+  // rename fails, and the trace must go again.
+  fs::create_directories(dir / "summary.json" / "blocker");
+  std::vector<TickRecord> trace(3);
+  RunStats stats;
+  stats.ticks = 3;
+  EXPECT_THROW(WriteOutputs(dir, RunInfo{}, trace, stats), UserError);
+  EXPECT_FALSE(fs::exists(dir / "trace.csv"));
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1u);  // only the blocker folder
+  fs::remove_all(dir);
+}
+
+TEST(OutputsTest, AnUnwritableFolderIsAUserErrorAndCreatesNothing) {
+  const fs::path dir = FreshDir("file");
+  { std::ofstream(dir.string()) << "not a folder"; }
+  EXPECT_THROW(WriteOutputs(dir / "sub", RunInfo{}, {}, RunStats{}), UserError);
+  EXPECT_THROW(WriteOutputs(dir, RunInfo{}, {}, RunStats{}), UserError);
+  fs::remove(dir);
+}
+
+TEST(OutputsTest, SummaryStatisticsAreOverTheConstrainedStage) {
+  std::vector<TickRecord> trace(4);
+  trace[0].stage = StageId::kPositioning;
+  trace[0].wrench.force = Eigen::Vector3d(100.0, 100.0, 100.0);  // ignored
+  trace[1].stage = trace[2].stage = trace[3].stage = StageId::kConstrained;
+  trace[1].wrench.force = Eigen::Vector3d(3.0, -1.0, 4.0);
+  trace[2].wrench.force = Eigen::Vector3d(0.0, -2.0, 0.0);
+  trace[3].wrench.force = Eigen::Vector3d(0.0, 3.0, -2.0);
+  RunInfo info;
+  info.rotational = true;
+  const auto j = MakeSummary(info, trace, RunStats{});
+  EXPECT_DOUBLE_EQ(j["axial_resistance_N"]["mean"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(j["axial_resistance_N"]["min"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(j["axial_resistance_N"]["max"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(j["fy_N"]["min"].get<double>(), -2.0);
+  EXPECT_DOUBLE_EQ(j["radial_resistance_N"]["mean"].get<double>(), 7.0 / 3.0);
+  EXPECT_DOUBLE_EQ(j["radial_resistance_N"]["max"].get<double>(), 5.0);
+  EXPECT_TRUE(j.contains("torque_Nm"));
+  // No constrained tick: null statistics, not zeros.
+  const auto none = MakeSummary(RunInfo{}, std::vector<TickRecord>(2), RunStats{});
+  EXPECT_TRUE(none["axial_resistance_N"]["mean"].is_null());
+  EXPECT_FALSE(none.contains("torque_Nm"));
+}
+
+}  // namespace
+}  // namespace fitfeel

@@ -1,0 +1,99 @@
+
+#include <cmath>
+
+#include "framework/core/error.h"
+#include "framework/runtime/constrained_stage.h"
+#include "framework/runtime/positioning_stage.h"
+#include "framework/runtime/prepare.h"
+#include "framework/runtime/test/fake_scene.h"
+// After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
+#include <gtest/gtest.h>
+
+namespace fitfeel {
+namespace {
+
+DeviceState At(double x, double y, double z, double tilt_about_z = 0.0) {
+  DeviceState s;
+  s.position = Eigen::Vector3d(x, y, z);
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(tilt_about_z, Eigen::Vector3d::UnitZ()));
+  return s;
+}
+
+TEST(MatingPoseTest, DepthIsTheLeadingEndsYAndOffsetItsXZ) {
+  DeviceState s = At(1e-5, 3e-3, -2e-5);
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
+  const MatingPose pose = MatingPoseOf(s);
+  EXPECT_DOUBLE_EQ(pose.depth, 3e-3);
+  EXPECT_DOUBLE_EQ(pose.offset.x(), 1e-5);
+  EXPECT_DOUBLE_EQ(pose.offset.y(), -2e-5);
+  EXPECT_NEAR(pose.angle, 0.3, 1e-12);
+  // Twist about y is unaffected by a swing about another axis.
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(-0.5, Eigen::Vector3d::UnitY())) *
+                  Eigen::Quaterniond(Eigen::AngleAxisd(0.0, Eigen::Vector3d::UnitX()));
+  EXPECT_NEAR(MatingPoseOf(s).angle, -0.5, 1e-12);
+}
+
+TEST(PositioningStageTest, RendersNothingAndHandsOverAtTheEntranceWhenAligned) {
+  const PositioningStage stage;
+  StageOutput out;
+  out.wrench.force.setConstant(7.0);
+  stage.Evaluate(At(0.0, -1e-6, 0.0), &out);
+  EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.next, StageId::kPositioning);
+  stage.Evaluate(At(0.0, 0.0, 0.0), &out);
+  EXPECT_EQ(out.next, StageId::kConstrained);
+  stage.Evaluate(At(1e-4, 2e-3, -1e-4), &out);
+  EXPECT_EQ(out.next, StageId::kConstrained);
+}
+
+TEST(PositioningStageTest, KeepsATiltedOrOffPart) {
+  const PositioningStage stage;
+  StageOutput out;
+  const double tolerance = stage.options().alignment_tolerance;
+  stage.Evaluate(At(0.0, 1e-3, 0.0, 0.99 * tolerance), &out);
+  EXPECT_EQ(out.next, StageId::kConstrained);
+  stage.Evaluate(At(0.0, 1e-3, 0.0, 1.01 * tolerance), &out);
+  EXPECT_EQ(out.next, StageId::kPositioning);
+  stage.Evaluate(At(0.0, 1e-3, -1.01 * stage.options().capture_radius), &out);
+  EXPECT_EQ(out.next, StageId::kPositioning);
+}
+
+TEST(PositioningStageTest, RefusesBadOptions) {
+  PositioningStage::Options o;
+  o.capture_radius = -1.0;
+  EXPECT_THROW(PositioningStage{o}, UserError);
+  o = {};
+  o.alignment_tolerance = 2.0;
+  EXPECT_THROW(PositioningStage{o}, UserError);
+}
+
+TEST(ConstrainedStageTest, EvaluatesAnalyzerAndLawAndHandsBackWhenWithdrawn) {
+  const PreparedScene prepared = Prepare(testing::MakeFakeScene(3));
+  const auto& analyzer = static_cast<const testing::FakeAnalyzer&>(*prepared.analyzer);
+  const ConstrainedStage stage(*prepared.analyzer, *prepared.law);
+  StageOutput out;
+  DeviceState s = At(0.0, 5e-3, -(analyzer.clearance() + 2e-6));
+  stage.Evaluate(s, &out);
+  EXPECT_EQ(out.next, StageId::kConstrained);
+  EXPECT_TRUE(out.contact.engaged);
+  EXPECT_NEAR(out.contact.penetration, 2e-6, 1e-15);
+  // k_p * penetration, pushing the part back up towards the axis.
+  EXPECT_NEAR(out.wrench.force.z(), 1e5 * 2e-6, 1e-9);
+  EXPECT_NEAR(out.wrench.force.x(), 0.0, 1e-9);
+  EXPECT_LT(out.wrench.force.y(), 0.0);
+  // The fake law's radial spring, found by the stage's own difference.
+  EXPECT_NEAR(out.stiffness, 1e5, 1e-3);
+  EXPECT_TRUE(std::isinf(out.gap));  // in contact: no free way
+  stage.Evaluate(At(0.0, 5e-3, -0.5 * analyzer.clearance()), &out);
+  EXPECT_EQ(out.stiffness, 0.0);
+  // Free: half the clearance left, downwards along the offset.
+  EXPECT_NEAR(out.gap, 0.5 * analyzer.clearance(), 1e-18);
+  EXPECT_NEAR(out.gap_direction.y(), -1.0, 1e-15);
+  EXPECT_NEAR(out.gap_direction.x(), 0.0, 1e-15);
+
+  stage.Evaluate(At(0.0, -1e-6, 0.0), &out);
+  EXPECT_EQ(out.next, StageId::kPositioning);
+}
+
+}  // namespace
+}  // namespace fitfeel

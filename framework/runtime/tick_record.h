@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "framework/core/wrench.h"
+#include "framework/device/stage.h"
+#include "framework/model/contact_analyzer.h"
+
+namespace fitfeel {
+
+// What one tick leaves behind in the run's pre-allocated buffer (one row of trace.csv).
+struct TickRecord {
+  double time = 0.0;                        // scheduled time of the tick, s
+  Eigen::Vector3d position{0.0, 0.0, 0.0};  // moving part's leading end, scene frame, m
+  MatingPose pose;
+  ContactState contact;
+  Wrench wrench;            // model wrench on the moving part after the finite guard, N / N*m
+  double stiffness = 0.0;   // radial contact stiffness handed to the device, N/m
+  double compute_us = 0.0;  // wall time from device read to device write, us (a measurement)
+  StageId stage = StageId::kPositioning;
+  bool guard_fault = false;  // the stage produced a non-finite wrench; zero was sent
+};
+
+// Order statistics of a sample, in microseconds.
+struct Percentiles {
+  double p50 = 0.0;
+  double p99 = 0.0;
+  double max = 0.0;
+};
+
+struct RunStats {
+  std::uint64_t ticks = 0;
+  std::uint64_t planned_ticks = 0;
+  std::uint64_t deadline_misses = 0;  // real time: ticks that finished after the next deadline
+  std::uint64_t guard_faults = 0;     // ticks whose wrench was not finite
+  Percentiles compute_us;             // per-tick compute time
+  bool realtime = false;
+  Percentiles jitter_us;       // real time: |actual period - nominal period|
+  Percentiles lateness_us;     // real time: wake-up after the absolute deadline
+  double wall_seconds = 0.0;   // duration of the loop
+  double achieved_rate = 0.0;  // ticks / wall_seconds, Hz
+  std::string realtime_note;   // what the real-time set-up got (SCHED_FIFO, slack)
+};
+
+}  // namespace fitfeel

@@ -1,0 +1,146 @@
+// Runs build/bin/fitfeel as a user would and checks the output contract and the physics that
+// must hold whatever the model's details: the radial resistance carries the shaft's weight on
+// average (momentum balance), and the run is reproducible for a seed.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
+const fs::path kFitfeel = fs::path(FITFEEL_TEST_BUILD_DIR) / "bin" / "fitfeel";
+
+struct Result {
+  int code = -1;
+  std::string output;
+};
+
+Result RunFitfeel(const std::string& args) {
+  const fs::path log = fs::temp_directory_path() / ("fitfeel-e2e-" + std::to_string(::getpid()));
+  const std::string command = "cd '" + kSource.string() + "' && '" + kFitfeel.string() + "' " +
+                              args + " > '" + log.string() + "' 2>&1";
+  const int status = std::system(command.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  r.output = text.str();
+  fs::remove(log);
+  return r;
+}
+
+fs::path FreshDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("fitfeel-e2e-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::vector<std::vector<std::string>> ReadCsv(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// Every column but tick_us (a measurement of this machine).
+std::vector<std::vector<std::string>> Physics(std::vector<std::vector<std::string>> rows) {
+  for (auto& row : rows) row.erase(row.begin() + 6);
+  return rows;
+}
+
+nlohmann::json ReadJson(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+TEST(RunCommandTest, DefaultScenarioWritesTheContractAndCarriesTheShaftsWeight) {
+  const fs::path out = FreshDir("default");
+  const Result r = RunFitfeel("run --virtual --out '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("axial resistance"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((out / "trace.csv").string()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find((out / "summary.json").string()), std::string::npos) << r.output;
+
+  const auto summary = ReadJson(out / "summary.json");
+  const auto rows = ReadCsv(out / "trace.csv");
+  ASSERT_EQ(rows.size(), summary["ticks"].get<std::size_t>() + 1);
+  const std::vector<std::string> contract = {"t_s",  "stage", "depth_mm", "fx_N",
+                                             "fy_N", "fz_N",  "tick_us"};
+  ASSERT_GE(rows[0].size(), contract.size());
+  EXPECT_EQ(std::vector<std::string>(rows[0].begin(), rows[0].begin() + 7), contract);
+  EXPECT_EQ(summary["scenario"], "paper-case1-h7js6");
+  EXPECT_EQ(summary["deadline_misses"], 0);
+  ASSERT_GT(summary["constrained_ticks"].get<int>(), 1000);
+
+  // Momentum balance across the axis: over the constrained ticks, sum (F_z - W) h = m dv_z, and
+  // the part's radial velocity is bounded, so the mean radial support equals the weight (2 N in
+  // the paper's case study) up to m dv / T. Checked over the second half, after the settling.
+  int constrained = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) constrained += rows[i][1] == "constrained";
+  double sum_fz = 0.0;
+  int n = 0, seen = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    if (rows[i][1] != "constrained" || ++seen < constrained / 2) continue;
+    sum_fz += std::stod(rows[i][5]);
+    ++n;
+  }
+  EXPECT_NEAR(sum_fz / n, 2.0, 0.1);
+  EXPECT_GT(summary["axial_resistance_N"]["mean"].get<double>(), 0.0);
+  fs::remove_all(out);
+}
+
+TEST(RunCommandTest, SameSeedSameTraceAnotherSeedAnother) {
+  const fs::path a = FreshDir("seed-a"), b = FreshDir("seed-b"), c = FreshDir("seed-c");
+  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + a.string() + "'").code, 0);
+  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + b.string() + "'").code, 0);
+  ASSERT_EQ(RunFitfeel("run --virtual --seed 12 --out '" + c.string() + "'").code, 0);
+  EXPECT_EQ(Physics(ReadCsv(a / "trace.csv")), Physics(ReadCsv(b / "trace.csv")));
+  EXPECT_NE(Physics(ReadCsv(a / "trace.csv")), Physics(ReadCsv(c / "trace.csv")));
+  EXPECT_EQ(ReadJson(a / "summary.json")["seed"], 11);
+  for (const auto& d : {a, b, c}) fs::remove_all(d);
+}
+
+TEST(RunCommandTest, ABadScenarioExitsTwoAndCreatesNothing) {
+  const fs::path dir = FreshDir("bad");
+  fs::create_directories(dir);
+  const fs::path scene = dir / "bad.yaml";
+  {
+    std::ifstream in(kSource / "scenarios" / "paper-case1-h7js6.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string yaml = text.str();
+    // An unknown key at the top level.
+    yaml += "\nspeeed: 10 mm/s\n";
+    std::ofstream(scene) << yaml;
+  }
+  const fs::path out = dir / "out";
+  const Result r = RunFitfeel("run '" + scene.string() + "' --out '" + out.string() + "'");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("bad.yaml:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("speeed"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out));
+
+  const Result missing = RunFitfeel("run '" + (dir / "nowhere.yaml").string() + "'");
+  EXPECT_EQ(missing.code, 2) << missing.output;
+  fs::remove_all(dir);
+}
+
+}  // namespace
