@@ -52,8 +52,10 @@ fs::path EmptyFolder(const std::string& name) {
 }
 
 Result Stability(const std::string& arguments, const fs::path& cwd) {
-  const fs::path out = cwd.parent_path() / (cwd.filename().string() + ".out");
-  const fs::path err = cwd.parent_path() / (cwd.filename().string() + ".err");
+  const fs::path logs = fs::path(::testing::TempDir()) / "fitfeel_stability_test";
+  fs::create_directories(logs);
+  const fs::path out = logs / (cwd.filename().string() + ".out");
+  const fs::path err = logs / (cwd.filename().string() + ".err");
   const std::string command = "cd '" + cwd.string() + "' && FITFEEL_PLUGIN_PATH='" +
                               (kBuild / "test-plugins/good").string() + "' '" +
                               (kBuild / "bin/fitfeel").string() + "' stability " + arguments +
@@ -106,6 +108,19 @@ TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
   EXPECT_THAT(r.out, HasSubstr("PHANTOM Desktop"));
   EXPECT_THAT(r.out, HasSubstr("3.665e+09 N/m at the device"));
   EXPECT_THAT(r.out, HasSubstr("map.csv"));
+}
+
+// Without a scenario the command takes the paper's case 1 from the repository's scenarios/
+// (run from the repository's root, as a user would).
+TEST(StabilityCommand, DefaultScenarioIsThePaperCase) {
+  const fs::path dir = EmptyFolder("default");
+  const Result r = Stability("--rate 1kHz --damping 0Ns/m --per-decade 1 --horizon '0.5 s' -o '" +
+                                 (dir / "m.csv").string() + "'",
+                             kSource);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("paper-case1-h7js6"));
+  EXPECT_THAT(r.out, HasSubstr("k_p = 3.665e+09 N/m"));
+  EXPECT_THAT(Slurp(dir / "m.csv"), HasSubstr("coupled,1000,3665000000,0,0,1,"));
 }
 
 TEST(StabilityCommand, DeviceAndForceScaleChangeTheMap) {
