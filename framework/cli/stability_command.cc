@@ -107,9 +107,10 @@ void Run(const Options& options) {
     base.horizon = Quantity("--horizon", options.horizon, Dimension::kTime);
   }
   if (!(base.hand_mass > 0.0)) throw UserError("stability: --hand-mass must be positive");
-  if (!(base.push_force >= 0.0) || base.push_force > spec.max_continuous_force) {
-    throw UserError("stability: --push must be between 0 N and the device's continuous rating (" +
-                    Number(spec.max_continuous_force) + " N)");
+  if (!(base.push_force > 0.0) || !(base.push_force < spec.max_continuous_force)) {
+    throw UserError(
+        "stability: --push must be above 0 N and below the device's continuous rating (" +
+        Number(spec.max_continuous_force) + " N)");
   }
   if (!(base.horizon > 0.0) || base.horizon > 60.0) {
     throw UserError("stability: --horizon must be in (0, 60] s");

@@ -56,7 +56,11 @@ WallOutcome RunWallExperiment(const WallExperiment& e) {
   Check(std::isfinite(e.damping), "damping must be finite");
   Check(std::isfinite(e.force_scale) && e.force_scale > 0.0, "force scale must be positive");
   Check(std::isfinite(e.hand_mass) && e.hand_mass > 0.0, "hand mass must be positive");
-  Check(std::isfinite(e.push_force) && e.push_force >= 0.0, "push force must be zero or positive");
+  // The experiment is about a resting contact: something must hold the hand on the wall, and the
+  // device must be able to hold it back for good (its continuous rating).
+  Check(std::isfinite(e.push_force) && e.push_force > 0.0 &&
+            e.push_force < e.spec.max_continuous_force,
+        "push force must be positive and below the device's continuous force rating");
   Check(std::isfinite(e.approach_speed) && e.approach_speed >= 0.0,
         "approach speed must be zero or positive");
   Check(std::isfinite(e.horizon) && e.horizon > 0.0, "horizon must be positive");

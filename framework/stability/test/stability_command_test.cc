@@ -153,6 +153,7 @@ TEST(StabilityCommand, BadInputExitsTwoAndWritesNothing) {
       {scene + " --stiffness-min '1 N/mm' --stiffness-max '1 N/m' -o m.csv", "stiffness"},
       {scene + " --hand-mass '-1 kg' -o m.csv", "hand-mass"},
       {scene + " --push '5 N' -o m.csv", "--push"},
+      {scene + " --push '0 N' -o m.csv", "--push"},
       {scene + " --force-scale 0 -o m.csv", "force-scale"},
       {scene + " -o missing/m.csv", "does not exist"},
       {"'" + (dir / "nosuch.yaml").string() + "' -o m.csv", "nosuch.yaml"},

@@ -231,6 +231,8 @@ TEST(WallExperiment, RefusesBadParameters) {
   EXPECT_THROW(RunWallExperiment(with([](WallExperiment& e) { e.force_scale = 0.0; })), UserError);
   EXPECT_THROW(RunWallExperiment(with([](WallExperiment& e) { e.horizon = -1.0; })), UserError);
   EXPECT_THROW(RunWallExperiment(with([](WallExperiment& e) { e.substeps = 0; })), UserError);
+  EXPECT_THROW(RunWallExperiment(with([](WallExperiment& e) { e.push_force = 0.0; })), UserError);
+  EXPECT_THROW(RunWallExperiment(with([](WallExperiment& e) { e.push_force = 0.88; })), UserError);
   EXPECT_THROW(RunWallExperiment(with([](WallExperiment& e) { e.spec.damping = 0.0; })), UserError);
   EXPECT_NO_THROW(RunWallExperiment(with([](WallExperiment&) {})));
   // A bracket that does not bracket.
