@@ -23,7 +23,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
   const std::string name = mode ? mode->AsOneOf({"constant_speed", "scripted"}) : "constant_speed";
   if (name == "constant_speed") {
     node.ExpectOnlyKeys(
-        {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping"});
+        {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping", "radial"});
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
     // robot holds; 1 m of approach is the size of a workcell.
@@ -31,6 +31,11 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
     s.start_offset = Optional(node, "start_offset", Dimension::kLength, 0.0, 1.0, 1e-3);
     s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
+    if (const auto radial = node.Find("radial")) {
+      s.radial = radial->AsOneOf({"quasi_static", "dynamic"}) == "dynamic"
+                     ? Settings::Radial::kDynamic
+                     : Settings::Radial::kQuasiStatic;
+    }
   } else {
     node.ExpectOnlyKeys({"plugin", "mode", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;

@@ -134,6 +134,11 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   out->angular_velocity.setZero();
   out->buttons = 0;
   out->delivered = delivered_;
+  out->settle_load.setZero();
+  if (settings_.mode == Settings::Mode::kConstantSpeed &&
+      settings_.radial == Settings::Radial::kQuasiStatic && position_.y() >= 0.0) {
+    out->settle_load = Eigen::Vector2d(0.0, -settings_.radial_load);
+  }
 }
 
 void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
@@ -141,8 +146,11 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
   const double h = period_;
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     const double m = mass();
-    // Held on the axis by the robot until the leading end is inside; with no weight, no mass.
-    if (m <= 0.0 || position_.y() < 0.0) return;
+    // Held on the axis by the robot until the leading end is inside; with no weight, no mass;
+    // settled by the stage in the quasi-static mode.
+    if (m <= 0.0 || position_.y() < 0.0 || settings_.radial == Settings::Radial::kQuasiStatic) {
+      return;
+    }
     const double c = settings_.radial_damping;
     const Eigen::Vector2d load(0.0, -settings_.radial_load);
     const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());

@@ -34,6 +34,11 @@ struct DeviceState {
   std::uint32_t buttons = 0;
   // Wrench the device delivered in the previous tick after its own limits (for recording).
   Wrench delivered;
+  // Radial load (x, z components, N) that the moving part carries in quasi-static equilibrium, as
+  // the paper's case-study robot does with the shaft's weight. When non-zero, the constrained
+  // stage places the part across the mating axis where the rendered radial force balances this
+  // load, instead of at `position`'s x and z: a settled part, with no radial dynamics to integrate.
+  Eigen::Vector2d settle_load{0.0, 0.0};
 };
 
 // Who calls the tick: the framework's scheduler, or the device vendor's servo thread.

@@ -28,8 +28,22 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   double RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
                          const Wrench& wrench) const noexcept;
 
+  // Quasi-static placement (DeviceState::settle_load): finds the offset along the load where the
+  // rendered radial force balances it, and leaves pose, contact and wrench there. Returns false
+  // (outputs untouched) where nothing can carry the load, e.g. before the surfaces overlap.
+  bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
+              StageOutput* out) const noexcept;
+  // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
+  // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
+  bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
+                  double tolerance, const MatingMotion& motion, StageOutput* work,
+                  double* solution) const noexcept;
+
   const ContactAnalyzer& analyzer_;
   const ResistanceLaw& law_;
+  // Where the last settled tick left the part: the next tick's starting point. Evaluate is called
+  // from one thread at a time (the tick), so this cache needs no lock; it is deterministic.
+  mutable Eigen::Vector2d last_settled_{0.0, 0.0};
 };
 
 }  // namespace fitfeel

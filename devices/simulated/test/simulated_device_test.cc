@@ -11,12 +11,14 @@ namespace {
 
 constexpr double kPeriod = 1e-3;
 
+// The radially dynamic robot: most tests here are about its integration.
 Settings Robot(double load, double damping = 0.0) {
   Settings s;
   s.speed = 10e-3;
   s.start_offset = 2e-3;
   s.radial_load = load;
   s.radial_damping = damping;
+  s.radial = Settings::Radial::kDynamic;
   return s;
 }
 
@@ -55,6 +57,25 @@ TEST(SimulatedRobotTest, AxialPositionAfterNTicksIsExact) {
     return w;
   });
   EXPECT_EQ(pushed.position, Eigen::Vector3d(0.0, -2e-3 + 10e-3 * 0.4, 0.0));
+}
+
+TEST(SimulatedRobotTest, QuasiStaticRobotAsksToSettleItsWeightInsideAndMovesNoRadialMass) {
+  Settings settings = Robot(2.0);
+  settings.radial = Settings::Radial::kQuasiStatic;
+  SimulatedDevice device;
+  device.Configure(settings);
+  device.Start(kPeriod);
+  DeviceState state;
+  device.Read(0.0, &state);
+  EXPECT_EQ(state.settle_load, Eigen::Vector2d(0.0, 0.0));  // the robot carries it outside
+  const DeviceState inside = Drive(device, 400, [](const DeviceState&) {
+    Wrench w;
+    w.force = Eigen::Vector3d(0.0, -1.0, 50.0);
+    return w;
+  });
+  EXPECT_EQ(inside.settle_load, Eigen::Vector2d(0.0, -2.0));
+  EXPECT_EQ(inside.position.x(), 0.0);
+  EXPECT_EQ(inside.position.z(), 0.0);
 }
 
 TEST(SimulatedRobotTest, WeightActsOnlyInsideTheEntranceAsAFreeFallOfTheShaftsMass) {
