@@ -219,29 +219,37 @@ nlohmann::json Physics(nlohmann::json summary) {
   return summary;
 }
 
-std::string SimulatedDevice() {
-  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n  radial_load: 2 N\n";
+// The paper's robot: 10 mm/s, the shaft's 2 N weight. `radial` is the device's radial model:
+// quasi_static (its default: the stage settles the part where the contact carries the weight) or
+// dynamic (the device integrates the part's radial motion).
+std::string SimulatedDevice(const std::string& radial = "quasi_static") {
+  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n  radial_load: 2 N\n"
+         "  radial: " +
+         radial + "\n";
 }
 
-// The simulated run whose device stream the replay plays back, and its recording.
+// A simulated run whose device stream the replay plays back, and its recording.
 struct Recorded {
   DeviceRunResult run;
   fs::path recording;
 };
-const Recorded& SimulatedRecording() {
-  static const Recorded recorded = [] {
+const Recorded& SimulatedRecording(const std::string& radial) {
+  static std::map<std::string, Recorded> recorded;
+  auto it = recorded.find(radial);
+  if (it == recorded.end()) {
     Recorded r;
-    r.run = RunWithProbe(SceneWithDevice(WorkDir(), "recorded", SimulatedDevice()), 4.0);
-    r.recording = WorkDir() / "simulated.rec";
+    r.run = RunWithProbe(SceneWithDevice(WorkDir(), "recorded-" + radial, SimulatedDevice(radial)),
+                         4.0);
+    r.recording = WorkDir() / ("simulated-" + radial + ".rec");
     WriteRecording(r.recording, RecordingInfo{r.run.spec.model}, r.run.probe->samples());
-    return r;
-  }();
-  return recorded;
+    it = recorded.emplace(radial, std::move(r)).first;
+  }
+  return it->second;
 }
 
-std::string ReplayDevice() {
+std::string ReplayDevice(const std::string& radial) {
   return "device:\n  plugin: fitfeel.device.replay\n  file: '" +
-         SimulatedRecording().recording.string() + "'\n  model: PHANTOM Desktop\n";
+         SimulatedRecording(radial).recording.string() + "'\n  model: PHANTOM Desktop\n";
 }
 
 // Runs each case once; the tests below read the same run.
@@ -268,13 +276,21 @@ TEST_P(DeviceAgnosticTest, TicksAndFiniteWrenches) {
   const RunStats& stats = r->run.stats;
   const auto planned = static_cast<std::uint64_t>(std::llround(c.duration * 1000.0));
 
-  // Tick count: as planned, one Read and one Write per tick, every tick recorded.
+  // Tick count: as planned on the framework's (virtual) clock; a device that owns the clock
+  // ends the run after `duration` of its own time, and a servo thread on a loaded machine may
+  // serve fewer frames (lateness is reported, not asserted). One Read and one Write per tick,
+  // every tick recorded.
   EXPECT_EQ(stats.planned_ticks, planned);
-  EXPECT_EQ(stats.ticks, planned);
+  if (r->probe->clock_owner() == ClockOwner::kFramework) {
+    EXPECT_EQ(stats.ticks, planned);
+  } else {
+    EXPECT_GT(stats.ticks, 0u);
+    EXPECT_LE(stats.ticks, planned);
+  }
   EXPECT_EQ(probe.reads(), stats.ticks);
   EXPECT_EQ(probe.writes(), stats.ticks);
   EXPECT_EQ(probe.overflow(), 0u);
-  EXPECT_EQ(r->run.summary.value("ticks", std::uint64_t{0}), planned);
+  EXPECT_EQ(r->run.summary.value("ticks", std::uint64_t{0}), stats.ticks);
 
   // Nothing non-finite crosses the device boundary, either way.
   std::size_t non_finite = 0;
@@ -309,15 +325,19 @@ TEST_P(DeviceAgnosticTest, NoWrenchAboveTheDeviceLimits) {
                           "and Device::Write?";
 }
 
-// The replay of the simulated run's device stream gives the simulated run again, bit for bit:
-// the same states read, the same wrenches written, the same summary.
-TEST(DeviceAgnostic, ReplayReproducesTheRecordedRunBitForBit) {
-  const Recorded& recorded = SimulatedRecording();
+// The replay of a simulated run's device stream gives the simulated run again, bit for bit: the
+// same states read, the same wrenches written, the same summary. For both radial models of the
+// simulated robot: what the device reports must all be in the recording.
+class ReplayTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ReplayTest, ReproducesTheRecordedRunBitForBit) {
+  const std::string radial = GetParam();
+  const Recorded& recorded = SimulatedRecording(radial);
   // The recording itself round-trips.
   const Recording back = ReadRecording(recorded.recording);
   ASSERT_EQ(back.samples.size(), recorded.run.probe->samples().size());
 
-  const fs::path scene = SceneWithDevice(WorkDir(), "replay-bits", ReplayDevice());
+  const fs::path scene = SceneWithDevice(WorkDir(), "replay-bits-" + radial, ReplayDevice(radial));
   const DeviceRunResult replay = RunWithProbe(scene, 4.0);
   const auto& a = recorded.run.probe->samples();
   const auto& b = replay.probe->samples();
@@ -334,10 +354,17 @@ TEST(DeviceAgnostic, ReplayReproducesTheRecordedRunBitForBit) {
                     << " vs " << b[i].commanded.force.transpose();
     }
   }
-  EXPECT_EQ(differing, 0u);
+  EXPECT_EQ(differing, 0u) << "of " << a.size() << " ticks (radial: " << radial
+                           << "). Same states, other forces: does the device report something "
+                              "the recording does not carry (DeviceState::settle_load)?";
   EXPECT_EQ(Physics(recorded.run.run.summary).dump(), Physics(replay.run.summary).dump());
   EXPECT_EQ(recorded.run.run.stats.ticks, replay.run.stats.ticks);
 }
+
+INSTANTIATE_TEST_SUITE_P(Simulated, ReplayTest, ::testing::Values("dynamic", "quasi_static"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return param.param;
+                         });
 
 void CheckFakeHd(const DeviceRunResult& run) {
   const FakeHdStats hd = FakeHd();
@@ -363,9 +390,15 @@ INSTANTIATE_TEST_SUITE_P(
                                    return SceneWithDevice(dir, "simulated", SimulatedDevice());
                                  },
                                  nullptr},
+                      DeviceCase{"simulated_dynamic", 4.0,
+                                 [](const fs::path& dir) {
+                                   return SceneWithDevice(dir, "simulated-dynamic",
+                                                          SimulatedDevice("dynamic"));
+                                 },
+                                 nullptr},
                       DeviceCase{"replay", 4.0,
                                  [](const fs::path& dir) {
-                                   return SceneWithDevice(dir, "replay", ReplayDevice());
+                                   return SceneWithDevice(dir, "replay", ReplayDevice("dynamic"));
                                  },
                                  nullptr},
                       DeviceCase{"phantom", 1.0, PhantomScene, CheckFakeHd}),
