@@ -129,13 +129,13 @@ void PrintSummary(const RunResult& r) {
   }
   const SafetyReport& safety = s.safety;
   const bool coupled = safety.coupling == CouplingMode::kSpringDamper;
-  std::printf("  safety  scale %g device N/N, %s, faults %llu, saturated ticks %llu, energy "
-              "created %.3g J\n",
-              safety.force_scale, coupled ? "virtual coupling" : "direct",
-              static_cast<unsigned long long>(safety.non_finite_faults),
-              static_cast<unsigned long long>(safety.peak_limited_ticks +
-                                              safety.continuous_limited_ticks),
-              safety.energy_created);
+  std::printf(
+      "  safety  scale %g device N/N, %s, faults %llu, saturated ticks %llu, energy "
+      "created %.3g J\n",
+      safety.force_scale, coupled ? "virtual coupling" : "direct",
+      static_cast<unsigned long long>(safety.non_finite_faults),
+      static_cast<unsigned long long>(safety.peak_limited_ticks + safety.continuous_limited_ticks),
+      safety.energy_created);
   if (coupled) {
     std::printf("          coupling K_c %g N/m, B_c %g N*s/m\n", safety.coupling_gains.stiffness,
                 safety.coupling_gains.damping);

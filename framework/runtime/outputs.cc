@@ -148,22 +148,21 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
   }
   // JSON has no infinity: an unlimited device's limits are null.
   auto limit = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
-  j["safety"] = {
-      {"device_model", safety.device_model},
-      {"force_scale", safety.force_scale},
-      {"coupling", coupling},
-      {"peak_force_limit_N", limit(safety.peak_force_limit)},
-      {"continuous_force_limit_N", limit(safety.continuous_force_limit)},
-      {"faults", safety.non_finite_faults},
-      {"saturated_ticks", safety.peak_limited_ticks + safety.continuous_limited_ticks},
-      {"peak_limited_ticks", safety.peak_limited_ticks},
-      {"continuous_limited_ticks", safety.continuous_limited_ticks},
-      {"passivity_controller_ticks", safety.passivity_controller_ticks},
-      {"max_physical_force_N", safety.max_physical_force},
-      {"max_delivered_force_N", safety.max_delivered_force},
-      {"energy_absorbed_J", safety.energy},
-      {"energy_created_J", safety.energy_created},
-      {"controller_energy_J", safety.controller_energy}};
+  j["safety"] = {{"device_model", safety.device_model},
+                 {"force_scale", safety.force_scale},
+                 {"coupling", coupling},
+                 {"peak_force_limit_N", limit(safety.peak_force_limit)},
+                 {"continuous_force_limit_N", limit(safety.continuous_force_limit)},
+                 {"faults", safety.non_finite_faults},
+                 {"saturated_ticks", safety.peak_limited_ticks + safety.continuous_limited_ticks},
+                 {"peak_limited_ticks", safety.peak_limited_ticks},
+                 {"continuous_limited_ticks", safety.continuous_limited_ticks},
+                 {"passivity_controller_ticks", safety.passivity_controller_ticks},
+                 {"max_physical_force_N", safety.max_physical_force},
+                 {"max_delivered_force_N", safety.max_delivered_force},
+                 {"energy_absorbed_J", safety.energy},
+                 {"energy_created_J", safety.energy_created},
+                 {"controller_energy_J", safety.controller_energy}};
   j["prepare_s"] = {{"discretize", info.discretize_seconds},
                     {"generate", info.generate_seconds},
                     {"analyze", info.analyze_seconds},

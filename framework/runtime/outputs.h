@@ -36,8 +36,8 @@ struct RunInfo {
 };
 
 struct OutputPaths {
-  std::filesystem::path trace;    // empty when not written
-  std::filesystem::path summary;  // empty when not written
+  std::filesystem::path trace;      // empty when not written
+  std::filesystem::path summary;    // empty when not written
   std::filesystem::path recording;  // empty when not written
 };
 

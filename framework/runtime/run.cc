@@ -76,13 +76,13 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     const bool coupled = settings.safety.coupling == CouplingMode::kSpringDamper;
     if (!coupled && std::isfinite(spec.max_stiffness) &&
         scene.model.contact_stiffness * settings.safety.force_scale > spec.max_stiffness) {
-      result.notes.push_back(
-          "note: contact stiffness " + FormatStiffness(scene.model.contact_stiffness) +
-          " exceeds what the device '" + scene.device_id + "' renders stably (" +
-          FormatStiffness(spec.max_stiffness) + " at " +
-          std::to_string(std::lround(settings.rate)) +
-          " Hz) with direct rendering: expect chatter; the safety section's "
-          "coupling: spring_damper renders it through a virtual coupling");
+      result.notes.push_back("note: contact stiffness " +
+                             FormatStiffness(scene.model.contact_stiffness) +
+                             " exceeds what the device '" + scene.device_id + "' renders stably (" +
+                             FormatStiffness(spec.max_stiffness) + " at " +
+                             std::to_string(std::lround(settings.rate)) +
+                             " Hz) with direct rendering: expect chatter; the safety section's "
+                             "coupling: spring_damper renders it through a virtual coupling");
     }
     Scheduler scheduler(*scene.device, positioning, constrained, settings);
     if (options.watch) options.watch(&scheduler);

@@ -12,8 +12,9 @@ namespace fitfeel {
 
 // What one tick leaves behind in the run's pre-allocated buffer (one row of trace.csv).
 struct TickRecord {
-  double time = 0.0;                        // scheduled time of the tick, s
-  // Simulated moving part's leading end (the device's, or the proxy's when coupled), scene frame, m.
+  double time = 0.0;  // scheduled time of the tick, s
+  // Simulated moving part's leading end (the device's, or the proxy's when coupled), scene frame,
+  // m.
   Eigen::Vector3d position{0.0, 0.0, 0.0};
   MatingPose pose;
   ContactState contact;

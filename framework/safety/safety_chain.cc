@@ -78,15 +78,17 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
     }
     report.force_scale = spec.max_continuous_force / *settings.physical_full_scale;
     if (!std::isfinite(report.force_scale)) {
-      throw UserError(who + "physical_full_scale needs a device with a finite continuous force "
-                            "rating; give force_scale instead");
+      throw UserError(who +
+                      "physical_full_scale needs a device with a finite continuous force "
+                      "rating; give force_scale instead");
     }
   }
   report.coupling = settings.coupling;
   if (settings.coupling == CouplingMode::kSpringDamper) {
     if (!(spec.damping > 0.0)) {
-      throw UserError(who + "the device has no physical damping, so no virtual coupling obeys "
-                            "the passivity bound b > K_c*T/2 + B_c; use coupling: direct");
+      throw UserError(who +
+                      "the device has no physical damping, so no virtual coupling obeys "
+                      "the passivity bound b > K_c*T/2 + B_c; use coupling: direct");
     }
     CouplingGains gains = DefaultCouplingGains(spec, period);
     if (settings.coupling_stiffness) gains.stiffness = *settings.coupling_stiffness;
