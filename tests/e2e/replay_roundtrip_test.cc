@@ -3,6 +3,7 @@
 // trace bit for bit (every column but tick_us, a measurement of this machine).
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -104,43 +105,58 @@ constexpr const char* kRun = R"(run:
   clock: virtual
 )";
 
-TEST_F(ReplayRoundTrip, ReplayingARecordingGivesTheSameTraceBitForBit) {
-  const fs::path recorded = dir_ / "recorded";
-  WriteText(dir_ / "record.yaml",
-            CaseOneWith(std::string(kHand) + kRun + "  outputs: [trace, summary, recording]\n"));
+// Records a run of the hand with `safety` (may be empty), replays it with `replay_device` and
+// `safety`, and checks the traces agree bit for bit. Returns the recorded run's summary.
+nlohmann::json RoundTrip(const fs::path& dir, const std::string& safety,
+                         const std::string& replay_device) {
+  const fs::path recorded = dir / "recorded";
+  WriteText(dir / "record.yaml", CaseOneWith(std::string(kHand) + safety + kRun +
+                                             "  outputs: [trace, summary, recording]\n"));
   const Result a =
-      RunFitfeel("run '" + (dir_ / "record.yaml").string() + "' --out '" + recorded.string() + "'");
-  ASSERT_EQ(a.code, 0) << a.output;
-  ASSERT_TRUE(fs::exists(recorded / "recording.csv")) << a.output;
+      RunFitfeel("run '" + (dir / "record.yaml").string() + "' --out '" + recorded.string() + "'");
+  EXPECT_EQ(a.code, 0) << a.output;
+  EXPECT_TRUE(fs::exists(recorded / "recording.csv")) << a.output;
   EXPECT_NE(a.output.find((recorded / "recording.csv").string()), std::string::npos) << a.output;
   EXPECT_NE(a.output.find("safety"), std::string::npos) << a.output;
 
-  // The replay device is a desktop device (limits, default coupling): the scene says how the
-  // recorded run rendered, directly at scale 1, and gives limits the recorded forces stay under.
-  fs::copy_file(recorded / "recording.csv", dir_ / "hand.rec");
-  WriteText(dir_ / "replay.yaml", CaseOneWith(R"(device:
+  fs::copy_file(recorded / "recording.csv", dir / "hand.rec", fs::copy_options::overwrite_existing);
+  WriteText(dir / "replay.yaml",
+            CaseOneWith(replay_device + safety + kRun + "  outputs: [trace, summary]\n"));
+  const fs::path replayed = dir / "replayed";
+  const Result b =
+      RunFitfeel("run '" + (dir / "replay.yaml").string() + "' --out '" + replayed.string() + "'");
+  EXPECT_EQ(b.code, 0) << b.output;
+
+  const auto original = Physics(recorded / "trace.csv");
+  const auto replay = Physics(replayed / "trace.csv");
+  EXPECT_EQ(original.size(), 1501u);
+  EXPECT_EQ(replay.size(), original.size());
+  for (std::size_t k = 0; k < std::min(original.size(), replay.size()); ++k) {
+    if (replay[k] != original[k]) {
+      ADD_FAILURE() << "row " << k << "\n  recorded " << original[k] << "\n  replayed "
+                    << replay[k];
+      break;
+    }
+  }
+  std::ifstream in(recorded / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+// The replay device is a desktop device (limits, default coupling): the scene says how the
+// recorded run rendered and gives limits the recorded forces stay under.
+constexpr const char* kReplay = R"(device:
   plugin: fitfeel.device.replay
   file: hand.rec
   model: PHANTOM Desktop
   spec: {max_force: 1e9 N, max_continuous_force: 1e9 N}
-safety:
-  coupling: direct
-)" + std::string(kRun) + "  outputs: [trace, summary]\n"));
-  const fs::path replayed = dir_ / "replayed";
-  const Result b =
-      RunFitfeel("run '" + (dir_ / "replay.yaml").string() + "' --out '" + replayed.string() + "'");
-  ASSERT_EQ(b.code, 0) << b.output;
+)";
 
-  const auto original = Physics(recorded / "trace.csv");
-  const auto replay = Physics(replayed / "trace.csv");
-  ASSERT_EQ(original.size(), 1501u);
-  ASSERT_EQ(replay.size(), original.size());
-  for (std::size_t k = 0; k < original.size(); ++k) {
-    ASSERT_EQ(replay[k], original[k]) << "row " << k;
-  }
+TEST_F(ReplayRoundTrip, ReplayingARecordingGivesTheSameTraceBitForBit) {
+  // The hand renders directly (no safety section: a device without limits passes through); the
+  // replay is told so.
+  const nlohmann::json summary =
+      RoundTrip(dir_, "", std::string(kReplay) + "safety:\n  coupling: direct\n");
   // Not a trivial equality: the hand met the fit.
-  std::ifstream in(recorded / "summary.json");
-  const auto summary = nlohmann::json::parse(in);
   EXPECT_GT(summary["constrained_ticks"].get<int>(), 100);
   EXPECT_GT(summary["axial_resistance_N"]["max"].get<double>(), 0.0);
   EXPECT_EQ(summary["safety"]["force_scale"].get<double>(), 1.0);
@@ -157,6 +173,21 @@ safety:
   EXPECT_EQ(c.code, 2) << c.output;
   EXPECT_NE(c.output.find("hand.rec:"), std::string::npos) << c.output;
   EXPECT_FALSE(fs::exists(refused));
+}
+
+// Through the virtual coupling at a tenth of the physical force: the law acts on the proxy, which
+// the replay rebuilds from the same handle motion. The replayed device's damping is the hand's
+// (20 N*s/m), so the coupling gains chosen from the spec are the same.
+TEST_F(ReplayRoundTrip, ACoupledRunReplaysBitForBitToo) {
+  const std::string safety = "safety:\n  coupling: spring_damper\n  force_scale: 0.1\n";
+  const nlohmann::json summary =
+      RoundTrip(dir_, safety,
+                std::string(kReplay).replace(std::string(kReplay).find("}\n"), 2,
+                                             ", damping: 20 N*s/m, max_stiffness: 1e9 N/m}\n"));
+  EXPECT_GT(summary["constrained_ticks"].get<int>(), 100);
+  EXPECT_EQ(summary["safety"]["coupling"]["mode"], "spring_damper");
+  EXPECT_EQ(summary["safety"]["force_scale"].get<double>(), 0.1);
+  EXPECT_GT(summary["safety"]["coupling"]["stiffness_N_per_m"].get<double>(), 0.0);
 }
 
 }  // namespace
