@@ -1,5 +1,6 @@
 # Thin wrapper: everything real is in CMake (presets) and ctest. Run as root on Debian 12.
-#   make run    install missing packages, build (Release), run the default scenario
+#   make run    install missing packages, build (Release), run the default scenario and draw
+#               its force trace next to its CSV
 #   make test   install missing packages, build, run the whole test suite
 #   make bench  build and run the benchmarks
 #   make clean  remove the build tree and the outputs
@@ -8,6 +9,8 @@ PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev li
             libboost-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev \
             libgmock-dev libbenchmark-dev gnuplot-nox
 JOBS ?= $(shell nproc)
+# Where `fitfeel run` puts the default scenario's outputs (out/<scenario name>).
+DEFAULT_RUN := out/paper-case1-h7js6
 
 .PHONY: run test bench clean deps configure build
 
@@ -32,6 +35,8 @@ build: configure
 
 run: build
 	build/bin/fitfeel run
+	build/bin/fitfeel plot trace $(DEFAULT_RUN) -o $(DEFAULT_RUN)/trace.png
+	@echo "force trace chart: $(DEFAULT_RUN)/trace.png"
 
 test: build
 	ctest --preset release

@@ -125,11 +125,27 @@ void PrintSummary(const RunResult& r) {
   std::printf("  axial resistance  %s\n", Stat(j["axial_resistance_N"], "N").c_str());
   std::printf("  radial resistance %s\n", Stat(j["radial_resistance_N"], "N").c_str());
   if (j.contains("torque_Nm")) {
-    std::printf("  resisting torque  %s\n", Stat(j["torque_Nm"], "N*m").c_str());
+    std::printf("  resistance torque %s\n", Stat(j["torque_Nm"], "N*m").c_str());
+  }
+  const SafetyReport& safety = s.safety;
+  const bool coupled = safety.coupling == CouplingMode::kSpringDamper;
+  std::printf(
+      "  safety  scale %g device N/N, %s, faults %llu, saturated ticks %llu, energy "
+      "created %.3g J\n",
+      safety.force_scale, coupled ? "virtual coupling" : "direct",
+      static_cast<unsigned long long>(safety.non_finite_faults),
+      static_cast<unsigned long long>(safety.peak_limited_ticks + safety.continuous_limited_ticks),
+      safety.energy_created);
+  if (coupled) {
+    std::printf("          coupling K_c %g N/m, B_c %g N*s/m\n", safety.coupling_gains.stiffness,
+                safety.coupling_gains.damping);
   }
   for (const auto& note : r.notes) std::printf("  %s\n", note.c_str());
   if (!r.paths.trace.empty()) std::printf("  trace   %s\n", r.paths.trace.string().c_str());
   if (!r.paths.summary.empty()) std::printf("  summary %s\n", r.paths.summary.string().c_str());
+  if (!r.paths.recording.empty()) {
+    std::printf("  recording %s\n", r.paths.recording.string().c_str());
+  }
 }
 
 void Run(const RunArgs& args) {
@@ -163,7 +179,7 @@ void AddRunCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "run",
       "Run a scenario: build the skin model shapes, drive the device at the scenario's rate and "
-      "write DIR/trace.csv and DIR/summary.json");
+      "write DIR/trace.csv and DIR/summary.json (and DIR/recording.csv when run.outputs asks)");
   cmd->add_option("file", args->file,
                   std::string("scenario file (default: ") + kDefaultScenario +
                       ", looked up in the current folder, then in FITFEEL_SOURCE_DIR)");

@@ -57,7 +57,7 @@ void WriteFile(const fs::path& path, const std::string& text) {
 std::string TraceHeader() {
   return "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us,x_mm,y_mm,z_mm,angle_rad,tx_Nm,ty_Nm,tz_Nm,"
          "engaged,interference,offset_um,assembly_extent_um,penetration_um,max_interference_um,"
-         "stiffness_N_per_um,guard_fault";
+         "stiffness_N_per_um,guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm";
 }
 
 std::string TraceRow(const TickRecord& r) {
@@ -91,6 +91,8 @@ std::string TraceRow(const TickRecord& r) {
   add(r.contact.max_interference * 1e6);
   add(r.stiffness * 1e-6);
   row += r.guard_fault ? ",1" : ",0";
+  for (int i = 0; i < 3; ++i) add(r.device_wrench.force[i]);
+  for (int i = 0; i < 3; ++i) add(r.device_wrench.torque[i]);
   return row;
 }
 
@@ -137,6 +139,30 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
   j["radial_resistance_N"] = radial.ToJson();
   if (info.rotational) j["torque_Nm"] = torque.ToJson();
   j["depth_mm"] = depth.ToJson();
+  const SafetyReport& safety = stats.safety;
+  nlohmann::json coupling = {
+      {"mode", safety.coupling == CouplingMode::kSpringDamper ? "spring_damper" : "direct"}};
+  if (safety.coupling == CouplingMode::kSpringDamper) {
+    coupling["stiffness_N_per_m"] = safety.coupling_gains.stiffness;
+    coupling["damping_Ns_per_m"] = safety.coupling_gains.damping;
+  }
+  // JSON has no infinity: an unlimited device's limits are null.
+  auto limit = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  j["safety"] = {{"device_model", safety.device_model},
+                 {"force_scale", safety.force_scale},
+                 {"coupling", coupling},
+                 {"peak_force_limit_N", limit(safety.peak_force_limit)},
+                 {"continuous_force_limit_N", limit(safety.continuous_force_limit)},
+                 {"faults", safety.non_finite_faults},
+                 {"saturated_ticks", safety.peak_limited_ticks + safety.continuous_limited_ticks},
+                 {"peak_limited_ticks", safety.peak_limited_ticks},
+                 {"continuous_limited_ticks", safety.continuous_limited_ticks},
+                 {"passivity_controller_ticks", safety.passivity_controller_ticks},
+                 {"max_physical_force_N", safety.max_physical_force},
+                 {"max_delivered_force_N", safety.max_delivered_force},
+                 {"energy_absorbed_J", safety.energy},
+                 {"energy_created_J", safety.energy_created},
+                 {"controller_energy_J", safety.controller_energy}};
   j["prepare_s"] = {{"discretize", info.discretize_seconds},
                     {"generate", info.generate_seconds},
                     {"analyze", info.analyze_seconds},
@@ -148,9 +174,10 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
 
 OutputPaths WriteOutputs(const fs::path& dir, const RunInfo& info,
                          const std::vector<TickRecord>& trace, const RunStats& stats,
-                         bool write_trace, bool write_summary) {
+                         bool write_trace, bool write_summary, const RecordingOutput& recording) {
   OutputPaths paths;
-  if (!write_trace && !write_summary) return paths;
+  const bool write_recording = recording.samples != nullptr;
+  if (!write_trace && !write_summary && !write_recording) return paths;
   std::error_code ec;
   const bool created_dir = !fs::exists(dir, ec);
   if (created_dir && !fs::create_directories(dir, ec) && ec) {
@@ -184,6 +211,13 @@ OutputPaths WriteOutputs(const fs::path& dir, const RunInfo& info,
       pending.push_back({dir / (".summary.json" + suffix), dir / "summary.json"});
       WriteFile(pending.back().temporary, text);
       paths.summary = pending.back().final;
+    }
+    if (write_recording) {
+      pending.push_back({dir / (".recording.csv" + suffix), dir / "recording.csv"});
+      // WriteRecording checks every sample and writes atomically itself; the rename below joins
+      // it to the others.
+      WriteRecording(pending.back().temporary, recording.info, *recording.samples);
+      paths.recording = pending.back().final;
     }
     for (const auto& p : pending) {
       fs::rename(p.temporary, p.final, ec);

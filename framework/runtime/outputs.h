@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/core/export.h"
+#include "framework/device/recording.h"
 #include "framework/runtime/tick_record.h"
 
 namespace fitfeel {
@@ -35,28 +36,41 @@ struct RunInfo {
 };
 
 struct OutputPaths {
-  std::filesystem::path trace;    // empty when not written
-  std::filesystem::path summary;  // empty when not written
+  std::filesystem::path trace;      // empty when not written
+  std::filesystem::path summary;    // empty when not written
+  std::filesystem::path recording;  // empty when not written
+};
+
+// The device stream of a run, to be written as DIR/recording.csv.
+struct RecordingOutput {
+  RecordingInfo info;
+  const std::vector<RecordedSample>* samples = nullptr;  // null: no recording
 };
 
 // Header of trace.csv, the output contract's columns first. fy is the axial resistance (the
-// paper's y, along the mating axis), fx and fz the radial components; all on the moving part.
+// paper's y, along the mating axis), fx and fz the radial components; all on the moving part, in
+// physical newtons. The dev_* columns at the end are what the safety chain sent to the device
+// (device newtons: scaled, coupled, limited).
 FITFEEL_API std::string TraceHeader();
 // One row of trace.csv (no newline). Numbers in their shortest exact decimal form.
 FITFEEL_API std::string TraceRow(const TickRecord& record);
 
 // summary.json's content. Resistance statistics are taken over the ticks of the constrained stage:
 // axial_resistance_N over |fy|, radial_resistance_N over sqrt(fx^2 + fz^2) (the paper's F_r),
-// and for a rotational surface torque_Nm over |torque|; null when no tick was constrained.
+// and for a rotational surface torque_Nm over |torque|; null when no tick was constrained. The
+// `safety` object reports the chain: force scale, coupling and gains, faults, saturated ticks,
+// energy created.
 FITFEEL_API nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& trace,
                                        const RunStats& stats);
 
-// Writes DIR/trace.csv and DIR/summary.json (those asked for), creating DIR if needed. Every file
+// Writes DIR/trace.csv, DIR/summary.json and DIR/recording.csv (those asked for; the recording
+// with WriteRecording's format), creating DIR if needed. Every file
 // is written under a temporary name in DIR and renamed into place only once all are complete; on
 // any failure the temporaries, the files renamed so far and a DIR this call created are removed
 // and UserError is thrown, so a failed run leaves no file behind.
 FITFEEL_API OutputPaths WriteOutputs(const std::filesystem::path& dir, const RunInfo& info,
                                      const std::vector<TickRecord>& trace, const RunStats& stats,
-                                     bool write_trace = true, bool write_summary = true);
+                                     bool write_trace = true, bool write_summary = true,
+                                     const RecordingOutput& recording = {});
 
 }  // namespace fitfeel

@@ -71,13 +71,18 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   {
     DeviceRun device_run(*scene.device, 1.0 / scene.run.rate);
     const DeviceSpec spec = scene.device->spec();
-    if (spec.max_stiffness > 0.0 && scene.model.contact_stiffness > spec.max_stiffness) {
-      result.notes.push_back(
-          "note: contact stiffness " + FormatStiffness(scene.model.contact_stiffness) +
-          " exceeds what the device '" + scene.device_id + "' renders stably (" +
-          FormatStiffness(spec.max_stiffness) + " at " +
-          std::to_string(std::lround(settings.rate)) +
-          " Hz): expect chatter until the safety chain's virtual coupling is in place");
+    settings.safety = RuntimeSafetySettings(scene.safety, spec);
+    settings.record = scene.run.write_recording;
+    const bool coupled = settings.safety.coupling == CouplingMode::kSpringDamper;
+    if (!coupled && std::isfinite(spec.max_stiffness) &&
+        scene.model.contact_stiffness * settings.safety.force_scale > spec.max_stiffness) {
+      result.notes.push_back("note: contact stiffness " +
+                             FormatStiffness(scene.model.contact_stiffness) +
+                             " exceeds what the device '" + scene.device_id + "' renders stably (" +
+                             FormatStiffness(spec.max_stiffness) + " at " +
+                             std::to_string(std::lround(settings.rate)) +
+                             " Hz) with direct rendering: expect chatter; the safety section's "
+                             "coupling: spring_damper renders it through a virtual coupling");
     }
     Scheduler scheduler(*scene.device, positioning, constrained, settings);
     if (options.watch) options.watch(&scheduler);
@@ -97,15 +102,21 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       result.notes.push_back("warning: " + std::to_string(result.stats.guard_faults) +
                              " ticks produced a non-finite wrench; zero was sent instead");
     }
-    if (scene.run.write_recording) {
-      result.notes.push_back(
-          "note: run.outputs asks for a recording, which this build does not write yet (the "
-          "device recording writer is not wired into the run); trace and summary are written");
+    const SafetyReport& safety = result.stats.safety;
+    if (safety.non_finite_faults > 0) {
+      result.notes.push_back("warning: the safety chain sent zero force on " +
+                             std::to_string(safety.non_finite_faults) +
+                             " ticks whose device state or wrench was not finite");
     }
     result.summary = MakeSummary(info, scheduler.trace(), result.stats);
     if (!options.out_dir.empty()) {
+      RecordingOutput recording;
+      if (scene.run.write_recording) {
+        recording.info.device_model = spec.model;
+        recording.samples = &scheduler.recording();
+      }
       result.paths = WriteOutputs(options.out_dir, info, scheduler.trace(), result.stats,
-                                  scene.run.write_trace, scene.run.write_summary);
+                                  scene.run.write_trace, scene.run.write_summary, recording);
     }
   }
   return result;

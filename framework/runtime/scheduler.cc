@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <thread>
 
@@ -58,7 +59,26 @@ std::string SetUpRealTimeThread() {
   return note;
 }
 
+// The stiffness the device handle meets, device N/m: with the coupling, the coupling spring in
+// series with the (scaled) environment behind the quasi-static proxy; directly, the environment.
+double DeviceStiffness(const SafetyChain& chain, double physical_stiffness) noexcept {
+  const double k_e = physical_stiffness > 0.0 ? physical_stiffness * chain.force_scale() : 0.0;
+  if (chain.settings().coupling != CouplingMode::kSpringDamper) return k_e;
+  const double k_c = chain.report().coupling_gains.stiffness;
+  return k_e > 0.0 && k_c > 0.0 ? k_c * k_e / (k_c + k_e) : 0.0;
+}
+
 }  // namespace
+
+SafetySettings RuntimeSafetySettings(const std::optional<ConfigNode>& safety,
+                                     const DeviceSpec& spec) {
+  SafetySettings settings = safety ? ParseSafetySettings(*safety) : SafetySettings{};
+  const bool names_coupling = safety && safety->is_map() && safety->Has("coupling");
+  if (spec.max_force == std::numeric_limits<double>::infinity() && !names_coupling) {
+    settings.coupling = CouplingMode::kDirect;
+  }
+  return settings;
+}
 
 Percentiles ComputePercentiles(std::vector<double> values) {
   Percentiles out;
@@ -102,15 +122,19 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
                     "shorten run.duration");
   }
   planned_ticks_ = static_cast<std::uint64_t>(ticks);
+  chain_.Configure(settings.safety, device.spec(), period_);
   // Sized (and its pages touched) here, so that the loop never allocates or faults them in.
   trace_.resize(planned_ticks_);
   wake_ns_.assign(planned_ticks_, 0.0);
   deadline_ns_.assign(planned_ticks_, 0.0);
   end_ns_.assign(planned_ticks_, 0.0);
+  if (settings.record) recording_.resize(planned_ticks_);
 }
 
 void Scheduler::Rewind() noexcept {
   trace_.resize(planned_ticks_);  // within capacity: no allocation
+  if (settings_.record) recording_.resize(planned_ticks_);
+  chain_reset_ = true;
   ticks_done_.store(0, std::memory_order_relaxed);
   current_ = StageId::kPositioning;
 }
@@ -120,34 +144,55 @@ bool Scheduler::Tick(double time) noexcept {
   if (k >= trace_.size() || !device_.active()) return false;
   const std::int64_t start = NowNs();
   device_.Read(time, &state_);
+  if (chain_reset_) {
+    chain_.Reset(state_);  // proxy at the handle, energy and counters at zero
+    chain_reset_ = false;
+  }
+  chain_.SimulatedState(state_, &law_state_);
   const StageId stage = current_;
-  stages_[static_cast<int>(stage)]->Evaluate(state_, &output_);
+  stages_[static_cast<int>(stage)]->Evaluate(law_state_, &output_);
 
-  // Wrench guard: a device must never receive NaN or infinity.
+  // The chain zeroes (and counts) a non-finite wrench itself; the guard keeps the trace's physical
+  // wrench finite too and flags the tick.
+  chain_.SetEnvironmentStiffness(output_.stiffness);
+  const Wrench device_wrench = chain_.Apply(output_.wrench, state_, period_);
   const bool fault = !output_.wrench.AllFinite();
   if (fault) {
     output_.wrench.SetZero();
     ++guard_faults_;
   }
-  // Safety chain call site: force scaling, virtual coupling, saturation and the passivity monitor
-  // (framework/safety) turn the model wrench into the device wrench here; until they are wired,
-  // the device receives the model wrench and bounds it itself.
-  const Wrench& device_wrench = output_.wrench;
-  device_.SetEnvironmentStiffness(output_.stiffness);
-  device_.SetEnvironmentGap(output_.gap, output_.gap_direction);
+  device_.SetEnvironmentStiffness(DeviceStiffness(chain_, output_.stiffness));
+  if (chain_.settings().coupling == CouplingMode::kSpringDamper) {
+    // The handle meets the coupling spring, not the surface: its free way is unknown.
+    device_.SetEnvironmentGap(std::numeric_limits<double>::infinity(), output_.gap_direction);
+  } else {
+    device_.SetEnvironmentGap(output_.gap, output_.gap_direction);
+  }
   device_.Write(device_wrench);
   const std::int64_t end = NowNs();
 
   TickRecord& record = trace_[k];
   record.time = time;
-  record.position = state_.position;
+  record.position = law_state_.position;  // the simulated part: the proxy when coupled
   record.pose = output_.pose;
   record.contact = output_.contact;
   record.wrench = output_.wrench;
+  record.device_wrench = device_wrench;
   record.stiffness = output_.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;
   record.guard_fault = fault;
+  if (!recording_.empty()) {
+    RecordedSample& sample = recording_[k];
+    sample.time = time;
+    sample.position = state_.position;
+    sample.orientation = state_.orientation;
+    sample.velocity = state_.velocity;
+    sample.angular_velocity = state_.angular_velocity;
+    sample.buttons = state_.buttons;
+    sample.commanded = device_wrench;
+    sample.delivered = state_.delivered;
+  }
   wake_ns_[k] = static_cast<double>(start);
   end_ns_[k] = static_cast<double>(end);
   current_ = output_.next;
@@ -221,6 +266,8 @@ void Scheduler::RunDeviceClock() {
 void Scheduler::ComputeStats() {
   const std::uint64_t n = ticks_done_.load(std::memory_order_relaxed);
   trace_.resize(n);  // shrinking never allocates
+  if (!recording_.empty()) recording_.resize(n);
+  stats_.safety = chain_.report();
   stats_.ticks = n;
   stats_.guard_faults = guard_faults_;
   std::vector<double> compute(n);

@@ -7,8 +7,10 @@
 
 #include "framework/core/export.h"
 #include "framework/device/device.h"
+#include "framework/device/recording.h"
 #include "framework/device/stage.h"
 #include "framework/runtime/tick_record.h"
+#include "framework/safety/safety_chain.h"
 #include "framework/scenario/scene.h"
 
 namespace fitfeel {
@@ -17,7 +19,28 @@ struct SchedulerSettings {
   double rate = 1000.0;   // Hz
   double duration = 0.0;  // s; the run has round(duration * rate) ticks
   ClockMode clock = ClockMode::kVirtual;
+  // The safety chain between the stage's physical wrench and the device (RuntimeSafetySettings).
+  SafetySettings safety = PassThroughSafety();
+  // Fill a RecordedSample per tick into a buffer sized before the loop (run.outputs: recording).
+  bool record = false;
+
+  // Direct rendering at scale 1: with a device without limits (the simulated robot), the device
+  // receives the stage's wrench bit for bit.
+  static SafetySettings PassThroughSafety() {
+    SafetySettings s;
+    s.coupling = CouplingMode::kDirect;
+    return s;
+  }
 };
+
+// The safety settings of a run: the scenario's `safety` section (absent: defaults), with one
+// runtime default on top. A device without a motor (spec max_force +inf, the simulated robot and
+// hand) renders directly unless the section names a `coupling`: no force it renders can hurt
+// anyone, and the paper's traces were computed with the law at the device, so the chain must be a
+// pass-through there (scale 1, direct, limits +inf, no passivity controller). Every other device
+// gets the chain's own default, the virtual coupling. Throws ScenarioError for a bad section.
+FITFEEL_API SafetySettings RuntimeSafetySettings(const std::optional<ConfigNode>& safety,
+                                                 const DeviceSpec& spec);
 
 // One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench
 // guard (and the safety chain's call site), device Write, record into a buffer sized before the
@@ -31,7 +54,9 @@ struct SchedulerSettings {
 class FITFEEL_API Scheduler {
  public:
   // Devices and stages are borrowed and must outlive the scheduler; the device must be started.
-  // Throws UserError for a rate or duration out of range or a buffer too large to hold.
+  // Configures the safety chain from settings.safety, the device's spec and the period.
+  // Throws UserError for a rate or duration out of range, a buffer too large to hold, or a device
+  // spec or safety settings the chain refuses.
   Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
             const SchedulerSettings& settings);
 
@@ -45,6 +70,9 @@ class FITFEEL_API Scheduler {
   void Rewind() noexcept;
 
   const std::vector<TickRecord>& trace() const { return trace_; }
+  // The device stream, one sample per tick done; empty unless settings.record.
+  const std::vector<RecordedSample>& recording() const { return recording_; }
+  const SafetyChain& safety() const { return chain_; }
   const RunStats& stats() const { return stats_; }
   std::uint64_t planned_ticks() const { return planned_ticks_; }
   // Ticks done so far; safe to read from another thread (progress display).
@@ -63,9 +91,13 @@ class FITFEEL_API Scheduler {
   std::uint64_t planned_ticks_ = 0;
 
   StageId current_ = StageId::kPositioning;
-  DeviceState state_;
+  DeviceState state_;      // as the device reported it
+  DeviceState law_state_;  // where the stage is evaluated (the proxy when coupled)
   StageOutput output_;
+  SafetyChain chain_;
+  bool chain_reset_ = true;  // reset the chain at the next tick's device state
   std::vector<TickRecord> trace_;
+  std::vector<RecordedSample> recording_;
   std::vector<double> wake_ns_;  // real time: absolute wake-up of each tick, ns
   std::vector<double> deadline_ns_;
   std::vector<double> end_ns_;

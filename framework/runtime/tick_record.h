@@ -6,16 +6,20 @@
 #include "framework/core/wrench.h"
 #include "framework/device/stage.h"
 #include "framework/model/contact_analyzer.h"
+#include "framework/safety/safety_chain.h"
 
 namespace fitfeel {
 
 // What one tick leaves behind in the run's pre-allocated buffer (one row of trace.csv).
 struct TickRecord {
-  double time = 0.0;                        // scheduled time of the tick, s
-  Eigen::Vector3d position{0.0, 0.0, 0.0};  // moving part's leading end, scene frame, m
+  double time = 0.0;  // scheduled time of the tick, s
+  // Simulated moving part's leading end (the device's, or the proxy's when coupled), scene frame,
+  // m.
+  Eigen::Vector3d position{0.0, 0.0, 0.0};
   MatingPose pose;
   ContactState contact;
   Wrench wrench;            // model wrench on the moving part after the finite guard, N / N*m
+  Wrench device_wrench;     // what the safety chain wrote to the device, device N / N*m
   double stiffness = 0.0;   // radial contact stiffness handed to the device, N/m
   double compute_us = 0.0;  // wall time from device read to device write, us (a measurement)
   StageId stage = StageId::kPositioning;
@@ -41,6 +45,7 @@ struct RunStats {
   double wall_seconds = 0.0;   // duration of the loop
   double achieved_rate = 0.0;  // ticks / wall_seconds, Hz
   std::string realtime_note;   // what the real-time set-up got (SCHED_FIFO, slack)
+  SafetyReport safety;         // what the safety chain did
 };
 
 }  // namespace fitfeel

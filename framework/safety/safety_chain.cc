@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "framework/core/error.h"
@@ -9,6 +10,23 @@
 
 namespace fitfeel {
 namespace {
+
+// A device without a motor (the simulated robot and hand) reports +inf force and stiffness limits
+// and may have no physical damping: the chain then limits nothing. Everything else is checked as
+// for hardware.
+void ValidateChainSpec(const DeviceSpec& spec) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (spec.max_force != kInf) {
+    ValidateDeviceSpec(spec);
+    return;
+  }
+  DeviceSpec finite = spec;
+  finite.max_force = std::numeric_limits<double>::max();
+  if (finite.max_continuous_force == kInf) finite.max_continuous_force = finite.max_force;
+  if (finite.max_stiffness == kInf) finite.max_stiffness = finite.max_force;
+  if (finite.damping == 0.0) finite.damping = 1.0;  // zero damping is allowed: no credit
+  ValidateDeviceSpec(finite);
+}
 
 bool StateFinite(const DeviceState& s) {
   return s.position.allFinite() && s.velocity.allFinite() && s.orientation.coeffs().allFinite();
@@ -43,7 +61,7 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
   if (!(period > 0.0) || !std::isfinite(period)) {
     throw UserError("safety chain: tick period must be a positive number of seconds");
   }
-  ValidateDeviceSpec(spec);
+  ValidateChainSpec(spec);
   const std::string who = "safety (device '" + spec.model + "'): ";
   if (!(settings.force_scale > 0.0) || !std::isfinite(settings.force_scale)) {
     throw UserError(who + "force_scale must be positive");
@@ -59,9 +77,19 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
       throw UserError(who + "physical_full_scale must be positive");
     }
     report.force_scale = spec.max_continuous_force / *settings.physical_full_scale;
+    if (!std::isfinite(report.force_scale)) {
+      throw UserError(who +
+                      "physical_full_scale needs a device with a finite continuous force "
+                      "rating; give force_scale instead");
+    }
   }
   report.coupling = settings.coupling;
   if (settings.coupling == CouplingMode::kSpringDamper) {
+    if (!(spec.damping > 0.0)) {
+      throw UserError(who +
+                      "the device has no physical damping, so no virtual coupling obeys "
+                      "the passivity bound b > K_c*T/2 + B_c; use coupling: direct");
+    }
     CouplingGains gains = DefaultCouplingGains(spec, period);
     if (settings.coupling_stiffness) gains.stiffness = *settings.coupling_stiffness;
     if (settings.coupling_damping) gains.damping = *settings.coupling_damping;

@@ -1,10 +1,15 @@
 // Cost of one scheduler tick with a trivial stage and device: the framework's own overhead per
-// tick (device read and write through the virtual interface, stage dispatch, wrench guard, record
-// into the pre-allocated buffer, two monotonic clock reads), i.e. what is left of the 1 ms for the
-// contact model.
+// tick (device read and write through the virtual interface, stage dispatch, the safety chain,
+// record into the pre-allocated buffer, two monotonic clock reads), i.e. what is left of the 1 ms
+// for the contact model. Three variants: the pass-through chain of a device without limits (the
+// simulated robot), and a PHANTOM Desktop's chain rendering directly and through the virtual
+// coupling, against a stiff wall the handle presses into.
+#include <limits>
+
 #include <benchmark/benchmark.h>
 
 #include "framework/device/device.h"
+#include "framework/device/device_specs.h"
 #include "framework/device/stage.h"
 #include "framework/runtime/scheduler.h"
 
@@ -13,27 +18,37 @@ namespace {
 
 class StillDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return {}; }
+  explicit StillDevice(DeviceSpec spec) : spec_(std::move(spec)) {}
+  DeviceSpec spec() const override { return spec_; }
 
  protected:
   void DoConfigure(const ConfigNode&) override {}
   void DoStart(double) override {}
   void DoRead(double time, DeviceState* out) noexcept override {
     out->time = time;
-    out->position.y() = 1e-3;
+    // 1 mm into the wall, with a small tremor so that the coupling and observer do real work.
+    out->position.y() = 1e-3 + 1e-5 * static_cast<double>(++reads_ % 7);
+    out->velocity.y() = 1e-3;
   }
   void DoWrite(const Wrench& w) noexcept override { benchmark::DoNotOptimize(w.force.data()); }
+
+ private:
+  DeviceSpec spec_;
+  unsigned reads_ = 0;
 };
 
-class ConstantStage final : public Stage {
+// A wall at y = 0 of 1 N/mm (physical), reported with its stiffness as the constrained stage does.
+class WallStage final : public Stage {
  public:
-  explicit ConstantStage(StageId id) : id_(id) {}
+  explicit WallStage(StageId id) : id_(id) {}
   StageId id() const override { return id_; }
 
  protected:
   void DoEvaluate(const DeviceState& d, StageOutput* out) const noexcept override {
     out->wrench.SetZero();
-    out->wrench.force.y() = -d.position.y();
+    const double depth = d.position.y();
+    out->wrench.force.y() = depth > 0.0 ? -1e3 * depth : 0.0;
+    out->stiffness = depth > 0.0 ? 1e3 : 0.0;
     out->next = StageId::kConstrained;
   }
 
@@ -41,12 +56,24 @@ class ConstantStage final : public Stage {
   StageId id_;
 };
 
-void BM_SchedulerTick(benchmark::State& state) {
-  StillDevice device;
+DeviceSpec Unlimited() {
+  DeviceSpec spec;
+  spec.model = "benchmark unlimited device";
+  spec.max_force = std::numeric_limits<double>::infinity();
+  spec.max_continuous_force = spec.max_force;
+  spec.max_stiffness = spec.max_force;
+  spec.workspace = Eigen::Vector3d::Constant(1.0);
+  return spec;
+}
+
+void TickLoop(benchmark::State& state, const DeviceSpec& spec, const SafetySettings& safety) {
+  StillDevice device(spec);
   device.Start(1e-3);
-  const ConstantStage positioning(StageId::kPositioning);
-  const ConstantStage constrained(StageId::kConstrained);
-  Scheduler scheduler(device, positioning, constrained, {1000.0, 10.0, ClockMode::kVirtual});
+  const WallStage positioning(StageId::kPositioning);
+  const WallStage constrained(StageId::kConstrained);
+  SchedulerSettings settings{1000.0, 10.0, ClockMode::kVirtual};
+  settings.safety = safety;
+  Scheduler scheduler(device, positioning, constrained, settings);
   double time = 0.0;
   for (auto _ : state) {
     if (!scheduler.Tick(time)) {
@@ -58,7 +85,27 @@ void BM_SchedulerTick(benchmark::State& state) {
     time += 1e-3;
   }
 }
-BENCHMARK(BM_SchedulerTick);
+
+void BM_SchedulerTickPassThrough(benchmark::State& state) {
+  TickLoop(state, Unlimited(), RuntimeSafetySettings(std::nullopt, Unlimited()));
+}
+BENCHMARK(BM_SchedulerTickPassThrough);
+
+void BM_SchedulerTickDirect(benchmark::State& state) {
+  SafetySettings safety;
+  safety.coupling = CouplingMode::kDirect;
+  safety.force_scale = 0.01;
+  TickLoop(state, LookupDeviceSpec("PHANTOM Desktop"), safety);
+}
+BENCHMARK(BM_SchedulerTickDirect);
+
+void BM_SchedulerTickCoupled(benchmark::State& state) {
+  SafetySettings safety;
+  safety.coupling = CouplingMode::kSpringDamper;
+  safety.force_scale = 0.01;
+  TickLoop(state, LookupDeviceSpec("PHANTOM Desktop"), safety);
+}
+BENCHMARK(BM_SchedulerTickCoupled);
 
 }  // namespace
 }  // namespace fitfeel

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <limits>
+
 // A small, fully controlled surface type and device for the run-time tests: the surface draws its
 // skin model shapes from the scene's generator (so the seed changes the forces), the device moves
 // the part at constant speed along the mating axis.
@@ -137,13 +139,25 @@ class FakeSurface final : public SurfaceType {
   bool fail_prepare_;
 };
 
+// A device without a motor, as the simulated robot: unlimited force and stiffness, no damping.
+inline DeviceSpec UnlimitedSpec() {
+  DeviceSpec spec;
+  spec.model = "fake unlimited device";
+  spec.max_force = std::numeric_limits<double>::infinity();
+  spec.max_continuous_force = spec.max_force;
+  spec.max_stiffness = spec.max_force;
+  spec.workspace = Eigen::Vector3d::Constant(1.0);
+  return spec;
+}
+
 // Moves the leading end at constant speed along +y from `start` with a fixed radial offset, and
 // remembers what it was asked to render.
 class KinematicDevice final : public Device {
  public:
   KinematicDevice(double start_y, double speed, Eigen::Vector2d offset = {0.0, 0.0})
       : start_y_(start_y), speed_(speed), offset_(offset) {}
-  DeviceSpec spec() const override { return DeviceSpec{}; }
+  DeviceSpec spec() const override { return spec_; }
+  void set_spec(const DeviceSpec& spec) { spec_ = spec; }
   int writes() const { return writes_; }
   const Wrench& last() const { return last_; }
   bool started() const { return started_; }
@@ -168,6 +182,7 @@ class KinematicDevice final : public Device {
  private:
   double start_y_, speed_;
   Eigen::Vector2d offset_;
+  DeviceSpec spec_ = UnlimitedSpec();
   Wrench last_;
   int writes_ = 0;
   bool started_ = false, stopped_ = false;

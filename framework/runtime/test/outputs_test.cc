@@ -1,5 +1,6 @@
 #include "framework/runtime/outputs.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -83,6 +84,54 @@ TEST(OutputsTest, RunWritesTheContractsFilesAndNothingElse) {
   EXPECT_EQ(WithoutTickTime(Lines(dir / "trace.csv")), WithoutTickTime(Lines(again / "trace.csv")));
   fs::remove_all(dir);
   fs::remove_all(again);
+}
+
+TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
+  const fs::path dir = FreshDir("safety");
+  RunOptions options;
+  options.out_dir = dir;
+  const RunResult result = RunScene(testing::MakeFakeScene(5, 0.5), options);
+  const auto lines = Lines(dir / "trace.csv");
+  const std::string tail = ",guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm";
+  ASSERT_GE(lines[0].size(), tail.size());
+  EXPECT_EQ(lines[0].substr(lines[0].size() - tail.size()), tail);
+  const auto columns = std::count(lines[0].begin(), lines[0].end(), ',');
+  for (const auto& line : lines) ASSERT_EQ(std::count(line.begin(), line.end(), ','), columns);
+  const auto& safety = result.summary["safety"];
+  for (const char* key : {"force_scale", "coupling", "faults", "saturated_ticks",
+                          "energy_created_J", "max_physical_force_N"}) {
+    EXPECT_TRUE(safety.contains(key)) << key;
+  }
+  EXPECT_EQ(safety["force_scale"], 1.0);
+  EXPECT_EQ(safety["coupling"]["mode"], "direct");  // the fake device has no limits
+  EXPECT_TRUE(safety["peak_force_limit_N"].is_null());
+  EXPECT_EQ(safety["faults"], 0);
+  EXPECT_GE(safety["energy_created_J"].get<double>(), 0.0);
+  fs::remove_all(dir);
+}
+
+TEST(OutputsTest, RecordingIsWrittenOnRequestAndReadsBack) {
+  const fs::path dir = FreshDir("recording");
+  RunOptions options;
+  options.out_dir = dir;
+  Scene scene = testing::MakeFakeScene(5, 0.5);
+  scene.run.write_recording = true;
+  const RunResult result = RunScene(std::move(scene), options);
+  EXPECT_EQ(result.paths.recording, dir / "recording.csv");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 3u);  // trace, summary, recording; no temporaries
+  const Recording recording = ReadRecording(dir / "recording.csv");
+  EXPECT_EQ(recording.info.device_model, "fake unlimited device");
+  ASSERT_EQ(recording.samples.size(), 500u);
+  const auto lines = Lines(dir / "trace.csv");
+  for (std::size_t k = 0; k < 500; ++k) {
+    ASSERT_EQ(recording.samples[k].time, static_cast<double>(k) / 1000.0);
+  }
+  // The device moved at 10 mm/s along the axis (KinematicDevice in the fake scene).
+  EXPECT_NEAR(recording.samples[499].position.y() - recording.samples[0].position.y(), 499 * 1e-5,
+              1e-12);
+  fs::remove_all(dir);
 }
 
 TEST(OutputsTest, AFailedPrepareCreatesNoFolder) {

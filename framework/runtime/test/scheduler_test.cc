@@ -168,7 +168,7 @@ TEST(SchedulerTest, GuardReplacesNonFiniteWrenchesByZeroAndCountsThem) {
 class FiniteDevice final : public Device {
  public:
   explicit FiniteDevice(int ticks) : left_(ticks) {}
-  DeviceSpec spec() const override { return {}; }
+  DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
   bool active() const override { return left_ > 0; }
 
  protected:
@@ -194,7 +194,7 @@ TEST(SchedulerTest, StopsWhenTheDeviceBecomesInactive) {
 // A device whose own "servo thread" calls the tick (here synchronously, at its native 500 Hz).
 class ServoDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return {}; }
+  DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
   ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
   void RunServoLoop(double duration, const std::function<bool(double)>& tick) override {
     for (int k = 0; k * 2e-3 < duration; ++k) {
