@@ -9,7 +9,7 @@
 namespace fitfeel {
 namespace {
 
-constexpr int kColumnCount = 27;
+constexpr int kColumnCount = 29;
 constexpr const char* kFormatLine = "# fitfeel-recording";
 constexpr const char* kEndPrefix = "# end: ";
 
@@ -24,11 +24,11 @@ constexpr ColumnName kColumns[kColumnCount] = {
     {"vz", "m/s"},     {"wx", "rad/s"},   {"wy", "rad/s"}, {"wz", "rad/s"},   {"buttons", "bits"},
     {"fx_cmd", "N"},   {"fy_cmd", "N"},   {"fz_cmd", "N"}, {"tx_cmd", "N*m"}, {"ty_cmd", "N*m"},
     {"tz_cmd", "N*m"}, {"fx_dlv", "N"},   {"fy_dlv", "N"}, {"fz_dlv", "N"},   {"tx_dlv", "N*m"},
-    {"ty_dlv", "N*m"}, {"tz_dlv", "N*m"},
+    {"ty_dlv", "N*m"}, {"tz_dlv", "N*m"}, {"settle_x", "N"}, {"settle_z", "N"},
 };
 constexpr int kButtonsColumn = 14;
 
-// The 26 floating-point fields of a sample in column order (buttons excluded).
+// The 28 floating-point fields of a sample in column order (buttons excluded).
 void Flatten(const RecordedSample& s, double* out) {
   int i = 0;
   out[i++] = s.time;
@@ -43,6 +43,7 @@ void Flatten(const RecordedSample& s, double* out) {
   for (int k = 0; k < 3; ++k) out[i++] = s.commanded.torque[k];
   for (int k = 0; k < 3; ++k) out[i++] = s.delivered.force[k];
   for (int k = 0; k < 3; ++k) out[i++] = s.delivered.torque[k];
+  for (int k = 0; k < 2; ++k) out[i++] = s.settle_load[k];
 }
 
 void Unflatten(const double* in, RecordedSample* s) {
@@ -57,6 +58,7 @@ void Unflatten(const double* in, RecordedSample* s) {
   for (int k = 0; k < 3; ++k) s->commanded.torque[k] = in[i++];
   for (int k = 0; k < 3; ++k) s->delivered.force[k] = in[i++];
   for (int k = 0; k < 3; ++k) s->delivered.torque[k] = in[i++];
+  for (int k = 0; k < 2; ++k) s->settle_load[k] = in[i++];
 }
 
 // A quaternion written from a rotation is unit to ~1e-16; 1e-9 leaves room for hand-made files
@@ -176,7 +178,7 @@ Recording ReadRecording(const std::filesystem::path& file) {
   };
   if (text.empty()) {
     line_number = 1;
-    fail("empty file: expected '# fitfeel-recording 1'");
+    fail("empty file: expected '# fitfeel-recording 2'");
   }
   while (pos < text.size()) {
     ++line_number;
@@ -191,7 +193,7 @@ Recording ReadRecording(const std::filesystem::path& file) {
     if (line_number == 1) {
       const std::vector<std::string> f = SplitFields(line);
       if (f.size() != 3 || f[0] != "#" || f[1] != "fitfeel-recording") {
-        fail("not a fitfeel recording: expected '# fitfeel-recording 1', found '" + line + "'");
+        fail("not a fitfeel recording: expected '# fitfeel-recording 2', found '" + line + "'");
       }
       if (f[2] != std::to_string(kRecordingFormatVersion)) {
         fail("unsupported recording format version '" + f[2] + "' (this build reads " +

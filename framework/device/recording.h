@@ -26,6 +26,7 @@ struct RecordedSample {
   std::uint32_t buttons = 0;
   Wrench commanded;  // what the framework wrote to the device (after the safety chain)
   Wrench delivered;  // what the device reported delivering (DeviceState::delivered)
+  Eigen::Vector2d settle_load{0.0, 0.0};  // DeviceState::settle_load (x, z), N
 };
 
 // Header facts of a recording.
@@ -54,16 +55,18 @@ class FITFEEL_API RecordingError : public UserError {
   std::string reason_;
 };
 
-// File format, version 1 (text, one sample per line, whitespace-separated):
-//   # fitfeel-recording 1
+// File format, version 2 (text, one sample per line, whitespace-separated):
+//   # fitfeel-recording 2
 //   # device: PHANTOM Desktop          (optional metadata lines "# key: value")
-//   t_s x_m y_m z_m qw_1 qx_1 qy_1 qz_1 vx_m/s ... buttons_bits fx_cmd_N ... tz_dlv_N*m
-//   <27 numbers per line>
+//   t_s x_m y_m z_m qw_1 qx_1 qy_1 qz_1 vx_m/s ... buttons_bits fx_cmd_N ... tz_dlv_N*m settle_x_N settle_z_N
+//   <29 numbers per line>
 //   # end: <sample count> samples
 // Every column name ends in its unit after the last '_'. Numbers are written in the shortest form
 // that reads back to the same double, so a recording round-trips bit for bit. The end line makes a
 // truncated file detectable.
-inline constexpr int kRecordingFormatVersion = 1;
+// Version 2 added the settled radial load (settle_x_N, settle_z_N): without it a quasi-static
+// run cannot be replayed. Version 1 files are refused with the version named.
+inline constexpr int kRecordingFormatVersion = 2;
 FITFEEL_API const std::vector<std::string>& RecordingColumns();
 
 // Writes after the run. Checks every sample first (finite values, strictly increasing time) and

@@ -192,6 +192,7 @@ bool Scheduler::Tick(double time) noexcept {
     sample.buttons = state_.buttons;
     sample.commanded = device_wrench;
     sample.delivered = state_.delivered;
+    sample.settle_load = state_.settle_load;
   }
   wake_ns_[k] = static_cast<double>(start);
   end_ns_[k] = static_cast<double>(end);

@@ -89,7 +89,7 @@ TEST_F(RecordingTest, HeaderCarriesUnitsAndVersion) {
   std::string first, header;
   std::getline(in, first);
   std::getline(in, header);
-  EXPECT_EQ(first, "# fitfeel-recording 1");
+  EXPECT_EQ(first, "# fitfeel-recording 2");
   EXPECT_EQ(header.rfind("t_s x_m y_m z_m qw_1", 0), 0u) << header;
   EXPECT_NE(header.find("fx_cmd_N"), std::string::npos);
   EXPECT_NE(header.find("tz_dlv_N*m"), std::string::npos);
@@ -168,7 +168,7 @@ TEST_F(RecordingTest, RefusesMalformedFilesWithLineAndReason) {
   std::string no_unit_cmd = header;
   no_unit_cmd.replace(no_unit_cmd.find("fx_cmd_N"), 8, "fx_cmd");
   ExpectRefused(Write("e.rec", with(2, no_unit_cmd)), 3, "has no unit");
-  ExpectRefused(Write("f.rec", with(3, good[3] + " 1.0")), 4, "28 fields, expected 27");
+  ExpectRefused(Write("f.rec", with(3, good[3] + " 1.0")), 4, "30 fields, expected 29");
   std::string bad_number = good[4];
   bad_number.replace(bad_number.find(' ') + 1, 0, "x");
   ExpectRefused(Write("g.rec", with(4, bad_number)), 5, "not a finite number");
