@@ -33,10 +33,13 @@ std::shared_ptr<const SlideGeometry> ParseSlideGeometry(const PartSpec& part,
   const double height = node.QuantityIn("height", Dimension::kLength, 1e-6, 10.0);
   const double rail_width =
       slot ? node.QuantityIn("rail_width", Dimension::kLength, 1e-6, 10.0) : 0.0;
-  // The model has no texture term: refuse it rather than ignore it.
+  // The model has no texture term: refuse it rather than ignore it. The part's `texture` node is
+  // not at hand here, so the error names its key path in the same file.
   if (part.texture.waviness > 0.0 || part.texture.ra > 0.0 || part.texture.rz > 0.0) {
-    throw UserError("part '" + part.name +
-                    "': the example slide surface models size only; remove its `texture`");
+    const std::string parent = node.path().substr(0, node.path().rfind('.') + 1);
+    throw ScenarioError({node.file(), 0, 0}, parent + "texture",
+                        "no texture (the example slide surface models size only)",
+                        "a texture on part '" + part.name + "'");
   }
   return std::make_shared<SlideGeometry>(part.size.nominal, length, height, rail_width);
 }

@@ -34,7 +34,8 @@ class SlideGeometry final : public Geometry {
 };
 
 // Parses a part's `geometry` node: {length, height} for the block, {length, height, rail_width}
-// for the slot. Throws ScenarioError at the offending key, UserError for a part with texture.
+// for the slot. Throws ScenarioError at the offending key (and at the part's `texture` key path
+// for a part with texture, which this model refuses).
 std::shared_ptr<const SlideGeometry> ParseSlideGeometry(const PartSpec& part,
                                                         const ConfigNode& node);
 
