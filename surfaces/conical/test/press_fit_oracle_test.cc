@@ -119,6 +119,23 @@ TEST(ConicalPressFit, PressInAndOutForcesAreDin7190) {
   EXPECT_NEAR(p * 1e-6, 22.620, 0.001);
 }
 
+TEST(ConicalPressFit, ReportsTheLameCoefficientOfItsForcesForPressureMaps) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  const Oracle oracle;
+  // Closed form at dm = 8.2 mm, d2 = 24 mm: 0.1 mm advance is 1 um radial interference.
+  const double expected = oracle.Pressure(0.1e-3) / 1e-6;
+  EXPECT_NEAR(model.law.PressurePerInterference(), expected, 1e-9 * expected);
+  EXPECT_NEAR(model.law.PressurePerInterference() * 1e-12, 22.620, 0.001);  // MPa/um
+  // The coefficient is the one behind the forces: a uniform interference delta pushes in with
+  // P delta pi dm L (mu + tan alpha).
+  const double advance = 0.3e-3, delta = 0.5 * advance * kTaper;
+  const Wrench in = Evaluate(model, kHoleLength + advance, 0.1);
+  const double p_from_force =
+      -in.force.y() / (M_PI * oracle.dm * kHoleLength * (kMu + oracle.tan_alpha));
+  EXPECT_NEAR(model.law.PressurePerInterference() * delta, p_from_force, 1e-9 * p_from_force);
+}
+
 TEST(ConicalPressFit, AtRestOnlyTheWedgeRemainsAndFrictionIsSmooth) {
   Model model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});

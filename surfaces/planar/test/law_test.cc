@@ -101,6 +101,24 @@ TEST(PlanarLawTest, ClearanceSpringWithCoulombFrictionIsEquationNineInOneAxis) {
   EXPECT_NEAR(w.force.x(), k * 3e-6, 1e-6 * k * 3e-6);
 }
 
+TEST(PlanarLawTest, ReportsThePressurePerInterferenceAtFullEngagementForPressureMaps) {
+  // Key 40 mm long in a 60 mm keyway: full engagement is the key's 40 mm, h = 3 mm: the hand
+  // calculation above, 20.4708 MPa per um.
+  PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);
+  ModelSettings settings;
+  settings.friction = 0.15;
+  PlanarGpsLaw law;
+  law.Prepare(key, slot, settings);
+  EXPECT_NEAR(law.PressurePerInterference() * 1e-12, 20.4708, 0.0001);
+  EXPECT_EQ(law.PressurePerInterference(), law.PressurePerInterferenceAt(40e-3));
+  // A keyway shorter than the key: its length is the full engagement.
+  PartSpec short_slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 25e-3, 3e-3);
+  law.Prepare(key, short_slot, settings);
+  const double expected = PressurePerInterference(8e-3, 3e-3, 25e-3, 210e9, 0.3, 210e9, 0.3);
+  EXPECT_NEAR(law.PressurePerInterference(), expected, 1e-12 * expected);
+}
+
 TEST(PlanarLawTest, NoForceWhenNotEngagedOrAtRest) {
   PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
   PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);

@@ -85,6 +85,26 @@ TEST(KnuckleBearing, UniformInterferenceGivesTheShellPressureOverTheBand) {
   EXPECT_EQ(w.torque.y(), 0.0);
 }
 
+TEST(KnuckleBearing, ReportsTheThickShellCoefficientOfItsForcesForPressureMaps) {
+  Model model;
+  Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
+  // Closed form (oracles.md), a = 10 mm, b = 15 mm, steel: 14.07 MPa per um.
+  const double a = kA, b = 15e-3, E = 210e9, nu = 0.3;
+  const double expected =
+      1.0 /
+      (a * ((1.0 - 2.0 * nu) / E + ((1.0 - 2.0 * nu) * a * a * a + (1.0 + nu) * b * b * b / 2.0) /
+                                       (E * (b * b * b - a * a * a))));
+  EXPECT_NEAR(model.law.PressurePerInterference(), expected, 1e-9 * expected);
+  EXPECT_NEAR(model.law.PressurePerInterference() * 1e-12, 14.07, 0.005);
+  // The coefficient is the one behind the forces: the ball offset by e in the uniform 1 um
+  // interference is pushed back by P * sum(delta ds n), the analyzer's resultant.
+  ContactState contact;
+  const Wrench w = Evaluate(model, 0.0, 0.0, Eigen::Vector2d(0.0, -0.5e-6), &contact);
+  ASSERT_GT(contact.pressure_resultant.norm(), 0.0);
+  EXPECT_NEAR(w.force.z(), -model.law.PressurePerInterference() * contact.pressure_resultant.y(),
+              1e-9 * std::abs(w.force.z()));
+}
+
 TEST(KnuckleBearing, FrictionTorqueIsMuTimesThePressureMoment) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
