@@ -1,4 +1,5 @@
 // The scenario's `device` node for fitfeel.device.simulated, checked key by key with units.
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,7 +21,8 @@ double Optional(const ConfigNode& node, std::string_view key, Dimension dimensio
 void SimulatedDevice::DoConfigure(const ConfigNode& node) {
   Settings s;
   const auto mode = node.Find("mode");
-  const std::string name = mode ? mode->AsOneOf({"constant_speed", "scripted"}) : "constant_speed";
+  const std::string name =
+      mode ? mode->AsOneOf({"constant_speed", "constant_rotation", "scripted"}) : "constant_speed";
   if (name == "constant_speed") {
     node.ExpectOnlyKeys(
         {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping", "radial"});
@@ -30,6 +32,22 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     s.speed = node.Child("speed").AsQuantityIn(Dimension::kVelocity, 0.0, 1.0, false);
     s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
     s.start_offset = Optional(node, "start_offset", Dimension::kLength, 0.0, 1.0, 1e-3);
+    s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
+    if (const auto radial = node.Find("radial")) {
+      s.radial = radial->AsOneOf({"quasi_static", "dynamic"}) == "dynamic"
+                     ? Settings::Radial::kDynamic
+                     : Settings::Radial::kQuasiStatic;
+    }
+  } else if (name == "constant_rotation") {
+    node.ExpectOnlyKeys(
+        {"plugin", "mode", "angular_speed", "swing", "radial_load", "radial_damping", "radial"});
+    s.mode = Settings::Mode::kConstantRotation;
+    // 100 rad/s is far beyond a plain bearing's oscillation; a swing beyond half a turn each way
+    // is a rotation (0 or no key: continuous).
+    s.angular_speed =
+        node.Child("angular_speed").AsQuantityIn(Dimension::kAngularVelocity, 0.0, 100.0, false);
+    s.swing = Optional(node, "swing", Dimension::kAngle, 0.0, M_PI + 1e-9, 0.0);
+    s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
     s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
     if (const auto radial = node.Find("radial")) {
       s.radial = radial->AsOneOf({"quasi_static", "dynamic"}) == "dynamic"

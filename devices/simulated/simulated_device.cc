@@ -26,6 +26,17 @@ void Validate(const Settings& s) {
     Require(InRange(s.radial_damping, 0.0, 1e6), "radial_damping must be in [0, 1e6] N*s/m");
     return;
   }
+  if (s.mode == Settings::Mode::kConstantRotation) {
+    // 100 rad/s (~950 rpm) is far beyond any plain bearing's oscillation; a swing of more than
+    // half a turn each way is a rotation.
+    Require(InRange(s.angular_speed, 0.0, 100.0) && s.angular_speed > 0.0,
+            "angular_speed must be in (0, 100] rad/s");
+    Require(InRange(s.swing, 0.0, M_PI + 1e-9),
+            "swing must be in [0, 180] deg (0: continuous rotation)");
+    Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
+    Require(InRange(s.radial_damping, 0.0, 1e6), "radial_damping must be in [0, 1e6] N*s/m");
+    return;
+  }
   Require(!s.waypoints.empty(), "a scripted run needs at least one waypoint");
   for (std::size_t i = 0; i < s.waypoints.size(); ++i) {
     const auto& w = s.waypoints[i];
@@ -70,6 +81,9 @@ DeviceSpec SimulatedDevice::spec() const {
   if (settings_.mode == Settings::Mode::kScripted) {
     spec.model = "simulated hand (scripted waypoints)";
     spec.damping = settings_.hand_damping;
+  } else if (settings_.mode == Settings::Mode::kConstantRotation) {
+    spec.model = "simulated rotary drive (constant angular speed, constant radial load)";
+    spec.damping = settings_.radial_damping;
   } else {
     spec.model = "simulated robot (constant speed, constant radial load)";
     spec.damping = settings_.radial_damping;
@@ -95,6 +109,8 @@ void SimulatedDevice::DoStart(double period) {
   gap_direction_.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
+  } else if (settings_.mode == Settings::Mode::kConstantRotation) {
+    position_.setZero();
   } else {
     Eigen::Vector3d v;
     Target(0.0, &position_, &v);
@@ -120,22 +136,53 @@ void SimulatedDevice::Target(double time, Eigen::Vector3d* position,
   *position = w.back().position;
 }
 
+void SimulatedDevice::Twist(double time, double* angle, double* rate) const noexcept {
+  const double omega = settings_.angular_speed;
+  const double beta = settings_.swing;
+  const double travel = omega * time;
+  if (!(beta > 0.0)) {
+    *angle = travel;
+    *rate = omega;
+    return;
+  }
+  // Triangle wave of amplitude beta: up from 0 to beta, down to -beta, up to 0, period 4 beta.
+  const double phase = std::fmod(travel, 4.0 * beta);
+  if (phase < beta) {
+    *angle = phase;
+    *rate = omega;
+  } else if (phase < 3.0 * beta) {
+    *angle = 2.0 * beta - phase;
+    *rate = -omega;
+  } else {
+    *angle = phase - 4.0 * beta;
+    *rate = omega;
+  }
+}
+
 void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   time_ = time;
+  out->orientation = Eigen::Quaterniond::Identity();
+  out->angular_velocity.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     // Computed from the time, never accumulated: the axial position is exact at every tick.
     position_.y() = -settings_.start_offset + settings_.speed * time;
     velocity_.y() = settings_.speed;
+  } else if (settings_.mode == Settings::Mode::kConstantRotation) {
+    double angle = 0.0, rate = 0.0;
+    Twist(time, &angle, &rate);
+    // Reduced to (-pi, pi] before the half angle: the quaternion stays in one hemisphere and the
+    // twist MatingPoseOf reads back is the angle itself, to rounding.
+    angle = std::remainder(angle, 2.0 * M_PI);
+    out->orientation = Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, std::sin(0.5 * angle), 0.0);
+    out->angular_velocity.y() = rate;
   }
   out->time = time;
   out->position = position_;
-  out->orientation = Eigen::Quaterniond::Identity();
   out->velocity = velocity_;
-  out->angular_velocity.setZero();
   out->buttons = 0;
   out->delivered = delivered_;
   out->settle_load.setZero();
-  if (settings_.mode == Settings::Mode::kConstantSpeed &&
+  if (settings_.mode != Settings::Mode::kScripted &&
       settings_.radial == Settings::Radial::kQuasiStatic && position_.y() >= 0.0) {
     out->settle_load = Eigen::Vector2d(0.0, -settings_.radial_load);
   }
@@ -144,7 +191,7 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
 void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
   delivered_ = wrench;
   const double h = period_;
-  if (settings_.mode == Settings::Mode::kConstantSpeed) {
+  if (settings_.mode != Settings::Mode::kScripted) {
     const double m = mass();
     // Held on the axis by the robot until the leading end is inside; with no weight, no mass;
     // settled by the stage in the quasi-static mode.

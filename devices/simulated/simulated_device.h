@@ -18,7 +18,7 @@ struct Waypoint {
 };
 
 struct Settings {
-  enum class Mode { kConstantSpeed, kScripted };
+  enum class Mode { kConstantSpeed, kConstantRotation, kScripted };
   Mode mode = Mode::kConstantSpeed;
 
   // kConstantSpeed: the paper's case-study robot.
@@ -31,6 +31,16 @@ struct Settings {
   // paper's case study describes it; kDynamic integrates the part's radial motion (below).
   enum class Radial { kQuasiStatic, kDynamic };
   Radial radial = Radial::kQuasiStatic;
+
+  // kConstantRotation: a drive turning the moving part about the mating axis y at a constant
+  // angular speed, its leading end held at the entrance (depth 0: a captive part such as a
+  // bearing's ball, whose analyzer ignores the depth). radial_load, radial_damping and radial act
+  // as in kConstantSpeed.
+  double angular_speed = 0.0;  // rad/s, > 0
+  // Half angle beta of an oscillation (ISO 12240 / maker catalogues: one full oscillation sweeps
+  // 4 beta): 0 for continuous rotation, else the angle runs 0 -> +beta -> -beta -> +beta ... at
+  // angular_speed (a triangle wave: constant speed, reversing at the ends).
+  double swing = 0.0;  // rad, [0, pi]
 
   // kScripted: a hand (mass, spring-damper) pulled along straight segments between waypoints.
   std::vector<Waypoint> waypoints;  // times strictly increasing
@@ -45,6 +55,11 @@ struct Settings {
 //
 // Constant speed: the robot drives the leading end along +y at `speed`, exactly: y(t) =
 // -start_offset + speed * t, whatever force is rendered (a position-controlled robot axis).
+//
+// Constant rotation: the drive turns the part about y at `angular_speed`, continuously or
+// oscillating by +-`swing`, whatever torque is rendered (a position-controlled rotary axis), with
+// the leading end at the entrance (y = 0) from the first tick: the orientation's twist about y is
+// the mating pose's angle and angular_velocity.y its rate. Radially it is the robot below.
 //
 // Radial, quasi-static (the default, `radial: quasi_static`): once the leading end is inside, the
 // device asks the constrained stage to settle the part under its weight (DeviceState::settle_load)
@@ -118,6 +133,8 @@ class SimulatedDevice final : public Device {
 
  private:
   void Target(double time, Eigen::Vector3d* position, Eigen::Vector3d* velocity) const noexcept;
+  // kConstantRotation: the twist about y and its rate at `time`, from the time alone (exact).
+  void Twist(double time, double* angle, double* rate) const noexcept;
 
   Settings settings_;
   double period_ = 1e-3;

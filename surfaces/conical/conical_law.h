@@ -33,6 +33,8 @@ class TaperPressFitLaw final : public ResistanceLaw {
   double pressure_per_interference() const { return pressure_per_interference_; }
 
  protected:
+  // The Lame coefficient at the hole's mean diameter, the one every cell's pressure uses.
+  double DoPressurePerInterference() const override { return pressure_per_interference_; }
   void DoPrepare(const PartSpec& inner, const PartSpec& outer,
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,

@@ -1,5 +1,6 @@
 #include "surfaces/planar/planar_law.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -49,6 +50,11 @@ void PlanarGpsLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   wall_factor_ = (1.0 - outer.material.poisson * outer.material.poisson) /
                  (std::numbers::pi * outer.material.youngs_modulus);
   faces_ = g.faces();
+  full_length_ = std::min(g.length(), PlanarGeometryOf(outer).length());
+}
+
+double PlanarGpsLaw::DoPressurePerInterference() const {
+  return PressurePerInterferenceAt(full_length_);
 }
 
 double PlanarGpsLaw::PressurePerInterferenceAt(double engaged_length) const noexcept {

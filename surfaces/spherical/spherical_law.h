@@ -39,6 +39,8 @@ class KnuckleBearingLaw final : public ResistanceLaw {
   double friction_arm() const { return arm_; }
 
  protected:
+  // The thick-shell coefficient every socket cell's pressure uses.
+  double DoPressurePerInterference() const override { return pressure_per_interference_; }
   void DoPrepare(const PartSpec& inner, const PartSpec& outer,
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -55,7 +56,34 @@ waypoints:
   EXPECT_DOUBLE_EQ(s.waypoints[1].time, 2.0);
 }
 
+TEST(SimulatedConfigTest, ReadsARotaryDriveInDegrees) {
+  SimulatedDevice device;
+  device.Configure(
+      Node("mode: constant_rotation\nangular_speed: 15 deg/s\nswing: 15 deg\n"
+           "radial_load: 1 kN\n"));
+  const Settings& s = device.settings();
+  EXPECT_EQ(s.mode, Settings::Mode::kConstantRotation);
+  EXPECT_NEAR(s.angular_speed, 15.0 * M_PI / 180.0, 1e-15);
+  EXPECT_NEAR(s.swing, 15.0 * M_PI / 180.0, 1e-15);
+  EXPECT_DOUBLE_EQ(s.radial_load, 1000.0);
+  EXPECT_EQ(s.radial, Settings::Radial::kQuasiStatic);
+  device.Configure(Node("mode: constant_rotation\nangular_speed: 2 rad/s\n"));
+  EXPECT_DOUBLE_EQ(device.settings().angular_speed, 2.0);
+  EXPECT_EQ(device.settings().swing, 0.0);  // continuous rotation
+}
+
 TEST(SimulatedConfigTest, RefusesBadKeysWithTheirPath) {
+  EXPECT_NE(ErrorOf("mode: constant_rotation\nangular_speed: 15 mm/s").find("device.angular_speed"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("mode: constant_rotation\nangular_speed: 0 deg/s").find("device.angular_speed"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("mode: constant_rotation\nangular_speed: 1 rad/s\nspeed: 1 mm/s").find("speed"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("mode: constant_rotation\nangular_speed: 1 rad/s\nswing: 200 deg")
+                .find("device.swing"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("mode: constant_rotation\nswing: 10 deg").find("angular_speed"),
+            std::string::npos);
   EXPECT_NE(ErrorOf("speed: 10 mm").find("device.speed"), std::string::npos);
   EXPECT_NE(ErrorOf("speed: 10 mm/s\nradial_lod: 2 N").find("radial_lod"), std::string::npos);
   EXPECT_NE(ErrorOf("speed: -1 mm/s").find("device.speed"), std::string::npos);

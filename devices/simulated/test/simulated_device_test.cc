@@ -269,6 +269,85 @@ TEST(SimulatedHandTest, FollowsTheWaypointsAndYieldsToAForceByItsStiffness) {
   EXPECT_NEAR(state.velocity.norm(), 0.0, 1e-9);
 }
 
+Settings Rotor(double angular_speed, double swing, double load) {
+  Settings s;
+  s.mode = Settings::Mode::kConstantRotation;
+  s.angular_speed = angular_speed;
+  s.swing = swing;
+  s.radial_load = load;
+  return s;
+}
+
+// The twist about y of the reported orientation (what the runtime's MatingPoseOf reads).
+double TwistOf(const DeviceState& s) {
+  return 2.0 * std::atan2(s.orientation.y(), s.orientation.w());
+}
+
+TEST(SimulatedRotorTest, TurnsAtTheAngularSpeedAboutTheAxisAtTheEntrance) {
+  const double omega = 0.3;
+  for (int n : {0, 1, 250, 4000, 30000}) {
+    SimulatedDevice d;
+    d.Configure(Rotor(omega, 0.0, 1000.0));
+    d.Start(kPeriod);
+    const DeviceState s = Drive(d, n, [](const DeviceState&) {
+      Wrench w;
+      w.force = Eigen::Vector3d(0.0, 0.0, 1000.0);
+      w.torque = Eigen::Vector3d(0.0, -5.0, 0.0);  // a drive turns whatever the torque
+      return w;
+    });
+    const double expected = std::remainder(omega * n * kPeriod, 2.0 * M_PI);
+    EXPECT_NEAR(TwistOf(s), expected, 1e-12) << n;
+    EXPECT_NEAR(s.orientation.norm(), 1.0, 1e-15);
+    // Only a twist about y: the part's axis stays the mating axis (the hand-over's alignment).
+    EXPECT_NEAR(s.orientation.toRotationMatrix()(1, 1), 1.0, 1e-15);
+    EXPECT_EQ(s.angular_velocity, Eigen::Vector3d(0.0, omega, 0.0));
+    // Held at the entrance (captive), settled by the stage under its load from the first tick.
+    EXPECT_EQ(s.position, Eigen::Vector3d::Zero());
+    EXPECT_EQ(s.velocity, Eigen::Vector3d::Zero());
+    EXPECT_EQ(s.settle_load, Eigen::Vector2d(0.0, -1000.0));
+  }
+}
+
+TEST(SimulatedRotorTest, OscillatesBetweenPlusAndMinusTheSwingAtConstantSpeed) {
+  const double omega = 15.0 * M_PI / 180.0, beta = 15.0 * M_PI / 180.0;
+  SimulatedDevice d;
+  d.Configure(Rotor(omega, beta, 0.0));
+  d.Start(kPeriod);
+  // A full oscillation sweeps 4 beta: 4 s here. Over two of them the angle stays within +-beta,
+  // reaches both ends, moves by omega * h each tick in the direction of the reported rate (but
+  // at a reversal), and is back at 0 after each period.
+  const int period_ticks = static_cast<int>(std::lround(4.0 * beta / omega / kPeriod));
+  ASSERT_EQ(period_ticks, 4000);
+  DeviceState s;
+  double previous = 0.0, previous_rate = 0.0, lowest = 0.0, highest = 0.0;
+  int reversals = 0;
+  for (int k = 0; k <= 2 * period_ticks; ++k) {
+    d.Read(k * kPeriod, &s);
+    d.Write(Wrench{});
+    const double angle = TwistOf(s);
+    ASSERT_LE(std::abs(angle), beta + 1e-12) << k;
+    EXPECT_EQ(std::abs(s.angular_velocity.y()), omega);
+    lowest = std::min(lowest, angle);
+    highest = std::max(highest, angle);
+    if (k > 0) {
+      if (s.angular_velocity.y() != previous_rate) {
+        ++reversals;
+      } else {
+        EXPECT_NEAR(angle - previous, previous_rate * kPeriod, 1e-12) << k;
+      }
+    }
+    if (k % period_ticks == 0) {
+      EXPECT_NEAR(angle, 0.0, 1e-12) << k;
+    }
+    previous = angle;
+    previous_rate = s.angular_velocity.y();
+  }
+  EXPECT_NEAR(highest, beta, 1e-12);
+  EXPECT_NEAR(lowest, -beta, 1e-12);
+  EXPECT_EQ(reversals, 4);
+  EXPECT_EQ(s.settle_load, Eigen::Vector2d(0.0, 0.0));  // no load, nothing to settle
+}
+
 TEST(SimulatedDeviceTest, RefusesSettingsOutOfRange) {
   SimulatedDevice device;
   Settings s = Robot(2.0);
@@ -289,6 +368,13 @@ TEST(SimulatedDeviceTest, RefusesSettingsOutOfRange) {
   s.waypoints = {{0.0, Eigen::Vector3d::Zero()}};
   s.hand_mass = 0.0;
   EXPECT_THROW(device.Configure(s), UserError);
+  EXPECT_THROW(device.Configure(Rotor(0.0, 0.0, 0.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(-1.0, 0.0, 0.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(1.0, -0.1, 0.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(1.0, 4.0, 0.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(1.0, 0.1, -5.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(std::nan(""), 0.1, 0.0)), UserError);
+  EXPECT_NO_THROW(device.Configure(Rotor(1.0, M_PI, 5.0)));
 }
 
 }  // namespace

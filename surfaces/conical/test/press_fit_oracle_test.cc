@@ -119,6 +119,23 @@ TEST(ConicalPressFit, PressInAndOutForcesAreDin7190) {
   EXPECT_NEAR(p * 1e-6, 22.620, 0.001);
 }
 
+TEST(ConicalPressFit, ReportsTheLameCoefficientOfItsForcesForPressureMaps) {
+  Model model;
+  Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
+  const Oracle oracle;
+  // Closed form at dm = 8.2 mm, d2 = 24 mm: 0.1 mm advance is 1 um radial interference.
+  const double expected = oracle.Pressure(0.1e-3) / 1e-6;
+  EXPECT_NEAR(model.law.PressurePerInterference(), expected, 1e-9 * expected);
+  EXPECT_NEAR(model.law.PressurePerInterference() * 1e-12, 22.620, 0.001);  // MPa/um
+  // The coefficient is the one behind the forces: a uniform interference delta pushes in with
+  // P delta pi dm L (mu + tan alpha).
+  const double advance = 0.3e-3, delta = 0.5 * advance * kTaper;
+  const Wrench in = Evaluate(model, kHoleLength + advance, 0.1);
+  const double p_from_force =
+      -in.force.y() / (M_PI * oracle.dm * kHoleLength * (kMu + oracle.tan_alpha));
+  EXPECT_NEAR(model.law.PressurePerInterference() * delta, p_from_force, 1e-9 * p_from_force);
+}
+
 TEST(ConicalPressFit, AtRestOnlyTheWedgeRemainsAndFrictionIsSmooth) {
   Model model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
@@ -306,6 +323,49 @@ TEST(ConicalPressFit, NonFinitePosesGiveNoContact) {
     EXPECT_EQ(w.force.norm(), 0.0);
   }
   EXPECT_EQ(Evaluate(model, 20.1e-3, 0.01, 0.0, Eigen::Vector2d(nan, 0.0)).force.norm(), 0.0);
+}
+
+}  // namespace
+}  // namespace fitfeel::conical
+
+namespace fitfeel::conical {
+namespace {
+
+TEST(ConicalPressFit, RadialSupportGrowsMonotonicallyWithOffsetForAnyForm) {
+  // The constrained stage settles a part under its radial load by bracketing the root of the
+  // support along the load: it needs the contact's push against an offset direction u,
+  // -F . u, to be non-decreasing in the offset s along u. Each cell adds P cos(alpha) delta_k
+  // (n_k . u) with delta_k non-decreasing in s (n_k . u): exactly monotone. Checked over seeds
+  // with the taper-pin scenario's tolerances, through seating, in 8 directions.
+  PartSpec pin = test::Pin();
+  PartSpec hole = test::Hole();
+  pin.size.lower_deviation = -58e-6;
+  hole.size.upper_deviation = 58e-6;
+  pin.form.tolerance[FormCharacteristic::kRoundness] = 6e-6;
+  pin.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 9e-6;
+  pin.form.tolerance[FormCharacteristic::kAxisStraightness] = 15e-6;
+  hole.form.tolerance[FormCharacteristic::kRoundness] = 9e-6;
+  hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 15e-6;
+  int rising = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    Model model;
+    Prepare(&model, pin, hole, Resolution{10, 72}, seed);
+    for (double past : {1e-3, 3e-3, 5e-3, 6e-3}) {
+      for (int d = 0; d < 8; ++d) {
+        const Eigen::Vector2d u(std::cos(d * M_PI / 4), std::sin(d * M_PI / 4));
+        double previous = -std::numeric_limits<double>::infinity();
+        for (double s = -60e-6; s <= 60e-6; s += 0.5e-6) {
+          const Wrench w = Evaluate(model, kHoleLength + past, 0.0, 0.0, s * u);
+          const double support = -(w.force.x() * u.x() + w.force.z() * u.y());
+          ASSERT_GE(support, previous - 1e-9 * std::abs(previous))
+              << seed << " " << past << " " << s;
+          if (support > previous + 1.0) ++rising;
+          previous = support;
+        }
+      }
+    }
+  }
+  EXPECT_GT(rising, 1000);  // the walls are reached: the property is not checked on zeros
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 // The planar law against hand calculations of its elastic model (README.md).
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "surfaces/planar/planar_contact_analyzer.h"
+#include "surfaces/planar/planar_generator.h"
 #include "surfaces/planar/planar_grid.h"
 #include "surfaces/planar/planar_law.h"
 #include "surfaces/planar/test/test_support.h"
@@ -99,6 +101,78 @@ TEST(PlanarLawTest, ClearanceSpringWithCoulombFrictionIsEquationNineInOneAxis) {
   const double k =
       PressurePerInterference(8e-3, 3e-3, 40e-3, 210e9, 0.3, 210e9, 0.3) * 3e-3 * 40e-3;
   EXPECT_NEAR(w.force.x(), k * 3e-6, 1e-6 * k * 3e-6);
+}
+
+TEST(PlanarLawTest, ReportsThePressurePerInterferenceAtFullEngagementForPressureMaps) {
+  // Key 40 mm long in a 60 mm keyway: full engagement is the key's 40 mm, h = 3 mm: the hand
+  // calculation above, 20.4708 MPa per um.
+  PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);
+  ModelSettings settings;
+  settings.friction = 0.15;
+  PlanarGpsLaw law;
+  law.Prepare(key, slot, settings);
+  EXPECT_NEAR(law.PressurePerInterference() * 1e-12, 20.4708, 0.0001);
+  EXPECT_EQ(law.PressurePerInterference(), law.PressurePerInterferenceAt(40e-3));
+  // A keyway shorter than the key: its length is the full engagement.
+  PartSpec short_slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 25e-3, 3e-3);
+  law.Prepare(key, short_slot, settings);
+  const double expected = PressurePerInterference(8e-3, 3e-3, 25e-3, 210e9, 0.3, 210e9, 0.3);
+  EXPECT_NEAR(law.PressurePerInterference(), expected, 1e-12 * expected);
+}
+
+TEST(PlanarLawTest, LateralSupportGrowsMonotonicallyWithOffsetForAnyForm) {
+  // The constrained stage settles a part under its radial load by bracketing the root of the
+  // support along the load: -F . u must be non-decreasing in the offset s along u. In clearance
+  // the spring pushes back from the assembly space (x minus its projection on a convex set: a
+  // monotone map), under interference about the balance position. Over seeds, for a key (one
+  // pair of flanks) and a square shaft (two pairs), at partial and full engagement.
+  for (int faces : {2, 4}) {
+    PartSpec key = MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 2.6e-3, faces);
+    PartSpec slot = MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 45e-3, 2.6e-3, faces);
+    key.form.tolerance[FormCharacteristic::kFlatness] = 12e-6;
+    slot.form.tolerance[FormCharacteristic::kFlatness] = 12e-6;
+    const SurfaceGrid gk = PlanarDiscretizer().Discretize(key, Resolution{});
+    const SurfaceGrid gs = PlanarDiscretizer().Discretize(slot, Resolution{});
+    int rising = 0;
+    for (int seed = 1; seed <= 12; ++seed) {
+      Rng rng(seed);
+      const SkinModelShape k =
+          PlanarVariationGenerator().Generate(key, gk, TextureMode::kExpected, rng);
+      const SkinModelShape s =
+          PlanarVariationGenerator().Generate(slot, gs, TextureMode::kExpected, rng);
+      ModelSettings settings;
+      settings.friction = 0.15;
+      PlanarContactAnalyzer analyzer;
+      analyzer.Prepare(key, k, slot, s, settings);
+      PlanarGpsLaw law;
+      law.Prepare(key, slot, settings);
+      MatingMotion motion;
+      motion.velocity.y() = 0.01;
+      for (double depth : {20e-3, 40e-3}) {
+        for (int d = 0; d < 8; ++d) {
+          const Eigen::Vector2d u(std::cos(d * std::numbers::pi / 4 + 0.1),
+                                  std::sin(d * std::numbers::pi / 4 + 0.1));
+          double previous = -std::numeric_limits<double>::infinity();
+          for (double t = -60e-6; t <= 60e-6; t += 0.5e-6) {
+            MatingPose pose;
+            pose.depth = depth;
+            pose.offset = t * u;
+            ContactState state;
+            analyzer.Evaluate(pose, &state);
+            Wrench w;
+            law.Evaluate(state, motion, &w);
+            const double support = -(w.force.x() * u.x() + w.force.z() * u.y());
+            ASSERT_GE(support, previous - 1e-9 * std::abs(previous))
+                << faces << " " << seed << " " << depth << " " << t;
+            if (support > previous + 1.0) ++rising;
+            previous = support;
+          }
+        }
+      }
+    }
+    EXPECT_GT(rising, 500) << faces;  // the walls are reached
+  }
 }
 
 TEST(PlanarLawTest, NoForceWhenNotEngagedOrAtRest) {
