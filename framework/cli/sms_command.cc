@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "framework/cli/commands.h"
+#include "framework/runtime/prepare.h"
 #include "framework/core/error.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/registry.h"
@@ -112,15 +113,9 @@ void Run(const Options& options) {
   const std::uint64_t seed = options.seed.value_or(scene.run.seed);
   // Both parts are generated, inner first, from one generator seeded like a run, so the shapes
   // printed here are the ones `fitfeel run` feels with the same seed.
-  const auto discretizer = scene.surface->MakeDiscretizer();
-  const auto generator = scene.surface->MakeVariationGenerator();
-  if (scene.model.extra) generator->Configure(*scene.model.extra);
   Rng rng(seed);
-  std::vector<SkinModelShape> shapes;
-  for (const PartSpec* p : parts) {
-    const SurfaceGrid grid = discretizer->Discretize(*p, scene.model.resolution);
-    shapes.push_back(generator->Generate(*p, grid, scene.model.texture, rng));
-  }
+  SkinModelShapes drawn = GenerateSkinModelShapes(scene, rng);
+  const std::vector<SkinModelShape> shapes = {std::move(drawn.inner), std::move(drawn.outer)};
   bool all_pass = true;
   for (size_t k = 0; k < parts.size(); ++k) {
     const PartSpec& p = *parts[k];

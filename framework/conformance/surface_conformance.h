@@ -25,6 +25,7 @@
 #include "framework/model/resistance_law.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/registry.h"
+#include "framework/runtime/prepare.h"
 #include "framework/scenario/scene.h"
 
 namespace fitfeel::conformance {
@@ -64,15 +65,10 @@ class SurfaceConformance : public ::testing::Test {
   // forces.
   void PrepareModel(std::uint64_t seed, std::unique_ptr<ContactAnalyzer>* analyzer,
                     std::unique_ptr<ResistanceLaw>* law) const {
-    const auto discretizer = scene_.surface->MakeDiscretizer();
-    const auto generator = scene_.surface->MakeVariationGenerator();
     Rng rng(seed);
-    const SkinModelShape inner = generator->Generate(
-        scene_.inner, discretizer->Discretize(scene_.inner, scene_.model.resolution),
-        scene_.model.texture, rng);
-    const SkinModelShape outer = generator->Generate(
-        scene_.outer, discretizer->Discretize(scene_.outer, scene_.model.resolution),
-        scene_.model.texture, rng);
+    const SkinModelShapes shapes = GenerateSkinModelShapes(scene_, rng);
+    const SkinModelShape& inner = shapes.inner;
+    const SkinModelShape& outer = shapes.outer;
     *analyzer = scene_.surface->MakeContactAnalyzer();
     (*analyzer)->Prepare(scene_.inner, inner, scene_.outer, outer, scene_.model);
     *law = scene_.surface->MakeLaw(scene_.model.law);

@@ -4,6 +4,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/surface_type.h"
+#include "framework/runtime/prepare.h"
 
 namespace fitfeel::plot {
 
@@ -11,20 +12,12 @@ SceneShapes GenerateSceneShapes(Scene scene, std::optional<std::uint64_t> seed) 
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
-  const auto discretizer = scene.surface->MakeDiscretizer();
-  const auto generator = scene.surface->MakeVariationGenerator();
-  if (!discretizer || !generator) {
-    throw UnsupportedError("surface type '" + scene.surface_id +
-                           "' provides no discretizer or variation generator, so it has no skin "
-                           "model shapes to draw");
-  }
   SceneShapes shapes;
   shapes.seed = seed.value_or(scene.run.seed);
   Rng rng(shapes.seed);
-  const SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
-  const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
-  shapes.inner = generator->Generate(scene.inner, inner_grid, scene.model.texture, rng);
-  shapes.outer = generator->Generate(scene.outer, outer_grid, scene.model.texture, rng);
+  SkinModelShapes drawn = GenerateSkinModelShapes(scene, rng);
+  shapes.inner = std::move(drawn.inner);
+  shapes.outer = std::move(drawn.outer);
   shapes.scene = std::move(scene);
   return shapes;
 }

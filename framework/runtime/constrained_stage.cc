@@ -135,8 +135,20 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   const double across_tolerance = 1e-2 * weight;
   Eigen::Vector2d at = last_settled_;
   double s = 0.0;
-  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) return false;
-  at += s * down;
+  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) {
+    // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
+    // which the planar model leaves out), but the part still floats sideways to where the walls
+    // it touches balance, rather than being held off that balance by the device.
+    // From the device's own pose; a part that touches nothing sideways stays where it is held.
+    at = out->pose.offset;
+    double t = 0.0;
+    if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) {
+      return false;
+    }
+    at += t * across;
+  } else {
+    at += s * down;
+  }
   for (int sweep = 0; sweep < 4; ++sweep) {
     double t = 0.0;
     if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) break;

@@ -21,6 +21,31 @@ PreparedScene::~PreparedScene() = default;
 PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
 PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
 
+SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng) {
+  if (!scene.surface) {
+    throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
+  }
+  // One discretizer and generator for both parts: the surface type decides the grid of each part
+  // from its own geometry.
+  SkinModelShapes shapes;
+  auto t = Clock::now();
+  const auto discretizer = scene.surface->MakeDiscretizer();
+  const auto generator = scene.surface->MakeVariationGenerator();
+  if (!discretizer || !generator) {
+    throw UnsupportedError("surface type '" + scene.surface_id +
+                           "' provides no discretizer or variation generator");
+  }
+  if (scene.model.extra) generator->Configure(*scene.model.extra);
+  const SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
+  const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
+  shapes.discretize_seconds = SecondsSince(t);
+  t = Clock::now();
+  shapes.inner = generator->Generate(scene.inner, inner_grid, scene.model.texture, rng);
+  shapes.outer = generator->Generate(scene.outer, outer_grid, scene.model.texture, rng);
+  shapes.generate_seconds = SecondsSince(t);
+  return shapes;
+}
+
 PreparedScene Prepare(const Scene& scene) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
@@ -35,28 +60,13 @@ PreparedScene Prepare(const Scene& scene) {
   prepared.rotational = scene.surface->rotational();
   prepared.rng.seed(scene.run.seed);
 
-  // One discretizer and generator for both parts: the surface type decides the grid of each part
-  // from its own geometry. The inner part is drawn first: the order of draws is part of the
-  // determinism contract (same scene and seed, same skin model shapes).
+  SkinModelShapes shapes = GenerateSkinModelShapes(scene, prepared.rng);
+  prepared.discretize_seconds = shapes.discretize_seconds;
+  prepared.generate_seconds = shapes.generate_seconds;
+  prepared.inner_sms = std::make_unique<SkinModelShape>(std::move(shapes.inner));
+  prepared.outer_sms = std::make_unique<SkinModelShape>(std::move(shapes.outer));
+
   auto t = Clock::now();
-  const auto discretizer = scene.surface->MakeDiscretizer();
-  const auto generator = scene.surface->MakeVariationGenerator();
-  if (!discretizer || !generator) {
-    throw UnsupportedError("surface type '" + scene.surface_id +
-                           "' provides no discretizer or variation generator");
-  }
-  SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
-  SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
-  prepared.discretize_seconds = SecondsSince(t);
-
-  t = Clock::now();
-  prepared.inner_sms = std::make_unique<SkinModelShape>(
-      generator->Generate(scene.inner, inner_grid, scene.model.texture, prepared.rng));
-  prepared.outer_sms = std::make_unique<SkinModelShape>(
-      generator->Generate(scene.outer, outer_grid, scene.model.texture, prepared.rng));
-  prepared.generate_seconds = SecondsSince(t);
-
-  t = Clock::now();
   prepared.analyzer = scene.surface->MakeContactAnalyzer();
   if (!prepared.analyzer) {
     throw UnsupportedError("surface type '" + scene.surface_id + "' provides no contact analyzer");

@@ -40,6 +40,21 @@ struct FITFEEL_API PreparedScene {
   double total_seconds = 0.0;
 };
 
+// Both parts' skin model shapes, drawn as every command draws them.
+struct SkinModelShapes {
+  SkinModelShape inner;
+  SkinModelShape outer;
+  double discretize_seconds = 0.0;
+  double generate_seconds = 0.0;
+};
+
+// Discretizes both parts, then draws the inner part's skin model shape and then the outer part's
+// from `rng`, with one variation generator configured with the scenario's model.options. The
+// order of draws is part of the determinism contract: `fitfeel run`, `sms` and `plot sms` call
+// this so that the same scene and seed give the same shapes everywhere. Works for surface types
+// without a law too.
+FITFEEL_API SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng);
+
 // Builds the prepared scene: seeds the generator from scene.run.seed, discretizes and generates
 // the skin model shape of the inner part and then of the outer part with the surface's
 // Discretizer and VariationGenerator, prepares the contact analyzer and the law. Throws
