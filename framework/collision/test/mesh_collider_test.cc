@@ -88,9 +88,21 @@ TEST(MeshColliderTest, ACentredShaftPassesTheEntrance) {
     collider.Query(At(0.5 * slack * std::cos(a), 10e-3, 0.5 * slack * std::sin(a)), &p);
     EXPECT_FALSE(p.contact) << a;
   }
-  // Far enough off the axis, the shaft's wall enters the bore's, with a lateral normal.
-  collider.Query(At(4.0 * slack, 10e-3, 0.0), &p);
-  EXPECT_TRUE(p.contact);
+  // Far enough off the axis, the shaft's wall enters the bore's: pushed back towards the axis by
+  // the offset less the slack, to within the chordal error (the way out found is along a facet
+  // normal, within pi / n of the offset's direction).
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  std::uniform_real_distribution<double> offset(3.0 * slack, 0.3e-3);
+  for (int i = 0; i < 50; ++i) {
+    const double a = angle(gen), s = offset(gen);
+    collider.Query(At(s * std::cos(a), 10e-3, s * std::sin(a)), &p);
+    ASSERT_TRUE(p.contact);
+    EXPECT_GE(p.depth, s - 2.0 * slack) << s;
+    EXPECT_LE(p.depth, s) << s;
+    const Eigen::Vector3d inward(-std::cos(a), 0.0, -std::sin(a));
+    EXPECT_GE(p.normal.dot(inward), std::cos(2.0 * M_PI / kFacets)) << a;
+  }
 }
 
 TEST(MeshColliderTest, RefusesBadMeshes) {
