@@ -39,7 +39,7 @@ struct Penetration {
 class FITFEEL_API MeshCollider {
  public:
   // Throws UserError for an empty mesh, an index out of range or max_contacts < 1.
-  MeshCollider(const TriangleMesh& fixed, const TriangleMesh& moving, int max_contacts = 256);
+  MeshCollider(const TriangleMesh& fixed, const TriangleMesh& moving, int max_contacts = 64);
   ~MeshCollider();
   MeshCollider(const MeshCollider&) = delete;
   MeshCollider& operator=(const MeshCollider&) = delete;
