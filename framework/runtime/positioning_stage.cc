@@ -35,9 +35,12 @@ MatingPose MatingPoseOf(const DeviceState& device) noexcept {
 
 double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness) {
   if (!(contact_stiffness >= 0.0) || !std::isfinite(contact_stiffness) ||
-      !(device_max_stiffness >= 0.0) || !std::isfinite(device_max_stiffness)) {
-    throw UserError("free-motion stiffness: contact and device stiffness must be finite and >= 0");
+      !(device_max_stiffness >= 0.0)) {
+    throw UserError(
+        "free-motion stiffness: the contact stiffness must be finite and >= 0, the device's "
+        "largest stable stiffness >= 0");
   }
+  // 0 or infinity: the device states no limit (a simulated device integrates implicitly).
   if (device_max_stiffness > 0.0 && contact_stiffness > device_max_stiffness) {
     return device_max_stiffness;
   }

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <new>
 #include <random>
@@ -147,6 +148,8 @@ TEST(PositioningCollisionTest, FreeStiffnessIsTheContactStiffnessCappedByTheDevi
   EXPECT_EQ(FreeMotionStiffness(2e6, 1.5e3), 1.5e3);
   EXPECT_EQ(FreeMotionStiffness(1e3, 1.5e3), 1e3);
   EXPECT_EQ(FreeMotionStiffness(2e6, 0.0), 2e6);  // device states no limit
+  EXPECT_EQ(FreeMotionStiffness(2e6, std::numeric_limits<double>::infinity()), 2e6);
+  EXPECT_THROW(FreeMotionStiffness(std::numeric_limits<double>::infinity(), 0.0), UserError);
   EXPECT_THROW(FreeMotionStiffness(-1.0, 0.0), UserError);
   EXPECT_THROW(FreeMotionStiffness(1.0, std::nan("")), UserError);
   PositioningStage::Options o;
