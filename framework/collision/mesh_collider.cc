@@ -137,15 +137,14 @@ void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, Penetration* out)
       best = i;
     }
   }
-  if (!(best_overlap > 0.0) || !std::isfinite(best_overlap)) {
-    out->depth = 0.0;  // touching: the triangles meet without overlapping along some axis
-  } else {
-    out->depth = best_overlap;
-  }
   const fcl::Contactd& c = impl.result.getContact(best);
-  // FCL's normal points from o1 (the moving part) to o2 (the fixed one).
-  out->normal = -c.normal.normalized();
+  const Eigen::Vector3d normal = -c.normal.normalized();
   out->point = c.pos;
+  // Touching (no overlap along some axis) or no usable normal: in contact, but nothing to push.
+  if (!(best_overlap > 0.0) || !std::isfinite(best_overlap) || !normal.allFinite()) return;
+  out->depth = best_overlap;
+  // FCL's normal points from o1 (the moving part) to o2 (the fixed one); ours the other way.
+  out->normal = normal;
 }
 
 }  // namespace fitfeel
