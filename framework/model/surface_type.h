@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "framework/collision/coarse_mesh.h"
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
@@ -65,6 +66,18 @@ class FITFEEL_API SurfaceType {
   virtual std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const = 0;
   // Throws UserError naming the offered laws if `name` is not one of them.
   std::unique_ptr<ResistanceLaw> MakeLaw(std::string_view name) const;
+
+  // The parts' coarse meshes for collision in free motion (the positioning stage's FCL query),
+  // in the frames CoarseMeshes describes; built once before a run, never in the tick. Default:
+  // empty meshes, meaning this surface type models no collision in free motion (the moving part
+  // passes through the fixed one without resistance until the constrained stage takes over), so
+  // that a surface plugin without meshes still runs. Throws UserError if the parts cannot be
+  // meshed.
+  virtual CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+    (void)inner;
+    (void)outer;
+    return {};
+  }
 
  protected:
   virtual std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,

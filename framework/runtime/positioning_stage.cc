@@ -3,9 +3,23 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/collision/mesh_collider.h"
 #include "framework/core/error.h"
 
 namespace fitfeel {
+namespace {
+
+// Half a turn about z: (x, y, z) -> (-x, -y, z), a proper rotation, so triangles keep their
+// outward winding.
+TriangleMesh HalfTurnAboutZ(TriangleMesh mesh) {
+  for (Eigen::Vector3d& v : mesh.vertices) {
+    v.x() = -v.x();
+    v.y() = -v.y();
+  }
+  return mesh;
+}
+
+}  // namespace
 
 MatingPose MatingPoseOf(const DeviceState& device) noexcept {
   MatingPose pose;
@@ -19,6 +33,20 @@ MatingPose MatingPoseOf(const DeviceState& device) noexcept {
   return pose;
 }
 
+double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness) {
+  if (!(contact_stiffness >= 0.0) || !std::isfinite(contact_stiffness) ||
+      !(device_max_stiffness >= 0.0)) {
+    throw UserError(
+        "free-motion stiffness: the contact stiffness must be finite and >= 0, the device's "
+        "largest stable stiffness >= 0");
+  }
+  // 0 or infinity: the device states no limit (a simulated device integrates implicitly).
+  if (device_max_stiffness > 0.0 && contact_stiffness > device_max_stiffness) {
+    return device_max_stiffness;
+  }
+  return contact_stiffness;
+}
+
 PositioningStage::PositioningStage() : PositioningStage(Options{}) {}
 
 PositioningStage::PositioningStage(const Options& options) : options_(options) {
@@ -28,8 +56,27 @@ PositioningStage::PositioningStage(const Options& options) : options_(options) {
   if (!(options.capture_radius >= 0.0) || !std::isfinite(options.capture_radius)) {
     throw UserError("positioning stage: capture radius must be a finite length >= 0");
   }
+  if (!(options.free_stiffness >= 0.0) || !std::isfinite(options.free_stiffness)) {
+    throw UserError("positioning stage: free-motion stiffness must be finite and >= 0");
+  }
+  if (options.max_contacts < 1) {
+    throw UserError("positioning stage: max_contacts must be >= 1");
+  }
   cos_alignment_tolerance_ = std::cos(options.alignment_tolerance);
 }
+
+PositioningStage::PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving)
+    : PositioningStage(options) {
+  if (meshes.empty()) return;
+  if (moving == Role::kInner) {
+    collider_ = std::make_unique<MeshCollider>(meshes.outer, meshes.inner, options.max_contacts);
+  } else {
+    collider_ = std::make_unique<MeshCollider>(HalfTurnAboutZ(meshes.inner),
+                                               HalfTurnAboutZ(meshes.outer), options.max_contacts);
+  }
+}
+
+PositioningStage::~PositioningStage() = default;
 
 void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept {
   out->wrench.SetZero();
@@ -38,12 +85,27 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   out->stiffness = 0.0;
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
+  const Eigen::Quaterniond orientation = device.orientation.normalized();
   // cos(tilt) is the y component of the part's axis (the orientation's y column).
-  const double cos_tilt = device.orientation.normalized().toRotationMatrix()(1, 1);
+  const double cos_tilt = orientation.toRotationMatrix()(1, 1);
   const bool aligned = cos_tilt >= cos_alignment_tolerance_;
   const bool captured = out->pose.offset.norm() <= options_.capture_radius;
   const bool entered = out->pose.depth >= 0.0;
   out->next = (entered && aligned && captured) ? StageId::kConstrained : StageId::kPositioning;
+  if (collider_ == nullptr || out->next == StageId::kConstrained) return;
+  if (!device.position.allFinite() || !orientation.coeffs().allFinite()) return;
+
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = orientation.toRotationMatrix();
+  pose.translation() = device.position;
+  Penetration penetration;
+  collider_->Query(pose, &penetration);
+  if (!penetration.contact || !(penetration.depth > 0.0)) return;
+  const double k = options_.free_stiffness;
+  out->wrench.force = k * penetration.depth * penetration.normal;
+  // About the leading end, the point whose pose the device reports.
+  out->wrench.torque = (penetration.point - device.position).cross(out->wrench.force);
+  out->stiffness = k;
 }
 
 }  // namespace fitfeel

@@ -1,9 +1,15 @@
 #pragma once
 
+#include <memory>
+
+#include "framework/collision/coarse_mesh.h"
 #include "framework/core/export.h"
 #include "framework/device/stage.h"
+#include "framework/model/gps_spec.h"
 
 namespace fitfeel {
+
+class MeshCollider;
 
 // Frame convention of a run (shared by every stage and device): the scene frame is the fixed
 // part's mating frame. y is the mating axis, pointing in the direction of insertion; the fixed
@@ -11,14 +17,24 @@ namespace fitfeel {
 // the pose of the moving part's leading end on its axis, and the orientation whose y axis is the
 // moving part's axis. The insertion depth is then the y of the leading end.
 
-// Free motion before mating (paper section 3: "positioning stage"). Renders no resistance and
-// hands over to the constrained stage once the leading end has reached the entrance (depth >= 0)
-// with the part's axis aligned with the mating axis and inside the entrance's capture radius.
+// Free motion before mating (paper section 3: "positioning stage"). Collides the parts' coarse
+// meshes with FCL (architecture.md section 4: FCL here and only here, since mesh-mesh queries
+// between mated surfaces cost 1-35 ms) and renders a penalty force k_free * depth along the
+// contact normal, zero when free. Hands over to the constrained stage once the leading end has
+// reached the entrance (depth >= 0) with the part's axis aligned with the mating axis and inside
+// the entrance's capture radius; on the hand-over tick it renders nothing, since inside the
+// capture radius the entrance's edge break (which the coarse meshes do not model) guides the part
+// and the constrained stage owns the contact from the next tick.
 //
-// Not done yet: collision of the parts' coarse meshes with FCL while they move freely (the
-// architecture places FCL here and only here: mesh-mesh queries between mated surfaces cost
-// 1-35 ms). Until it is written, free motion is collision-free: a part that misses the entrance
-// passes through the fixed part's face without resistance.
+// Without coarse meshes (the default constructor, or a surface type whose MakeCoarseMeshes keeps
+// the default), free motion is collision-free: the part passes through the fixed one's face.
+//
+// Limits: the penalty uses the deepest of the first `max_contacts` triangle pairs FCL reports
+// (FCL stops at that count, so on a deep, wide overlap the deepest pair may not be among them);
+// for a flat end on a flat face the depth is exact, across faceted walls it is exact to within
+// the meshes' chordal error, and a wall-through-wall overlap (a tilted part well inside a bore)
+// reports FCL's triangle-pair depth, not a true minimum translation. `gap` stays unknown
+// (infinity): no distance query is made.
 class FITFEEL_API PositioningStage final : public Stage {
  public:
   struct Options {
@@ -31,22 +47,52 @@ class FITFEEL_API PositioningStage final : public Stage {
     // 0.5 mm x 45 degree edge break (ISO 13715's common default) guides an axis that far off into
     // the bore.
     double capture_radius = 0.5e-3;  // m
+    // Stiffness k_free of the free-motion penalty, N/m (see FreeMotionStiffness). 0 renders no
+    // force (the contact is still detected).
+    double free_stiffness = 0.0;
+    // Most triangle pairs one FCL query reports (its contact buffer is reserved for them). FCL's
+    // cost grows with it (positioning_tick_benchmark, 20 mm pair, 50 facets: about 0.17 ms CPU
+    // per tick in contact at 64, 0.09 us free); 64 keeps a face contact exact and a part pressed
+    // sideways into the bore within 20 degrees and one chordal error of the true way out (all
+    // pairs, 256: within 2 pi / n), at a quarter of the cost of enumerating them all.
+    int max_contacts = 64;
   };
 
+  // No coarse meshes: collision-free free motion.
   PositioningStage();
   // Throws UserError for a negative or non-finite option.
   explicit PositioningStage(const Options& options);
+  // Builds the FCL hierarchies of `meshes` once (see CoarseMeshes for their frames); `moving` is
+  // the part the device moves: when it is the outer one, both meshes are turned half a turn about
+  // z into the scene frame. Empty meshes mean no collision. Throws UserError for bad options or a
+  // mesh FCL refuses.
+  PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving);
+  ~PositioningStage() override;
+  PositioningStage(const PositioningStage&) = delete;
+  PositioningStage& operator=(const PositioningStage&) = delete;
 
   StageId id() const override { return StageId::kPositioning; }
   const Options& options() const { return options_; }
+  // True when coarse meshes were given: free motion collides.
+  bool collides() const { return collider_ != nullptr; }
 
  protected:
+  // Not re-entrant when collides(): the collider's FCL result buffer is reused each tick.
   void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept override;
 
  private:
   Options options_;
   double cos_alignment_tolerance_ = 1.0;
+  std::unique_ptr<MeshCollider> collider_;
 };
+
+// k_free for a scene: the scenario's contact stiffness (model.contact_stiffness, the k_p of
+// eq. 9, the one stiffness the scenario gives for a rigid contact), capped at the device's
+// largest stable stiffness when the device states one (finite and > 0; 0 or infinity mean no
+// limit): a face met in free motion is rendered as stiff as the device holds stably, never
+// stiffer than the mating contact itself. Throws UserError for a negative or NaN argument or a
+// non-finite contact stiffness.
+FITFEEL_API double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness);
 
 // The moving part's pose in the fixed part's mating frame (see the convention above): depth = y
 // of the leading end, offset = its (x, z), angle = the twist of the orientation about y.

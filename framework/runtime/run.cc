@@ -39,7 +39,13 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
 
   RunResult result;
   PreparedScene prepared = Prepare(scene);
-  PositioningStage positioning;
+  // Free motion collides the surface type's coarse meshes (none: collision-free), with the
+  // penalty stiffness the scenario's contact stiffness capped at the device's stable limit.
+  PositioningStage::Options free_motion;
+  free_motion.free_stiffness =
+      FreeMotionStiffness(scene.model.contact_stiffness, scene.device->spec().max_stiffness);
+  const PositioningStage positioning(
+      free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving);
   ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
 
   RunInfo& info = result.info;

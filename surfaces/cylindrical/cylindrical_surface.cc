@@ -5,6 +5,7 @@
 
 #include "framework/metrology/sms_conformance.h"
 #include "surfaces/cylindrical/contact_factory.h"
+#include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 #include "surfaces/cylindrical/cylindrical_variation_generator.h"
@@ -27,6 +28,11 @@ std::unique_ptr<VariationGenerator> CylindricalSurface::MakeVariationGenerator()
 
 std::unique_ptr<ContactAnalyzer> CylindricalSurface::MakeContactAnalyzer() const {
   return cylindrical::MakeContactAnalyzer();
+}
+
+CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
+                                                const PartSpec& outer) const {
+  return MakeCylindricalCoarseMeshes(inner, outer);
 }
 
 std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view name) const {

@@ -1,0 +1,55 @@
+// Cost of one positioning-stage tick with FCL coarse meshes (the paper pair's 20 mm fit: a
+// 60 mm shaft prism and a 20 mm bushing tube with a 30 mm hub, 50 facets each), free and in
+// contact: the end struck on the bushing's face, and a tilted part pressed into the bore's wall.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "framework/collision/coarse_mesh.h"
+#include "framework/runtime/positioning_stage.h"
+
+namespace fitfeel {
+namespace {
+
+PositioningStage MakeStage(int facets) {
+  CoarseMeshes meshes;
+  meshes.inner = MakeClosedCylinder(10e-3, -60e-3, 0.0, facets);
+  meshes.outer = MakeTube(10e-3, 15e-3, 0.0, 20e-3, facets);
+  PositioningStage::Options options;
+  options.free_stiffness = 2e3;
+  return PositioningStage(options, meshes, Role::kInner);
+}
+
+void Run(benchmark::State& state, const DeviceState& device) {
+  const PositioningStage stage = MakeStage(static_cast<int>(state.range(0)));
+  StageOutput out;
+  for (auto _ : state) {
+    stage.Evaluate(device, &out);
+    benchmark::DoNotOptimize(out.wrench.force.data());
+  }
+  state.counters["force_N"] = out.wrench.force.norm();
+}
+
+DeviceState At(double x, double y, double z, double tilt = 0.0) {
+  DeviceState s;
+  s.position = Eigen::Vector3d(x, y, z);
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitZ()));
+  return s;
+}
+
+void BM_PositioningTickFree(benchmark::State& state) { Run(state, At(3e-3, -2e-3, 0.0)); }
+// Bounding volumes overlap (the shaft runs 50 um beside the hub's outside), no triangle pair does.
+void BM_PositioningTickNearMiss(benchmark::State& state) { Run(state, At(25.05e-3, 5e-3, 0.0)); }
+void BM_PositioningTickFaceContact(benchmark::State& state) { Run(state, At(3e-3, 0.1e-3, 0.0)); }
+// 2 degrees of tilt (past the hand-over tolerance) 5 mm inside the bore: wall against wall.
+void BM_PositioningTickTiltedInBore(benchmark::State& state) {
+  Run(state, At(0.0, 5e-3, 0.0, 0.035));
+}
+
+BENCHMARK(BM_PositioningTickFree)->Arg(50)->Arg(200);
+BENCHMARK(BM_PositioningTickNearMiss)->Arg(50)->Arg(200);
+BENCHMARK(BM_PositioningTickFaceContact)->Arg(50)->Arg(200);
+BENCHMARK(BM_PositioningTickTiltedInBore)->Arg(50)->Arg(200);
+
+}  // namespace
+}  // namespace fitfeel

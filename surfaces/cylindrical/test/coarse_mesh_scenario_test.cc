@@ -1,0 +1,70 @@
+// The paper's H7/g6 scenario, loaded through the plugin registry as `fitfeel run` loads it: the
+// cylindrical plugin's coarse meshes reach the positioning stage, which lets the centred shaft in
+// and pushes an off-axis one back from the bushing's face.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "framework/collision/coarse_mesh.h"
+#include "framework/model/surface_type.h"
+#include "framework/plugin/registry.h"
+#include "framework/runtime/positioning_stage.h"
+#include "framework/scenario/scene.h"
+
+#include <gtest/gtest.h>
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path WithTestDevice(const std::string& scenario) {
+  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string device = "fitfeel.device.simulated";
+  const auto at = yaml.find(device);
+  if (at != std::string::npos) yaml.replace(at, device.size(), "fitfeel.test.still_device");
+  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_cylindrical_coarse_mesh";
+  fs::create_directories(dir);
+  const fs::path file = dir / scenario;
+  std::ofstream(file) << yaml;
+  return file;
+}
+
+DeviceState At(double x, double y, double z) {
+  DeviceState s;
+  s.position = Eigen::Vector3d(x, y, z);
+  return s;
+}
+
+TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
+  PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins",
+                           fs::path(FITFEEL_TEST_BUILD_DIR) / "test-plugins" / "good"});
+  registry.LoadAll();
+  const Scene scene = LoadScene(WithTestDevice("paper-case1-h7g6.yaml"), registry);
+  const CoarseMeshes meshes = scene.surface->MakeCoarseMeshes(scene.inner, scene.outer);
+  ASSERT_FALSE(meshes.empty());
+  // H7/g6 at 20 mm: 54 facets (see cylindrical_coarse_mesh.h): a 40 mm prism and a tube.
+  EXPECT_EQ(meshes.inner.triangles.size(), 4u * 54);
+  EXPECT_EQ(meshes.outer.triangles.size(), 8u * 54);
+
+  PositioningStage::Options options;
+  options.free_stiffness = 1e3;
+  const PositioningStage stage(options, meshes, scene.moving);
+  ASSERT_TRUE(stage.collides());
+  StageOutput out;
+  stage.Evaluate(At(0.0, -1e-3, 0.0), &out);
+  EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
+  stage.Evaluate(At(0.0, 0.0, 0.0), &out);
+  EXPECT_EQ(out.next, StageId::kConstrained);
+  EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
+  stage.Evaluate(At(0.0, 2e-4, 4e-3), &out);  // 4 mm off: the end lands on the face
+  EXPECT_EQ(out.next, StageId::kPositioning);
+  EXPECT_NEAR(out.wrench.force.y(), -1e3 * 2e-4, 1e-9);
+}
+
+}  // namespace
+}  // namespace fitfeel

@@ -1,0 +1,95 @@
+#include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
+
+#include <cmath>
+
+#include "framework/collision/mesh_collider.h"
+#include "framework/core/error.h"
+#include "surfaces/cylindrical/test/test_parts.h"
+
+#include <gtest/gtest.h>
+
+namespace fitfeel::cylindrical {
+namespace {
+
+using testing::PaperHole;
+using testing::PaperShaft;
+using testing::Part;
+
+PartSpec Hub(PartSpec hole, double outer_diameter) {
+  hole.geometry = std::make_shared<CylindricalGeometry>(
+      Role::kOuter, hole.size.nominal, hole.geometry->mating_length(), outer_diameter, 0.0);
+  return hole;
+}
+
+TEST(CylindricalCoarseMeshTest, FacetsFollowTheFitsRadialZone) {
+  // Paper Table 2: js6 (16 um) in 0/+25 um: (16 + 25) / 2 = 20.5 um on r = 10 mm:
+  // pi / acos(1 - 20.5e-6 / 0.01) = 49.06 -> 50.
+  EXPECT_EQ(CoarseFacets(PaperShaft(), PaperHole()), 50);
+  // H7/g6 at 20 mm (ISO 286: H7 0/+21 um, g6 -20/-7 um): 17 um -> 54.
+  const PartSpec g6 = Part("shaft", Role::kInner, 0.020, 0.050, -20e-6, -7e-6);
+  const PartSpec h7 = Part("hole", Role::kOuter, 0.020, 0.030, 0.0, 21e-6);
+  EXPECT_EQ(CoarseFacets(g6, h7), 54);
+  EXPECT_LE(ChordalError(0.010, 54), 17e-6);
+  // Exact parts: the finest mesh offered; loose ones: at least 8 facets.
+  EXPECT_EQ(CoarseFacets(Part("s", Role::kInner, 0.02, 0.05, 0.0, 0.0),
+                         Part("h", Role::kOuter, 0.02, 0.05, 0.0, 0.0)),
+            kMaxCoarseFacets);
+  EXPECT_EQ(CoarseFacets(Part("s", Role::kInner, 0.02, 0.05, -5e-3, 0.0),
+                         Part("h", Role::kOuter, 0.02, 0.05, 0.0, 5e-3)),
+            8);
+}
+
+TEST(CylindricalCoarseMeshTest, ShaftTrailsItsLeadingEndAndTheBushingStartsAtItsEntrance) {
+  const PartSpec hole = Hub(PaperHole(), 0.030);
+  const CoarseMeshes meshes = MakeCylindricalCoarseMeshes(PaperShaft(), hole);
+  ASSERT_FALSE(meshes.empty());
+  const int n = CoarseFacets(PaperShaft(), hole);
+  EXPECT_EQ(meshes.inner.triangles.size(), 4u * n);
+  EXPECT_EQ(meshes.outer.triangles.size(), 8u * n);
+  double shaft_min_y = 0.0, shaft_max_y = -1.0, shaft_max_r = 0.0;
+  for (const Eigen::Vector3d& v : meshes.inner.vertices) {
+    shaft_min_y = std::min(shaft_min_y, v.y());
+    shaft_max_y = std::max(shaft_max_y, v.y());
+    shaft_max_r = std::max(shaft_max_r, std::hypot(v.x(), v.z()));
+  }
+  EXPECT_DOUBLE_EQ(shaft_min_y, -0.060);
+  EXPECT_DOUBLE_EQ(shaft_max_y, 0.0);
+  EXPECT_NEAR(shaft_max_r, 0.010, 1e-15);
+  double hole_min_y = 1.0, hole_max_y = -1.0, hole_min_r = 1.0, hole_max_r = 0.0;
+  for (const Eigen::Vector3d& v : meshes.outer.vertices) {
+    hole_min_y = std::min(hole_min_y, v.y());
+    hole_max_y = std::max(hole_max_y, v.y());
+    hole_min_r = std::min(hole_min_r, std::hypot(v.x(), v.z()));
+    hole_max_r = std::max(hole_max_r, std::hypot(v.x(), v.z()));
+  }
+  EXPECT_DOUBLE_EQ(hole_min_y, 0.0);
+  EXPECT_DOUBLE_EQ(hole_max_y, 0.020);
+  EXPECT_NEAR(hole_min_r, 0.010 / std::cos(M_PI / n), 1e-15);
+  EXPECT_NEAR(hole_max_r, 0.015, 1e-15);
+}
+
+TEST(CylindricalCoarseMeshTest, ACentredShaftClearsTheBoreAndAnOffOneStrikesTheFace) {
+  const PartSpec hole = Hub(PaperHole(), 0.030);
+  const CoarseMeshes meshes = MakeCylindricalCoarseMeshes(PaperShaft(), hole);
+  const MeshCollider collider(meshes.outer, meshes.inner);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Penetration p;
+  for (double y : {0.0, 1e-3, 0.019, 0.030}) {
+    pose.translation() = Eigen::Vector3d(0.0, y, 0.0);
+    collider.Query(pose, &p);
+    EXPECT_FALSE(p.contact) << y;
+  }
+  pose.translation() = Eigen::Vector3d(0.0, 1e-4, 2e-3);
+  collider.Query(pose, &p);
+  EXPECT_TRUE(p.contact);
+  EXPECT_NEAR(p.depth, 1e-4, 1e-12);
+}
+
+TEST(CylindricalCoarseMeshTest, RefusesAPartWithoutCylindricalGeometry) {
+  PartSpec shaft = PaperShaft();
+  shaft.geometry.reset();
+  EXPECT_THROW(MakeCylindricalCoarseMeshes(shaft, PaperHole()), UserError);
+}
+
+}  // namespace
+}  // namespace fitfeel::cylindrical
