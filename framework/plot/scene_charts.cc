@@ -50,11 +50,20 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
   const std::size_t row = RowAtDepth(trace, depth_mm);
   MatingPose pose;
   pose.depth = depth_mm * 1e-3;
-  if (!trace.x_mm.empty()) {
-    pose.offset = Eigen::Vector2d(trace.x_mm[row], trace.z_mm[row]) * 1e-3;
-    pose.angle = trace.angle_rad[row];
-  }
   PressureMapData data;
+  if (!trace.x_mm.empty()) pose.angle = trace.angle_rad[row];
+  if (!trace.offset_x_um.empty()) {
+    pose.offset = Eigen::Vector2d(trace.offset_x_um[row], trace.offset_z_um[row]) * 1e-6;
+  } else if (!trace.x_mm.empty()) {
+    // Traces written before the pose's offset had columns: the device's position is the offset
+    // except where the constrained stage settled the part under a radial load.
+    pose.offset = Eigen::Vector2d(trace.x_mm[row], trace.z_mm[row]) * 1e-3;
+    data.pose_note =
+        "offset from the device position x_mm, z_mm (the trace has no offset_x_um, offset_z_um; "
+        "a settled part's offset may differ)";
+  } else {
+    data.pose_note = "no radial offset or twist: the trace has no pose columns";
+  }
   data.scenario = run.summary.scenario;
   data.law = run.summary.law;
   data.depth_mm = depth_mm;
