@@ -89,6 +89,10 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
     chart.subtitle.push_back("(forces of the run's tick nearest this depth, at " +
                              Millimetres(data.force_depth_mm) + ")");
   }
+  // An all-dark map otherwise reads as a drawing failure.
+  if (!(map.values.maxCoeff() > 0.0)) {
+    chart.subtitle.push_back("no interference at this pose: the parts are in clearance");
+  }
   if (!data.pose_note.empty()) chart.subtitle.push_back(data.pose_note);
   chart.panels = {std::move(map)};
   return chart;

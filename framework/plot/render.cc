@@ -154,10 +154,18 @@ std::vector<double> NiceTics(double low, double high) {
     if (span / step <= 10.0) break;
   }
   std::vector<double> tics;
-  for (double tic = std::ceil(low / step) * step; tic <= high + 1e-9 * span; tic += step) {
-    tics.push_back(std::abs(tic) < 1e-9 * span ? 0.0 : tic);
+  // Multiples of the step counted, not summed: a running sum drifts (0.1 * 3 = 0.30000000000000004).
+  for (double k = std::ceil(low / step - 1e-9); k * step <= high + 1e-9 * span; k += 1.0) {
+    tics.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
   }
   return tics;
+}
+
+// A colour-bar tic's label: the round value without binary noise (0.3, not 0.30000000000000004).
+std::string TicLabel(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value + 0.0);
+  return buffer;
 }
 
 }  // namespace
@@ -291,7 +299,6 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
   body << "set style textbox opaque fillcolor rgb 'white' noborder margins 2,1\n";
   body << "set multiplot layout " << panels << ",1 title " << QuoteLines(title_lines)
        << " font ',14'\n";
-  // The right margin leaves room for the colour bar's labelled tolerance limits.
   // The right margin holds the colour bar, its longest tic label and the colour-bar label.
   std::size_t longest_mark = 6;
   for (const auto& map : chart.panels) {
@@ -320,7 +327,9 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     body << "set title " << QuoteForGnuplot(map.title) << " font ',13'\n";
     body << "set xlabel " << QuoteForGnuplot(map.x_label) << "\n";
     body << "set ylabel " << QuoteForGnuplot(map.y_label) << "\n";
-    body << "set cblabel " << QuoteForGnuplot(map.colour_label) << "\n";
+    // gnuplot spaces the label from the tic labels without counting the outward tic marks, and
+    // two-digit labels then touch it: the offset moves it clear (the right margin has room).
+    body << "set cblabel " << QuoteForGnuplot(map.colour_label) << " offset 1.5,0\n";
     body << "set xrange [" << Num(x_lower(0)) << ":" << Num(x_upper(x_upper.size() - 1)) << "]\n";
     body << "set yrange [" << Num(y_lower(0)) << ":" << Num(y_upper(y_upper.size() - 1)) << "]\n";
     body << "set cbrange [" << Num(low) << ":" << Num(high) << "]\n";
@@ -338,7 +347,7 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
         near_mark = near_mark || std::abs(tic - mark.value) < 0.09 * (high - low);
       }
       if (near_mark) continue;
-      body << (first ? "" : ", ") << "'" << Num(tic) << "' " << Num(tic);
+      body << (first ? "" : ", ") << "'" << TicLabel(tic) << "' " << Num(tic);
       first = false;
     }
     for (const auto& mark : map.colour_marks) {

@@ -38,6 +38,7 @@ void DecimateKeepingPeaks(std::vector<double>* x, std::vector<double>* y, std::s
 std::string FormatNewtons(double value) {
   // Whole newtons from 1000 N up, three significant digits below (0.000123 N stays readable).
   char buffer[64];
+  value += 0.0;  // -0 (a sign without magnitude) prints as 0
   if (std::abs(value) >= 1000.0) {
     std::snprintf(buffer, sizeof buffer, "%.0f N", value);
   } else {

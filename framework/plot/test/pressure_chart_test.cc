@@ -119,6 +119,12 @@ TEST(MakePressureChart, FlatFacesRender) {
   EXPECT_TRUE(testing::IsPng(dir.path() / "key.png"));
 }
 
+TEST(MakePressureChart, SaysWhenThePartsAreInClearance) {
+  PressureMapData data = Data();
+  data.interference.setZero();
+  EXPECT_THAT(MakePressureChart(data).subtitle.back(), HasSubstr("no interference at this pose"));
+}
+
 TEST(MakePressureChart, SaysHowThePoseWasTaken) {
   PressureMapData data = Data();
   EXPECT_EQ(MakePressureChart(data).subtitle.size(), 1u);
