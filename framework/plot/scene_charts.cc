@@ -69,7 +69,16 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
   data.depth_mm = depth_mm;
   data.grid = inner_grid;
   analyzer.InterferenceMap(pose, &data.interference);
-  data.pressure_per_interference = law.PressurePerInterference();
+  try {
+    data.pressure_per_interference = law.PressurePerInterference();
+  } catch (const UnsupportedError&) {
+    // Say which law and why: the reader asked for a picture, not about the law's interface.
+    throw UnsupportedError(
+        "no pressure map for run '" + run.summary.scenario + "': its law '" +
+        (run.summary.law.empty() ? std::string("(unnamed)") : run.summary.law) +
+        "' gives no contact pressure per unit interference (a law that ignores the skin model "
+        "shapes, like the paper's VE1, has no pressure field over them)");
+  }
   data.fx_N = trace.fx_N[row];
   data.fy_N = trace.fy_N[row];
   data.fz_N = trace.fz_N[row];

@@ -160,7 +160,12 @@ TEST(MakePressureData, RefusesDepthOutsideTheRunAndLawsWithoutPressure) {
   } catch (const UserError& e) {
     EXPECT_THAT(e.what(), HasSubstr("depth 25 mm is outside the run's constrained depth range"));
   }
-  EXPECT_THROW(MakePressureData(run, 5.0, analyzer, NoPressureLaw{}, shaft.grid), UnsupportedError);
+  try {
+    MakePressureData(run, 5.0, analyzer, NoPressureLaw{}, shaft.grid);
+    FAIL() << "a law without pressure gave a map";
+  } catch (const UnsupportedError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("its law 'gps' gives no contact pressure"));
+  }
 }
 
 TEST(MakePressureData, RendersPngAndSvg) {
