@@ -58,9 +58,10 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
     // Traces written before the pose's offset had columns: the device's position is the offset
     // except where the constrained stage settled the part under a radial load.
     pose.offset = Eigen::Vector2d(trace.x_mm[row], trace.z_mm[row]) * 1e-3;
+    // A subtitle line: short enough for the chart's width.
     data.pose_note =
-        "offset from the device position x_mm, z_mm (the trace has no offset_x_um, offset_z_um; "
-        "a settled part's offset may differ)";
+        "pose offset taken from the device position (old trace without offset_x_um, "
+        "offset_z_um)";
   } else {
     data.pose_note = "no radial offset or twist: the trace has no pose columns";
   }

@@ -144,7 +144,7 @@ TEST(MakePressureData, AnOlderTraceFallsBackToTheDevicePositionAndSaysSo) {
   analyzer.Prepare(kShaft, shaft, kBushing, shaft, ModelSettings{});
   const PressureMapData data = MakePressureData(run, 10.0, analyzer, LameLaw{}, shaft.grid);
   EXPECT_NEAR(analyzer.last_pose.offset.x(), 1e-6, 1e-15);
-  EXPECT_THAT(data.pose_note, HasSubstr("device position x_mm, z_mm"));
+  EXPECT_THAT(data.pose_note, HasSubstr("taken from the device position (old trace"));
   EXPECT_THAT(MakePressureChart(data).subtitle.back(), HasSubstr("device position"));
 }
 
