@@ -162,9 +162,10 @@ void AddPressure(CLI::App& plot) {
     const plot::SceneShapes shapes = plot::GenerateSceneShapes(std::move(scene), run.summary.seed);
     plot::CheckSameGrids(shapes, run.summary.inner_grid, run.summary.outer_grid);
     const plot::PreparedContact contact = plot::PrepareContact(shapes, run.summary.law);
-    plot::Render(plot::MakePressureChart(plot::MakePressureData(
-                     run, options->depth_mm, *contact.analyzer, *contact.law, shapes.inner.grid)),
-                 outputs);
+    const plot::PressureMapData data = plot::MakePressureData(
+        run, options->depth_mm, *contact.analyzer, *contact.law, shapes.inner.grid);
+    if (!data.pose_note.empty()) std::cerr << "fitfeel: note: " << data.pose_note << "\n";
+    plot::Render(plot::MakePressureChart(data), outputs);
     PrintWritten(outputs);
   });
 }

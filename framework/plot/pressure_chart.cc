@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "framework/core/error.h"
+#include "framework/plot/sms_chart.h"
 #include "framework/plot/trace_chart.h"
 
 namespace fitfeel::plot {
@@ -57,10 +58,10 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
   HeatMap map;
   map.title = "contact pressure on the inner part at depth " + Millimetres(data.depth_mm);
   map.x_label = "axial position (mm)";
-  map.y_label = "direction angle (°)";
   map.colour_label = "contact pressure p (MPa)";
   map.x = grid.row_position * 1e3;
-  map.y = grid.column_angle * (180.0 / std::numbers::pi);
+  SetColumnAxis(grid.column_angle, &map);
+  const bool angle_axis = map.y_tic_step > 0.0;  // false: flat faces, columns by number
   map.values.resize(grid.rows, grid.columns);
   for (int i = 0; i < grid.rows; ++i) {
     for (int j = 0; j < grid.columns; ++j) {
@@ -69,14 +70,13 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
     }
   }
   map.colour_min = 0.0;
-  map.y_tic_step = 90.0;
   const double radial = std::hypot(data.fx_N, data.fz_N);
   char direction[96] = "";
   if (radial > 0.0) {
     double angle = std::atan2(data.fz_N, data.fx_N) * (180.0 / std::numbers::pi);
     if (angle < 0.0) angle += 360.0;
     std::snprintf(direction, sizeof direction, " toward %.0f°", angle);
-    if (angle >= map.y(0) && angle <= map.y(map.y.size() - 1)) {
+    if (angle_axis && angle >= map.y(0) && angle <= map.y(map.y.size() - 1)) {
       map.y_lines.push_back({angle, "radial force on the moving part"});
     }
   }
@@ -89,6 +89,11 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
     chart.subtitle.push_back("(forces of the run's tick nearest this depth, at " +
                              Millimetres(data.force_depth_mm) + ")");
   }
+  // An all-dark map otherwise reads as a drawing failure.
+  if (!(map.values.maxCoeff() > 0.0)) {
+    chart.subtitle.push_back("no interference at this pose: the parts are in clearance");
+  }
+  if (!data.pose_note.empty()) chart.subtitle.push_back(data.pose_note);
   chart.panels = {std::move(map)};
   return chart;
 }

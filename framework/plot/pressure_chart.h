@@ -35,6 +35,7 @@ struct PressureMapData {
   double pressure_per_interference = 0.0;  // Pa/m
   double fx_N = 0.0, fy_N = 0.0, fz_N = 0.0;
   double force_depth_mm = 0.0;  // depth of the tick the forces come from (nearest to depth_mm)
+  std::string pose_note;        // how the pose was taken, when not from the run's pose columns
 };
 
 // Pressure map in MPa over axial position (mm) x direction angle (degrees), with the axial and

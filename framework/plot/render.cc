@@ -154,10 +154,19 @@ std::vector<double> NiceTics(double low, double high) {
     if (span / step <= 10.0) break;
   }
   std::vector<double> tics;
-  for (double tic = std::ceil(low / step) * step; tic <= high + 1e-9 * span; tic += step) {
-    tics.push_back(std::abs(tic) < 1e-9 * span ? 0.0 : tic);
+  // Multiples of the step counted, not summed: a running sum drifts (0.1 * 3 =
+  // 0.30000000000000004).
+  for (double k = std::ceil(low / step - 1e-9); k * step <= high + 1e-9 * span; k += 1.0) {
+    tics.push_back(std::abs(k) < 0.5 ? 0.0 : k * step);
   }
   return tics;
+}
+
+// A colour-bar tic's label: the round value without binary noise (0.3, not 0.30000000000000004).
+std::string TicLabel(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value + 0.0);
+  return buffer;
 }
 
 }  // namespace
@@ -172,10 +181,11 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       if (series.x.size() != series.y.size()) {
         throw std::invalid_argument("series '" + series.label + "' has x and y of different size");
       }
+      // A series that is zero throughout (a run in clearance) has finite points but none a log
+      // axis can show: it keeps its place on the depth axis and in the key.
       bool any = false;
       for (std::size_t k = 0; k < series.x.size(); ++k) {
-        if (std::isfinite(series.x[k]) && std::isfinite(series.y[k]) &&
-            (!panel.log_y || series.y[k] > 0.0)) {
+        if (std::isfinite(series.x[k]) && std::isfinite(series.y[k])) {
           any = true;
           x_min = std::min(x_min, series.x[k]);
           x_max = std::max(x_max, series.x[k]);
@@ -218,14 +228,19 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       }
     }
     const bool flat = y_high - y_low <= 1e-9 * std::max(std::abs(y_high), 1e-300);
+    const bool empty = !(y_high >= y_low);  // a log panel of series that are zero throughout
     if (panel.log_y) {
       body << "set logscale y\n";
-      if (flat) {
+      if (empty) {
+        body << "set yrange [1:10]\n";
+      } else if (flat) {
         body << "set yrange [" << Num(y_low / 2.0) << ":" << Num(y_high * 2.0) << "]\n";
       } else {
         // Near-zero values (a contact just closing) would stretch a log axis over ten decades
         // and squash everything a reader looks at; the axis keeps kLogDecades below the peak.
-        body << "set yrange [" << Num(std::max(y_low, y_high * std::pow(10.0, -kLogDecades)))
+        // The lowest curve is lifted off the frame (a factor 1.5, a sixth of a decade), where a
+        // constant one would otherwise hide in the border.
+        body << "set yrange [" << Num(std::max(y_low, y_high * std::pow(10.0, -kLogDecades)) / 1.5)
              << ":*]\n";
       }
     } else {
@@ -240,8 +255,23 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       }
     }
     body << "plot ";
+    // gnuplot cannot plot key entries alone; an undefined function gives the plot its axes.
+    if (empty) body << "1/0 notitle, \\\n     ";
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const Series& series = panel.series[s];
+      const std::string style = "lw 2.5 lc rgb " + Rgb(kLineColours[s % kLineColours.size()]) +
+                                " dt " + std::to_string((s % 5) + 1);
+      bool drawable = false;
+      for (std::size_t k = 0; k < series.x.size(); ++k) {
+        drawable = drawable || (std::isfinite(series.x[k]) && std::isfinite(series.y[k]) &&
+                                (!panel.log_y || series.y[k] > 0.0));
+      }
+      if (!drawable) {
+        if (s != 0) body << ", \\\n     ";
+        body << "keyentry with lines " << style << " title "
+             << QuoteForGnuplot(series.label + " (all 0)");
+        continue;
+      }
       const std::string name = "line" + std::to_string(p) + "_" + std::to_string(s) + ".dat";
       std::string data;
       data.reserve(series.x.size() * 24);
@@ -257,8 +287,7 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       }
       WriteText(work.path() / name, data);
       if (s != 0) body << ", \\\n     ";
-      body << "'" << name << "' using 1:2 with lines lw 2.5 lc rgb "
-           << Rgb(kLineColours[s % kLineColours.size()]) << " dt " << (s % 5) + 1 << " title "
+      body << "'" << name << "' using 1:2 with lines " << style << " title "
            << QuoteForGnuplot(series.label);
     }
     body << "\n";
@@ -291,7 +320,6 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
   body << "set style textbox opaque fillcolor rgb 'white' noborder margins 2,1\n";
   body << "set multiplot layout " << panels << ",1 title " << QuoteLines(title_lines)
        << " font ',14'\n";
-  // The right margin leaves room for the colour bar's labelled tolerance limits.
   // The right margin holds the colour bar, its longest tic label and the colour-bar label.
   std::size_t longest_mark = 6;
   for (const auto& map : chart.panels) {
@@ -320,7 +348,9 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     body << "set title " << QuoteForGnuplot(map.title) << " font ',13'\n";
     body << "set xlabel " << QuoteForGnuplot(map.x_label) << "\n";
     body << "set ylabel " << QuoteForGnuplot(map.y_label) << "\n";
-    body << "set cblabel " << QuoteForGnuplot(map.colour_label) << "\n";
+    // gnuplot spaces the label from the tic labels without counting the outward tic marks, and
+    // two-digit labels then touch it: the offset moves it clear (the right margin has room).
+    body << "set cblabel " << QuoteForGnuplot(map.colour_label) << " offset 1.5,0\n";
     body << "set xrange [" << Num(x_lower(0)) << ":" << Num(x_upper(x_upper.size() - 1)) << "]\n";
     body << "set yrange [" << Num(y_lower(0)) << ":" << Num(y_upper(y_upper.size() - 1)) << "]\n";
     body << "set cbrange [" << Num(low) << ":" << Num(high) << "]\n";
@@ -338,7 +368,7 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
         near_mark = near_mark || std::abs(tic - mark.value) < 0.09 * (high - low);
       }
       if (near_mark) continue;
-      body << (first ? "" : ", ") << "'" << Num(tic) << "' " << Num(tic);
+      body << (first ? "" : ", ") << "'" << TicLabel(tic) << "' " << Num(tic);
       first = false;
     }
     for (const auto& mark : map.colour_marks) {

@@ -146,6 +146,9 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   const bool has_pose = index.count("x_mm") && index.count("z_mm") && index.count("angle_rad");
   const std::size_t x = has_pose ? index.at("x_mm") : 0, z = has_pose ? index.at("z_mm") : 0;
   const std::size_t angle = has_pose ? index.at("angle_rad") : 0;
+  const bool has_offset = index.count("offset_x_um") && index.count("offset_z_um");
+  const std::size_t offset_x = has_offset ? index.at("offset_x_um") : 0;
+  const std::size_t offset_z = has_offset ? index.at("offset_z_um") : 0;
 
   ConstrainedTrace trace;
   std::string line;
@@ -180,6 +183,10 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
       trace.x_mm.push_back(number(x));
       trace.z_mm.push_back(number(z));
       trace.angle_rad.push_back(number(angle));
+    }
+    if (has_offset) {
+      trace.offset_x_um.push_back(number(offset_x));
+      trace.offset_z_um.push_back(number(offset_z));
     }
   }
   if (trace.t_s.empty()) {

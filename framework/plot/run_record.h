@@ -39,11 +39,16 @@ struct ConstrainedTrace {
   std::vector<double> fx_N;
   std::vector<double> fy_N;
   std::vector<double> fz_N;
-  // The moving part's radial offset and twist (MatingPose), when the trace has the columns x_mm,
-  // z_mm and angle_rad; empty otherwise.
+  // The device's position across the axis and the moving part's twist (MatingPose::angle), when
+  // the trace has the columns x_mm, z_mm and angle_rad; empty otherwise.
   std::vector<double> x_mm;
   std::vector<double> z_mm;
   std::vector<double> angle_rad;
+  // The moving part's radial offset in its pose (MatingPose::offset), when the trace has the
+  // columns offset_x_um and offset_z_um (traces written before them do not); empty otherwise.
+  // It differs from the device's x_mm, z_mm where the part was settled quasi-statically.
+  std::vector<double> offset_x_um;
+  std::vector<double> offset_z_um;
 };
 
 struct RunRecord {

@@ -50,17 +50,36 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
   const std::size_t row = RowAtDepth(trace, depth_mm);
   MatingPose pose;
   pose.depth = depth_mm * 1e-3;
-  if (!trace.x_mm.empty()) {
-    pose.offset = Eigen::Vector2d(trace.x_mm[row], trace.z_mm[row]) * 1e-3;
-    pose.angle = trace.angle_rad[row];
-  }
   PressureMapData data;
+  if (!trace.x_mm.empty()) pose.angle = trace.angle_rad[row];
+  if (!trace.offset_x_um.empty()) {
+    pose.offset = Eigen::Vector2d(trace.offset_x_um[row], trace.offset_z_um[row]) * 1e-6;
+  } else if (!trace.x_mm.empty()) {
+    // Traces written before the pose's offset had columns: the device's position is the offset
+    // except where the constrained stage settled the part under a radial load.
+    pose.offset = Eigen::Vector2d(trace.x_mm[row], trace.z_mm[row]) * 1e-3;
+    // A subtitle line: short enough for the chart's width.
+    data.pose_note =
+        "pose offset taken from the device position (old trace without offset_x_um, "
+        "offset_z_um)";
+  } else {
+    data.pose_note = "no radial offset or twist: the trace has no pose columns";
+  }
   data.scenario = run.summary.scenario;
   data.law = run.summary.law;
   data.depth_mm = depth_mm;
   data.grid = inner_grid;
   analyzer.InterferenceMap(pose, &data.interference);
-  data.pressure_per_interference = law.PressurePerInterference();
+  try {
+    data.pressure_per_interference = law.PressurePerInterference();
+  } catch (const UnsupportedError&) {
+    // Say which law and why: the reader asked for a picture, not about the law's interface.
+    throw UnsupportedError(
+        "no pressure map for run '" + run.summary.scenario + "': its law '" +
+        (run.summary.law.empty() ? std::string("(unnamed)") : run.summary.law) +
+        "' gives no contact pressure per unit interference (a law that ignores the skin model "
+        "shapes, like the paper's VE1, has no pressure field over them)");
+  }
   data.fx_N = trace.fx_N[row];
   data.fy_N = trace.fy_N[row];
   data.fz_N = trace.fz_N[row];

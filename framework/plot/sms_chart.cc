@@ -47,9 +47,8 @@ bool StrictlyIncreasing(const Eigen::VectorXd& v) {
   return v.size() > 0;
 }
 
-// The vertical axis of an unwrapped map: direction angles in degrees for a surface of revolution
-// (they increase around it), column numbers otherwise (a flat face's columns share its normal's
-// angle, one face after the other).
+}  // namespace
+
 void SetColumnAxis(const Eigen::VectorXd& angles, HeatMap* map) {
   if (StrictlyIncreasing(angles)) {
     map->y = Degrees(angles);
@@ -61,8 +60,6 @@ void SetColumnAxis(const Eigen::VectorXd& angles, HeatMap* map) {
     map->y_tic_step = 0.0;
   }
 }
-
-}  // namespace
 
 RadialLimits VariationLimits(const PartSpec& part) {
   return {0.5 * part.size.lower_deviation, 0.5 * part.size.upper_deviation};

@@ -24,6 +24,12 @@ FITFEEL_API RadialLimits VariationLimits(const PartSpec& part);
 // largest (ES - ei)/2 radial clearance; negative values are interference.
 FITFEEL_API RadialLimits ToleranceSpaceLimits(const PartSpec& inner, const PartSpec& outer);
 
+// The vertical axis of an unwrapped map of a grid whose columns have direction angles `angles`
+// (rad): angles in degrees for a surface of revolution (they increase around it), column numbers
+// (label "column (face by face)") otherwise, since a flat face's columns share its normal's angle,
+// one face after the other. Sets the map's y, y_label and y_tic_step.
+FITFEEL_API void SetColumnAxis(const Eigen::VectorXd& angles, HeatMap* map);
+
 // The unwrapped skin profile of one part (paper Fig. 6): axial position (mm) across, direction
 // angle (degrees) up, colour = V (µm); the colour bar marks the size limits. Throws UserError for
 // a shape whose grid and variation disagree.

@@ -38,7 +38,8 @@ void DecimateKeepingPeaks(std::vector<double>* x, std::vector<double>* y, std::s
 std::string FormatNewtons(double value) {
   // Whole newtons from 1000 N up, three significant digits below (0.000123 N stays readable).
   char buffer[64];
-  if (std::abs(value) >= 1000.0) {
+  value += 0.0;                    // -0 (a sign without magnitude) prints as 0
+  if (std::abs(value) >= 999.5) {  // from where %.3g would print 1e+03
     std::snprintf(buffer, sizeof buffer, "%.0f N", value);
   } else {
     std::snprintf(buffer, sizeof buffer, "%.3g N", value);
@@ -61,23 +62,27 @@ std::string StatsText(const ResistanceStats& stats) {
 
 LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_scale) {
   if (runs.empty()) throw UserError("no run folder to plot");
+  // Parts mated by rotation (a knuckle bearing) keep one depth throughout: against depth their
+  // curves would collapse onto a vertical line, so such runs, and any drawn beside them, are
+  // drawn against the run's time.
+  bool by_time = false;
+  for (const auto& run : runs) {
+    const auto [low, high] =
+        std::minmax_element(run.trace.depth_mm.begin(), run.trace.depth_mm.end());
+    by_time = by_time || *high - *low <= 0.0;
+  }
+  const std::string x_label = by_time ? "time (s)" : "insertion depth (mm)";
   LineChart chart;
-  chart.title = "Assembly resistance along the insertion (constrained stage)";
-  LinePanel axial{"Axial resistance",
-                  "insertion depth (mm)",
-                  "axial resistance |F_y| (N)",
-                  true,
-                  log_scale,
-                  {}};
-  LinePanel radial{"Radial resistance",
-                   "insertion depth (mm)",
-                   "radial resistance sqrt(F_x² + F_z²) (N)",
-                   true,
-                   log_scale,
-                   {}};
+  chart.title = by_time ? "Assembly resistance over the run (constrained stage; the depth does "
+                          "not change, so against time)"
+                        : "Assembly resistance along the insertion (constrained stage)";
+  LinePanel axial{"Axial resistance", x_label, "axial resistance |F_y| (N)", true, log_scale, {}};
+  LinePanel radial{"Radial resistance", x_label, "radial resistance sqrt(F_x² + F_z²) (N)", true,
+                   log_scale,           {}};
   for (const auto& run : runs) {
     const auto& trace = run.trace;
-    std::vector<double> depth = trace.depth_mm, fy(trace.fy_N.size()), fr(trace.fx_N.size());
+    std::vector<double> depth = by_time ? trace.t_s : trace.depth_mm, fy(trace.fy_N.size()),
+                        fr(trace.fx_N.size());
     for (std::size_t k = 0; k < fy.size(); ++k) {
       fy[k] = std::abs(trace.fy_N[k]);
       fr[k] = std::hypot(trace.fx_N[k], trace.fz_N[k]);

@@ -26,7 +26,9 @@ FITFEEL_API std::string FormatNewtons(double value);
 // sqrt(F_x^2 + F_z^2) (bottom) against insertion depth, one curve per run, labelled with the
 // scenario, the law and the summary's mean/min/max. `log_scale` draws both force axes
 // logarithmic, for runs whose resistances differ by orders of magnitude (an interference fit
-// beside a clearance fit). Throws UserError for no runs.
+// beside a clearance fit). When a run's depth never changes (parts mated by rotation), every
+// curve is drawn against the run's time instead, and the title says so. Throws UserError for no
+// runs.
 FITFEEL_API LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_scale = false);
 
 }  // namespace fitfeel::plot

@@ -57,7 +57,11 @@ void WriteFile(const fs::path& path, const std::string& text) {
 std::string TraceHeader() {
   return "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us,x_mm,y_mm,z_mm,angle_rad,tx_Nm,ty_Nm,tz_Nm,"
          "engaged,interference,offset_um,assembly_extent_um,penetration_um,max_interference_um,"
-         "stiffness_N_per_um,guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm";
+         "stiffness_N_per_um,guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,"
+         // Appended last so the contract's earlier columns keep their places. x_mm and z_mm are the
+         // device's position; the pose's offset differs where the constrained stage settles the
+         // part quasi-statically under a radial load (DeviceState::settle_load).
+         "offset_x_um,offset_z_um";
 }
 
 std::string TraceRow(const TickRecord& r) {
@@ -93,6 +97,8 @@ std::string TraceRow(const TickRecord& r) {
   row += r.guard_fault ? ",1" : ",0";
   for (int i = 0; i < 3; ++i) add(r.device_wrench.force[i]);
   for (int i = 0; i < 3; ++i) add(r.device_wrench.torque[i]);
+  add(r.pose.offset.x() * 1e6);
+  add(r.pose.offset.y() * 1e6);
   return row;
 }
 

@@ -48,6 +48,22 @@ void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelS
     ball_row_weight_[i] = bg.rows > 1 ? u - ball_row_[i] : 0.0;
   }
   normal_ = sg.normal;
+
+  ball_normal_ = bg.normal;
+  ball_row_in_band_.assign(bg.rows, 0);
+  socket_row_.assign(bg.rows, 0);
+  socket_row_weight_.assign(bg.rows, 0.0);
+  const double half_band = 0.5 * width_;
+  const double socket_pitch = rows_ > 1 ? sg.row_position(1) - sg.row_position(0) : 1.0;
+  for (int r = 0; r < bg.rows; ++r) {
+    const double y = bg.row_position(r);
+    // A relative tolerance keeps a ball row centred on the band's edge (equal pitches) inside.
+    ball_row_in_band_[r] = std::abs(y) <= half_band * (1.0 + 1e-9) ? 1 : 0;
+    const double u =
+        rows_ > 1 ? std::clamp((y - sg.row_position(0)) / socket_pitch, 0.0, rows_ - 1.0) : 0.0;
+    socket_row_[r] = std::min(static_cast<int>(u), std::max(rows_ - 2, 0));
+    socket_row_weight_[r] = rows_ > 1 ? u - socket_row_[r] : 0.0;
+  }
 }
 
 template <class Visit>
@@ -98,8 +114,38 @@ void SphericalContactAnalyzer::DoEvaluate(const MatingPose& pose,
 
 void SphericalContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
                                                  Eigen::VectorXd* delta) const {
-  delta->setZero(rows_ * columns_);
-  ForEachCell(pose, [&](int k, double d) { (*delta)(k) = d; });
+  const int ball_rows = static_cast<int>(ball_v_.rows());
+  delta->setZero(static_cast<Eigen::Index>(ball_rows) * columns_);
+  if (!std::isfinite(pose.angle) || !pose.offset.allFinite()) {
+    throw UserError("interference map of a non-finite ball rotation or offset");
+  }
+  const double pitch = 2.0 * M_PI / columns_;
+  const double cos_a = std::cos(pose.angle), sin_a = std::sin(pose.angle);
+  const int last_socket_row = rows_ - 1;
+  for (int c = 0; c < columns_; ++c) {
+    // Ball column c has turned to beta_c + angle: between socket columns j0 and j1.
+    double u = std::fmod(c + pose.angle / pitch, static_cast<double>(columns_));
+    if (u < 0.0) u += columns_;
+    int j0 = static_cast<int>(u);
+    const double fj = u - j0;
+    j0 %= columns_;
+    const int j1 = (j0 + 1) % columns_;
+    for (int r = 0; r < ball_rows; ++r) {
+      if (!ball_row_in_band_[r]) continue;
+      const int s0 = socket_row_[r];
+      const int s1 = std::min(s0 + 1, last_socket_row);
+      const double fs = socket_row_weight_[r];
+      const double socket_v =
+          (1.0 - fs) * ((1.0 - fj) * socket_v_(s0, j0) + fj * socket_v_(s0, j1)) +
+          fs * ((1.0 - fj) * socket_v_(s1, j0) + fj * socket_v_(s1, j1));
+      const int k = r * columns_ + c;
+      // The ball's normal turned with it about y.
+      const double nx = cos_a * ball_normal_(0, k) - sin_a * ball_normal_(2, k);
+      const double nz = sin_a * ball_normal_(0, k) + cos_a * ball_normal_(2, k);
+      const double gap = socket_v - ball_v_(r, c) - (pose.offset.x() * nx + pose.offset.y() * nz);
+      (*delta)(k) = texture_(gap);
+    }
+  }
 }
 
 }  // namespace fitfeel::spherical

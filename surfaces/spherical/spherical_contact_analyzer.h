@@ -31,6 +31,12 @@ namespace fitfeel::spherical {
 // for it, and it vanishes for a band symmetric about the equator unless the form is asymmetric).
 //
 // Per tick: one pass over the socket's m x n cells, no allocation.
+//
+// The interference map (for pictures, not the tick) is over the ball's cells, as the interface
+// asks: the ball's material cell (row r, column c) lies, after the rotation, at beta_c + angle
+// under the socket, whose variation is interpolated there (in y between its row centres, clamped to
+// the end rows; in beta periodically). Ball cells whose centre lies outside the socket's band touch
+// nothing and are zero.
 class SphericalContactAnalyzer final : public ContactAnalyzer {
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
@@ -51,7 +57,14 @@ class SphericalContactAnalyzer final : public ContactAnalyzer {
   // Ball rows bracketing each socket row, and the weight of the upper one (prepare-time).
   std::vector<int> ball_row_;
   std::vector<double> ball_row_weight_;
-  Eigen::Matrix3Xd normal_;            // socket cell normals
+  Eigen::Matrix3Xd normal_;  // socket cell normals
+  // For the ball-cell interference map (prepare-time): per ball row, whether its centre lies in
+  // the socket's band, the socket rows bracketing it and the upper one's weight; the ball's
+  // normals.
+  std::vector<char> ball_row_in_band_;
+  std::vector<int> socket_row_;
+  std::vector<double> socket_row_weight_;
+  Eigen::Matrix3Xd ball_normal_;
   ExpectedInterferenceTable texture_;  // sharp unless texture is `expected`
 };
 

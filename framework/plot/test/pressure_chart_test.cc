@@ -1,5 +1,7 @@
 #include "framework/plot/pressure_chart.h"
 
+#include <numbers>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -83,6 +85,51 @@ TEST(MakePressureChart, RefusesMismatchedSizes) {
   PressureMapData data = Data();
   data.interference.conservativeResize(10);
   EXPECT_THROW(MakePressureChart(data), UserError);
+}
+
+// A planar (key) grid: every strip of a face shares the face normal's angle, so the angles do not
+// increase and the map numbers the columns face by face, as the skin-profile chart does.
+PressureMapData FlatFaceData() {
+  PressureMapData data = Data();
+  data.grid = testing::SyntheticSms(testing::SyntheticPart("key", Role::kInner, 0.0, 20e-6, "h9"),
+                                    30, 12, 30e-3, 0.0)
+                  .grid;
+  for (int j = 0; j < 12; ++j) data.grid.column_angle(j) = (j / 3) * 0.5 * std::numbers::pi;
+  data.interference = Eigen::VectorXd::Zero(data.grid.size());
+  data.interference(data.grid.index(5, 7)) = 2e-6;
+  return data;
+}
+
+TEST(MakePressureChart, FlatFacesUseColumnNumbers) {
+  const HeatMapChart chart = MakePressureChart(FlatFaceData());
+  const HeatMap& map = chart.panels[0];
+  EXPECT_EQ(map.y_label, "column (face by face)");
+  ASSERT_EQ(map.y.size(), 12);
+  for (int j = 0; j < 12; ++j) EXPECT_EQ(map.y(j), j);
+  EXPECT_NEAR(map.values(5, 7), 2.0 * 5.8333, 1e-9);
+  // No angle axis to draw the force's direction on; the subtitle still gives it.
+  EXPECT_TRUE(map.y_lines.empty());
+  EXPECT_THAT(chart.subtitle[0], HasSubstr("toward 270°"));
+}
+
+TEST(MakePressureChart, FlatFacesRender) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  Render(MakePressureChart(FlatFaceData()), ResolveOutputs(dir.path() / "key.png"));
+  EXPECT_TRUE(testing::IsPng(dir.path() / "key.png"));
+}
+
+TEST(MakePressureChart, SaysWhenThePartsAreInClearance) {
+  PressureMapData data = Data();
+  data.interference.setZero();
+  EXPECT_THAT(MakePressureChart(data).subtitle.back(), HasSubstr("no interference at this pose"));
+}
+
+TEST(MakePressureChart, SaysHowThePoseWasTaken) {
+  PressureMapData data = Data();
+  EXPECT_EQ(MakePressureChart(data).subtitle.size(), 1u);
+  data.pose_note = "offset from the device position";
+  EXPECT_EQ(MakePressureChart(data).subtitle.back(), "offset from the device position");
 }
 
 TEST(MakePressureChart, RendersPngAndSvg) {

@@ -108,6 +108,27 @@ TEST(Render, FlatAndZeroCurvesRenderOnLinearAndLogAxes) {
   EXPECT_TRUE(testing::IsPng(dir.path() / "flat.png"));
 }
 
+// A run in clearance throughout (`fitfeel plot trace --log` of a loose key) has only zeros: a log
+// axis cannot show them, so the series stays in the key only, alone or beside others.
+TEST(Render, AllZeroCurvesOnALogAxisStayInTheKey) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  LineChart chart;
+  chart.title = "zero on log";
+  chart.panels.push_back(
+      {"beside another, log",
+       "x (mm)",
+       "y (N)",
+       true,
+       true,
+       {{"some", {0, 1, 2}, {1, 10, 100}},
+        {"key-parallel-8x7-hub-js9 · law gps: mean 0 N, min 0 N, max 0 N", {0, 1, 3}, {0, 0, 0}}}});
+  chart.panels.push_back(
+      {"alone, log", "x (mm)", "y (N)", true, true, {{"zero", {0, 1, 2}, {0, 0, 0}}}});
+  Render(chart, ResolveOutputs(dir.path() / "zero.png"));
+  EXPECT_TRUE(testing::IsPng(dir.path() / "zero.png"));
+}
+
 TEST(Render, MalformedDataIsRefusedBeforeGnuplotRuns) {
   ScratchDir dir;
   const auto out = ResolveOutputs(dir.path() / "x.png");

@@ -110,6 +110,44 @@ TEST(MakePressureData, UsesTheRunsPoseAndTheLawsCoefficient) {
   EXPECT_EQ(chart.panels[0].values(0, 0), 0.0);
 }
 
+// A trace with the pose's offset columns: the map is drawn at the pose's offset, not at the
+// device's position (they differ where the constrained stage settled the part under a load).
+TEST(MakePressureData, PrefersThePosesOffsetColumnsToTheDevicePosition) {
+  ScratchDir dir;
+  std::string csv =
+      "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us,x_mm,y_mm,z_mm,angle_rad,offset_x_um,"
+      "offset_z_um\n";
+  for (int k = 0; k <= 100; ++k) {
+    csv += std::to_string(0.001 * k) + ",constrained," + std::to_string(0.2 * k) + ",0,-" +
+           std::to_string(10 * k) + ",2,5,0.001,0,-0.002,0.01,3.5,-4.25\n";
+  }
+  testing::WriteRun(dir.path(), "paper-case1-h7js6", "gps", 1.0);
+  testing::WriteFile(dir.path() / "trace.csv", csv);
+  const RunRecord run = LoadRun(dir.path());
+  ASSERT_EQ(run.trace.offset_x_um.size(), 101u);
+  const auto shaft = testing::SyntheticSms(kShaft, 60, 72, 60e-3, 0.0);
+  FakeAnalyzer analyzer;
+  analyzer.Prepare(kShaft, shaft, kBushing, shaft, ModelSettings{});
+  const PressureMapData data = MakePressureData(run, 10.0, analyzer, LameLaw{}, shaft.grid);
+  EXPECT_NEAR(analyzer.last_pose.offset.x(), 3.5e-6, 1e-15);
+  EXPECT_NEAR(analyzer.last_pose.offset.y(), -4.25e-6, 1e-15);
+  EXPECT_NEAR(analyzer.last_pose.angle, 0.01, 1e-15);
+  EXPECT_TRUE(data.pose_note.empty());
+}
+
+TEST(MakePressureData, AnOlderTraceFallsBackToTheDevicePositionAndSaysSo) {
+  ScratchDir dir;
+  const RunRecord run = RunWithPose(dir.path());
+  EXPECT_TRUE(run.trace.offset_x_um.empty());
+  const auto shaft = testing::SyntheticSms(kShaft, 60, 72, 60e-3, 0.0);
+  FakeAnalyzer analyzer;
+  analyzer.Prepare(kShaft, shaft, kBushing, shaft, ModelSettings{});
+  const PressureMapData data = MakePressureData(run, 10.0, analyzer, LameLaw{}, shaft.grid);
+  EXPECT_NEAR(analyzer.last_pose.offset.x(), 1e-6, 1e-15);
+  EXPECT_THAT(data.pose_note, HasSubstr("taken from the device position (old trace"));
+  EXPECT_THAT(MakePressureChart(data).subtitle.back(), HasSubstr("device position"));
+}
+
 TEST(MakePressureData, RefusesDepthOutsideTheRunAndLawsWithoutPressure) {
   ScratchDir dir;
   const RunRecord run = RunWithPose(dir.path());
@@ -122,7 +160,12 @@ TEST(MakePressureData, RefusesDepthOutsideTheRunAndLawsWithoutPressure) {
   } catch (const UserError& e) {
     EXPECT_THAT(e.what(), HasSubstr("depth 25 mm is outside the run's constrained depth range"));
   }
-  EXPECT_THROW(MakePressureData(run, 5.0, analyzer, NoPressureLaw{}, shaft.grid), UnsupportedError);
+  try {
+    MakePressureData(run, 5.0, analyzer, NoPressureLaw{}, shaft.grid);
+    FAIL() << "a law without pressure gave a map";
+  } catch (const UnsupportedError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("its law 'gps' gives no contact pressure"));
+  }
 }
 
 TEST(MakePressureData, RendersPngAndSvg) {

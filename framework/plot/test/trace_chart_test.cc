@@ -44,6 +44,8 @@ TEST(FormatNewtons, PrecisionFollowsMagnitude) {
   EXPECT_EQ(FormatNewtons(0.00010023), "0.0001 N");
   EXPECT_EQ(FormatNewtons(588.36), "588 N");
   EXPECT_EQ(FormatNewtons(-2.5), "-2.5 N");
+  EXPECT_EQ(FormatNewtons(999.99), "1000 N");  // not 1e+03 N
+  EXPECT_EQ(FormatNewtons(-0.0), "0 N");
 }
 
 TEST(MakeTraceChart, OneLabelledCurvePerRunInEachPanel) {
@@ -65,6 +67,22 @@ TEST(MakeTraceChart, OneLabelledCurvePerRunInEachPanel) {
   EXPECT_TRUE(std::all_of(axial.begin(), axial.end(), [](double v) { return v > 0.0; }));
   EXPECT_NEAR(chart.panels[1].series[0].y.front(), std::hypot(0.5, 2.0), 1e-12);
   EXPECT_EQ(chart.panels[0].series[0].x.size(), 180u);
+}
+
+// A knuckle bearing turns at one depth: its curves are drawn against time.
+TEST(MakeTraceChart, RunsAtOneDepthAreDrawnAgainstTime) {
+  ScratchDir dir;
+  testing::WriteRun(dir.path() / "a", "knuckle-bearing", "gps", 1000.0);
+  std::string csv = "t_s,stage,depth_mm,fx_N,fy_N,fz_N\n";
+  for (int k = 0; k < 50; ++k) {
+    csv += std::to_string(0.001 * k) + ",constrained,0," + std::to_string(k) + ",0,1000\n";
+  }
+  testing::WriteFile(dir.path() / "a" / "trace.csv", csv);
+  const LineChart chart = MakeTraceChart({LoadRun(dir.path() / "a")});
+  EXPECT_EQ(chart.panels[0].x_label, "time (s)");
+  EXPECT_THAT(chart.title, HasSubstr("against time"));
+  EXPECT_NEAR(chart.panels[1].series[0].x.back(), 0.049, 1e-12);
+  EXPECT_NEAR(chart.panels[1].series[0].y.back(), std::hypot(49.0, 1000.0), 1e-9);
 }
 
 TEST(MakeTraceChart, NoRunIsRefused) { EXPECT_THROW(MakeTraceChart({}), UserError); }

@@ -92,7 +92,9 @@ TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
   options.out_dir = dir;
   const RunResult result = RunScene(testing::MakeFakeScene(5, 0.5), options);
   const auto lines = Lines(dir / "trace.csv");
-  const std::string tail = ",guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm";
+  const std::string tail =
+      ",guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,offset_x_um,"
+      "offset_z_um";
   ASSERT_GE(lines[0].size(), tail.size());
   EXPECT_EQ(lines[0].substr(lines[0].size() - tail.size()), tail);
   const auto columns = std::count(lines[0].begin(), lines[0].end(), ',');
