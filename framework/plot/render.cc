@@ -229,6 +229,7 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
     }
     const bool flat = y_high - y_low <= 1e-9 * std::max(std::abs(y_high), 1e-300);
     const bool empty = !(y_high >= y_low);  // a log panel of series that are zero throughout
+    body << "set ytics autofreq\n";
     if (panel.log_y) {
       body << "set logscale y\n";
       if (empty) {
@@ -240,8 +241,22 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
         // and squash everything a reader looks at; the axis keeps kLogDecades below the peak.
         // The lowest curve is lifted off the frame (a factor 1.5, a sixth of a decade), where a
         // constant one would otherwise hide in the border.
-        body << "set yrange [" << Num(std::max(y_low, y_high * std::pow(10.0, -kLogDecades)) / 1.5)
-             << ":*]\n";
+        const double bottom = std::max(y_low, y_high * std::pow(10.0, -kLogDecades)) / 1.5;
+        body << "set yrange [" << Num(bottom) << ":*]\n";
+        // Within two decades gnuplot labels at most one power of ten, which leaves the reader
+        // without a scale: label the 1-2-5 steps instead.
+        if (y_high < 100.0 * bottom) {
+          body << "set ytics (";
+          bool first = true;
+          for (double decade = std::pow(10.0, std::floor(std::log10(bottom)));
+               decade <= 10.0 * y_high; decade *= 10.0) {
+            for (double step : {1.0, 2.0, 5.0}) {
+              body << (first ? "" : ", ") << Num(step * decade);
+              first = false;
+            }
+          }
+          body << ")\n";
+        }
       }
     } else {
       body << "unset logscale y\n";
