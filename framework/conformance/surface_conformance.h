@@ -10,12 +10,8 @@
 // tests there). A surface type without a resistance law (renders_forces() == false) gets the
 // geometric tests and skips the force tests with a message saying why.
 
-#include <atomic>
 #include <cmath>
-#include <cstddef>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -27,15 +23,9 @@
 #include "framework/plugin/registry.h"
 #include "framework/runtime/prepare.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/allocation_counter.h"
 
 namespace fitfeel::conformance {
-
-// Counts heap allocations made by this thread while armed; the instantiating translation unit
-// replaces the global operator new to feed it (FITFEEL_SURFACE_CONFORMANCE does that).
-struct AllocationCounter {
-  static inline thread_local bool armed = false;
-  static inline thread_local std::size_t count = 0;
-};
 
 // How many seeds the property tests draw; plugins with slow generators may pass fewer.
 inline constexpr int kDefaultSeeds = 60;
@@ -202,8 +192,8 @@ TYPED_TEST_P(SurfaceConformance, EvaluateNeverAllocates) {
   Wrench wrench;
   MatingMotion motion;
   motion.velocity.y() = 0.01;
-  AllocationCounter::count = 0;
-  AllocationCounter::armed = true;
+  // Fed by the operator new that FITFEEL_SURFACE_CONFORMANCE replaces.
+  test_support::ScopedAllocationCounter allocations;
   for (int k = 0; k < 1000; ++k) {
     MatingPose pose;
     pose.depth = (k / 1000.0) * length;
@@ -211,8 +201,8 @@ TYPED_TEST_P(SurfaceConformance, EvaluateNeverAllocates) {
     analyzer->Evaluate(pose, &contact);
     law->Evaluate(contact, motion, &wrench);
   }
-  AllocationCounter::armed = false;
-  EXPECT_EQ(AllocationCounter::count, 0u);
+  allocations.Stop();
+  EXPECT_EQ(allocations.count(), 0);
   EXPECT_TRUE(wrench.AllFinite());
 }
 
@@ -223,28 +213,11 @@ REGISTER_TYPED_TEST_SUITE_P(SurfaceConformance, CellAreasSumToTheNominalArea,
 
 }  // namespace fitfeel::conformance
 
-// Replaces the global allocation functions of the test binary so the suite can count heap use in
-// the tick path; expanded once per test binary by FITFEEL_SURFACE_CONFORMANCE, at global scope.
-// GCC 12 reports the free() in the replaced operator delete as mismatched with `new` once both are
-// inlined, although the replaced operator new allocates with malloc: a false positive.
-#define FITFEEL_CONFORMANCE_COUNT_ALLOCATIONS()                                  \
-  _Pragma("GCC diagnostic push")                                                \
-  _Pragma("GCC diagnostic ignored \"-Wmismatched-new-delete\"")                 \
-  void* operator new(std::size_t size) {                                        \
-    if (::fitfeel::conformance::AllocationCounter::armed) {                     \
-      ++::fitfeel::conformance::AllocationCounter::count;                       \
-    }                                                                           \
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;                  \
-    throw std::bad_alloc();                                                     \
-  }                                                                             \
-  void operator delete(void* p) noexcept { std::free(p); }                      \
-  void operator delete(void* p, std::size_t) noexcept { std::free(p); }         \
-  _Pragma("GCC diagnostic pop")
-
 // One line per surface plugin, at global scope: a name and the repository-relative path of its
-// scenario.
+// scenario. It also replaces the binary's global operator new so the suite can count heap use in
+// the tick path.
 #define FITFEEL_SURFACE_CONFORMANCE(Name, scenario_path)                                     \
-  FITFEEL_CONFORMANCE_COUNT_ALLOCATIONS()                                                   \
+  FITFEEL_COUNT_ALLOCATIONS();                                                              \
   namespace fitfeel::conformance {                                                          \
   struct Name##ConformanceTraits {                                                          \
     static constexpr const char* kScenario = scenario_path;                                 \

@@ -1,57 +1,27 @@
 #include "surfaces/conical/conical_discretizer.h"
-#include "surfaces/conical/number_text.h"
 
-#include <algorithm>
 #include <cmath>
-#include <string>
 
-#include "framework/core/error.h"
+#include "framework/model/surface_of_revolution.h"
 #include "surfaces/conical/conical_geometry.h"
 
 namespace fitfeel::conical {
-namespace {
-
-constexpr int kAutoColumns = 72;
-constexpr double kAutoRowPitch = 2e-3;
-constexpr int kMinAutoRows = 8;
-constexpr int kMaxAutoRows = 400;
-
-}  // namespace
 
 SurfaceGrid ConicalDiscretizer::DoDiscretize(const PartSpec& part,
                                              const Resolution& resolution) const {
   const ConicalGeometry& geometry = GeometryOf(part);
-  int rows = resolution.rows;
-  int columns = resolution.columns;
-  if (resolution.is_auto()) {
-    rows = std::clamp(static_cast<int>(std::ceil(geometry.length() / kAutoRowPitch)), kMinAutoRows,
-                      kMaxAutoRows);
-    columns = kAutoColumns;
-  }
-  // Two-point sizes pair opposite columns, and a minimum-zone circle needs at least four points
-  // on each side; an axis needs three sections to be anything but straight.
-  if (columns < 8 || columns % 2 != 0) {
-    throw UserError("part '" + part.name + "': a cone needs an even number of columns >= 8, not " +
-                    NumberText(columns));
-  }
-  if (rows < 3) {
-    throw UserError("part '" + part.name + "': a cone needs at least 3 rows, not " +
-                    NumberText(rows));
-  }
-  SurfaceGrid grid;
-  grid.rows = rows;
-  grid.columns = columns;
-  grid.row_position.resize(rows);
-  grid.column_angle.resize(columns);
-  grid.centre.resize(3, rows * columns);
-  grid.normal.resize(3, rows * columns);
-  grid.area.resize(rows * columns);
+  revolution::AutoResolution automatic;
+  automatic.row_pitch = 2e-3;
+  // An axis needs three sections to be anything but straight.
+  const revolution::GridShape shape =
+      revolution::CheckedGridShape(part, resolution, geometry.length(), automatic, "a cone", 3);
+  const int rows = shape.rows, columns = shape.columns;
+  SurfaceGrid grid = revolution::EmptyGrid(shape);
   const double h = geometry.length() / rows;
   const double alpha = geometry.half_angle();
   // Radius grows towards +t on the pin and shrinks towards +y in the hole, so the normal away
   // from the axis leans back along the axis on the pin and forward in the hole.
   const double axial_normal = (part.role == Role::kInner ? -1.0 : 1.0) * std::sin(alpha);
-  for (int j = 0; j < columns; ++j) grid.column_angle(j) = 2.0 * M_PI * j / columns;
   for (int i = 0; i < rows; ++i) {
     const double y = (i + 0.5) * h;
     grid.row_position(i) = y;

@@ -7,6 +7,7 @@
 #include "framework/core/error.h"
 #include "framework/metrology/circle_fit.h"
 #include "framework/metrology/cylinder_form.h"
+#include "framework/model/surface_of_revolution.h"
 
 namespace fitfeel::conical {
 namespace {
@@ -64,38 +65,17 @@ double EvaluateConeForm(FormCharacteristic characteristic, const ConicalGeometry
 }
 
 TwoPointRange TwoPointSizes(const SurfaceGrid& grid, const Eigen::VectorXd& deviation) {
-  if (grid.columns % 2 != 0)
-    throw std::invalid_argument("two-point sizes need an even column count");
-  const int half = grid.columns / 2;
-  TwoPointRange range{std::numeric_limits<double>::infinity(),
-                      -std::numeric_limits<double>::infinity()};
-  for (int i = 0; i < grid.rows; ++i) {
-    for (int j = 0; j < half; ++j) {
-      const double size = deviation(grid.index(i, j)) + deviation(grid.index(i, j + half));
-      range.min = std::min(range.min, size);
-      range.max = std::max(range.max, size);
-    }
-  }
-  return range;
+  return revolution::TwoPointSizes(grid, deviation, revolution::Antipode::kSameRow);
 }
 
 std::vector<CharacteristicCheck> EvaluateConeCharacteristics(const PartSpec& part,
                                                              const SkinModelShape& sms) {
   const ConicalGeometry& geometry = GeometryOf(part);
-  std::vector<CharacteristicCheck> checks;
-  const TwoPointRange size = TwoPointSizes(sms.grid, sms.variation);
-  checks.push_back(
-      {"two_point_size_min", size.min, part.size.lower_deviation, part.size.upper_deviation});
-  checks.push_back(
-      {"two_point_size_max", size.max, part.size.lower_deviation, part.size.upper_deviation});
-  const Eigen::VectorXd form = sms.surface_part.size() == sms.variation.size()
-                                   ? Eigen::VectorXd(sms.variation - sms.surface_part)
-                                   : sms.variation;
-  for (const auto& [characteristic, tolerance] : part.form.tolerance) {
-    checks.push_back({ToString(characteristic),
-                      EvaluateConeForm(characteristic, geometry, sms.grid, form), 0.0, tolerance});
-  }
-  return checks;
+  return revolution::EvaluateCharacteristics(
+      part, sms, revolution::Antipode::kSameRow,
+      [&](FormCharacteristic characteristic, const Eigen::VectorXd& form) {
+        return EvaluateConeForm(characteristic, geometry, sms.grid, form);
+      });
 }
 
 }  // namespace fitfeel::conical

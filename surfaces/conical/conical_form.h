@@ -6,6 +6,7 @@
 
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
+#include "framework/model/surface_of_revolution.h"
 #include "framework/model/surface_type.h"
 #include "surfaces/conical/conical_geometry.h"
 
@@ -26,10 +27,7 @@ double EvaluateConeForm(FormCharacteristic characteristic, const ConicalGeometry
 // Smallest and largest two-point size deviation (ISO 14405-1 LP, the default): the diameter
 // through opposite cells (j, j + n/2) of a row minus the nominal diameter there, i.e.
 // V(i, j) + V(i, j + n/2). Needs an even column count.
-struct TwoPointRange {
-  double min = 0.0;
-  double max = 0.0;
-};
+using TwoPointRange = revolution::TwoPointRange;
 TwoPointRange TwoPointSizes(const SurfaceGrid& grid, const Eigen::VectorXd& deviation);
 
 // Every characteristic of `part`'s spec on a skin model shape: two-point size limits on the whole

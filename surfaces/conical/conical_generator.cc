@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "framework/model/surface_of_revolution.h"
 #include "surfaces/conical/conical_form.h"
 #include "surfaces/conical/conical_geometry.h"
 
@@ -15,16 +16,8 @@ namespace {
 constexpr double kMinFormWavelength = 10e-3;
 constexpr int kMinLobes = 2;
 constexpr int kMaxLobes = 10;
-// Step 3 converges in one or two rounds (the evaluations are homogeneous of degree one up to
-// e^2/R terms); the bound only guards against a bug.
-constexpr int kMaxScaleRounds = 30;
-// Scaling lands a hair inside the tolerance so that rounding cannot leave it a hair outside.
-constexpr double kScaleMargin = 1.0 - 1e-9;
 
-double Uniform(Rng& rng, double lo, double hi) {
-  if (!(hi > lo)) return lo;
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+using revolution::Uniform;
 
 // Sampling sections at spacing `spacing` covering [0, length] (first one at or before 0).
 struct Sections {
@@ -40,29 +33,15 @@ struct Sections {
   }
 };
 
-double TruncatedGaussian(Rng& rng, double sigma, double bound) {
-  std::normal_distribution<double> normal(0.0, sigma);
-  for (;;) {
-    const double x = normal(rng);
-    if (std::abs(x) <= bound) return x;
-  }
-}
-
 }  // namespace
 
 SkinModelShape ConicalVariationGenerator::DoGenerate(const PartSpec& part, const SurfaceGrid& grid,
                                                      TextureMode texture, Rng& rng) const {
   const ConicalGeometry& geometry = GeometryOf(part);
-  const int m = grid.rows, n = grid.columns, cells = grid.size();
+  const int m = grid.rows, n = grid.columns;
   SkinModelShape sms;
-  sms.grid = grid;
-  sms.dimension_part = Eigen::VectorXd::Zero(cells);
-  sms.form_part = Eigen::VectorXd::Zero(cells);
-  sms.surface_part = Eigen::VectorXd::Zero(cells);
-
+  const double size = revolution::StartWithSize(part, grid, rng, &sms);
   const double lower = part.size.lower_deviation, upper = part.size.upper_deviation;
-  const double size = Uniform(rng, lower, upper);
-  sms.dimension_part.setConstant(0.5 * size);
 
   const double t_axis = part.form.Get(FormCharacteristic::kAxisStraightness);
   const double t_round = part.form.Get(FormCharacteristic::kRoundness);
@@ -103,22 +82,13 @@ SkinModelShape ConicalVariationGenerator::DoGenerate(const PartSpec& part, const
     }
   }
   // Step 3: every specified form tolerance, evaluated as a metrologist would.
-  for (int round = 0; round < kMaxScaleRounds; ++round) {
-    double factor = 1.0;
-    for (const auto& [characteristic, tolerance] : part.form.tolerance) {
-      const double value = EvaluateConeForm(characteristic, geometry, grid, sms.form_part);
-      if (value > tolerance) factor = std::min(factor, kScaleMargin * tolerance / value);
-    }
-    if (factor >= 1.0) break;
-    sms.form_part *= factor;
-  }
-
-  const double texture_range = 0.5 * (part.texture.waviness + part.texture.rz);
-  if (texture == TextureMode::kSampled && texture_range > 0.0) {
-    for (int k = 0; k < cells; ++k) {
-      sms.surface_part(k) = TruncatedGaussian(rng, texture_range / 3.0, texture_range);
-    }
-  }
+  revolution::ScaleFormIntoTolerances(
+      part.form,
+      [&](FormCharacteristic characteristic, const Eigen::VectorXd& form) {
+        return EvaluateConeForm(characteristic, geometry, grid, form);
+      },
+      &sms.form_part);
+  revolution::SampleTexture(part.texture, texture, rng, &sms.surface_part);
 
   // Final clamp on the two-point sizes: size + f(i,j) + f(i,j+n/2) in [lower, upper].
   const int half = n / 2;
@@ -134,12 +104,7 @@ SkinModelShape ConicalVariationGenerator::DoGenerate(const PartSpec& part, const
       if (size + f > upper || size + f < lower) sms.scaled_back_cells += 2;
     }
   }
-  if (factor < 1.0) {
-    factor = std::max(0.0, factor * kScaleMargin);
-    sms.form_part *= factor;
-    sms.surface_part *= factor;
-  }
-  sms.variation = sms.dimension_part + sms.form_part + sms.surface_part;
+  revolution::FinishWithScaleBack(factor, &sms);
   return sms;
 }
 

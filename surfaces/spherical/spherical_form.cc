@@ -7,6 +7,7 @@
 
 #include "framework/metrology/circle_fit.h"
 #include "framework/metrology/linear_program.h"
+#include "framework/model/surface_of_revolution.h"
 
 namespace fitfeel::spherical {
 namespace {
@@ -78,40 +79,17 @@ double EvaluateSphereForm(FormCharacteristic characteristic, const SphericalGeom
 }
 
 TwoPointRange TwoPointSizes(const SurfaceGrid& grid, const Eigen::VectorXd& deviation) {
-  if (grid.columns % 2 != 0)
-    throw std::invalid_argument("two-point sizes need an even column count");
-  const int half = grid.columns / 2;
-  TwoPointRange range{std::numeric_limits<double>::infinity(),
-                      -std::numeric_limits<double>::infinity()};
-  for (int i = 0; i < grid.rows; ++i) {
-    for (int j = 0; j < grid.columns; ++j) {
-      const double size = deviation(grid.index(i, j)) +
-                          deviation(grid.index(grid.rows - 1 - i, (j + half) % grid.columns));
-      range.min = std::min(range.min, size);
-      range.max = std::max(range.max, size);
-    }
-  }
-  return range;
+  return revolution::TwoPointSizes(grid, deviation, revolution::Antipode::kMirroredRow);
 }
 
 std::vector<CharacteristicCheck> EvaluateSphereCharacteristics(const PartSpec& part,
                                                                const SkinModelShape& sms) {
   const SphericalGeometry& geometry = GeometryOf(part);
-  std::vector<CharacteristicCheck> checks;
-  const TwoPointRange size = TwoPointSizes(sms.grid, sms.variation);
-  checks.push_back(
-      {"two_point_size_min", size.min, part.size.lower_deviation, part.size.upper_deviation});
-  checks.push_back(
-      {"two_point_size_max", size.max, part.size.lower_deviation, part.size.upper_deviation});
-  const Eigen::VectorXd form = sms.surface_part.size() == sms.variation.size()
-                                   ? Eigen::VectorXd(sms.variation - sms.surface_part)
-                                   : sms.variation;
-  for (const auto& [characteristic, tolerance] : part.form.tolerance) {
-    checks.push_back({ToString(characteristic),
-                      EvaluateSphereForm(characteristic, geometry, sms.grid, form), 0.0,
-                      tolerance});
-  }
-  return checks;
+  return revolution::EvaluateCharacteristics(
+      part, sms, revolution::Antipode::kMirroredRow,
+      [&](FormCharacteristic characteristic, const Eigen::VectorXd& form) {
+        return EvaluateSphereForm(characteristic, geometry, sms.grid, form);
+      });
 }
 
 }  // namespace fitfeel::spherical

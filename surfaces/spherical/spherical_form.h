@@ -6,6 +6,7 @@
 
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
+#include "framework/model/surface_of_revolution.h"
 #include "framework/model/surface_type.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
@@ -24,10 +25,7 @@ double EvaluateSphereForm(FormCharacteristic characteristic, const SphericalGeom
 
 // Two-point sizes through the centre (ISO 14405-1 LP): cell (i, j) and its antipode
 // (m-1-i, j+n/2), as the diameter deviation V + V_antipode.
-struct TwoPointRange {
-  double min = 0.0;
-  double max = 0.0;
-};
+using TwoPointRange = revolution::TwoPointRange;
 TwoPointRange TwoPointSizes(const SurfaceGrid& grid, const Eigen::VectorXd& deviation);
 
 // Every characteristic of `part`'s spec on a skin model shape: two-point sizes on the whole

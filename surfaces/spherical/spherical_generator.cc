@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "framework/model/surface_of_revolution.h"
 #include "surfaces/spherical/spherical_form.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
@@ -15,22 +16,8 @@ namespace {
 constexpr double kMinFormWavelength = 10e-3;
 constexpr int kMinLobes = 2;
 constexpr int kMaxLobes = 10;
-constexpr int kMaxScaleRounds = 30;
-// Scaling lands a hair inside the tolerance so that rounding cannot leave it a hair outside.
-constexpr double kScaleMargin = 1.0 - 1e-9;
 
-double Uniform(Rng& rng, double lo, double hi) {
-  if (!(hi > lo)) return lo;
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-double TruncatedGaussian(Rng& rng, double sigma, double bound) {
-  std::normal_distribution<double> normal(0.0, sigma);
-  for (;;) {
-    const double x = normal(rng);
-    if (std::abs(x) <= bound) return x;
-  }
-}
+using revolution::Uniform;
 
 }  // namespace
 
@@ -38,16 +25,10 @@ SkinModelShape SphericalVariationGenerator::DoGenerate(const PartSpec& part,
                                                        const SurfaceGrid& grid, TextureMode texture,
                                                        Rng& rng) const {
   const SphericalGeometry& geometry = GeometryOf(part);
-  const int m = grid.rows, n = grid.columns, cells = grid.size();
+  const int m = grid.rows, n = grid.columns;
   SkinModelShape sms;
-  sms.grid = grid;
-  sms.dimension_part = Eigen::VectorXd::Zero(cells);
-  sms.form_part = Eigen::VectorXd::Zero(cells);
-  sms.surface_part = Eigen::VectorXd::Zero(cells);
-
+  const double size = revolution::StartWithSize(part, grid, rng, &sms);
   const double lower = part.size.lower_deviation, upper = part.size.upper_deviation;
-  const double size = Uniform(rng, lower, upper);
-  sms.dimension_part.setConstant(0.5 * size);
 
   const double t_round = part.form.Get(FormCharacteristic::kRoundness);
   const double t_sphere = part.form.Get(FormCharacteristic::kSphericity);
@@ -82,22 +63,13 @@ SkinModelShape SphericalVariationGenerator::DoGenerate(const PartSpec& part,
     }
   }
   // Step 3.
-  for (int round = 0; round < kMaxScaleRounds; ++round) {
-    double factor = 1.0;
-    for (const auto& [characteristic, tolerance] : part.form.tolerance) {
-      const double value = EvaluateSphereForm(characteristic, geometry, grid, sms.form_part);
-      if (value > tolerance) factor = std::min(factor, kScaleMargin * tolerance / value);
-    }
-    if (factor >= 1.0) break;
-    sms.form_part *= factor;
-  }
-
-  const double texture_range = 0.5 * (part.texture.waviness + part.texture.rz);
-  if (texture == TextureMode::kSampled && texture_range > 0.0) {
-    for (int k = 0; k < cells; ++k) {
-      sms.surface_part(k) = TruncatedGaussian(rng, texture_range / 3.0, texture_range);
-    }
-  }
+  revolution::ScaleFormIntoTolerances(
+      part.form,
+      [&](FormCharacteristic characteristic, const Eigen::VectorXd& form) {
+        return EvaluateSphereForm(characteristic, geometry, grid, form);
+      },
+      &sms.form_part);
+  revolution::SampleTexture(part.texture, texture, rng, &sms.surface_part);
 
   // Final clamp on the two-point sizes through the centre.
   const int half = n / 2;
@@ -112,12 +84,7 @@ SkinModelShape SphericalVariationGenerator::DoGenerate(const PartSpec& part,
       if (size + f > upper || size + f < lower) ++sms.scaled_back_cells;
     }
   }
-  if (factor < 1.0) {
-    factor = std::max(0.0, factor * kScaleMargin);
-    sms.form_part *= factor;
-    sms.surface_part *= factor;
-  }
-  sms.variation = sms.dimension_part + sms.form_part + sms.surface_part;
+  revolution::FinishWithScaleBack(factor, &sms);
   return sms;
 }
 

@@ -1,8 +1,6 @@
 // Record and replay end to end through the real CLI and plugins: a run of a simulated hand writes
 // recording.csv; the replay device playing it against the same scene and seed gives the same
 // trace bit for bit (every column but tick_us, a measurement of this machine).
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -15,39 +13,20 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using ::fitfeel::test_support::CliOptions;
+using ::fitfeel::test_support::CliResult;
+using ::fitfeel::test_support::ReadText;
 
 const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-const fs::path kFitfeel = fs::path(FITFEEL_TEST_BUILD_DIR) / "bin" / "fitfeel";
 
-struct Result {
-  int code = -1;
-  std::string output;
-};
-
-Result RunFitfeel(const std::string& args) {
-  const fs::path log =
-      fs::temp_directory_path() / ("fitfeel-replay-e2e-" + std::to_string(::getpid()) + ".log");
-  const std::string command = "cd '" + kSource.string() + "' && '" + kFitfeel.string() + "' " +
-                              args + " > '" + log.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  r.output = text.str();
-  fs::remove(log);
-  return r;
-}
-
-std::string ReadText(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+// Runs `fitfeel <args>` (shell text) from the repository's root, stdout and stderr together.
+CliResult RunFitfeel(const std::string& args) {
+  return ::fitfeel::test_support::RunFitfeel(args, CliOptions().In(kSource).MergingStderr());
 }
 
 void WriteText(const fs::path& file, const std::string& text) {
@@ -112,20 +91,20 @@ nlohmann::json RoundTrip(const fs::path& dir, const std::string& safety,
   const fs::path recorded = dir / "recorded";
   WriteText(dir / "record.yaml", CaseOneWith(std::string(kHand) + safety + kRun +
                                              "  outputs: [trace, summary, recording]\n"));
-  const Result a =
+  const CliResult a =
       RunFitfeel("run '" + (dir / "record.yaml").string() + "' --out '" + recorded.string() + "'");
-  EXPECT_EQ(a.code, 0) << a.output;
-  EXPECT_TRUE(fs::exists(recorded / "recording.csv")) << a.output;
-  EXPECT_NE(a.output.find((recorded / "recording.csv").string()), std::string::npos) << a.output;
-  EXPECT_NE(a.output.find("safety"), std::string::npos) << a.output;
+  EXPECT_EQ(a.exit_code, 0) << a.out;
+  EXPECT_TRUE(fs::exists(recorded / "recording.csv")) << a.out;
+  EXPECT_NE(a.out.find((recorded / "recording.csv").string()), std::string::npos) << a.out;
+  EXPECT_NE(a.out.find("safety"), std::string::npos) << a.out;
 
   fs::copy_file(recorded / "recording.csv", dir / "hand.rec", fs::copy_options::overwrite_existing);
   WriteText(dir / "replay.yaml",
             CaseOneWith(replay_device + safety + kRun + "  outputs: [trace, summary]\n"));
   const fs::path replayed = dir / "replayed";
-  const Result b =
+  const CliResult b =
       RunFitfeel("run '" + (dir / "replay.yaml").string() + "' --out '" + replayed.string() + "'");
-  EXPECT_EQ(b.code, 0) << b.output;
+  EXPECT_EQ(b.exit_code, 0) << b.out;
 
   const auto original = Physics(recorded / "trace.csv");
   const auto replay = Physics(replayed / "trace.csv");
@@ -168,10 +147,10 @@ TEST_F(ReplayRoundTrip, ReplayingARecordingGivesTheSameTraceBitForBit) {
   text.resize(text.rfind('\n') + 1);
   WriteText(dir_ / "hand.rec", text);
   const fs::path refused = dir_ / "refused";
-  const Result c =
+  const CliResult c =
       RunFitfeel("run '" + (dir_ / "replay.yaml").string() + "' --out '" + refused.string() + "'");
-  EXPECT_EQ(c.code, 2) << c.output;
-  EXPECT_NE(c.output.find("hand.rec:"), std::string::npos) << c.output;
+  EXPECT_EQ(c.exit_code, 2) << c.out;
+  EXPECT_NE(c.out.find("hand.rec:"), std::string::npos) << c.out;
   EXPECT_FALSE(fs::exists(refused));
 }
 

@@ -1,8 +1,6 @@
 // Runs build/bin/fitfeel as a user would and checks the output contract and the physics that
 // must hold whatever the model's details: the radial resistance carries the shaft's weight on
 // average (momentum balance), and the run is reproducible for a seed.
-#include <sys/wait.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,31 +12,19 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using ::fitfeel::test_support::CliOptions;
+using ::fitfeel::test_support::CliResult;
 
 const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-const fs::path kFitfeel = fs::path(FITFEEL_TEST_BUILD_DIR) / "bin" / "fitfeel";
 
-struct Result {
-  int code = -1;
-  std::string output;
-};
-
-Result RunFitfeel(const std::string& args) {
-  const fs::path log = fs::temp_directory_path() / ("fitfeel-e2e-" + std::to_string(::getpid()));
-  const std::string command = "cd '" + kSource.string() + "' && '" + kFitfeel.string() + "' " +
-                              args + " > '" + log.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  Result r;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  r.output = text.str();
-  fs::remove(log);
-  return r;
+// Runs `fitfeel <args>` (shell text) from the repository's root, stdout and stderr together.
+CliResult RunFitfeel(const std::string& args) {
+  return ::fitfeel::test_support::RunFitfeel(args, CliOptions().In(kSource).MergingStderr());
 }
 
 fs::path FreshDir(const std::string& name) {
@@ -73,11 +59,11 @@ nlohmann::json ReadJson(const fs::path& file) {
 
 TEST(RunCommandTest, DefaultScenarioWritesTheContractAndCarriesTheShaftsWeight) {
   const fs::path out = FreshDir("default");
-  const Result r = RunFitfeel("run --virtual --out '" + out.string() + "'");
-  ASSERT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("axial resistance"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find((out / "trace.csv").string()), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find((out / "summary.json").string()), std::string::npos) << r.output;
+  const CliResult r = RunFitfeel("run --virtual --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("axial resistance"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find((out / "trace.csv").string()), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find((out / "summary.json").string()), std::string::npos) << r.out;
 
   const auto summary = ReadJson(out / "summary.json");
   const auto rows = ReadCsv(out / "trace.csv");
@@ -109,9 +95,9 @@ TEST(RunCommandTest, DefaultScenarioWritesTheContractAndCarriesTheShaftsWeight) 
 
 TEST(RunCommandTest, SameSeedSameTraceAnotherSeedAnother) {
   const fs::path a = FreshDir("seed-a"), b = FreshDir("seed-b"), c = FreshDir("seed-c");
-  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + a.string() + "'").code, 0);
-  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + b.string() + "'").code, 0);
-  ASSERT_EQ(RunFitfeel("run --virtual --seed 12 --out '" + c.string() + "'").code, 0);
+  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + a.string() + "'").exit_code, 0);
+  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + b.string() + "'").exit_code, 0);
+  ASSERT_EQ(RunFitfeel("run --virtual --seed 12 --out '" + c.string() + "'").exit_code, 0);
   EXPECT_EQ(Physics(ReadCsv(a / "trace.csv")), Physics(ReadCsv(b / "trace.csv")));
   EXPECT_NE(Physics(ReadCsv(a / "trace.csv")), Physics(ReadCsv(c / "trace.csv")));
   EXPECT_EQ(ReadJson(a / "summary.json")["seed"], 11);
@@ -132,14 +118,14 @@ TEST(RunCommandTest, ABadScenarioExitsTwoAndCreatesNothing) {
     std::ofstream(scene) << yaml;
   }
   const fs::path out = dir / "out";
-  const Result r = RunFitfeel("run '" + scene.string() + "' --out '" + out.string() + "'");
-  EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_NE(r.output.find("bad.yaml:"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("speeed"), std::string::npos) << r.output;
+  const CliResult r = RunFitfeel("run '" + scene.string() + "' --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("bad.yaml:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("speeed"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(out));
 
-  const Result missing = RunFitfeel("run '" + (dir / "nowhere.yaml").string() + "'");
-  EXPECT_EQ(missing.code, 2) << missing.output;
+  const CliResult missing = RunFitfeel("run '" + (dir / "nowhere.yaml").string() + "'");
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
   fs::remove_all(dir);
 }
 

@@ -1,25 +1,15 @@
 // Read and Write run in the tick: they must not allocate.
 #include "devices/replay/replay_device.h"
 
-#include <atomic>
-#include <cstdlib>
+#include <filesystem>
 #include <memory>
-#include <new>
+#include <vector>
+
+#include "framework/testing/allocation_counter.h"
 
 #include <gtest/gtest.h>
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {
@@ -40,10 +30,9 @@ TEST(ReplayTick, ReadAndWriteDoNotAllocate) {
   ReplayDevice device;
   device.Configure(settings);
   device.Start(1e-3);
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   auto probe = std::make_unique<int>(1);  // the counter works
-  const long baseline = allocations.load();
+  const long baseline = allocations.count();
   for (int k = 0; k < 3000; ++k) {
     DeviceState state;
     device.Read(k * 1e-3, &state);
@@ -51,9 +40,9 @@ TEST(ReplayTick, ReadAndWriteDoNotAllocate) {
     w.force.y() = state.position.y();
     device.Write(w);
   }
-  counting = false;
+  allocations.Stop();
   EXPECT_EQ(baseline, 1);
-  EXPECT_EQ(allocations.load(), baseline);
+  EXPECT_EQ(allocations.count(), baseline);
   std::filesystem::remove(file);
 }
 

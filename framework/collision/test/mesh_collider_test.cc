@@ -1,28 +1,15 @@
 #include "framework/collision/mesh_collider.h"
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <random>
 
 #include "framework/core/error.h"
+#include "framework/testing/allocation_counter.h"
 
 #include <gtest/gtest.h>
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {
@@ -126,11 +113,10 @@ TEST(MeshColliderTest, RefusesBadMeshes) {
 }
 
 TEST(MeshColliderTest, CounterSeesAllocations) {
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   auto probe = std::make_unique<double>(1.0);
-  counting = false;
-  EXPECT_EQ(allocations.load(), 1);
+  allocations.Stop();
+  EXPECT_EQ(allocations.count(), 1);
 }
 
 // FCL's collide fills a std::vector of contacts and builds its traversal node on the stack; with
@@ -139,18 +125,17 @@ TEST(MeshColliderTest, QueriesDoNotAllocate) {
   const MeshCollider collider = MakePair();
   Penetration p;
   int in_contact = 0;
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   for (int k = 0; k < 2000; ++k) {
     const double x = 15e-3 * std::sin(k * 0.01);
     const double y = 2e-3 * std::cos(k * 0.013);
     collider.Query(At(x, y, 0.0), &p);
     in_contact += p.contact ? 1 : 0;
   }
-  counting = false;
+  allocations.Stop();
   EXPECT_GT(in_contact, 100);  // both branches were exercised
   EXPECT_LT(in_contact, 1900);
-  EXPECT_EQ(allocations.load(), 0);
+  EXPECT_EQ(allocations.count(), 0);
 }
 
 }  // namespace

@@ -1,12 +1,11 @@
 // `fitfeel plugins`, run as a user runs it: the built CLI with FITFEEL_PLUGIN_PATH pointing at the
 // good test plugin and a broken one.
 
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <system_error>
 
@@ -14,16 +13,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "framework/testing/cli_runner.h"
+
 namespace fitfeel {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::CliOptions;
+using test_support::CliResult;
 using ::testing::HasSubstr;
-
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-};
 
 // The build tree: FITFEEL_BUILD_DIR when set (fitfeel_add_test means to set it), else the folder
 // above this test binary, which fitfeel_add_test puts in <build>/tests/. The fallback matters:
@@ -37,19 +35,11 @@ fs::path BuildDir() {
 
 fs::path CaseDir(const std::string& name) { return BuildDir() / "test-plugins" / name; }
 
-// Runs the CLI with the given plugin path; stdout only (stderr goes to the test log).
-CliRun RunPlugins(const std::string& plugin_path, const std::string& args) {
-  const std::string command = "FITFEEL_PLUGIN_PATH='" + plugin_path + "' '" +
-                              (BuildDir() / "bin" / "fitfeel").string() + "' plugins " + args;
-  CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    run.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+// Runs `fitfeel plugins <args>` with the given plugin path; its stderr goes to the test log.
+CliResult RunPlugins(const std::string& plugin_path, const std::string& args) {
+  CliResult run =
+      test_support::RunFitfeel("plugins " + args, CliOptions().WithPluginPath(plugin_path));
+  std::cerr << run.err;
   return run;
 }
 
@@ -57,14 +47,14 @@ class PluginsCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
     ASSERT_FALSE(BuildDir().empty()) << "FITFEEL_BUILD_DIR is not set: run through ctest";
-    ASSERT_TRUE(fs::exists(BuildDir() / "bin" / "fitfeel")) << "the fitfeel CLI was not built";
+    ASSERT_TRUE(fs::exists(test_support::FitfeelBinary())) << "the fitfeel CLI was not built";
     path_ = CaseDir("good").string() + ":" + CaseDir("wrong_abi").string();
   }
   std::string path_;
 };
 
 TEST_F(PluginsCommandTest, ListsPluginsFoldersAndRefusalsAsAlignedText) {
-  const CliRun run = RunPlugins(path_, "");
+  const CliResult run = RunPlugins(path_, "");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   const fs::path good = fs::canonical(CaseDir("good") / "libfitfeel_test_good.so");
   EXPECT_THAT(run.out, HasSubstr("ID"));
@@ -97,7 +87,7 @@ TEST_F(PluginsCommandTest, ListsPluginsFoldersAndRefusalsAsAlignedText) {
 }
 
 TEST_F(PluginsCommandTest, JsonListsTheSame) {
-  const CliRun run = RunPlugins(path_, "--json");
+  const CliResult run = RunPlugins(path_, "--json");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   const nlohmann::json json = nlohmann::json::parse(run.out);
   bool saw_surface = false;

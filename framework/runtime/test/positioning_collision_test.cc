@@ -1,31 +1,18 @@
 // The positioning stage with coarse meshes: FCL contact in free motion, the hand-over, and a tick
 // that does not allocate. Its own binary, since it counts every operator new.
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <memory>
-#include <new>
 #include <random>
 
 #include "framework/collision/coarse_mesh.h"
 #include "framework/core/error.h"
 #include "framework/runtime/positioning_stage.h"
+#include "framework/testing/allocation_counter.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {
@@ -161,11 +148,10 @@ TEST(PositioningCollisionTest, FreeStiffnessIsTheContactStiffnessCappedByTheDevi
 }
 
 TEST(PositioningCollisionTest, CounterSeesAllocations) {
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   auto probe = std::make_unique<double>(1.0);
-  counting = false;
-  EXPECT_EQ(allocations.load(), 1);
+  allocations.Stop();
+  EXPECT_EQ(allocations.count(), 1);
 }
 
 // The tick's FCL query reuses the contact buffer reserved at construction: no operator new,
@@ -174,18 +160,17 @@ TEST(PositioningCollisionTest, TheTickDoesNotAllocate) {
   const PositioningStage stage(WithStiffness(), Meshes(), Role::kInner);
   StageOutput out;
   int in_contact = 0;
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   for (int k = 0; k < 3000; ++k) {
     const double x = 15e-3 * std::sin(k * 0.01);
     const double y = 2e-3 * std::cos(k * 0.013);
     stage.Evaluate(At(x, y, 0.3 * x, 0.02 * std::sin(k * 0.007)), &out);
     in_contact += out.stiffness > 0.0 ? 1 : 0;
   }
-  counting = false;
+  allocations.Stop();
   EXPECT_GT(in_contact, 100);
   EXPECT_LT(in_contact, 2900);
-  EXPECT_EQ(allocations.load(), 0);
+  EXPECT_EQ(allocations.count(), 0);
 }
 
 }  // namespace

@@ -1,30 +1,17 @@
 // The scheduler's tick with the safety chain and the recording must not allocate: count every
 // operator new while it ticks (a binary of its own: the counting operator new is global).
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <memory>
-#include <new>
 
 // Framework headers first: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include "framework/device/device_specs.h"
 #include "framework/runtime/scheduler.h"
+#include "framework/testing/allocation_counter.h"
 
 #include <gtest/gtest.h>
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {
@@ -68,11 +55,10 @@ class WallStage final : public Stage {
 };
 
 TEST(SchedulerTickAllocation, CounterSeesAllocations) {
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   auto probe = std::make_unique<double>(1.0);
-  counting = false;
-  EXPECT_EQ(allocations.load(), 1);
+  allocations.Stop();
+  EXPECT_EQ(allocations.count(), 1);
 }
 
 TEST(SchedulerTickAllocation, TickWithTheSafetyChainAndRecordingDoesNotAllocate) {
@@ -87,16 +73,15 @@ TEST(SchedulerTickAllocation, TickWithTheSafetyChainAndRecordingDoesNotAllocate)
     settings.safety.passivity_controller = true;
     settings.record = true;
     Scheduler scheduler(device, positioning, constrained, settings);
-    allocations = 0;
-    counting = true;
+    test_support::ScopedAllocationCounter allocations;
     int ticks = 0;
     for (int k = 0; k < 2000; ++k) ticks += scheduler.Tick(k * 1e-3) ? 1 : 0;
     const double pushed = scheduler.safety().report().max_physical_force;
     scheduler.Rewind();
     ticks += scheduler.Tick(0.0) ? 1 : 0;
-    counting = false;
+    allocations.Stop();
     EXPECT_EQ(ticks, 2001);
-    EXPECT_EQ(allocations.load(), 0) << (mode == CouplingMode::kDirect ? "direct" : "coupled");
+    EXPECT_EQ(allocations.count(), 0) << (mode == CouplingMode::kDirect ? "direct" : "coupled");
     EXPECT_GT(pushed, 0.0);  // the wall was met: the chain did real work
   }
 }

@@ -1,38 +1,26 @@
 // The per-tick path must not allocate: count every operator new while the chain ticks.
-#include <atomic>
-#include <cstdlib>
+#include <algorithm>
+#include <cmath>
 #include <memory>
-#include <new>
 
 // Framework headers first: the skeleton's framework/core/quantity.h names a parameter si_value,
 // which <signal.h> (pulled in by gtest) defines as a macro.
 #include "framework/device/device_specs.h"
 #include "framework/safety/safety_chain.h"
+#include "framework/testing/allocation_counter.h"
 
 #include <gtest/gtest.h>
 
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {
 
 TEST(SafetyChainTick, CounterSeesAllocations) {
-  allocations = 0;
-  counting = true;
+  test_support::ScopedAllocationCounter allocations;
   auto probe = std::make_unique<double>(1.0);
-  counting = false;
-  EXPECT_EQ(allocations.load(), 1);
+  allocations.Stop();
+  EXPECT_EQ(allocations.count(), 1);
 }
 
 TEST(SafetyChainTick, DoesNotAllocate) {
@@ -45,8 +33,7 @@ TEST(SafetyChainTick, DoesNotAllocate) {
     chain.Configure(s, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
     DeviceState device;
     Wrench physical;
-    allocations = 0;
-    counting = true;
+    test_support::ScopedAllocationCounter allocations;
     for (int k = 0; k < 2000; ++k) {
       device.position.y() = 0.001 * std::sin(k * 0.01);
       device.velocity.y() = 0.01 * std::cos(k * 0.01);
@@ -59,8 +46,8 @@ TEST(SafetyChainTick, DoesNotAllocate) {
       const Wrench out = chain.Apply(physical, device, 1e-3);
       ASSERT_TRUE(out.AllFinite());
     }
-    counting = false;
-    EXPECT_EQ(allocations.load(), 0) << "mode " << static_cast<int>(mode);
+    allocations.Stop();
+    EXPECT_EQ(allocations.count(), 0) << "mode " << static_cast<int>(mode);
   }
 }
 

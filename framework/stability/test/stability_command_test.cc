@@ -1,8 +1,5 @@
 // Runs the real `fitfeel stability` binary on the paper case 1 scene (with the registry's test
 // device, found through FITFEEL_PLUGIN_PATH; the cylindrical plugin comes from the build tree).
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -11,31 +8,19 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using ::fitfeel::test_support::CliOptions;
+using ::fitfeel::test_support::CliResult;
+using ::fitfeel::test_support::ReadText;
 using ::testing::HasSubstr;
 
 const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
 const fs::path kBuild = FITFEEL_TEST_BUILD_DIR;
 const fs::path kScene = kSource / "framework/stability/test/case1_still.yaml";
-
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string Slurp(const fs::path& file) {
-  std::string text;
-  if (FILE* f = std::fopen(file.c_str(), "r")) {
-    char buffer[4096];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-    std::fclose(f);
-  }
-  return text;
-}
 
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> out;
@@ -45,27 +30,14 @@ std::vector<std::string> Lines(const std::string& text) {
 }
 
 fs::path EmptyFolder(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_stability_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return ::fitfeel::test_support::EmptyFolder("fitfeel_stability_test", name);
 }
 
-Result Stability(const std::string& arguments, const fs::path& cwd) {
-  const fs::path logs = fs::path(::testing::TempDir()) / "fitfeel_stability_test";
-  fs::create_directories(logs);
-  const fs::path out = logs / (cwd.filename().string() + ".out");
-  const fs::path err = logs / (cwd.filename().string() + ".err");
-  const std::string command = "cd '" + cwd.string() + "' && FITFEEL_PLUGIN_PATH='" +
-                              (kBuild / "test-plugins/good").string() + "' '" +
-                              (kBuild / "bin/fitfeel").string() + "' stability " + arguments +
-                              " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  Result result;
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  result.out = Slurp(out);
-  result.err = Slurp(err);
-  return result;
+// `fitfeel stability <arguments>` (shell text) in `cwd`, with the registry's test device.
+CliResult Stability(const std::string& arguments, const fs::path& cwd) {
+  return ::fitfeel::test_support::RunFitfeel(
+      "stability " + arguments,
+      CliOptions().In(cwd).WithPluginPath((kBuild / "test-plugins/good").string()));
 }
 
 // Columns of one CSV line.
@@ -78,12 +50,12 @@ std::vector<std::string> Split(const std::string& line) {
 
 TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
   const fs::path dir = EmptyFolder("map");
-  const Result r = Stability("'" + kScene.string() +
-                                 "' --rate '500 Hz,1 kHz' --damping '0 N*s/m' --per-decade 4 "
-                                 "--horizon '1 s' -o map.csv",
-                             dir);
+  const CliResult r = Stability("'" + kScene.string() +
+                                    "' --rate '500 Hz,1 kHz' --damping '0 N*s/m' --per-decade 4 "
+                                    "--horizon '1 s' -o map.csv",
+                                dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<std::string> lines = Lines(Slurp(dir / "map.csv"));
+  const std::vector<std::string> lines = Lines(ReadText(dir / "map.csv"));
   // 2 methods x 2 rates x 1 damping x (13 log-spaced + k_p + Lame) stiffnesses.
   ASSERT_EQ(lines.size(), 1u + 2u * 2u * 15u);
   EXPECT_EQ(lines[0],
@@ -114,24 +86,25 @@ TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
 // (run from the repository's root, as a user would).
 TEST(StabilityCommand, DefaultScenarioIsThePaperCase) {
   const fs::path dir = EmptyFolder("default");
-  const Result r = Stability("--rate 1kHz --damping 0Ns/m --per-decade 1 --horizon '0.5 s' -o '" +
-                                 (dir / "m.csv").string() + "'",
-                             kSource);
+  const CliResult r =
+      Stability("--rate 1kHz --damping 0Ns/m --per-decade 1 --horizon '0.5 s' -o '" +
+                    (dir / "m.csv").string() + "'",
+                kSource);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("paper-case1-h7js6"));
   EXPECT_THAT(r.out, HasSubstr("k_p = 3.665e+09 N/m"));
-  EXPECT_THAT(Slurp(dir / "m.csv"), HasSubstr("coupled,1000,3665000000,0,0,1,"));
+  EXPECT_THAT(ReadText(dir / "m.csv"), HasSubstr("coupled,1000,3665000000,0,0,1,"));
 }
 
 TEST(StabilityCommand, DeviceAndForceScaleChangeTheMap) {
   const fs::path dir = EmptyFolder("touch");
-  const Result r = Stability("'" + kScene.string() +
-                                 "' --device touch --force-scale 0.01 --rate '1 kHz' "
-                                 "--damping 0Ns/m --per-decade 2 --horizon '0.5 s' -o m.csv",
-                             dir);
+  const CliResult r = Stability("'" + kScene.string() +
+                                    "' --device touch --force-scale 0.01 --rate '1 kHz' "
+                                    "--damping 0Ns/m --per-decade 2 --horizon '0.5 s' -o m.csv",
+                                dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("Touch"));
-  const std::string csv = Slurp(dir / "m.csv");
+  const std::string csv = ReadText(dir / "m.csv");
   EXPECT_THAT(csv, HasSubstr("coupled,1000,36650000,0,0,1,"));
   for (const std::string& line : Lines(csv)) {
     if (line.rfind("method", 0) == 0) continue;
@@ -159,7 +132,7 @@ TEST(StabilityCommand, BadInputExitsTwoAndWritesNothing) {
       {"'" + (dir / "nosuch.yaml").string() + "' -o m.csv", "nosuch.yaml"},
   };
   for (const Case& c : cases) {
-    const Result r = Stability(c.arguments, dir);
+    const CliResult r = Stability(c.arguments, dir);
     EXPECT_EQ(r.exit_code, 2) << c.arguments << "\n" << r.err;
     EXPECT_THAT(r.err, HasSubstr(c.message)) << c.arguments;
     EXPECT_FALSE(fs::exists(dir / "m.csv")) << c.arguments;

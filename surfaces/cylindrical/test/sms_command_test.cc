@@ -1,19 +1,22 @@
 // Runs the real `fitfeel sms` binary on test/sms_scene.yaml (paper Table 2). The scene's device is
 // the registry's test device, found through FITFEEL_PLUGIN_PATH; the cylindrical plugin comes from
 // the build tree's plugin folder.
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using ::fitfeel::test_support::CliOptions;
+using ::fitfeel::test_support::CliResult;
+using ::fitfeel::test_support::ReadText;
+using ::fitfeel::test_support::ShellQuote;
 using ::testing::HasSubstr;
 using ::testing::Not;
 
@@ -21,44 +24,15 @@ const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
 const fs::path kBuild = FITFEEL_TEST_BUILD_DIR;
 const fs::path kScene = kSource / "surfaces/cylindrical/test/sms_scene.yaml";
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string Slurp(const fs::path& file) {
-  std::string text;
-  if (FILE* f = std::fopen(file.c_str(), "r")) {
-    char buffer[4096];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-    std::fclose(f);
-  }
-  return text;
-}
-
 fs::path EmptyFolder(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_sms_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return ::fitfeel::test_support::EmptyFolder("fitfeel_sms_test", name);
 }
 
-Result Sms(const std::string& arguments, const fs::path& cwd, const fs::path& scene = kScene) {
-  const fs::path out = cwd.parent_path() / (cwd.filename().string() + ".out");
-  const fs::path err = cwd.parent_path() / (cwd.filename().string() + ".err");
-  const std::string command = "cd '" + cwd.string() + "' && FITFEEL_PLUGIN_PATH='" +
-                              (kBuild / "test-plugins/good").string() + "' '" +
-                              (kBuild / "bin/fitfeel").string() + "' sms '" + scene.string() +
-                              "' " + arguments + " >'" + out.string() + "' 2>'" + err.string() +
-                              "'";
-  const int status = std::system(command.c_str());
-  Result result;
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  result.out = Slurp(out);
-  result.err = Slurp(err);
-  return result;
+// `fitfeel sms <scene> <arguments>` (shell text) in `cwd`, with the registry's test device.
+CliResult Sms(const std::string& arguments, const fs::path& cwd, const fs::path& scene = kScene) {
+  return ::fitfeel::test_support::RunFitfeel(
+      "sms " + ShellQuote(scene.string()) + " " + arguments,
+      CliOptions().In(cwd).WithPluginPath((kBuild / "test-plugins/good").string()));
 }
 
 int Lines(const std::string& text) {
@@ -69,7 +43,7 @@ int Lines(const std::string& text) {
 
 TEST(SmsCommand, WritesTheShapeAndReportsEveryCharacteristicBesideItsSpec) {
   const fs::path dir = EmptyFolder("write");
-  const Result r = Sms("--part shaft -o shaft.csv --seed 5", dir);
+  const CliResult r = Sms("--part shaft -o shaft.csv --seed 5", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("grid 48 x 48 = 2304 cells (auto)"));
   for (const char* name :
@@ -79,7 +53,7 @@ TEST(SmsCommand, WritesTheShapeAndReportsEveryCharacteristicBesideItsSpec) {
   EXPECT_THAT(r.out, HasSubstr("pass"));
   EXPECT_THAT(r.out, Not(HasSubstr("FAIL")));
   EXPECT_THAT(r.out, Not(HasSubstr("bushing")));
-  const std::string csv = Slurp(dir / "shaft.csv");
+  const std::string csv = ReadText(dir / "shaft.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "row,column,axial_mm,angle_deg,x_mm,y_mm,z_mm,area_mm2,v_um,v_dimension_um,"
             "v_form_um,v_surface_um");
@@ -90,13 +64,13 @@ TEST(SmsCommand, WritesTheShapeAndReportsEveryCharacteristicBesideItsSpec) {
   EXPECT_EQ(files, 1);
   // Same seed, same file; another seed, another shape.
   ASSERT_EQ(Sms("--part shaft -o again.csv --seed 5", dir).exit_code, 0);
-  EXPECT_EQ(Slurp(dir / "again.csv"), csv);
+  EXPECT_EQ(ReadText(dir / "again.csv"), csv);
   ASSERT_EQ(Sms("--part shaft -o other.csv --seed 6", dir).exit_code, 0);
-  EXPECT_NE(Slurp(dir / "other.csv"), csv);
+  EXPECT_NE(ReadText(dir / "other.csv"), csv);
 }
 
 TEST(SmsCommand, ReportsBothPartsWithoutPart) {
-  const Result r = Sms("", EmptyFolder("both"));
+  const CliResult r = Sms("", EmptyFolder("both"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("part 'shaft'"));
   EXPECT_THAT(r.out, HasSubstr("part 'bushing'"));
@@ -105,7 +79,7 @@ TEST(SmsCommand, ReportsBothPartsWithoutPart) {
 
 TEST(SmsCommand, UserErrorsExitTwoAndWriteNothing) {
   const fs::path dir = EmptyFolder("errors");
-  Result r = Sms("--part crank", dir);
+  CliResult r = Sms("--part crank", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("no part 'crank'"));
   r = Sms("-o both.csv", dir);
@@ -119,7 +93,7 @@ TEST(SmsCommand, UserErrorsExitTwoAndWriteNothing) {
 
 TEST(SmsCommand, BadModelOptionIsRefusedAtItsKey) {
   const fs::path dir = EmptyFolder("options");
-  std::string text = Slurp(kScene);
+  std::string text = ReadText(kScene);
   const std::string good = "size_draw: per_part";
   ASSERT_NE(text.find(good), std::string::npos);
   text.replace(text.find(good), good.size(), "size_draw: per_row");
@@ -130,7 +104,7 @@ TEST(SmsCommand, BadModelOptionIsRefusedAtItsKey) {
     std::fputs(text.c_str(), f);
     std::fclose(f);
   }
-  const Result r = Sms("", dir, scene);
+  const CliResult r = Sms("", dir, scene);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("model.options.size_draw"));
   EXPECT_THAT(r.err, HasSubstr("per_part"));
