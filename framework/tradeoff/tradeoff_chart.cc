@@ -41,21 +41,25 @@ std::string DataLabel(const std::string& label) {
   return "\"" + out + "\"";
 }
 
-std::string Body(const std::vector<GridRow>& rows, const std::string& title) {
-  double x_min = rows.front().tick_p50_us, x_max = x_min, ref_mean = 0.0;
+double Cost(const GridRow& r, TickCost cost) {
+  return cost == TickCost::kP50 ? r.tick_p50_us : r.tick_p99_us;
+}
+
+std::string Body(const std::vector<GridRow>& rows, const std::string& title, TickCost cost) {
+  double x_min = Cost(rows.front(), cost), x_max = x_min, ref_mean = 0.0;
   for (const GridRow& r : rows) {
-    if (!(r.tick_p50_us > 0.0) || !std::isfinite(r.tick_p50_us)) {
+    if (!(Cost(r, cost) > 0.0) || !std::isfinite(Cost(r, cost))) {
       throw std::invalid_argument("tradeoff chart: grid " + r.label + " has no positive tick time");
     }
-    x_min = std::min(x_min, r.tick_p50_us);
-    x_max = std::max(x_max, r.tick_p50_us);
+    x_min = std::min(x_min, Cost(r, cost));
+    x_max = std::max(x_max, Cost(r, cost));
     if (r.reference) ref_mean = r.mean_axial_N;
   }
   std::ostringstream s;
   s << "reset\nset encoding utf8\n";
   s << "$grids << EOD\n";
   for (const GridRow& r : rows) {
-    s << Num(r.tick_p50_us) << " " << Num(r.mean_axial_N) << " " << Num(r.sd_axial_N) << " "
+    s << Num(Cost(r, cost)) << " " << Num(r.mean_axial_N) << " " << Num(r.sd_axial_N) << " "
       << DataLabel(r.label) << "\n";
   }
   s << "EOD\n$errors << EOD\n";
@@ -63,7 +67,7 @@ std::string Body(const std::vector<GridRow>& rows, const std::string& title) {
   for (const GridRow& r : rows) {
     if (r.reference || !(r.rms_error_N > 0.0)) continue;
     any_error = true;
-    s << Num(r.tick_p50_us) << " " << Num(r.rms_error_N) << " "
+    s << Num(Cost(r, cost)) << " " << Num(r.rms_error_N) << " "
       << Num(std::max(r.noise_rms_N, 1e-300)) << " " << DataLabel(r.label) << "\n";
   }
   s << "EOD\n";
@@ -71,13 +75,14 @@ std::string Body(const std::vector<GridRow>& rows, const std::string& title) {
   s << "set lmargin 12\nset rmargin 6\n";
   s << "set grid xtics ytics mxtics lc rgb '#c8c8c8' lw 1 dt solid\n";
   s << "set logscale x\nset xrange [" << Num(x_min / 1.6) << ":" << Num(x_max * 1.6) << "]\n";
-  s << "set key top left box opaque\n";
-  s << "set xlabel 'tick compute time, median over seeds of the p50 of each run (us, log scale)'\n";
+  s << "set key below\n";
+  s << "set xlabel 'tick compute time: median over the seeds of each run`s "
+    << (cost == TickCost::kP50 ? "p50" : "p99") << " (us, log scale)'\n";
   s << "set ylabel 'mean axial resistance (N)'\n";
   s << "set title 'Mean |fy| over the constrained ticks: mean over seeds, bars +-1 seed-to-seed "
        "SD'\n";
   s << "plot $grids using 1:2:3 with yerrorbars pt 7 ps 1.2 lw 1.5 lc rgb '#3b528b' "
-       "title 'grid (rows x columns per part)', "
+       "title 'grid (rows x columns per part), mean +-1 SD over seeds', "
     << Num(ref_mean)
     << " with lines dt 2 lw 1.5 lc rgb '#5ec962' title 'finest grid (reference)', "
        "$grids using 1:2:4 with labels left offset 0.8,0.9 font ',10' notitle\n";
@@ -89,7 +94,7 @@ std::string Body(const std::vector<GridRow>& rows, const std::string& title) {
     s << "plot $errors using 1:2 with linespoints pt 7 ps 1.2 lw 1.5 lc rgb '#3b528b' "
          "title 'RMS |mean fy - mean fy_ref|', "
          "$errors using 1:3 with linespoints pt 6 dt 2 lw 1.2 lc rgb '#b5367a' "
-         "title 'sampling noise floor (RMS standard error of the difference)', "
+         "title 'sampling noise (RMS paired standard error of the difference)', "
          "$errors using 1:2:4 with labels left offset 0.8,0.9 font ',10' notitle\n";
   } else {
     s << "unset logscale y\nset yrange [0:1]\n"
@@ -97,18 +102,21 @@ std::string Body(const std::vector<GridRow>& rows, const std::string& title) {
          "plot 0 with lines lc rgb '#ffffff' notitle\n";
   }
   s << "unset multiplot\n";
-  return s.str();
+  // A backquote stands for an apostrophe: gnuplot writes one as two inside single quotes.
+  std::string body;
+  for (char c : s.str()) body += c == '`' ? std::string("''") : std::string(1, c);
+  return body;
 }
 
 }  // namespace
 
-void RenderTradeoffChart(const std::vector<GridRow>& rows, const std::string& title,
+void RenderTradeoffChart(const std::vector<GridRow>& rows, const std::string& title, TickCost cost,
                          const std::vector<plot::OutputFile>& outputs) {
   if (rows.empty()) throw std::invalid_argument("tradeoff chart: no grid");
   if (outputs.empty()) throw std::invalid_argument("tradeoff chart: no output file");
   const plot::Gnuplot gnuplot = plot::Gnuplot::Find();
   const plot::TempDir work;
-  WriteText(work.path() / "chart.gp", Body(rows, title));
+  WriteText(work.path() / "chart.gp", Body(rows, title, cost));
   std::string main = "set encoding utf8\n";
   std::vector<fs::path> images;
   for (std::size_t k = 0; k < outputs.size(); ++k) {

@@ -52,13 +52,9 @@ double MeanAxial(const RunSample& run) {
   return n > 0 ? sum / static_cast<double>(n) : kNaN;
 }
 
-// Per tick, the mean and the variance of the mean over one grid's seeds; NaN where any seed's
-// tick was not constrained.
-void TraceMoments(const std::vector<RunSample>& runs, std::size_t ticks, std::vector<double>* mean,
-                  std::vector<double>* variance_of_mean) {
-  mean->assign(ticks, kNaN);
-  variance_of_mean->assign(ticks, kNaN);
-  const double n = static_cast<double>(runs.size());
+// Per tick, the mean over one grid's seeds; NaN where any seed's tick was not constrained.
+std::vector<double> TraceMean(const std::vector<RunSample>& runs, std::size_t ticks) {
+  std::vector<double> mean(ticks, kNaN);
   for (std::size_t t = 0; t < ticks; ++t) {
     double sum = 0.0;
     bool all = true;
@@ -69,13 +65,24 @@ void TraceMoments(const std::vector<RunSample>& runs, std::size_t ticks, std::ve
       }
       sum += r.fy[t];
     }
-    if (!all) continue;
-    const double m = sum / n;
-    double ss = 0.0;
-    for (const RunSample& r : runs) ss += (r.fy[t] - m) * (r.fy[t] - m);
-    (*mean)[t] = m;
-    (*variance_of_mean)[t] = runs.size() > 1 ? ss / (n - 1.0) / n : 0.0;
+    if (all) mean[t] = sum / static_cast<double>(runs.size());
   }
+  return mean;
+}
+
+// Variance of the mean over seeds of the paired differences a_s - b_s (sample variance / n; 0
+// for one seed). Both grids run the same seeds, and grids that draw alike from a seed (same rows)
+// differ far less than independent shapes would: pairing measures the sampling noise of the
+// difference itself.
+double PairedVarianceOfMean(const std::vector<double>& a, const std::vector<double>& b) {
+  const std::size_t n = a.size();
+  if (n < 2) return 0.0;
+  double mean = 0.0;
+  for (std::size_t s = 0; s < n; ++s) mean += a[s] - b[s];
+  mean /= static_cast<double>(n);
+  double ss = 0.0;
+  for (std::size_t s = 0; s < n; ++s) ss += (a[s] - b[s] - mean) * (a[s] - b[s] - mean);
+  return ss / static_cast<double>(n - 1) / static_cast<double>(n);
 }
 
 std::string Num(double value) {
@@ -176,6 +183,7 @@ std::vector<GridRow> Summarize(const std::vector<std::string>& labels,
     row.prepare_seconds = Median(prepare);
     row.tick_p50_us = Median(p50);
     row.tick_p99_us = Median(p99);
+    row.run_means_N = means;
     row.mean_axial_N = Mean(means);
     row.sd_axial_N = SampleSd(means);
     row.se_axial_N = row.sd_axial_N / std::sqrt(static_cast<double>(seeds));
@@ -188,8 +196,7 @@ std::vector<GridRow> Summarize(const std::vector<std::string>& labels,
     return rows[a].inner_cells + rows[a].outer_cells < rows[b].inner_cells + rows[b].outer_cells;
   });
   const std::size_t ref = order.back();
-  std::vector<double> ref_mean, ref_var;
-  TraceMoments(runs[ref], ticks, &ref_mean, &ref_var);
+  const std::vector<double> ref_mean = TraceMean(runs[ref], ticks);
   const double scale = rows[ref].mean_axial_N;
 
   std::vector<GridRow> sorted;
@@ -197,8 +204,9 @@ std::vector<GridRow> Summarize(const std::vector<std::string>& labels,
     GridRow row = rows[g];
     row.reference = g == ref;
     row.bias_N = row.mean_axial_N - scale;
-    std::vector<double> mean, var;
-    TraceMoments(runs[g], ticks, &mean, &var);
+    row.bias_se_N = std::sqrt(PairedVarianceOfMean(row.run_means_N, rows[ref].run_means_N));
+    const std::vector<double> mean = TraceMean(runs[g], ticks);
+    std::vector<double> a(seeds), b(seeds);
     double ss = 0.0, noise = 0.0, worst = 0.0;
     long n = 0;
     for (std::size_t t = 0; t < ticks; ++t) {
@@ -206,8 +214,11 @@ std::vector<GridRow> Summarize(const std::vector<std::string>& labels,
       const double d = std::abs(mean[t] - ref_mean[t]);
       ss += d * d;
       worst = std::max(worst, d);
-      // The reference against itself has no sampling difference.
-      noise += row.reference ? 0.0 : var[t] + ref_var[t];
+      for (std::size_t k = 0; k < seeds; ++k) {
+        a[k] = runs[g][k].fy[t];
+        b[k] = runs[ref][k].fy[t];
+      }
+      noise += PairedVarianceOfMean(a, b);
       ++n;
     }
     if (n == 0) {
@@ -296,7 +307,7 @@ std::vector<GridRow> RunTradeoff(const std::function<Scene()>& load,
 std::string TradeoffCsv(const std::vector<GridRow>& rows) {
   std::string text =
       "grid,inner_rows,inner_columns,outer_rows,outer_columns,inner_cells,outer_cells,seeds,"
-      "prepare_s,tick_p50_us,tick_p99_us,mean_axial_N,sd_axial_N,se_axial_N,bias_N,"
+      "prepare_s,tick_p50_us,tick_p99_us,mean_axial_N,sd_axial_N,se_axial_N,bias_N,bias_se_N,"
       "rms_error_N,max_error_N,rms_error_rel,max_error_rel,noise_rms_N,compared_ticks,"
       "reference\n";
   for (const GridRow& r : rows) {
@@ -307,10 +318,10 @@ std::string TradeoffCsv(const std::vector<GridRow>& rows) {
             std::to_string(r.inner_cells) + "," + std::to_string(r.outer_cells) + "," +
             std::to_string(r.seeds) + "," + Num(r.prepare_seconds) + "," + Num(r.tick_p50_us) +
             "," + Num(r.tick_p99_us) + "," + Num(r.mean_axial_N) + "," + Num(r.sd_axial_N) + "," +
-            Num(r.se_axial_N) + "," + Num(r.bias_N) + "," + Num(r.rms_error_N) + "," +
-            Num(r.max_error_N) + "," + Num(r.rms_error_rel) + "," + Num(r.max_error_rel) + "," +
-            Num(r.noise_rms_N) + "," + std::to_string(r.compared_ticks) + "," +
-            (r.reference ? "yes" : "no") + "\n";
+            Num(r.se_axial_N) + "," + Num(r.bias_N) + "," + Num(r.bias_se_N) + "," +
+            Num(r.rms_error_N) + "," + Num(r.max_error_N) + "," + Num(r.rms_error_rel) + "," +
+            Num(r.max_error_rel) + "," + Num(r.noise_rms_N) + "," +
+            std::to_string(r.compared_ticks) + "," + (r.reference ? "yes" : "no") + "\n";
   }
   return text;
 }

@@ -55,10 +55,14 @@ struct GridRow {
   double sd_axial_N = 0.0;
   double se_axial_N = 0.0;
   double bias_N = 0.0;  // mean_axial_N minus the reference's
+  // Standard error of bias_N from the paired per-seed differences of the run means, N.
+  double bias_se_N = 0.0;
+  std::vector<double> run_means_N;  // each seed's mean |fy|, in seed order
   // The seed-averaged trace against the reference's, over the ticks constrained in every run of
   // both grids: RMS and max of |fy_mean - fy_ref_mean|, N, and relative to the reference's
   // mean_axial_N. noise_rms_N is the RMS over those ticks of the standard error of that
-  // difference (seed sampling alone): an error near it is not resolved by this many seeds.
+  // difference, from the paired per-seed differences (seed sampling alone): an error near it is
+  // not resolved by this many seeds.
   double rms_error_N = 0.0;
   double max_error_N = 0.0;
   double rms_error_rel = 0.0;

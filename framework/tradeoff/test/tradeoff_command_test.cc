@@ -82,11 +82,11 @@ TEST(TradeoffCommand, WritesCsvAndChartsForASmallLadder) {
   ASSERT_EQ(lines.size(), 4u);
   const std::vector<std::string> header = Split(lines[0], ',');
   const std::vector<std::string> expected = {
-      "grid",           "inner_rows",   "inner_columns", "outer_rows",    "outer_columns",
-      "inner_cells",    "outer_cells",  "seeds",         "prepare_s",     "tick_p50_us",
-      "tick_p99_us",    "mean_axial_N", "sd_axial_N",    "se_axial_N",    "bias_N",
-      "rms_error_N",    "max_error_N",  "rms_error_rel", "max_error_rel", "noise_rms_N",
-      "compared_ticks", "reference"};
+      "grid",        "inner_rows",     "inner_columns", "outer_rows",    "outer_columns",
+      "inner_cells", "outer_cells",    "seeds",         "prepare_s",     "tick_p50_us",
+      "tick_p99_us", "mean_axial_N",   "sd_axial_N",    "se_axial_N",    "bias_N",
+      "bias_se_N",   "rms_error_N",    "max_error_N",   "rms_error_rel", "max_error_rel",
+      "noise_rms_N", "compared_ticks", "reference"};
   EXPECT_EQ(header, expected);
   long previous_cells = 0;
   for (std::size_t k = 1; k < lines.size(); ++k) {
@@ -100,12 +100,12 @@ TEST(TradeoffCommand, WritesCsvAndChartsForASmallLadder) {
     EXPECT_GT(std::stod(cells[9]), 0.0);   // tick p50
     EXPECT_GT(std::stod(cells[11]), 0.0);  // mean axial resistance
     EXPECT_GE(std::stod(cells[12]), 0.0);  // seed spread
-    EXPECT_GT(std::stol(cells[20]), 0);    // compared ticks
-    EXPECT_EQ(cells[21], k + 1 == lines.size() ? "yes" : "no");
+    EXPECT_GT(std::stol(cells[21]), 0);    // compared ticks
+    EXPECT_EQ(cells[22], k + 1 == lines.size() ? "yes" : "no");
   }
   EXPECT_EQ(Split(lines[1], ',')[0], "8x36");
   EXPECT_EQ(Split(lines[3], ',')[0], "20x90");
-  EXPECT_EQ(std::stod(Split(lines[3], ',')[15]), 0.0);  // the reference against itself
+  EXPECT_EQ(std::stod(Split(lines[3], ',')[16]), 0.0);  // the reference against itself
   EXPECT_EQ(Slurp(dir / "small.png").rfind("\x89PNG", 0), 0u);
   EXPECT_THAT(Slurp(dir / "small.svg"), HasSubstr("<svg"));
 }

@@ -59,9 +59,12 @@ TEST(TradeoffStudy, SummarizesAgainstTheFinestGrid) {
   EXPECT_DOUBLE_EQ(rows[0].max_error_N, 20.0);
   EXPECT_NEAR(rows[0].rms_error_rel, rows[0].rms_error_N / 11.5, 1e-12);
   EXPECT_NEAR(rows[0].max_error_rel, 20.0 / 11.5, 1e-12);
-  // Variance of each seed mean: tick 1 coarse 2/2 = 1, fine 2/2 = 1; tick 2 coarse 8/2 = 4, fine
-  // 8/2 = 4 (sample variances 2 and 8 over two seeds).
-  EXPECT_NEAR(rows[0].noise_rms_N, std::sqrt((2.0 + 8.0) / 2.0), 1e-12);
+  // Paired differences coarse - fine: tick 1 {-2, -2} (variance 0), tick 2 {-16, -24} (sample
+  // variance 32, of the mean 16).
+  EXPECT_NEAR(rows[0].noise_rms_N, std::sqrt((0.0 + 16.0) / 2.0), 1e-12);
+  // Run means coarse - fine: 7 - 10 and 23/3 - 13: sample SD of {-3, -16/3} over sqrt(2).
+  EXPECT_NEAR(rows[0].bias_se_N, std::abs(-3.0 + 16.0 / 3.0) / std::sqrt(2.0) / std::sqrt(2.0),
+              1e-12);
   EXPECT_DOUBLE_EQ(rows[1].rms_error_N, 0.0);
   EXPECT_DOUBLE_EQ(rows[1].noise_rms_N, 0.0);
 }
