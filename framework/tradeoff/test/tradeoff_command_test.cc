@@ -110,6 +110,20 @@ TEST(TradeoffCommand, WritesCsvAndChartsForASmallLadder) {
   EXPECT_THAT(Slurp(dir / "small.svg"), HasSubstr("<svg"));
 }
 
+// Two grids with one seed: a single compared grid on the error panel, no paired noise.
+TEST(TradeoffCommand, ChartsTwoGridsWithOneSeed) {
+  const fs::path dir = EmptyFolder("pair");
+  const Result r = Tradeoff("'" + kScene.string() +
+                                "' -o pair --resolutions 8x36,10x72 --seeds 1 --duration '1 s' "
+                                "--cost p99",
+                            dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> lines = Split(Slurp(dir / "pair.csv"), '\n');
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(Split(lines[1], ',')[20], "0");  // one seed: no sampling noise estimate
+  EXPECT_EQ(Slurp(dir / "pair.png").rfind("\x89PNG", 0), 0u);
+}
+
 TEST(TradeoffCommand, BadInputExitsTwoAndWritesNothing) {
   const fs::path dir = EmptyFolder("bad");
   const std::string scene = "'" + kScene.string() + "'";
