@@ -122,8 +122,9 @@ void AddTradeoffCommand(CLI::App& app) {
       "tradeoff",
       "Speed against accuracy: run the scene (virtual clock) at a ladder of grid resolutions, "
       "each with several seeds, and chart the mean axial resistance (mean +- seed-to-seed SD) "
-      "and the error of the seed-averaged trace against the finest grid over the median tick "
-      "compute time. Several seeds because a different grid draws a different skin model shape "
+      "and the error of the seed-averaged trace against the finest grid over the tick "
+      "compute time (median or 99th percentile, --cost). Several seeds because a different grid "
+      "draws a different skin model shape "
       "from the same seed: one seed per grid would mix discretisation error with sampling "
       "variation. Writes PREFIX.csv, PREFIX.png and PREFIX.svg");
   cmd->add_option("scenario", options->scenario, "Scenario file")->required();
