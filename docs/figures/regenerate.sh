@@ -16,3 +16,9 @@ done
 "$fitfeel" plot sms scenarios/paper-case1-h7js6.yaml -o "$figures/case1-sms-h7js6.png"
 "$fitfeel" plot sms scenarios/paper-case1-h7g6.yaml -o "$figures/case1-sms-h7g6.png"
 "$fitfeel" plot pressure "$runs/h7js6" --depth 20 -o "$figures/case1-pressure-h7js6.png"
+# Speed against accuracy over the default grid ladder, 40 seeds per grid (framework/tradeoff):
+# x is the tick p99, since the median tick of the table-driven law barely depends on the grid.
+"$fitfeel" tradeoff scenarios/paper-case1-h7js6.yaml --seeds 40 --cost p99 \
+  -o "$runs/tradeoff-h7js6" 2>/dev/null
+cp "$runs/tradeoff-h7js6.png" "$figures/tradeoff-h7js6.png"
+cp "$runs/tradeoff-h7js6.csv" "$figures/tradeoff-h7js6.csv"

@@ -13,5 +13,6 @@ void AddFitCommand(CLI::App& app);
 void AddSmsCommand(CLI::App& app);
 void AddPlotCommand(CLI::App& app);
 void AddStabilityCommand(CLI::App& app);
+void AddTradeoffCommand(CLI::App& app);
 
 }  // namespace fitfeel::cli

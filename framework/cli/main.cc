@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddSmsCommand(app);
   fitfeel::cli::AddPlotCommand(app);
   fitfeel::cli::AddStabilityCommand(app);
+  fitfeel::cli::AddTradeoffCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
