@@ -2,8 +2,6 @@
 // cylindrical plugin's coarse meshes reach the positioning stage, which lets the centred shaft in
 // and pushes an off-axis one back from the bushing's face.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "framework/collision/coarse_mesh.h"
@@ -19,19 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path WithTestDevice(const std::string& scenario) {
-  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  const std::string device = "fitfeel.device.simulated";
-  const auto at = yaml.find(device);
-  if (at != std::string::npos) yaml.replace(at, device.size(), "fitfeel.test.still_device");
-  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_cylindrical_coarse_mesh";
-  fs::create_directories(dir);
-  const fs::path file = dir / scenario;
-  std::ofstream(file) << yaml;
-  return file;
+// The shipped scenarios as `fitfeel run` loads them, with the build tree's plugins.
+fs::path Shipped(const std::string& scenario) {
+  return fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario;
 }
 
 DeviceState At(double x, double y, double z) {
@@ -41,10 +29,9 @@ DeviceState At(double x, double y, double z) {
 }
 
 TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
-  PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins",
-                           fs::path(FITFEEL_TEST_BUILD_DIR) / "test-plugins" / "good"});
+  PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
   registry.LoadAll();
-  const Scene scene = LoadScene(WithTestDevice("paper-case1-h7g6.yaml"), registry);
+  const Scene scene = LoadScene(Shipped("paper-case1-h7g6.yaml"), registry);
   const CoarseMeshes meshes = scene.surface->MakeCoarseMeshes(scene.inner, scene.outer);
   ASSERT_FALSE(meshes.empty());
   // H7/g6 at 20 mm: 54 facets (see cylindrical_coarse_mesh.h): a 40 mm prism and a tube.

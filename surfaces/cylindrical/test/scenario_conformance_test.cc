@@ -1,10 +1,7 @@
 // Issue 3, "Done when": over 100 seeds, every generated skin model shape of the three paper
 // scenarios meets every tolerance it came from. The scenarios are loaded through the plugin
-// registry like `fitfeel run` loads them; only their device (irrelevant to the shapes) is swapped
-// for the registry's test device, so the test does not depend on the device plugins.
+// registry, unchanged, as `fitfeel run` loads them.
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -18,28 +15,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path WithTestDevice(const std::string& scenario) {
-  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string yaml = text.str();
-  const std::string device = "fitfeel.device.simulated";
-  const auto at = yaml.find(device);
-  if (at != std::string::npos) yaml.replace(at, device.size(), "fitfeel.test.still_device");
-  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_cylindrical_scenarios";
-  fs::create_directories(dir);
-  const fs::path file = dir / scenario;
-  std::ofstream(file) << yaml;
-  return file;
+// The shipped scenarios as `fitfeel run` loads them, with the build tree's plugins.
+fs::path Shipped(const std::string& scenario) {
+  return fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario;
 }
 
 TEST(CylindricalScenarioConformance, PaperScenariosMeetTheirTolerancesOverAHundredSeeds) {
-  PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins",
-                           fs::path(FITFEEL_TEST_BUILD_DIR) / "test-plugins" / "good"});
+  PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
   registry.LoadAll();
   for (const char* scenario :
        {"paper-case1-h7js6.yaml", "paper-case1-h7g6.yaml", "paper-case1-ve1.yaml"}) {
-    const Scene scene = LoadScene(WithTestDevice(scenario), registry);
+    const Scene scene = LoadScene(Shipped(scenario), registry);
     ASSERT_EQ(scene.surface_id, "fitfeel.surface.cylindrical");
     const auto discretizer = scene.surface->MakeDiscretizer();
     const auto generator = scene.surface->MakeVariationGenerator();
