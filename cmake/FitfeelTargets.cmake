@@ -37,10 +37,13 @@ function(fitfeel_add_test name)
   target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock
                                         GTest::gtest_main ${ARG_LIBS})
   set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
-  # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees are
-  # passed as compile definitions instead.
-  target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-                                             FITFEEL_TEST_BUILD_DIR="${CMAKE_BINARY_DIR}")
+  # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees
+  # come from a generated library; the macros call it (framework/testing/test_paths.h).
+  target_link_libraries(${name} PRIVATE fitfeel_test_paths)
+  target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR=fitfeel_test_source_dir\(\)
+                                             FITFEEL_TEST_BUILD_DIR=fitfeel_test_build_dir\(\))
+  target_compile_options(${name} PRIVATE
+                         -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     PROPERTIES LABELS "${ARG_LABELS}"

@@ -14,6 +14,7 @@
 
 #include <boost/dll/shared_library.hpp>
 
+#include "framework/core/build_info.h"
 #include "framework/core/error.h"
 #include "framework/device/device.h"
 #include "framework/model/surface_type.h"
@@ -127,9 +128,9 @@ bool IsValidPluginId(std::string_view id) {
 std::string DescribeSearchFolder(const std::filesystem::path& folder) {
   std::string out = folder.string();
   const fs::path normal = folder.lexically_normal();
-  if (normal == fs::path(FITFEEL_BUILD_PLUGIN_DIR).lexically_normal()) {
+  if (normal == fs::path(BuildPluginDir()).lexically_normal()) {
     out += " (build tree)";
-  } else if (normal == fs::path(FITFEEL_INSTALL_PLUGIN_DIR).lexically_normal()) {
+  } else if (normal == fs::path(InstallPluginDir()).lexically_normal()) {
     out += " (install prefix)";
   } else {
     for (const fs::path& item : EnvironmentPath()) {
@@ -285,8 +286,8 @@ struct PluginRegistry::Impl {
 
 std::vector<std::filesystem::path> PluginRegistry::DefaultSearchPath() {
   std::vector<fs::path> candidates = EnvironmentPath();
-  candidates.emplace_back(FITFEEL_BUILD_PLUGIN_DIR);
-  candidates.emplace_back(FITFEEL_INSTALL_PLUGIN_DIR);
+  candidates.emplace_back(BuildPluginDir());
+  candidates.emplace_back(InstallPluginDir());
   std::vector<fs::path> out;
   for (const fs::path& folder : candidates) {
     if (std::find(out.begin(), out.end(), folder) == out.end()) out.push_back(folder);
