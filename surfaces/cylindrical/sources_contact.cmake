@@ -26,6 +26,7 @@ fitfeel_add_test(fitfeel_cylindrical_contact_test
           ${CMAKE_CURRENT_LIST_DIR}/test/contact_polygon_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/test/contact_analyzer_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/test/law_press_fit_test.cc
+          ${CMAKE_CURRENT_LIST_DIR}/test/law_elastic_test.cc
           ${CMAKE_CURRENT_LIST_DIR}/test/contact_allocation_test.cc
   LIBS fitfeel_cylindrical_contact)
 

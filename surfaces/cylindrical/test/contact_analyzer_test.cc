@@ -252,9 +252,10 @@ TEST(CylinderContact, RefusesMismatchedGrids) {
       UserError);
 }
 
-TEST(CylinderContact, FactoryOffersBothLaws) {
-  EXPECT_EQ(LawNames(), (std::vector<std::string>{"gps", "ve1"}));
+TEST(CylinderContact, FactoryOffersEveryLaw) {
+  EXPECT_EQ(LawNames(), (std::vector<std::string>{"gps", "elastic", "ve1"}));
   EXPECT_NE(MakeLaw("gps"), nullptr);
+  EXPECT_NE(MakeLaw("elastic"), nullptr);
   EXPECT_NE(MakeLaw("ve1"), nullptr);
   EXPECT_EQ(MakeLaw("vE2"), nullptr);
   EXPECT_NE(MakeContactAnalyzer(), nullptr);
