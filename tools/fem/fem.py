@@ -9,6 +9,8 @@ tests compare the model against (docs/contact-mechanics.md says what each case c
   /usr/bin/python3 tools/fem/fem.py contact OUT.csv     contact cases (ccx surface-to-surface
                                                         contact from overlapping geometry)
   /usr/bin/python3 tools/fem/fem.py all DIR             both, into DIR/harmonic.csv, DIR/contact.csv
+  /usr/bin/python3 tools/fem/fem.py compare NEW OLD      every number of two such CSV files
+                                                        within 0.5 % (exit 1 otherwise)
 
 Units inside the decks: mm, N, MPa. Needs ccx on PATH (Debian: calculix-ccx) and numpy
 (Debian: python3-numpy, loaded by /usr/bin/python3).
@@ -327,7 +329,32 @@ def contact(out_csv, only=None):
     return rows
 
 
+def compare(new_csv, old_csv, tolerance=0.005):
+    def rows(path):
+        with open(path) as f:
+            return [line.strip().split(",") for line in f if line.strip() and line[0] != "#"]
+    new, old = rows(new_csv), rows(old_csv)
+    bad = []
+    if len(new) != len(old):
+        bad.append(f"{len(new)} rows against {len(old)}")
+    for a, b in zip(new, old):
+        for x, y in zip(a, b):
+            try:
+                fx, fy = float(x), float(y)
+            except ValueError:
+                if x != y:
+                    bad.append(f"{x} != {y}")
+                continue
+            if abs(fx - fy) > tolerance * max(abs(fx), abs(fy), 1e-9):
+                bad.append(f"{a[0]}: {fx} against {fy}")
+    for b in bad:
+        print(f"{new_csv}: {b}")
+    return not bad
+
+
 if __name__ == "__main__":
+    if sys.argv[1:2] == ["compare"] and len(sys.argv) == 4:
+        sys.exit(0 if compare(sys.argv[2], sys.argv[3]) else 1)
     if len(sys.argv) != 3 or sys.argv[1] not in ("harmonic", "contact", "all"):
         sys.stderr.write(__doc__)
         sys.exit(2)
