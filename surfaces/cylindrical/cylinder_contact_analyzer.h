@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/section_contact.h"
 #include "framework/model/texture_contact.h"
 
 namespace fitfeel::cylindrical {
@@ -71,6 +72,10 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  // Elastic model only: re-solves the equilibrium of the shaft rows inside the bushing at the
+  // pose's depth (each row against the bushing row at its centre) and spreads each column block's
+  // pressure over its cells.
+  bool DoPressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const override;
 
  private:
   struct Slice {
@@ -109,6 +114,9 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   bool elastic_ = false;
   int block_ = 1;            // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;   // m, added to every gap
+  PressFitSection section_;
+  RigidFreedom freedom_;
+  double frame_ = 0.0;       // angle of the elastic solve's column 0
   std::vector<double> normal_;
   std::vector<Eigen::Vector2d> tilt_;
 };
