@@ -1,8 +1,8 @@
 #include "framework/device/device.h"
 
-#include <cassert>
 #include <cmath>
 
+#include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "framework/device/stage.h"
 
@@ -31,7 +31,7 @@ void Device::Start(double period) {
 void Device::Stop() noexcept { DoStop(); }
 
 void Device::Read(double time, DeviceState* out) noexcept {
-  assert(out != nullptr);
+  FITFEEL_DEMAND(out != nullptr);
   DoRead(time, out);
 }
 
@@ -49,7 +49,7 @@ void Device::RunServoLoop(double, const std::function<bool(double)>&) {
 }
 
 void Stage::Evaluate(const DeviceState& device, StageOutput* out) const noexcept {
-  assert(out != nullptr);
+  FITFEEL_DEMAND(out != nullptr);
   DoEvaluate(device, out);
 }
 
