@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <set>
 
@@ -13,7 +14,9 @@
 
 #include "framework/core/error.h"
 #include "framework/plugin/registry.h"
+#include "framework/plot/study_chart.h"
 #include "framework/study/pair_geometry.h"
+#include "framework/study/study_record.h"
 
 namespace fitfeel::study {
 namespace {
@@ -166,6 +169,53 @@ TEST_F(PaperStudy, RefusesBadSettingsBeforeRunning) {
   EXPECT_THROW(RunStudy(scene_, registry_, s), UserError);
   s.threads = 1;
   EXPECT_THROW(RunStudy("no/such/scene.yaml", registry_, s), UserError);
+}
+
+}  // namespace
+}  // namespace fitfeel::study
+
+namespace fitfeel::study {
+namespace {
+
+TEST(LoadStudy, ReadsWhatWriteStudyWroteAndLocatesBrokenLines) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_study_record";
+  fs::remove_all(dir);
+  StudyResult r;
+  r.scenario = "demo";
+  r.requested_pairs = 2;
+  PairResult a, b;
+  a.pair = 0;
+  a.axial_mean_N = 0.3;
+  a.axial_max_N = 0.5;
+  b.pair = 1;
+  b.axial_mean_N = 120.0;
+  b.axial_max_N = 300.0;
+  b.interfering = true;
+  r.pairs = {a, b};
+  WriteStudy(dir, r);
+  const StudyRecord back = LoadStudy(dir);
+  EXPECT_EQ(back.scenario, "demo");
+  EXPECT_EQ(back.axial_mean_N, (std::vector<double>{0.3, 120.0}));
+  EXPECT_EQ(back.axial_max_N, (std::vector<double>{0.5, 300.0}));
+  EXPECT_DOUBLE_EQ(back.probability_of_interference, 0.5);
+
+  // The chart: two panels, logarithmic since the pairs span decades, the reference drawn.
+  const plot::LineChart chart = plot::MakeStudyChart({back}, plot::ReferenceLine{"VE1", 0.3});
+  ASSERT_EQ(chart.panels.size(), 2u);
+  EXPECT_TRUE(chart.panels[0].log_y);
+  ASSERT_EQ(chart.panels[0].series.size(), 2u);
+  EXPECT_EQ(chart.panels[0].series[0].y, (std::vector<double>{0.3, 120.0}));
+  EXPECT_EQ(chart.panels[0].series[1].label, "VE1");
+
+  std::ofstream(dir / "pairs.csv", std::ios::app) << "2,1,0,0,,0,abc,1,1,3899\n";
+  try {
+    LoadStudy(dir);
+    FAIL() << "a broken line was accepted";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("pairs.csv:4:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'abc'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(LoadStudy(dir / "missing"), UserError);
 }
 
 }  // namespace
