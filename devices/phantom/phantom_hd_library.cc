@@ -1,4 +1,4 @@
-#include "devices/phantom/hd_library.h"
+#include "devices/phantom/phantom_hd_library.h"
 
 #include <dlfcn.h>
 

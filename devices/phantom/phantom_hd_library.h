@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "devices/phantom/hd_api.h"
+#include "devices/phantom/phantom_hd_api.h"
 
 namespace fitfeel::hd {
 

@@ -1,4 +1,4 @@
-#include "surfaces/cylindrical/assembly_polygon.h"
+#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 
 #include <algorithm>
 #include <cassert>
@@ -12,7 +12,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/grid_rows.h"
-#include "surfaces/cylindrical/assembly_polygon.h"
+#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
 
 namespace fitfeel::cylindrical {
 namespace {

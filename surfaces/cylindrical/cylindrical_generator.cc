@@ -1,4 +1,4 @@
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "framework/core/error.h"
 #include "framework/metrology/sms_conformance.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
-#include "surfaces/cylindrical/form_wavelengths.h"
+#include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
 
 namespace fitfeel::cylindrical {
 namespace {

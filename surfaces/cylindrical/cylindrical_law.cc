@@ -1,4 +1,4 @@
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "surfaces/thread/helicoid_geometry.h"
+#include "surfaces/thread/thread_geometry.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "surfaces/thread/helicoid_model.h"
+#include "surfaces/thread/thread_shape.h"
 
 #include <cmath>
 #include <numbers>
@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
-#include "surfaces/thread/helicoid_geometry.h"
+#include "surfaces/thread/thread_geometry.h"
 
 namespace fitfeel::thread {
 namespace {

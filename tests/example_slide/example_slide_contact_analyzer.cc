@@ -1,12 +1,12 @@
-#include "tests/example_surface/slide_contact.h"
+#include "tests/example_slide/example_slide_contact_analyzer.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "framework/core/error.h"
-#include "tests/example_surface/slide_geometry.h"
+#include "tests/example_slide/example_slide_geometry.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 namespace {
 
 // The variation every cell of `sms` shares; throws UserError if the cells differ by more than a
@@ -57,4 +57,4 @@ void SlideContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out)
   out->interference_volume = out->max_interference * out->engaged_area;  // eqs. 10-11
 }
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -2,7 +2,7 @@
 
 #include "framework/model/contact_analyzer.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 // Contact of the block sliding along +y in the slot (paper section 3.1 for two flat flanks).
 //
@@ -34,4 +34,4 @@ class SlideContactAnalyzer final : public ContactAnalyzer {
   double height_ = 0.0;
 };
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -1,11 +1,11 @@
-#include "tests/example_surface/slide_geometry.h"
+#include "tests/example_slide/example_slide_geometry.h"
 
 #include <string>
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 std::string SlideGeometry::Describe() const {
   std::string text = std::string(rail_width_ > 0.0 ? "slot" : "block") +
@@ -50,4 +50,4 @@ const SlideGeometry& SlideGeometryOf(const PartSpec& part) {
   return *g;
 }
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -6,7 +6,7 @@
 #include "framework/core/config_node.h"
 #include "framework/model/gps_spec.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 // A rectangular block (the inner part) sliding along y in a slot (the outer part) cut between two
 // rails. Only the two flanks touch: normals +x and -x. The mating size b, the block's width and
@@ -42,4 +42,4 @@ std::shared_ptr<const SlideGeometry> ParseSlideGeometry(const PartSpec& part,
 // The part's slide geometry; throws UserError if it has none.
 const SlideGeometry& SlideGeometryOf(const PartSpec& part);
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -1,11 +1,11 @@
-#include "tests/example_surface/slide_law.h"
+#include "tests/example_slide/example_slide_law.h"
 
 #include <cmath>
 
 #include "framework/core/error.h"
-#include "tests/example_surface/slide_geometry.h"
+#include "tests/example_slide/example_slide_geometry.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 double BlockCompliance(double width, double youngs_modulus, double poisson) {
   return width * (1.0 - poisson * poisson) / youngs_modulus;
@@ -41,4 +41,4 @@ void SlideSpringLaw::DoEvaluate(const ContactState& contact, const MatingMotion&
   out->force.y() = -mu_ * normal * std::tanh(motion.velocity.y() / kFrictionSmoothingVelocity);
 }
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -2,7 +2,7 @@
 
 #include "framework/model/resistance_law.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 // Compliance per unit area (m/Pa) of an elastic block of width w compressed across it in plane
 // strain (long along y, so it cannot stretch along y; free across its height): w (1 - nu^2) / E.
@@ -35,4 +35,4 @@ class SlideSpringLaw final : public ResistanceLaw {
   double pressure_per_interference_ = 0.0;  // P, Pa/m
 };
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

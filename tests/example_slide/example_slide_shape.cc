@@ -1,4 +1,4 @@
-#include "tests/example_surface/slide_shape.h"
+#include "tests/example_slide/example_slide_shape.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "framework/core/error.h"
-#include "tests/example_surface/slide_geometry.h"
+#include "tests/example_slide/example_slide_geometry.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 SurfaceGrid SlideDiscretizer::DoDiscretize(const PartSpec& part,
                                            const Resolution& resolution) const {
@@ -86,4 +86,4 @@ std::vector<CharacteristicCheck> EvaluateSlideCharacteristics(const PartSpec& pa
           {"two_point_size_max", largest, lower, upper}};
 }
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

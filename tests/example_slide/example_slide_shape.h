@@ -6,7 +6,7 @@
 #include "framework/model/surface_type.h"
 #include "framework/model/variation_generator.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 // Grid of the two flanks: rows along y from the part's trailing end (row_position from 0 to the
 // length), columns flank by flank (+x first, then -x), each flank in strips across its height.
@@ -35,4 +35,4 @@ class SlideVariationGenerator final : public VariationGenerator {
 std::vector<CharacteristicCheck> EvaluateSlideCharacteristics(const PartSpec& part,
                                                               const SkinModelShape& sms);
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

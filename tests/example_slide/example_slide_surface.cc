@@ -1,13 +1,13 @@
-#include "tests/example_surface/slide_surface.h"
+#include "tests/example_slide/example_slide_surface.h"
 
 #include <cmath>
 
-#include "tests/example_surface/slide_contact.h"
-#include "tests/example_surface/slide_geometry.h"
-#include "tests/example_surface/slide_law.h"
-#include "tests/example_surface/slide_shape.h"
+#include "tests/example_slide/example_slide_contact_analyzer.h"
+#include "tests/example_slide/example_slide_geometry.h"
+#include "tests/example_slide/example_slide_law.h"
+#include "tests/example_slide/example_slide_shape.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 std::unique_ptr<Discretizer> SlideSurface::MakeDiscretizer() const {
   return std::make_unique<SlideDiscretizer>();
@@ -49,4 +49,4 @@ std::vector<CharacteristicCheck> SlideSurface::DoEvaluateCharacteristics(
   return EvaluateSlideCharacteristics(part, sms);
 }
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -7,7 +7,7 @@
 
 #include "framework/model/surface_type.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 
 // fitfeel.surface.example_slide: a block sliding in a slot between two rails, size only, with the
 // "spring" law. The guide's example (surfaces/README.md).
@@ -31,4 +31,4 @@ class SlideSurface final : public SurfaceType {
       const PartSpec& part, const SkinModelShape& sms) const override;
 };
 
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide

@@ -1,11 +1,11 @@
 // The example slide plugin's only exported symbol.
 #include "framework/plugin/plugin_entry.h"
-#include "tests/example_surface/slide_surface.h"
+#include "tests/example_slide/example_slide_surface.h"
 
 namespace {
 
 constexpr FitfeelPluginEntry kEntries[] = {
-    fitfeel::plugin::SurfaceEntry<fitfeel::example_surface::SlideSurface>(
+    fitfeel::plugin::SurfaceEntry<fitfeel::example_slide::SlideSurface>(
         "fitfeel.surface.example_slide", "1.0.0",
         "Guide example: a block sliding in a slot between two rails (size only)"),
 };

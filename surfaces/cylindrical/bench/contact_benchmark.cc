@@ -5,8 +5,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 namespace fitfeel::cylindrical {

@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/test/test_parts.h"
 
 namespace fitfeel::cylindrical {

@@ -1,4 +1,4 @@
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
 
 #include <cmath>
 

@@ -9,8 +9,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
-#include "surfaces/thread/helicoid_geometry.h"
-#include "surfaces/thread/helicoid_model.h"
+#include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_shape.h"
 #include "surfaces/thread/thread_surface.h"
 
 namespace fitfeel::thread {

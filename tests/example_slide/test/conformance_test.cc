@@ -1,5 +1,5 @@
 // The framework's conformance suite on test/conformance.yaml. Under tests/ only: the plugin is
-// built into test-plugins/example_surface, which joins the search path before the suite builds
+// built into test-plugins/example_slide, which joins the search path before the suite builds
 // its registry (a surface under surfaces/ needs neither this nor the includes).
 #include <cstdlib>
 #include <string>
@@ -8,9 +8,9 @@
 
 namespace {
 const bool kPluginOnPath = [] {
-  const std::string path = std::string(FITFEEL_TEST_BUILD_DIR) + "/test-plugins/example_surface";
+  const std::string path = std::string(FITFEEL_TEST_BUILD_DIR) + "/test-plugins/example_slide";
   return ::setenv("FITFEEL_PLUGIN_PATH", path.c_str(), 1) == 0;
 }();
 }  // namespace
 
-FITFEEL_SURFACE_CONFORMANCE(ExampleSlide, "tests/example_surface/test/conformance.yaml");
+FITFEEL_SURFACE_CONFORMANCE(ExampleSlide, "tests/example_slide/test/conformance.yaml");

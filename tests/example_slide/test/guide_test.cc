@@ -1,5 +1,5 @@
 // surfaces/README.md walks through this folder file by file: each block preceded by
-// `<!-- file: tests/example_surface/... -->` must be that file, byte for byte, and every file of
+// `<!-- file: tests/example_slide/... -->` must be that file, byte for byte, and every file of
 // the folder (but this test) must have its block, so copying the guide's blocks rebuilds the
 // plugin these tests prove.
 #include <filesystem>
@@ -46,10 +46,10 @@ std::map<std::string, std::string> GuideBlocks() {
 TEST(Guide, ShowsEveryFileOfTheExampleAsItIs) {
   const auto blocks = GuideBlocks();
   int files = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(kSource / "tests/example_surface")) {
+  for (const auto& entry : fs::recursive_directory_iterator(kSource / "tests/example_slide")) {
     if (!entry.is_regular_file()) continue;
     const std::string path = fs::relative(entry.path(), kSource).generic_string();
-    if (path == "tests/example_surface/test/guide_test.cc") continue;
+    if (path == "tests/example_slide/test/guide_test.cc") continue;
     ++files;
     const auto it = blocks.find(path);
     if (it == blocks.end()) {

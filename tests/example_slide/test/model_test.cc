@@ -7,13 +7,13 @@
 #include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
-#include "tests/example_surface/slide_contact.h"
-#include "tests/example_surface/slide_geometry.h"
-#include "tests/example_surface/slide_law.h"
-#include "tests/example_surface/slide_shape.h"
-#include "tests/example_surface/slide_surface.h"
+#include "tests/example_slide/example_slide_contact_analyzer.h"
+#include "tests/example_slide/example_slide_geometry.h"
+#include "tests/example_slide/example_slide_law.h"
+#include "tests/example_slide/example_slide_shape.h"
+#include "tests/example_slide/example_slide_surface.h"
 
-namespace fitfeel::example_surface {
+namespace fitfeel::example_slide {
 namespace {
 
 // Steel block b = 10 mm, flank height 5 mm, 20 mm long, in a 30 mm slot between 10 mm rails.
@@ -207,4 +207,4 @@ TEST(SlideSurface, AnalyzerRefusesAShapeWithForm) {
 }
 
 }  // namespace
-}  // namespace fitfeel::example_surface
+}  // namespace fitfeel::example_slide
