@@ -15,7 +15,7 @@ struct PressFitDimensions {
 // UserError when a part has no cylindrical geometry or the diameters do not nest.
 PressFitDimensions PressFitDimensionsOf(const PartSpec& inner, const PartSpec& outer);
 
-// Contact pressure per unit radial interference, Pa/m (paper eq. 10, reference/oracles.md):
+// Contact pressure per unit radial interference, Pa/m (paper eq. 10, docs/oracles.md):
 // p = (2 delta / d1) / ( c_shaft / E1 + ((d2^2 + d1^2)/(d2^2 - d1^2) + nu2) / E2 ),
 // c_shaft = 1 - nu1 for a solid shaft, (d1^2 + di^2)/(d1^2 - di^2) - nu1 for a hollow one.
 double LamePressurePerInterference(const PressFitDimensions& d, const Material& shaft,
