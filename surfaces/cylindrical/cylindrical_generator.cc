@@ -4,12 +4,15 @@
 #include <cmath>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "framework/core/error.h"
 #include "framework/metrology/sms_conformance.h"
+#include "framework/model/process_model.h"
+#include "framework/model/random_draws.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
 
@@ -17,20 +20,8 @@ namespace fitfeel::cylindrical {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Uniform in [0, 1) from the top 53 bits of one draw: the same numbers on every platform, which
-// the standard distributions (implementation-defined) do not promise.
-double Uniform(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-double Uniform(Rng& rng, double a, double b) { return a + (b - a) * Uniform(rng); }
-
-// Standard normal (Box-Muller, one value per pair of draws).
-double Normal(Rng& rng) {
-  double u1 = 0.0;
-  do u1 = Uniform(rng);
-  while (u1 <= 0.0);
-  const double u2 = Uniform(rng);
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
-}
+// A capable process scraps a few parts per million; this many in a row means it cannot make one.
+constexpr int kMaxSizeRedraws = 100000;
 
 // Paper Fig. 3: the sampling sections of one form wave. Its wavelength is drawn in
 // (10 mm, l) (eq. 3's companion rule); the sections sit at its peaks and troughs, every half wave
@@ -339,6 +330,20 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
       t > 0.0) {
     integrate([&] { return RoundnessComponent(grid, geometry.diameter(), length, t, rng); });
   }
+  // A statistical process uses a Rayleigh-drawn fraction of each form tolerance: the paper's form
+  // draw, scaled so that its most used characteristic uses exactly its drawn fraction (zone widths
+  // scale with the data, so every other characteristic stays within its own fraction).
+  const ProcessSpec& process = part.process;
+  if (process.kind == ProcessKind::kStatistical && form.cwiseAbs().maxCoeff() > 0.0) {
+    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
+    double k = std::numeric_limits<double>::infinity();
+    for (const auto& [c, t] : part.form.tolerance) {
+      const double r = DrawFormUtilisation(process, rng, &sms.rejections);
+      const double w = metrology::EvaluateCylinderForm(c, samples);
+      if (t > 0.0 && w > 0.0) k = std::min(k, r * t / w);
+    }
+    if (std::isfinite(k)) form *= k;
+  }
   // Eq. 6: texture as a truncated Gaussian per cell, only when sampled. Limits +-(A + Rz)/2 at
   // 3 sigma (sigma = (A + Rz)/6), the same distribution the contact analysis uses in expected mode.
   Eigen::VectorXd surface = Eigen::VectorXd::Zero(grid.size());
@@ -355,7 +360,31 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
   // Eqs. 1-2: the dimensional variation (radial: half the diameter deviation).
   const Eigen::VectorXd local = form + surface;
   Eigen::VectorXd dimension(grid.size());
-  if (options_.size_draw == SizeDraw::kPerPart) {
+  if (process.kind == ProcessKind::kStatistical) {
+    if (options_.size_draw != SizeDraw::kPerPart) {
+      throw UserError("part '" + part.name +
+                      "': process: statistical draws one actual size per part; "
+                      "model.options.size_draw: per_cell is the paper's literal eq. 1");
+    }
+    // Normal actual size; a part whose local sizes leave the limits is scrap and drawn again.
+    const auto [a, b] = Spread(local, grid, options_.size_limit);
+    const NormalLaw law = SizeLaw(process, lo, up, part.role);
+    double D = 0.0;
+    if (up - lo >= b - a) {
+      for (;;) {
+        D = law.mean + law.sd * Normal(rng);
+        if (lo <= D + a && D + b <= up) break;
+        if (++sms.rejections > kMaxSizeRedraws) {
+          throw UserError("part '" + part.name + "': the size process (Cp " +
+                          std::to_string(process.cp) + ", Cpk " + std::to_string(process.cpk) +
+                          ") rejects every part");
+        }
+      }
+    } else {
+      D = lo - (up - lo) / (b - a) * a;  // as the paper's branch: the clamp scales the form back
+    }
+    dimension.setConstant(D / 2.0);
+  } else if (options_.size_draw == SizeDraw::kPerPart) {
     const auto [a, b] = Spread(local, grid, options_.size_limit);
     const double u = Uniform(rng);
     // The diameter deviation D must satisfy lo <= D + s <= up for every local contribution s in
