@@ -15,6 +15,7 @@
 #include "framework/model/random_draws.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
+#include "surfaces/cylindrical/elastic_options.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -137,6 +138,41 @@ Eigen::VectorXd RoundnessComponent(const SurfaceGrid& g, double diameter, double
   return v;
 }
 
+// Waviness as geometry (texture: din7190): wavelengths between 1 and 10 mm (ISO 21920-3's default
+// waviness band, between the roughness cut-off 0.8 mm and the form's 10 mm), no shorter than four
+// cells of the grid. Two circumferential waves (orders k with pi d / k in that band) and one axial
+// wave, random phases and weights, scaled so that the whole peak-to-valley is the spec's waviness
+// height A (the same reading of A as the paper's band +-(A + Rz)/2). A grid too coarse for any
+// wave in the band gets none in that direction.
+Eigen::VectorXd WavinessComponent(const SurfaceGrid& g, double diameter, double length,
+                                  double height, Rng& rng) {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(g.size());
+  const double circumference = kPi * diameter;
+  const int k_lo = std::max(2, static_cast<int>(std::ceil(circumference / 10e-3)));
+  const int k_hi = std::min(static_cast<int>(std::floor(circumference / 1e-3)), g.columns / 4);
+  for (int w = 0; w < 2 && k_lo <= k_hi; ++w) {
+    const int k = k_lo + static_cast<int>(Uniform(rng) * (k_hi - k_lo + 1));
+    const double weight = Uniform(rng, 0.5, 1.0), phase = Uniform(rng, 0.0, 2.0 * kPi);
+    for (int i = 0; i < g.rows; ++i) {
+      for (int j = 0; j < g.columns; ++j) {
+        v[g.index(i, j)] += weight * std::cos(k * g.column_angle(j) + phase);
+      }
+    }
+  }
+  const double pitch = g.rows > 1 ? length / g.rows : length;
+  const double lambda_lo = std::max(1e-3, 4.0 * pitch), lambda_hi = std::min(10e-3, length);
+  if (lambda_lo <= lambda_hi) {
+    const double lambda = Uniform(rng, lambda_lo, lambda_hi);
+    const double weight = Uniform(rng, 0.5, 1.0), phase = Uniform(rng, 0.0, 2.0 * kPi);
+    for (int i = 0; i < g.rows; ++i) {
+      const double a = weight * std::cos(2.0 * kPi * g.row_position(i) / lambda + phase);
+      for (int j = 0; j < g.columns; ++j) v[g.index(i, j)] += a;
+    }
+  }
+  const double pv = v.size() > 0 ? v.maxCoeff() - v.minCoeff() : 0.0;
+  return pv > 0.0 ? Eigen::VectorXd(v * (height / pv)) : v;
+}
+
 struct FormCheck {
   FormCharacteristic characteristic;
   double tolerance;
@@ -204,7 +240,8 @@ std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g,
 }  // namespace
 
 void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
-  options.ExpectOnlyKeys({"size_draw", "size_limit"});
+  options.ExpectOnlyKeys({"size_draw", "size_limit", "tilt", "section"});
+  ParseElasticOptions(options);  // the elastic law's keys, checked here so that validate sees them
   if (auto node = options.Find("size_draw")) {
     options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart
                                                                                : SizeDraw::kPerCell;
@@ -356,6 +393,9 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
       while (std::abs(x) > half_range);
       surface(c) = x;
     }
+  }
+  if (texture == TextureMode::kDin7190 && part.texture.waviness > 0.0) {
+    surface = WavinessComponent(grid, geometry.diameter(), length, part.texture.waviness, rng);
   }
   // Eqs. 1-2: the dimensional variation (radial: half the diameter deviation).
   const Eigen::VectorXd local = form + surface;
