@@ -63,11 +63,6 @@ class FITFEEL_API ContactAnalyzer {
   // Not for the tick (may allocate): the interference delta(P_ij) >= 0 of every cell of the inner
   // part's grid at `pose` (zero where there is clearance), for pressure maps and pictures.
   void InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
-  // Not for the tick (may allocate and solve): the contact pressure (Pa) of every cell of the
-  // inner part's grid at `pose`'s depth, at the part's equilibrium, from an analyzer that solves
-  // the pressure (the cylinder's elastic model). False, with `pressure` untouched, from one that
-  // does not: then pressure is a law's pressure per unit interference times InterferenceMap.
-  bool PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const;
 
  protected:
   virtual void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
@@ -75,7 +70,6 @@ class FITFEEL_API ContactAnalyzer {
                          const ModelSettings& settings) = 0;
   virtual void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept = 0;
   virtual void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
-  virtual bool DoPressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const;
 
  private:
   bool prepared_ = false;

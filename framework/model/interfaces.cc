@@ -89,14 +89,6 @@ void ContactAnalyzer::DoInterferenceMap(const MatingPose&, Eigen::VectorXd*) con
   throw UnsupportedError("this surface type does not produce interference maps");
 }
 
-bool ContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const {
-  if (!prepared_) throw UserError("contact analyzer queried before prepare");
-  if (pressure == nullptr) throw std::invalid_argument("PressureMap needs an output vector");
-  return DoPressureMap(pose, pressure);
-}
-
-bool ContactAnalyzer::DoPressureMap(const MatingPose&, Eigen::VectorXd*) const { return false; }
-
 void ResistanceLaw::Prepare(const PartSpec& inner, const PartSpec& outer,
                             const ModelSettings& settings) {
   if (settings.friction < 0.0) throw UserError("friction coefficient must not be negative");

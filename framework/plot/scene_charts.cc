@@ -69,22 +69,16 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
   data.law = run.summary.law;
   data.depth_mm = depth_mm;
   data.grid = inner_grid;
-  // An analyzer that solves the pressure gives it directly (as an "interference" at one Pa per
-  // unit); otherwise the law's pressure per unit interference turns interference into pressure.
-  if (analyzer.PressureMap(pose, &data.interference)) {
-    data.pressure_per_interference = 1.0;
-  } else {
-    analyzer.InterferenceMap(pose, &data.interference);
-    try {
-      data.pressure_per_interference = law.PressurePerInterference();
-    } catch (const UnsupportedError&) {
-      // Say which law and why: the reader asked for a picture, not about the law's interface.
-      throw UnsupportedError(
-          "no pressure map for run '" + run.summary.scenario + "': its law '" +
-          (run.summary.law.empty() ? std::string("(unnamed)") : run.summary.law) +
-          "' gives no contact pressure per unit interference (a law that ignores the skin model "
-          "shapes, like the paper's VE1, has no pressure field over them)");
-    }
+  analyzer.InterferenceMap(pose, &data.interference);
+  try {
+    data.pressure_per_interference = law.PressurePerInterference();
+  } catch (const UnsupportedError&) {
+    // Say which law and why: the reader asked for a picture, not about the law's interface.
+    throw UnsupportedError(
+        "no pressure map for run '" + run.summary.scenario + "': its law '" +
+        (run.summary.law.empty() ? std::string("(unnamed)") : run.summary.law) +
+        "' gives no contact pressure per unit interference (a law that ignores the skin model "
+        "shapes, like the paper's VE1, has no pressure field over them)");
   }
   data.fx_N = trace.fx_N[row];
   data.fy_N = trace.fy_N[row];

@@ -446,9 +446,9 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
-bool CylinderContactAnalyzer::DoPressureMap(const MatingPose& pose,
-                                            Eigen::VectorXd* pressure) const {
-  if (!elastic_) return false;
+bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose,
+                                          Eigen::VectorXd* pressure) const {
+  if (!elastic_ || pressure == nullptr) return false;
   if (!pose.offset.allFinite()) throw UserError("pressure map of a non-finite axis offset");
   pressure->setZero(static_cast<Eigen::Index>(shaft_rows_) * n_);
   std::size_t k = 0;

@@ -62,6 +62,11 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // Elastic model (law `elastic`): equilibrium normal force and tilt at step k, the DIN 7190
   // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
   bool elastic() const { return elastic_; }
+  // Not for the tick (allocates and solves): the elastic model's contact pressure (Pa) of every
+  // cell of the shaft's grid at the pose's depth, at the part's equilibrium: the shaft rows inside
+  // the bushing, each against the bushing row at its centre, each column block's pressure spread
+  // over its cells. False (nothing written) without the elastic model.
+  bool PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const;
   double normal_force(int k) const { return normal_[static_cast<std::size_t>(k)]; }
   Eigen::Vector2d tilt(int k) const { return tilt_[static_cast<std::size_t>(k)]; }
   double smoothing() const { return smoothing_; }
@@ -72,10 +77,6 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
-  // Elastic model only: re-solves the equilibrium of the shaft rows inside the bushing at the
-  // pose's depth (each row against the bushing row at its centre) and spreads each column block's
-  // pressure over its cells.
-  bool DoPressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const override;
 
  private:
   struct Slice {
