@@ -56,6 +56,9 @@ struct Material {
   std::string name;
   double youngs_modulus = 0.0;  // Pa
   double poisson = 0.0;
+  // Yield strength R_e (or R_p0.2), Pa, for the elastic-limit check (DIN 7190); 0 = not given,
+  // no check.
+  double yield_strength = 0.0;
 };
 
 // Surface-type-specific nominal geometry of one part's mating surface; each surface plugin derives

@@ -97,6 +97,25 @@ void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& mo
   DoEvaluate(contact, motion, out);
 }
 
+void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& motion,
+                             LawState* state, Wrench* out) const noexcept {
+  assert(out != nullptr && state != nullptr);
+  DoEvaluateWithState(contact, motion, state, out);
+}
+
+void ResistanceLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                        LawState*, Wrench* out) const noexcept {
+  DoEvaluate(contact, motion, out);
+}
+
+ElasticLimitCheck ResistanceLaw::CheckElasticLimit(const ContactState& contact) const noexcept {
+  return DoCheckElasticLimit(contact);
+}
+
+ElasticLimitCheck ResistanceLaw::DoCheckElasticLimit(const ContactState&) const noexcept {
+  return {};
+}
+
 double ResistanceLaw::PressurePerInterference() const {
   const double coefficient = DoPressurePerInterference();
   assert(coefficient >= 0.0);

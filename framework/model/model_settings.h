@@ -5,6 +5,7 @@
 
 #include "framework/core/config_node.h"
 #include "framework/model/discretizer.h"
+#include "framework/model/friction.h"
 #include "framework/model/variation_generator.h"
 
 namespace fitfeel {
@@ -12,12 +13,21 @@ namespace fitfeel {
 // The scenario's `model` section, in SI.
 struct ModelSettings {
   std::string law;                     // law name offered by the surface type ("gps", "ve1", ...)
-  double friction = 0.0;               // Coulomb coefficient mu
+  double friction = 0.0;               // Coulomb (kinetic, sliding) coefficient mu_k
+  double static_friction = 0.0;        // breakaway coefficient mu_s >= mu_k
+  double breakaway_displacement = kSteelBreakawayDisplacement;  // m (friction.h)
   double contact_stiffness = 0.0;      // k_p, N/m (eq. 9)
   Resolution resolution;               // m x n, or auto
   TextureMode texture = TextureMode::kExpected;
   double depth_step = 0.0;             // tabulation step along the mating axis, m (0 = auto)
   std::optional<ConfigNode> extra;     // surface-specific keys under model.options, if any
 };
+
+// The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in
+// code that set only `friction`) is taken as mu_s = mu_k: Coulomb friction with stiction.
+inline FrictionParameters FrictionOf(const ModelSettings& s) {
+  return {s.static_friction > s.friction ? s.static_friction : s.friction, s.friction,
+          s.breakaway_displacement};
+}
 
 }  // namespace fitfeel

@@ -17,20 +17,30 @@ ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const Resist
 void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept {
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
+  out->elastic = ElasticLimitCheck{};
   analyzer_.Evaluate(out->pose, &out->contact);
   MatingMotion motion;
   motion.velocity = device.velocity;
   motion.angular_velocity = device.angular_velocity;
+  motion.depth = out->pose.depth;
+  motion.angle = out->pose.angle;
   out->wrench.SetZero();
-  law_.Evaluate(out->contact, motion, &out->wrench);
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
-  if (device.settle_load.squaredNorm() > 0.0 && Settle(device.settle_load, motion, out)) {
+  const bool settle = device.settle_load.squaredNorm() > 0.0;
+  if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
+  if (settle && Settle(device.settle_load, motion, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
     out->gap_direction.setZero();
     return;
   }
+  out->wrench.SetZero();
+  // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
+  // later re-entry forms its contact afresh rather than at a stale anchor.
+  if (!out->contact.engaged) law_state_ = LawState{};
+  law_.Evaluate(out->contact, motion, &law_state_, &out->wrench);
+  out->elastic = law_.CheckElasticLimit(out->contact);
   out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
@@ -160,7 +170,8 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   work.pose.offset = at;
   analyzer_.Evaluate(work.pose, &work.contact);
   work.wrench.SetZero();
-  law_.Evaluate(work.contact, motion, &work.wrench);
+  law_.Evaluate(work.contact, motion, &law_state_, &work.wrench);
+  out->elastic = law_.CheckElasticLimit(work.contact);
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;

@@ -15,6 +15,8 @@ namespace fitfeel {
 class FITFEEL_API ConstrainedStage final : public Stage {
  public:
   // Both must be prepared and outlive the stage. Throws UserError if the analyzer is not prepared.
+  // Probes (settling searches, stiffness) evaluate the law without history; the tick's wrench
+  // comes from one evaluation with the run's law state at the pose the part is rendered at.
   ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law);
 
   StageId id() const override { return StageId::kConstrained; }
@@ -44,6 +46,10 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   // Where the last settled tick left the part: the next tick's starting point. Evaluate is called
   // from one thread at a time (the tick), so this cache needs no lock; it is deterministic.
   mutable Eigen::Vector2d last_settled_{0.0, 0.0};
+  // The law's per-run state (friction junctions), advanced once per tick at the rendered pose.
+  // Kept here, like last_settled_, until the scheduler owns a per-run state object (issue 13):
+  // the law itself stays immutable and takes the state as an argument.
+  mutable LawState law_state_;
 };
 
 }  // namespace fitfeel

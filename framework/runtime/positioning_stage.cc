@@ -82,6 +82,7 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   out->wrench.SetZero();
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
+  out->elastic = ElasticLimitCheck{};
   out->stiffness = 0.0;
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();

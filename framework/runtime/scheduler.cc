@@ -178,6 +178,7 @@ bool Scheduler::Tick(double time) noexcept {
   record.contact = output_.contact;
   record.wrench = output_.wrench;
   record.device_wrench = device_wrench;
+  record.elastic = output_.elastic;
   record.stiffness = output_.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -143,10 +144,46 @@ Resolution ParseResolution(const ConfigNode& node) {
   return resolution;
 }
 
+// Friction (docs/friction.md): `friction` is the sliding coefficient mu_k, `static_friction` the
+// breakaway one mu_s >= mu_k. A scene that names neither gets the handbook pair of its
+// `lubrication` (dry or lubricated hard steel, friction.h); one that names only mu_k gets
+// mu_s = mu_k (Coulomb friction with stiction at that level), since a handbook ratio applied to a
+// coefficient from elsewhere would be a guess.
+void ParseFriction(const ConfigNode& node, ModelSettings* model) {
+  bool dry = false;
+  std::optional<ConfigNode> lubrication = node.Find("lubrication");
+  if (lubrication) dry = lubrication->AsOneOf({"dry", "lubricated"}) == "dry";
+  std::optional<ConfigNode> kinetic = node.Find("friction");
+  std::optional<ConfigNode> stat = node.Find("static_friction");
+  if (kinetic) {
+    model->friction = kinetic->AsQuantityIn(Dimension::kDimensionless, 0.0, kMaxFriction);
+  } else {
+    model->friction = dry ? kDrySteelKineticFriction : kLubricatedSteelKineticFriction;
+  }
+  if (stat) {
+    model->static_friction = stat->AsQuantityIn(Dimension::kDimensionless, 0.0, kMaxFriction);
+    if (model->static_friction < model->friction) {
+      stat->Fail("a static coefficient at least the sliding one (friction: " +
+                     FormatQuantity(model->friction, Dimension::kDimensionless) + ")",
+                 stat->Describe());
+    }
+  } else if (kinetic) {
+    model->static_friction = model->friction;
+  } else {
+    model->static_friction = dry ? kDrySteelStaticFriction : kLubricatedSteelStaticFriction;
+  }
+  if (std::optional<ConfigNode> z = node.Find("breakaway_displacement")) {
+    // Junction deflections are micrometres; 1 mm would be a spring, not friction.
+    model->breakaway_displacement = z->AsQuantityIn(Dimension::kLength, 0.0, 1e-3,
+                                                    /*min_inclusive=*/false);
+  }
+}
+
 ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
                          const std::string& surface_id, const Parts& parts) {
   node.ExpectOnlyKeys(
-      {"law", "friction", "contact_stiffness", "resolution", "texture", "depth_step", "options"});
+      {"law", "friction", "static_friction", "lubrication", "breakaway_displacement",
+       "contact_stiffness", "resolution", "texture", "depth_step", "options"});
   ModelSettings model;
   const std::vector<std::string> laws = surface.law_names();
   // Empty only for a surface type loaded for inspection (LoadOptions::allow_non_rendering).
@@ -158,10 +195,14 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
                 law->Describe());
     }
   }
-  model.friction = node.QuantityIn("friction", Dimension::kDimensionless, 0.0, kMaxFriction);
-  model.contact_stiffness = node.Child("contact_stiffness")
-                                .AsQuantityIn(Dimension::kStiffness, 0.0, kInfinity,
-                                              /*min_inclusive=*/false);
+  ParseFriction(node, &model);
+  // `auto`: the law derives it from its own elastic model (0 in ModelSettings).
+  const ConfigNode stiffness = node.Child("contact_stiffness");
+  model.contact_stiffness =
+      stiffness.is_scalar() && stiffness.AsString() == "auto"
+          ? 0.0
+          : stiffness.AsQuantityIn(Dimension::kStiffness, 0.0, kInfinity,
+                                   /*min_inclusive=*/false);
   if (std::optional<ConfigNode> resolution = node.Find("resolution")) {
     model.resolution = ParseResolution(*resolution);
   }

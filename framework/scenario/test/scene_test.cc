@@ -257,6 +257,18 @@ INSTANTIATE_TEST_SUITE_P(
                  "'trace' a second time"},
                 "[trace, summary, recording]",
                 "[trace, trace]"},
+        Variant{{"static_below_kinetic", 25, 20, "model.static_friction",
+                 "a static coefficient at least the sliding one (friction: 0.15)", "0.1"},
+                "friction: 0.15\n",
+                "friction: 0.15\n  static_friction: 0.1\n"},
+        Variant{{"unknown_lubrication", 24, 16, "model.lubrication", "dry",
+                 "'oily'"},
+                "friction: 0.15",
+                "lubrication: oily"},
+        Variant{{"yield_above_range", 20, 72, "parts.bushing.material.yield_strength",
+                 "a pressure in [1 MPa, 5 GPa]", "'9 GPa'"},
+                "poisson: 0.34",
+                "poisson: 0.34, yield_strength: 9 GPa"},
         Variant{{"zero_stiffness", 25, 22, "model.contact_stiffness", "a stiffness > 0 N/m",
                  "'0 N/um'"},
                 "contact_stiffness: 2 N/um",
@@ -473,6 +485,39 @@ TEST_F(SceneTest, MinimalScenarioTakesTheDocumentedDefaults) {
   EXPECT_FALSE(scene.run.write_recording);
 }
 
+// docs/friction.md: one coefficient names mu_k = mu_s; none takes the handbook pair of the
+// lubrication (Marks': hard steel, dry 0.78 / 0.42, greasy middles 0.17 / 0.075).
+TEST_F(SceneTest, FrictionKeysTakeTheDocumentedDefaults) {
+  const Scene one = LoadScene(kTestDir / "good" / "minimal.yaml", registry_);
+  EXPECT_EQ(one.model.friction, 0.1);
+  EXPECT_EQ(one.model.static_friction, 0.1);
+  EXPECT_EQ(one.model.breakaway_displacement, 2e-6);
+  const Scene dry = LoadScene(
+      WriteVariant("dry", "  friction: 0.1\n", "  lubrication: dry\n", "minimal.yaml"), registry_);
+  EXPECT_EQ(dry.model.friction, 0.42);
+  EXPECT_EQ(dry.model.static_friction, 0.78);
+  const Scene lubricated =
+      LoadScene(WriteVariant("lubricated", "  friction: 0.1\n", "", "minimal.yaml"), registry_);
+  EXPECT_EQ(lubricated.model.friction, 0.075);
+  EXPECT_EQ(lubricated.model.static_friction, 0.17);
+  const Scene both = LoadScene(
+      WriteVariant("both", "  friction: 0.1\n",
+                   "  friction: 0.1\n  static_friction: 0.2\n  breakaway_displacement: 5 um\n",
+                   "minimal.yaml"),
+      registry_);
+  EXPECT_EQ(both.model.static_friction, 0.2);
+  EXPECT_NEAR(both.model.breakaway_displacement, 5e-6, 1e-18);
+  const Scene auto_k = LoadScene(
+      WriteVariant("auto_k", "contact_stiffness: 500 N/mm", "contact_stiffness: auto",
+                   "minimal.yaml"),
+      registry_);
+  EXPECT_EQ(auto_k.model.contact_stiffness, 0.0);
+  const Scene yield = LoadScene(
+      WriteVariant("yield", "poisson: 0.34", "poisson: 0.34, yield_strength: 430 MPa"), registry_);
+  EXPECT_EQ(yield.outer.material.yield_strength, 430e6);
+  EXPECT_EQ(one.outer.material.yield_strength, 0.0);
+}
+
 TEST_F(SceneTest, NonRenderingSurfaceOnlyWhenAllowed) {
   const fs::path file = WriteVariant("thread", "surface: test.surface.cylinder",
                                      "surface: test.surface.thread", "minimal.yaml");
@@ -517,8 +562,9 @@ TEST_F(SceneTest, SummaryNamesPartsLimitsModelDeviceAndRun) {
   EXPECT_THAT(summary, HasSubstr("texture waviness 3.2 um, Ra 0.4 um, Rz 1.6 um\n"));
   EXPECT_THAT(summary, HasSubstr("material C45E4, E 210 GPa, nu 0.3\n"));
   EXPECT_THAT(summary, HasSubstr("geometry cylinder d=20 mm l=60 mm\n"));
-  EXPECT_THAT(summary, HasSubstr("law ve1, friction 0.15, contact stiffness 2 N/um, resolution "
-                                 "40 x 72, texture sampled, depth step 500 um\n"));
+  EXPECT_THAT(summary, HasSubstr("law ve1, friction 0.15 (static 0.15, breakaway 2 um), contact "
+                                 "stiffness 2 N/um, resolution 40 x 72, texture sampled, depth "
+                                 "step 500 um\n"));
   EXPECT_THAT(summary, HasSubstr("texture none given (smooth)\n"));
   EXPECT_THAT(summary, HasSubstr("device       test.device.fake\n"));
   EXPECT_THAT(summary, HasSubstr("run          2 kHz for 5 s (10000 ticks), seed 42, clock "
