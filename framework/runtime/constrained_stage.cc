@@ -3,18 +3,34 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "framework/core/error.h"
 #include "framework/runtime/positioning_stage.h"
 
 namespace fitfeel {
+namespace {
+
+struct ConstrainedState final : StageState {
+  // Where the last settled tick left the part: the next settle's starting point.
+  Eigen::Vector2d last_settled{0.0, 0.0};
+  // The law's state (friction junctions), advanced once per tick at the rendered pose.
+  LawState law;
+};
+
+}  // namespace
 
 ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law)
     : analyzer_(analyzer), law_(law) {
   if (!analyzer.prepared()) throw UserError("constrained stage needs a prepared contact analyzer");
 }
 
-void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept {
+std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
+  return std::make_unique<ConstrainedState>();
+}
+
+void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
+                                  StageOutput* out) const noexcept {
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
   out->elastic = ElasticLimitCheck{};
@@ -26,9 +42,13 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   motion.angle = out->pose.angle;
   out->wrench.SetZero();
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
+  auto* run = static_cast<ConstrainedState*>(state);
+  // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
+  // later re-entry forms its contact afresh rather than at a stale anchor.
+  if (!out->contact.engaged) run->law = LawState{};
   const bool settle = device.settle_load.squaredNorm() > 0.0;
   if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
-  if (settle && Settle(device.settle_load, motion, out)) {
+  if (settle && Settle(device.settle_load, motion, &run->last_settled, &run->law, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
@@ -36,10 +56,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
     return;
   }
   out->wrench.SetZero();
-  // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
-  // later re-entry forms its contact afresh rather than at a stale anchor.
-  if (!out->contact.engaged) law_state_ = LawState{};
-  law_.Evaluate(out->contact, motion, &law_state_, &out->wrench);
+  law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
   out->elastic = law_.CheckElasticLimit(out->contact);
   out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
   out->gap = std::numeric_limits<double>::infinity();
@@ -124,6 +141,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
 }
 
 bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
+                              Eigen::Vector2d* last_settled, LawState* law_state,
                               StageOutput* out) const noexcept {
   const double weight = load.norm();
   if (!std::isfinite(weight)) return false;
@@ -143,7 +161,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // is below tan(pi/n) of the load anyway, so clearance fits need no sideways solve at all.
   const double along_tolerance = 1e-6 * weight;
   const double across_tolerance = 1e-2 * weight;
-  Eigen::Vector2d at = last_settled_;
+  Eigen::Vector2d at = *last_settled;
   double s = 0.0;
   if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
@@ -170,12 +188,12 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   work.pose.offset = at;
   analyzer_.Evaluate(work.pose, &work.contact);
   work.wrench.SetZero();
-  law_.Evaluate(work.contact, motion, &law_state_, &work.wrench);
+  law_.Evaluate(work.contact, motion, law_state, &work.wrench);
   out->elastic = law_.CheckElasticLimit(work.contact);
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;
-  last_settled_ = at;
+  *last_settled = at;
   return true;
 }
 
