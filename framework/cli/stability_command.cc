@@ -21,6 +21,7 @@
 #include "framework/safety/virtual_coupling.h"
 #include "framework/scenario/scene.h"
 #include "framework/stability/stability_map.h"
+#include "framework/stability/stiction_experiment.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -207,6 +208,42 @@ void Run(const Options& options) {
                 gains.damping, r.outcome.stable ? "yes" : "no", r.outcome.energy_growth,
                 r.outcome.peak_force);
   }
+  // Stiction (docs/friction.md): the scene's stick-slip friction under a normal force whose
+  // breakaway is 1.5 pushes at the device, held (push) and broken (the breakaway plus a third of
+  // the way to the continuous rating), direct and coupled, at the scene's rate.
+  const FrictionParameters friction = FrictionOf(scene.model);
+  if (friction.static_coefficient > 0.0) {
+    const double breakaway = std::min(1.5 * base.push_force, 0.9 * spec.max_continuous_force);
+    const double hold = breakaway / 1.5;
+    const double slide = breakaway + (spec.max_continuous_force - breakaway) / 3.0;
+    StictionExperiment e;
+    e.spec = spec;
+    e.rate = scene.run.rate;
+    e.force_scale = scale;
+    e.friction = friction;
+    e.normal_force = breakaway / (scale * friction.static_coefficient);
+    e.hand_mass = base.hand_mass;
+    e.horizon = base.horizon;
+    std::cout << "\nstiction: mu_s " << Number(friction.static_coefficient) << ", mu_k "
+              << Number(friction.kinetic_coefficient) << ", breakaway displacement "
+              << Number(friction.breakaway_displacement * 1e6) << " um, normal force "
+              << Number(e.normal_force) << " N: breakaway " << Number(breakaway)
+              << " N at the device\n";
+    std::cout << "  method   push_N  sliding  displacement_mm  final_speed_mm_s  contact_work_J  "
+                 "stable\n";
+    for (RenderingMethod method : {RenderingMethod::kDirect, RenderingMethod::kCoupled}) {
+      for (double push : {hold, slide}) {
+        e.method = method;
+        e.push_force = push;
+        const StictionOutcome out = RunStictionExperiment(e);
+        std::printf("  %-7s  %6.3g  %-7s  %15.4g  %16.4g  %14.4g  %s\n", ToString(method).c_str(),
+                    push, out.sliding ? "yes" : "no", out.displacement * 1e3,
+                    out.final_speed * 1e3, out.contact_work,
+                    push == hold ? (out.stable ? "yes" : "no") : "-");
+      }
+    }
+  }
+
   std::size_t stable = 0;
   for (const StabilityMapRow& r : rows) stable += r.outcome.stable ? 1 : 0;
   std::cout << "\nstability map: " << rows.size() << " runs (" << stable << " stable) -> " << path
