@@ -1,5 +1,6 @@
 #include "surfaces/cylindrical/cylindrical_law.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -116,6 +117,39 @@ ElasticLimitCheck GpsLaw::DoCheckElasticLimit(const ContactState& contact) const
     check.part = 2;
   }
   return check;
+}
+
+void ElasticLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
+                           const ModelSettings& settings) {
+  CheckMaterial(inner);
+  CheckMaterial(outer);
+  const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
+  friction_ = StickSlipFriction(FrictionOf(settings));
+  stiffness_ = settings.contact_stiffness;
+  d1_ = d.d1;
+  pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
+}
+
+double ElasticLaw::Normal(const ContactState& contact, Wrench* out) const noexcept {
+  out->SetZero();
+  if (!contact.engaged) return 0.0;
+  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
+  const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
+  out->force.x() = radial.x();
+  out->force.z() = radial.y();
+  return std::max(contact.normal_force, radial.norm());
+}
+
+void ElasticLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                            Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
+}
+
+void ElasticLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                     LawState* state, Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
 }
 
 void Ve1Law::DoPrepare(const PartSpec& inner, const PartSpec& outer,
