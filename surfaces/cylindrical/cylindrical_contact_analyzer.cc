@@ -139,6 +139,9 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     freedom.tilt = options.tilt;
     freedom.tilt_stiffness = options.tilt_stiffness;
     frame = angle_[0] + std::numbers::pi * (block_ - 1) / n_;
+    section_ = section;
+    freedom_ = freedom;
+    frame_ = frame;
   }
 
   texture_ = settings.texture == TextureMode::kExpected
@@ -441,6 +444,55 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
       (*delta)[i * n_ + j] = texture_(gap);
     }
   }
+}
+
+bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose,
+                                          Eigen::VectorXd* pressure) const {
+  if (!elastic_ || pressure == nullptr) return false;
+  if (!pose.offset.allFinite()) throw UserError("pressure map of a non-finite axis offset");
+  pressure->setZero(static_cast<Eigen::Index>(shaft_rows_) * n_);
+  std::size_t k = 0;
+  double t = 0.0;
+  if (!Locate(pose.depth, &k, &t)) return true;
+  const std::size_t n = static_cast<std::size_t>(n_), ne = n / static_cast<std::size_t>(block_);
+  const double shift = pose.depth - shaft_length_;
+  const double lo = std::max(shift, 0.0), hi = std::min(pose.depth, bushing_length_);
+  std::vector<int> rows;
+  std::vector<double> gaps;
+  for (int i = 0; i < shaft_rows_; ++i) {
+    const double pos = shaft_row_centre_[i] + shift;
+    if (pos < 0.0 || pos >= bushing_length_) continue;
+    int b = static_cast<int>(std::upper_bound(bushing_edges_.begin(), bushing_edges_.end(), pos) -
+                             bushing_edges_.begin()) -
+            1;
+    b = std::clamp(b, 0, bushing_rows_ - 1);
+    rows.push_back(i);
+    gaps.resize(rows.size() * ne, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+      const double gap = v_bushing_[b * n_ + static_cast<Eigen::Index>(j)] -
+                         v_shaft_[i * n_ + static_cast<Eigen::Index>(j)] + smoothing_;
+      gaps[(rows.size() - 1) * ne + j / static_cast<std::size_t>(block_)] += gap / block_;
+    }
+  }
+  if (rows.empty()) return true;
+  std::vector<ContactSection> sections(rows.size());
+  for (std::size_t s = 0; s < rows.size(); ++s) {
+    sections[s].gap = gaps.data() + s * ne;
+    sections[s].cell_area = shaft_area_[rows[s] * n_] * block_;
+    sections[s].y = shaft_row_centre_[rows[s]] + shift - 0.5 * (lo + hi);
+  }
+  const std::size_t nearest = t < 0.5 ? k : k + 1;
+  Eigen::Vector4d warm;
+  warm << Rotate(anchor_[nearest], -frame_), Rotate(tilt_[nearest], -frame_);
+  RigidSectionContact solver(section_, static_cast<int>(ne));
+  solver.Solve(sections, freedom_, warm);
+  for (std::size_t s = 0; s < rows.size(); ++s) {
+    for (std::size_t j = 0; j < n; ++j) {
+      (*pressure)[rows[s] * n_ + static_cast<Eigen::Index>(j)] =
+          solver.pressures()[s * ne + j / static_cast<std::size_t>(block_)];
+    }
+  }
+  return true;
 }
 
 }  // namespace fitfeel::cylindrical

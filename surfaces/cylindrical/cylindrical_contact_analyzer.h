@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/section_contact.h"
 #include "framework/model/texture_contact.h"
 
 namespace fitfeel::cylindrical {
@@ -61,6 +62,11 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // Elastic model (law `elastic`): equilibrium normal force and tilt at step k, the DIN 7190
   // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
   bool elastic() const { return elastic_; }
+  // Not for the tick (allocates and solves): the elastic model's contact pressure (Pa) of every
+  // cell of the shaft's grid at the pose's depth, at the part's equilibrium: the shaft rows inside
+  // the bushing, each against the bushing row at its centre, each column block's pressure spread
+  // over its cells. False (nothing written) without the elastic model.
+  bool PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const;
   double normal_force(int k) const { return normal_[static_cast<std::size_t>(k)]; }
   Eigen::Vector2d tilt(int k) const { return tilt_[static_cast<std::size_t>(k)]; }
   double smoothing() const { return smoothing_; }
@@ -109,6 +115,9 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   bool elastic_ = false;
   int block_ = 1;            // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;   // m, added to every gap
+  PressFitSection section_;
+  RigidFreedom freedom_;
+  double frame_ = 0.0;       // angle of the elastic solve's column 0
   std::vector<double> normal_;
   std::vector<Eigen::Vector2d> tilt_;
 };

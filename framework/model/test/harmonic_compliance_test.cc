@@ -1,6 +1,10 @@
 #include "framework/model/harmonic_compliance.h"
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -35,6 +39,32 @@ TEST(HarmonicCompliance, MichellStiffnessPerHarmonic) {
   for (const auto& r : rows) {
     EXPECT_NEAR(1.0 / HarmonicCompliance(s, r.n) / p0, r.ratio, r.tol) << "n = " << r.n;
   }
+}
+
+TEST(HarmonicCompliance, AgreesWithCalculixWithinTwoPercent) {
+  // tools/fem/data/harmonic.csv: CalculiX, quadratic plane-stress elements, pressure cos(n theta)
+  // on the shaft's rim and the hub's bore.
+  std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/harmonic.csv");
+  ASSERT_TRUE(in) << "tools/fem/data/harmonic.csv";
+  const PressFitSection s = SteelPair();
+  std::string line;
+  int checked = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == 'n') continue;
+    std::stringstream ss(line);
+    std::string n, k, ratio;
+    std::getline(ss, n, ',');
+    std::getline(ss, k, ',');
+    std::getline(ss, ratio, ',');
+    const double michell = 1.0 / HarmonicCompliance(s, std::stoi(n));
+    const double fem = std::stod(k) * 1e12;  // MPa/um -> Pa/m
+    std::printf("n = %2s: Michell K_n/P0 = %.5f, FEM %.5f (%+.2f %%)\n", n.c_str(),
+                michell / (1.0 / HarmonicCompliance(s, 0)), std::stod(ratio),
+                100.0 * (fem / michell - 1.0));
+    EXPECT_NEAR(fem / michell, 1.0, 0.02) << "n = " << n;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 5);
 }
 
 TEST(HarmonicCompliance, HighOrdersTendToTwoHalfSpaces) {
