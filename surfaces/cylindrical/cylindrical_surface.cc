@@ -17,8 +17,9 @@ std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const
           FormCharacteristic::kRoundness, FormCharacteristic::kCylindricity};
 }
 
-// Default first: "gps" (the paper's eqs. 9-12) and "ve1" (its ideal-geometry baseline).
-std::vector<std::string> CylindricalSurface::law_names() const { return {"gps", "ve1"}; }
+// "gps" (the paper's eqs. 9-12), "elastic" (harmonic-compliance contact checked against FEM,
+// docs/contact-mechanics.md) and "ve1" (the paper's ideal-geometry baseline).
+std::vector<std::string> CylindricalSurface::law_names() const { return {"gps", "elastic", "ve1"}; }
 
 std::unique_ptr<Discretizer> CylindricalSurface::MakeDiscretizer() const {
   return std::make_unique<CylindricalDiscretizer>();
@@ -39,6 +40,7 @@ CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
 
 std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view name) const {
   if (name == "gps") return std::make_unique<GpsLaw>();
+  if (name == "elastic") return std::make_unique<ElasticLaw>();
   if (name == "ve1") return std::make_unique<Ve1Law>();
   return nullptr;
 }

@@ -252,10 +252,11 @@ TEST(CylinderContact, RefusesMismatchedGrids) {
       UserError);
 }
 
-TEST(CylinderContact, SurfaceOffersBothLaws) {
+TEST(CylinderContact, SurfaceOffersEveryLaw) {
   const CylindricalSurface surface;
-  EXPECT_EQ(surface.law_names(), (std::vector<std::string>{"gps", "ve1"}));
+  EXPECT_EQ(surface.law_names(), (std::vector<std::string>{"gps", "elastic", "ve1"}));
   EXPECT_NE(surface.MakeLaw("gps"), nullptr);
+  EXPECT_NE(surface.MakeLaw("elastic"), nullptr);
   EXPECT_NE(surface.MakeLaw("ve1"), nullptr);
   EXPECT_NE(surface.MakeContactAnalyzer(), nullptr);
   EXPECT_THROW(surface.MakeLaw("vE2"), UserError);
