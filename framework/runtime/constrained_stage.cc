@@ -3,19 +3,33 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "framework/core/error.h"
 #include "framework/runtime/bounded_root.h"
 #include "framework/runtime/positioning_stage.h"
 
 namespace fitfeel {
+namespace {
+
+struct ConstrainedState final : StageState {
+  // Where the last settled tick left the part: the next settle's starting point.
+  Eigen::Vector2d last_settled{0.0, 0.0};
+};
+
+}  // namespace
 
 ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law)
     : analyzer_(analyzer), law_(law) {
   if (!analyzer.prepared()) throw UserError("constrained stage needs a prepared contact analyzer");
 }
 
-void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept {
+std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
+  return std::make_unique<ConstrainedState>();
+}
+
+void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
+                                  StageOutput* out) const noexcept {
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
   analyzer_.Evaluate(out->pose, &out->contact);
@@ -25,7 +39,8 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   out->wrench.SetZero();
   law_.Evaluate(out->contact, motion, &out->wrench);
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
-  if (device.settle_load.squaredNorm() > 0.0 && Settle(device.settle_load, motion, out)) {
+  if (device.settle_load.squaredNorm() > 0.0 && Settle(device.settle_load, motion,
+                                                  &static_cast<ConstrainedState*>(state)->last_settled, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
@@ -70,7 +85,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
 }
 
 bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-                              StageOutput* out) const noexcept {
+                              Eigen::Vector2d* last_settled, StageOutput* out) const noexcept {
   const double weight = load.norm();
   if (!std::isfinite(weight)) return false;
   const Eigen::Vector2d down = load / weight;
@@ -94,7 +109,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // offset, a tick evaluates the contact at most kSettleEvaluations + 2 times. A warm start needs
   // 3-6 (a probe and a Newton step along the load, one evaluation across it).
   int budget = kSettleEvaluations;
-  Eigen::Vector2d at = last_settled_;
+  Eigen::Vector2d at = *last_settled;
   double s = 0.0;
   if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, &budget)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
@@ -127,7 +142,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;
-  last_settled_ = at;
+  *last_settled = at;
   return true;
 }
 
