@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "framework/core/error.h"
-#include "framework/runtime/bounded_root.h"
 #include "framework/runtime/positioning_stage.h"
 
 namespace fitfeel {
@@ -62,7 +61,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
 
 bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                                   double target, double tolerance, const MatingMotion& motion,
-                                  StageOutput* work, double* solution, int* budget) const noexcept {
+                                  StageOutput* work, double* solution) const noexcept {
   // Support the contact gives along -axis with the part at origin + s * axis, minus the target:
   // negative while the part would move further along the axis. The laws' radial force grows
   // monotonically with the offset into a wall (eq. 9's spring, eqs. 10-12's interference), so
@@ -74,13 +73,58 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
     law_.Evaluate(work->contact, motion, &work->wrench);
     return -(work->wrench.force.x() * axis.x() + work->wrench.force.z() * axis.y()) - target;
   };
-  // The root is usually within a few um of the origin (the previous tick's equilibrium), where a
-  // probe and a Newton step find it (bounded_root.h).
-  if (*budget < 2) return false;
-  const RootSearch root = FindRootNear(residual, tolerance, *budget);
-  *budget -= root.evaluations;
-  if (!root.found) return false;
-  *solution = root.solution;
+  // The root is usually within a few um of the origin (the previous tick's equilibrium): check
+  // the origin first, then bracket on the side the residual points to, starting 1 um away and
+  // widening eightfold up to 1 mm: beyond every fit's clearance and interference (ISO 286 limits
+  // of parts up to 500 mm stay below 1 mm) and within every bore this framework models.
+  const double r0 = residual(0.0);
+  if (std::abs(r0) <= tolerance) {
+    *solution = 0.0;
+    return true;
+  }
+  double lo = 0.0, hi = 0.0, r_lo = r0, r_hi = r0;
+  bool bracketed = false;
+  for (double reach = 1e-6; reach <= 1.1e-3 && !bracketed; reach *= 8.0) {
+    if (r0 < 0.0) {
+      hi = reach;
+      r_hi = residual(hi);
+      bracketed = r_hi > 0.0;
+      if (!bracketed) {
+        lo = hi;
+        r_lo = r_hi;
+      }
+    } else {
+      lo = -reach;
+      r_lo = residual(lo);
+      bracketed = r_lo < 0.0;
+      if (!bracketed) {
+        hi = lo;
+        r_hi = r_lo;
+      }
+    }
+  }
+  if (!bracketed) return false;
+  // Illinois false position: superlinear on the piecewise-linear laws, never leaves the bracket;
+  // stops at 1 pm of position or at the tolerance; 60 iterations bound the tick's cost.
+  double s = hi;
+  int side = 0;
+  for (int k = 0; k < 60 && hi - lo > 1e-12; ++k) {
+    s = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
+    const double r = residual(s);
+    if (std::abs(r) <= tolerance) break;
+    if (r > 0.0) {
+      hi = s;
+      r_hi = r;
+      if (side == 1) r_lo *= 0.5;
+      side = 1;
+    } else {
+      lo = s;
+      r_lo = r;
+      if (side == -1) r_hi *= 0.5;
+      side = -1;
+    }
+  }
+  *solution = s;
   return true;
 }
 
@@ -104,21 +148,16 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // is below tan(pi/n) of the load anyway, so clearance fits need no sideways solve at all.
   const double along_tolerance = 1e-6 * weight;
   const double across_tolerance = 1e-2 * weight;
-  // Every solve below draws on one budget of contact evaluations, so that no tick depends on an
-  // unbounded iteration: with the evaluation at the device's pose and the final one at the settled
-  // offset, a tick evaluates the contact at most kSettleEvaluations + 2 times. A warm start needs
-  // 3-6 (a probe and a Newton step along the load, one evaluation across it).
-  int budget = kSettleEvaluations;
   Eigen::Vector2d at = *last_settled;
   double s = 0.0;
-  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, &budget)) {
+  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
     // which the planar model leaves out), but the part still floats sideways to where the walls
     // it touches balance, rather than being held off that balance by the device.
     // From the device's own pose; a part that touches nothing sideways stays where it is held.
     at = out->pose.offset;
     double t = 0.0;
-    if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t, &budget) || t == 0.0) {
+    if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) {
       return false;
     }
     at += t * across;
@@ -127,11 +166,9 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   }
   for (int sweep = 0; sweep < 4; ++sweep) {
     double t = 0.0;
-    if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t, &budget) || t == 0.0) {
-      break;
-    }
+    if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) break;
     at += t * across;
-    if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, &budget)) break;
+    if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) break;
     at += s * down;
   }
   // Leave pose, contact and wrench consistent at the settled offset.

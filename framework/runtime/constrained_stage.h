@@ -20,10 +20,6 @@ class FITFEEL_API ConstrainedStage final : public Stage {
 
   StageId id() const override { return StageId::kConstrained; }
 
-  // Contact evaluations one tick's settling may spend in all (Settle); the tick adds two: at the
-  // device's pose and at the settled offset.
-  static constexpr int kSettleEvaluations = 16;
-
  protected:
   std::unique_ptr<StageState> DoMakeState() const override;
   void DoEvaluate(const DeviceState& device, StageState* state,
@@ -42,11 +38,10 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
               Eigen::Vector2d* last_settled, StageOutput* out) const noexcept;
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
-  // at origin + s * axis, evaluating into `work` at most `*budget` times (and deducting them);
-  // false if no such point lies within reach or the budget ran out before bracketing it.
+  // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
                   double tolerance, const MatingMotion& motion, StageOutput* work,
-                  double* solution, int* budget) const noexcept;
+                  double* solution) const noexcept;
 
   const ContactAnalyzer& analyzer_;
   const ResistanceLaw& law_;
