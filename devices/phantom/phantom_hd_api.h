@@ -95,7 +95,7 @@ typedef HDCallbackCode (*HDSchedulerCallback)(void* pUserData);
 #define HD_INVALID_HANDLE 0xFFFFFFFF
 #define HD_DEFAULT_DEVICE nullptr
 
-namespace fitfeel::hd {
+namespace fitfeel::phantom::hd {
 
 // Function pointer types of the entry points used (hdDevice.h, hdScheduler.h).
 using InitDeviceFn = HHD (*)(HDstring);
@@ -117,4 +117,4 @@ using SchedulerFn = void (*)();
 
 inline bool IsForceError(HDerror code) { return code >= HD_WARM_MOTORS && code <= HD_FORCE_ERROR; }
 
-}  // namespace fitfeel::hd
+}  // namespace fitfeel::phantom::hd
