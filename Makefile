@@ -2,7 +2,8 @@
 #   make run    install missing packages, build (Release), run the default scenario and draw
 #               its force trace next to its CSV
 #   make test   install missing packages, build, run the whole test suite
-#   make bench  build (benchmarks on) and run the benchmarks
+#   make bench  build (benchmarks on) and run the benchmarks, then every shipped scenario as a
+#               whole run (table of medians)
 #   make clean  remove the build tree and the outputs
 #   make fem-check  rerun the CalculiX reference of the elastic contact model (tools/fem) and
 #               compare it with the committed data the tests use (minutes; needs no build)
@@ -50,7 +51,10 @@ test: build
 bench: deps
 	cmake --preset release -DFITFEEL_BUILD_BENCHMARKS=ON
 	cmake --build --preset release -j $(JOBS)
-	@for b in build/bench/*; do [ -x "$$b" ] && "$$b"; done
+	@for b in build/bench/*; do \
+	  [ -x "$$b" ] && [ "$$b" != build/bench/scene_benchmark ] && "$$b"; \
+	done; true
+	build/bench/scene_benchmark
 
 clean:
 	rm -rf build build-debug out

@@ -220,8 +220,17 @@ TEST(KnuckleTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
     SphericalContactAnalyzer analyzer;
     analyzer.Prepare(ball, ball_sms, socket, socket_sms, settings);
     ContactState contact;
-    analyzer.Evaluate(MatingPose{}, &contact);
+    analyzer.scan().Evaluate(MatingPose{}, &contact);
     EXPECT_NEAR(contact.interference_volume / (2.0 * M_PI * kA * kB), expected * 1e-6, 2e-12) << g;
+    // The tabulated analyzer at a rotation step, within its stated interpolation bound.
+    ContactState tabulated;
+    analyzer.Evaluate(MatingPose{}, &tabulated);
+    double bound = 0.0;
+    for (int j = 0; j < analyzer.table().columns(); ++j) {
+      bound += analyzer.table().VolumeErrorBound(0, j);
+    }
+    EXPECT_NEAR(tabulated.interference_volume, contact.interference_volume, bound) << g;
+    EXPECT_LT(bound, 0.05 * 1e-6 * 2.0 * M_PI * kA * kB) << g;
   }
 }
 
