@@ -113,6 +113,7 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
     throw UserError("scheduler: duration must be a positive number of seconds");
   }
   period_ = 1.0 / settings.rate;
+  device_clock_ = device.clock_owner() == ClockOwner::kDevice;
   const double ticks = std::round(settings.duration * settings.rate);
   if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
   if (ticks * static_cast<double>(sizeof(TickRecord)) > kMaxTraceBytes) {
@@ -155,7 +156,12 @@ bool Scheduler::Tick(double time) noexcept {
   // The chain zeroes (and counts) a non-finite wrench itself; the guard keeps the trace's physical
   // wrench finite too and flags the tick.
   chain_.SetEnvironmentStiffness(output_.stiffness);
-  const Wrench device_wrench = chain_.Apply(output_.wrench, state_, period_);
+  // A device that owns the clock ticks when its servo thread does: the coupling and the observer
+  // integrate over the period it measured, not the nominal one.
+  double dt = period_;
+  if (device_clock_ && k > 0 && time > last_time_) dt = time - last_time_;
+  last_time_ = time;
+  const Wrench device_wrench = chain_.Apply(output_.wrench, state_, dt);
   const bool fault = !output_.wrench.AllFinite();
   if (fault) {
     output_.wrench.SetZero();

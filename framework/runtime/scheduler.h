@@ -88,6 +88,8 @@ class FITFEEL_API Scheduler {
   std::array<const Stage*, 2> stages_;
   SchedulerSettings settings_;
   double period_ = 0.0;
+  bool device_clock_ = false;
+  double last_time_ = 0.0;  // time of the previous tick (device clock: measured)
   std::uint64_t planned_ticks_ = 0;
 
   StageId current_ = StageId::kPositioning;
