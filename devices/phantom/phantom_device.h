@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "devices/phantom/hd_library.h"
+#include "devices/phantom/phantom_hd_library.h"
 #include "framework/device/device.h"
 
 namespace fitfeel {

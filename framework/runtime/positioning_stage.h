@@ -10,6 +10,7 @@
 namespace fitfeel {
 
 class MeshCollider;
+class CollisionScratch;
 
 // Frame convention of a run (shared by every stage and device): the scene frame is the fixed
 // part's mating frame. y is the mating axis, pointing in the direction of insertion; the fixed
@@ -77,8 +78,10 @@ class FITFEEL_API PositioningStage final : public Stage {
   bool collides() const { return collider_ != nullptr; }
 
  protected:
-  // Not re-entrant when collides(): the collider's FCL result buffer is reused each tick.
-  void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept override;
+  // The run's state holds the collider's scratch (FCL's request and reserved result buffer).
+  std::unique_ptr<StageState> DoMakeState() const override;
+  void DoEvaluate(const DeviceState& device, StageState* state,
+                  StageOutput* out) const noexcept override;
 
  private:
   Options options_;

@@ -39,6 +39,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
 
   RunResult result;
   PreparedScene prepared = Prepare(scene);
+  if (options.prepared) options.prepared(prepared);
   ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
 
   RunInfo& info = result.info;

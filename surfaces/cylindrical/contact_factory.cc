@@ -1,7 +1,7 @@
 #include "surfaces/cylindrical/contact_factory.h"
 
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 
 namespace fitfeel::cylindrical {
 

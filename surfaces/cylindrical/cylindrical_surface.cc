@@ -8,7 +8,7 @@
 #include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
 
 namespace fitfeel::cylindrical {
 std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const {

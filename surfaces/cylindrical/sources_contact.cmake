@@ -3,10 +3,10 @@
 # They build into a static library (position-independent, hidden visibility) so that the tests
 # and benchmarks below use them without the rest of the plugin, and the plugin module links them.
 add_library(fitfeel_cylindrical_contact STATIC
-  ${CMAKE_CURRENT_LIST_DIR}/assembly_polygon.cc
+  ${CMAKE_CURRENT_LIST_DIR}/cylindrical_assembly_polygon.cc
   ${CMAKE_CURRENT_LIST_DIR}/contact_factory.cc
-  ${CMAKE_CURRENT_LIST_DIR}/cylinder_contact_analyzer.cc
-  ${CMAKE_CURRENT_LIST_DIR}/cylinder_laws.cc)
+  ${CMAKE_CURRENT_LIST_DIR}/cylindrical_contact_analyzer.cc
+  ${CMAKE_CURRENT_LIST_DIR}/cylindrical_law.cc)
 target_link_libraries(fitfeel_cylindrical_contact PUBLIC fitfeel::framework)
 
 # The plugin module is declared in sources_generation.cmake (included first); link this library
@@ -31,5 +31,5 @@ fitfeel_add_test(fitfeel_cylindrical_contact_test
 
 fitfeel_add_benchmark(fitfeel_cylindrical_contact_bench
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/test/contact_geometry_double.cc
-          ${CMAKE_CURRENT_LIST_DIR}/bench/contact_bench.cc
+          ${CMAKE_CURRENT_LIST_DIR}/bench/contact_benchmark.cc
   LIBS fitfeel_cylindrical_contact)

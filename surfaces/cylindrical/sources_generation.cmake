@@ -3,7 +3,7 @@
 # plugin module (target fitfeel_surface_cylindrical) is declared here, and sources_contact.cmake
 # adds the contact analyzer and laws to it with target_sources().
 add_library(fitfeel_cylindrical_generation OBJECT
-  cylindrical_geometry.cc cylindrical_discretizer.cc cylindrical_variation_generator.cc
+  cylindrical_geometry.cc cylindrical_discretizer.cc cylindrical_generator.cc
   cylindrical_coarse_mesh.cc)
 target_link_libraries(fitfeel_cylindrical_generation PUBLIC fitfeel::framework)
 fitfeel_add_plugin(fitfeel_surface_cylindrical

@@ -1,6 +1,6 @@
 // A fake OpenHaptics HD library (libHD.so) for the tests: same entry points and constants as the
-// real one (devices/phantom/hd_api.h), a scripted device, a servo thread at HD_UPDATE_RATE. What
-// it imitates of the real driver is listed in fake_hd.h.
+// real one (devices/phantom/phantom_hd_api.h), a scripted device, a servo thread at HD_UPDATE_RATE.
+// What it imitates of the real driver is listed in fake_hd.h.
 
 #include "tests/fakehd/fake_hd.h"
 
@@ -20,7 +20,7 @@
 
 #include <Eigen/Geometry>
 
-#include "devices/phantom/hd_api.h"
+#include "devices/phantom/phantom_hd_api.h"
 
 #define FAKEHD_EXPORT extern "C" __attribute__((visibility("default")))
 

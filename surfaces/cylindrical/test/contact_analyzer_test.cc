@@ -7,7 +7,7 @@
 #include "framework/core/error.h"
 #include "framework/model/texture_contact.h"
 #include "surfaces/cylindrical/contact_factory.h"
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.

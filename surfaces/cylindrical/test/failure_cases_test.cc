@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.

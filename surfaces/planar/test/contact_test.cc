@@ -6,7 +6,7 @@
 
 #include "framework/model/texture_contact.h"
 #include "surfaces/planar/planar_contact_analyzer.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 #include "surfaces/planar/test/test_support.h"
 
 namespace fitfeel::planar {
