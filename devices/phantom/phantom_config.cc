@@ -3,7 +3,7 @@
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 namespace {
 
 Eigen::Vector3d Point(const ConfigNode& node) {
@@ -93,4 +93,4 @@ void PhantomDevice::DoConfigure(const ConfigNode& node) {
   Configure(settings);
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

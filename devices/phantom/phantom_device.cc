@@ -9,7 +9,7 @@
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 namespace {
 
 constexpr double kMillimetre = 1e-3;
@@ -548,4 +548,4 @@ nlohmann::json PhantomDevice::report() const {
           {"stopped_on_faults", d.stopped_on_faults}};
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

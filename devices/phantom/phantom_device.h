@@ -10,7 +10,7 @@
 #include "devices/phantom/phantom_hd_library.h"
 #include "framework/device/device.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 
 // How the device's axes and origin map to the scene frame (y: the mating axis, pointing into the
 // fixed part; the entrance at y = 0).
@@ -145,4 +145,4 @@ class PhantomDevice final : public Device {
   std::atomic<std::uint64_t> ticks_{0};
 };
 
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

@@ -101,7 +101,7 @@ typedef HDCallbackCode (*HDSchedulerCallback)(void* pUserData);
 #define HD_INVALID_HANDLE 0xFFFFFFFF
 #define HD_DEFAULT_DEVICE nullptr
 
-namespace fitfeel::hd {
+namespace fitfeel::phantom::hd {
 
 // Function pointer types of the entry points used (hdDevice.h, hdScheduler.h).
 using InitDeviceFn = HHD (*)(HDstring);
@@ -127,4 +127,4 @@ constexpr int kMaxMotors = 6;
 
 inline bool IsForceError(HDerror code) { return code >= HD_WARM_MOTORS && code <= HD_FORCE_ERROR; }
 
-}  // namespace fitfeel::hd
+}  // namespace fitfeel::phantom::hd

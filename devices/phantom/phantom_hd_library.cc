@@ -7,7 +7,7 @@
 
 #include "framework/core/error.h"
 
-namespace fitfeel::hd {
+namespace fitfeel::phantom::hd {
 namespace {
 
 constexpr const char* kEnvironment = "FITFEEL_HD_LIBRARY";
@@ -147,4 +147,4 @@ std::string DescribeError(const Library& hd, const HDErrorInfo& error) {
   return out;
 }
 
-}  // namespace fitfeel::hd
+}  // namespace fitfeel::phantom::hd

@@ -5,7 +5,7 @@
 
 #include "devices/phantom/phantom_hd_api.h"
 
-namespace fitfeel::hd {
+namespace fitfeel::phantom::hd {
 
 // The OpenHaptics HD library, loaded with dlopen. Never unloaded: the vendor's servo thread may
 // outlive any object of ours by a tick.
@@ -43,4 +43,4 @@ Library LoadLibrary();
 // "HD_COMM_ERROR (0x0302): <library's text>, internal code 5".
 std::string DescribeError(const Library& hd, const HDErrorInfo& error);
 
-}  // namespace fitfeel::hd
+}  // namespace fitfeel::phantom::hd

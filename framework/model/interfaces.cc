@@ -50,6 +50,11 @@ SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& reso
 SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceGrid& grid,
                                             TextureMode texture, Rng& rng) const {
   if (grid.size() == 0) throw UserError("part '" + part.name + "' has an empty grid");
+  if (!DoSupports(part.process.kind)) {
+    throw UnsupportedError("part '" + part.name +
+                           "': this surface type's generator draws only the paper's process; "
+                           "process: statistical is not implemented for it yet");
+  }
   SkinModelShape sms = DoGenerate(part, grid, texture, rng);
   FITFEEL_DEMAND(sms.variation.size() == grid.size());
   return sms;

@@ -35,10 +35,15 @@ CirculantContact::CirculantContact(const std::vector<double>& compliance, int n)
   }
   cos_.resize(static_cast<std::size_t>(n));
   sin_.resize(static_cast<std::size_t>(n));
+  Eigen::MatrixXd u(n, 2);
   for (int j = 0; j < n; ++j) {
     cos_[static_cast<std::size_t>(j)] = std::cos(2.0 * std::numbers::pi * j / n);
     sin_[static_cast<std::size_t>(j)] = std::sin(2.0 * std::numbers::pi * j / n);
+    u(j, 0) = cos_[static_cast<std::size_t>(j)];
+    u(j, 1) = sin_[static_cast<std::size_t>(j)];
   }
+  g_inv_ = g_.llt().solve(Eigen::MatrixXd::Identity(n, n));
+  full_stiffness_ = u.transpose() * g_inv_ * u;
 }
 
 int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active) {
@@ -53,6 +58,16 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   const double tol_p = tol_w / g_(0, 0);
   int best = n + 1, chances = 3, steps = 0;
   Eigen::VectorXd w(n);
+  last_full_ = false;
+  {
+    const Eigen::VectorXd full = g_inv_ * Eigen::Map<const Eigen::VectorXd>(delta, n);
+    if (full.minCoeff() >= 0.0) {
+      for (int j = 0; j < n; ++j) p[j] = full[j];
+      f.assign(static_cast<std::size_t>(n), 1);
+      last_full_ = true;
+      return 1;
+    }
+  }
   while (true) {
     ++steps;
     if (steps > 20 * n + 50) {
@@ -116,6 +131,7 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
 }
 
 Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
+  if (last_full_) return full_stiffness_;
   const int m = static_cast<int>(index_.size());
   if (m == 0) return Eigen::Matrix2d::Zero();
   Eigen::MatrixXd u(m, 2);

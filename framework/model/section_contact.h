@@ -38,6 +38,11 @@ class FITFEEL_API CirculantContact {
   int n_;
   Eigen::MatrixXd g_;
   std::vector<double> cos_, sin_;
+  // Full contact has a closed form, p = G^-1 delta (tried first: it is the common case of a press
+  // fit), with a constant offset stiffness.
+  Eigen::MatrixXd g_inv_;
+  Eigen::Matrix2d full_stiffness_;
+  bool last_full_ = false;
   // Workspace of the last solve.
   std::vector<int> index_;
   Eigen::MatrixXd gff_;

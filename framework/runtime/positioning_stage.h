@@ -19,7 +19,7 @@ class CollisionScratch;
 // moving part's axis. The insertion depth is then the y of the leading end.
 
 // Free motion before mating (paper section 3: "positioning stage"). Collides the parts' coarse
-// meshes with FCL (architecture.md section 4: FCL here and only here, since mesh-mesh queries
+// meshes with FCL (docs/architecture.md, section 4: FCL here and only here, since mesh-mesh queries
 // between mated surfaces cost 1-35 ms) and renders a penalty force k_free * depth along the
 // contact normal, zero when free. Hands over to the constrained stage once the leading end has
 // reached the entrance (depth >= 0) with the part's axis aligned with the mating axis and inside

@@ -62,6 +62,7 @@ PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int ind
     pair.shaft_size_um = geometry.inner_size * 1e6;
     pair.hole_size_um = geometry.outer_size * 1e6;
     if (geometry.min_clearance) pair.min_clearance_um = *geometry.min_clearance * 1e6;
+    pair.rejections = prepared.inner_sms->rejections + prepared.outer_sms->rejections;
   };
   const auto start = Clock::now();
   const RunResult run = RunScene(std::move(scene), options);
@@ -176,14 +177,14 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
 std::string PairsCsv(const StudyResult& result) {
   std::string text =
       "pair,seed,shaft_size_um,hole_size_um,min_clearance_um,interfering,axial_mean_N,"
-      "axial_max_N,radial_max_N,constrained_ticks\n";
+      "axial_max_N,radial_max_N,constrained_ticks,rejections\n";
   for (const PairResult& p : result.pairs) {
     text += std::to_string(p.pair) + ',' + std::to_string(p.seed) + ',' +
             Number(p.shaft_size_um) + ',' + Number(p.hole_size_um) + ',' +
             (p.min_clearance_um ? Number(*p.min_clearance_um) : std::string()) + ',' +
             (p.interfering ? "1" : "0") + ',' + Number(p.axial_mean_N) + ',' +
             Number(p.axial_max_N) + ',' + Number(p.radial_max_N) + ',' +
-            std::to_string(p.constrained_ticks) + '\n';
+            std::to_string(p.constrained_ticks) + ',' + std::to_string(p.rejections) + '\n';
   }
   return text;
 }
@@ -191,10 +192,12 @@ std::string PairsCsv(const StudyResult& result) {
 std::string StudyJson(const StudyResult& result) {
   std::vector<double> mean, max;
   int interfering = 0;
+  long rejections = 0;
   for (const PairResult& p : result.pairs) {
     mean.push_back(p.axial_mean_N);
     max.push_back(p.axial_max_N);
     if (p.interfering) ++interfering;
+    rejections += p.rejections;
   }
   const double n = static_cast<double>(result.pairs.size());
   nlohmann::json j;
@@ -208,6 +211,9 @@ std::string StudyJson(const StudyResult& result) {
   j["probability_of_interference"] = n > 0 ? interfering / n : 0.0;
   j["axial_mean_N"] = DistributionJson(Describe(mean));
   j["axial_max_N"] = DistributionJson(Describe(max));
+  // Scrapped parts over all parts made (two kept per pair).
+  const double made = 2.0 * n + static_cast<double>(rejections);
+  j["scrap_rate"] = made > 0 ? static_cast<double>(rejections) / made : 0.0;
   // Timings vary from run to run: they are here, never in pairs.csv (which is byte-identical for
   // a scene, seed and N).
   std::vector<double> prepare;

@@ -47,6 +47,7 @@ struct PairResult {
   double axial_max_N = 0.0;
   double radial_max_N = 0.0;
   int constrained_ticks = 0;
+  int rejections = 0;  // parts a statistical process scrapped before this pair's two parts
   double prepare_s = 0.0;
   double wall_s = 0.0;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <numbers>
 #include <string>
 
@@ -12,7 +13,10 @@
 
 #include "framework/core/error.h"
 #include "framework/model/grid_rows.h"
+#include "framework/model/section_contact.h"
 #include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/elastic_options.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -36,6 +40,16 @@ constexpr double kAutoDepthSteps = 20000;
 // Half-width of the box that bounds an assembly space whose normals do not surround the origin;
 // clearances are micrometres, so one metre never binds.
 constexpr double kPolygonBound = 1.0;
+// Most columns of the elastic solve: its dense pivoting costs O(columns^3) per slice, and 120
+// columns resolve harmonics to 60 (1 mm waves at d = 20 mm).
+constexpr int kMaxElasticColumns = 120;
+// Fewest: below this, averaging loses the ovality-to-lobing range the model is about.
+constexpr int kMinElasticColumns = 24;
+
+Eigen::Vector2d Rotate(const Eigen::Vector2d& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
 
 void CheckShape(const PartSpec& part, const SkinModelShape& sms) {
   const SurfaceGrid& g = sms.grid;
@@ -91,6 +105,42 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   v_bushing_ = outer_sms.variation;
   shaft_area_ = gs.area;
 
+  elastic_ = settings.law == "elastic";
+  smoothing_ = settings.texture == TextureMode::kDin7190
+                   ? Din7190RadialSmoothing(inner.texture, outer.texture)
+                   : 0.0;
+  std::optional<RigidSectionContact> solver;
+  RigidFreedom freedom;
+  double frame = 0.0;  // angle of the elastic solve's column 0
+  if (elastic_) {
+    for (int j = 0; j < n_; ++j) {
+      if (std::abs(std::remainder(angle_[static_cast<std::size_t>(j)] - angle_[0] -
+                                      2.0 * std::numbers::pi * j / n_,
+                                  2.0 * std::numbers::pi)) > 1e-9) {
+        throw UserError("the elastic model needs equally spaced columns");
+      }
+    }
+    block_ = 1;
+    while (n_ / block_ > kMaxElasticColumns || n_ % block_ != 0 || (n_ / block_) % 2 != 0) {
+      ++block_;
+    }
+    if (n_ / block_ < kMinElasticColumns) block_ = 1;
+    const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
+    const ElasticOptions options =
+        settings.extra ? ParseElasticOptions(*settings.extra) : ElasticOptions{};
+    PressFitSection section;
+    section.d1 = d.d1;
+    section.d2 = d.d2;
+    section.di = d.di;
+    section.shaft = inner.material;
+    section.hub = outer.material;
+    section.plane_strain = options.plane_strain;
+    solver.emplace(section, n_ / block_);
+    freedom.tilt = options.tilt;
+    freedom.tilt_stiffness = options.tilt_stiffness;
+    frame = angle_[0] + std::numbers::pi * (block_ - 1) / n_;
+  }
+
   texture_ = settings.texture == TextureMode::kExpected
                  ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
                  : ExpectedInterferenceTable();
@@ -119,6 +169,8 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   length_ = area_ = volume_ = max_delta_ = depth_;
   resultant_.assign(count, Eigen::Vector2d::Zero());
   anchor_ = resultant_;
+  tilt_ = resultant_;
+  normal_.assign(count, 0.0);
   empty_.assign(count, 0);
   unconstrained_.assign(count, 0);
   vertex_begin_.assign(count, 0);
@@ -132,6 +184,9 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   std::vector<double> st, w, h(n), col_a(n), col_b(n), proj(n);
   std::vector<Eigen::Vector2d> polygon;
   Eigen::Vector2d warm(0.0, 0.0);
+  Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
+  std::vector<double> elastic_gap;
+  std::vector<ContactSection> sections;
 
   // Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
   auto energy = [&](const Eigen::Vector2d& p, bool moments) {
@@ -179,7 +234,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       length += sl.length;
       for (std::size_t j = 0; j < n; ++j) {
         const auto jj = static_cast<Eigen::Index>(j);
-        const double gap = v_bushing_[rb + jj] - v_shaft_[rs + jj];  // eq. 8
+        const double gap = v_bushing_[rb + jj] - v_shaft_[rs + jj] + smoothing_;  // eq. 8
         st[s * n + j] = gap;
         w[s * n + j] = shaft_area_[rs + jj] * share;
         area += w[s * n + j];
@@ -195,6 +250,30 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       vertex_count_[k] = static_cast<int>(polygon.size());
       max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
       anchor = PolygonCentroid(polygon.data(), static_cast<int>(polygon.size()));
+      warm = anchor;
+    } else if (elastic_) {
+      empty_[k] = 1;
+      const std::size_t ne = n / static_cast<std::size_t>(block_);
+      elastic_gap.assign(slices.size() * ne, 0.0);
+      sections.assign(slices.size(), ContactSection{});
+      const double lo = std::max(depth - shaft_length_, 0.0);
+      double pos = lo, middle = lo + 0.5 * length;
+      for (std::size_t sl = 0; sl < slices.size(); ++sl) {
+        ContactSection& sec = sections[sl];
+        sec.gap = elastic_gap.data() + sl * ne;
+        sec.y = pos + 0.5 * slices[sl].length - middle;
+        pos += slices[sl].length;
+        for (std::size_t j = 0; j < n; ++j) {
+          elastic_gap[sl * ne + j / static_cast<std::size_t>(block_)] +=
+              st[sl * n + j] / block_;
+        }
+        sec.cell_area = w[sl * n] * block_;  // equal cells along a slice
+      }
+      const RigidContactResult r = solver->Solve(sections, freedom, elastic_warm);
+      elastic_warm << r.offset, r.tilt;
+      anchor = Rotate(r.offset, frame);
+      tilt_[k] = Rotate(r.tilt, frame);
+      normal_[k] = r.normal_force;
       warm = anchor;
     } else {
       empty_[k] = 1;
@@ -328,6 +407,8 @@ void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* o
   out->interference_volume = s * volume_[k] + t * volume_[k + 1];
   out->max_interference = s * max_delta_[k] + t * max_delta_[k + 1];
   out->pressure_resultant = s * resultant_[k] + t * resultant_[k + 1];
+  out->normal_force = s * normal_[k] + t * normal_[k + 1];
+  out->tilt = s * tilt_[k] + t * tilt_[k + 1];
 }
 
 void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
@@ -355,7 +436,7 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
     b = std::clamp(b, 0, bushing_rows_ - 1);
     for (int j = 0; j < n_; ++j) {
       const auto jj = static_cast<std::size_t>(j);
-      const double gap = v_bushing_[b * n_ + j] - v_shaft_[i * n_ + j] -
+      const double gap = v_bushing_[b * n_ + j] - v_shaft_[i * n_ + j] + smoothing_ -
                          (anchor.x() * cos_[jj] + anchor.y() * sin_[jj]);
       (*delta)[i * n_ + j] = texture_(gap);
     }

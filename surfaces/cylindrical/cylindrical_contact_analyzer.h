@@ -31,6 +31,14 @@ namespace fitfeel::cylindrical {
 // u_j), where delta is the sharp max(0, -gap), or, with TextureMode::kExpected, the expected
 // interference E[(X - gap)+] of the equivalent rough-on-smooth texture (texture_contact.h).
 //
+// Elastic model (law `elastic`, docs/contact-mechanics.md). Where the assembly space of the
+// smoothed gaps is empty, the part's equilibrium in offset and (unless fixed) tilt is solved
+// against the elastic contact of every slice: non-negative pressure per column, compliance per
+// circumferential harmonic (Michell; framework/model/section_contact.h). The elastic solve runs on
+// the grid's columns averaged in blocks to at most 120 (harmonics up to 60, waviness down to
+// 1 mm at d = 20 mm). The anchor is then the equilibrium offset at the middle of the engaged
+// length, and the tables add the normal force sum p A and the tilt.
+//
 // Per tick: linear interpolation between the two neighbouring depth steps of every tabulated
 // scalar, and of the anchor points: the point the axis may take is the nearest assembly-space
 // point (or p*) at each of the two steps, blended with the same weight. Forces built from it are
@@ -50,6 +58,13 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   Eigen::Vector2d anchor(int k) const { return anchor_[static_cast<std::size_t>(k)]; }
   bool interference_at(int k) const { return empty_[static_cast<std::size_t>(k)] != 0; }
   int newton_iterations() const { return newton_iterations_; }
+  // Elastic model (law `elastic`): equilibrium normal force and tilt at step k, the DIN 7190
+  // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
+  bool elastic() const { return elastic_; }
+  double normal_force(int k) const { return normal_[static_cast<std::size_t>(k)]; }
+  Eigen::Vector2d tilt(int k) const { return tilt_[static_cast<std::size_t>(k)]; }
+  double smoothing() const { return smoothing_; }
+  int elastic_columns() const { return elastic_ ? n_ / block_ : 0; }
 
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
@@ -89,6 +104,13 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   std::vector<Eigen::Vector2d> vertices_;
   int max_vertices_ = 0;
   int newton_iterations_ = 0;
+
+  // Elastic model.
+  bool elastic_ = false;
+  int block_ = 1;            // grid columns averaged into one column of the elastic solve
+  double smoothing_ = 0.0;   // m, added to every gap
+  std::vector<double> normal_;
+  std::vector<Eigen::Vector2d> tilt_;
 };
 
 }  // namespace fitfeel::cylindrical

@@ -4,33 +4,25 @@
 #include <cmath>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "framework/core/error.h"
 #include "framework/metrology/sms_conformance.h"
+#include "framework/model/process_model.h"
+#include "framework/model/random_draws.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
+#include "surfaces/cylindrical/elastic_options.h"
 
 namespace fitfeel::cylindrical {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Uniform in [0, 1) from the top 53 bits of one draw: the same numbers on every platform, which
-// the standard distributions (implementation-defined) do not promise.
-double Uniform(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-double Uniform(Rng& rng, double a, double b) { return a + (b - a) * Uniform(rng); }
-
-// Standard normal (Box-Muller, one value per pair of draws).
-double Normal(Rng& rng) {
-  double u1 = 0.0;
-  do u1 = Uniform(rng);
-  while (u1 <= 0.0);
-  const double u2 = Uniform(rng);
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
-}
+// A capable process scraps a few parts per million; this many in a row means it cannot make one.
+constexpr int kMaxSizeRedraws = 100000;
 
 // Paper Fig. 3: the sampling sections of one form wave. Its wavelength is drawn in
 // (10 mm, l) (eq. 3's companion rule); the sections sit at its peaks and troughs, every half wave
@@ -146,6 +138,41 @@ Eigen::VectorXd RoundnessComponent(const SurfaceGrid& g, double diameter, double
   return v;
 }
 
+// Waviness as geometry (texture: din7190): wavelengths between 1 and 10 mm (ISO 21920-3's default
+// waviness band, between the roughness cut-off 0.8 mm and the form's 10 mm), no shorter than four
+// cells of the grid. Two circumferential waves (orders k with pi d / k in that band) and one axial
+// wave, random phases and weights, scaled so that the whole peak-to-valley is the spec's waviness
+// height A (the same reading of A as the paper's band +-(A + Rz)/2). A grid too coarse for any
+// wave in the band gets none in that direction.
+Eigen::VectorXd WavinessComponent(const SurfaceGrid& g, double diameter, double length,
+                                  double height, Rng& rng) {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(g.size());
+  const double circumference = kPi * diameter;
+  const int k_lo = std::max(2, static_cast<int>(std::ceil(circumference / 10e-3)));
+  const int k_hi = std::min(static_cast<int>(std::floor(circumference / 1e-3)), g.columns / 4);
+  for (int w = 0; w < 2 && k_lo <= k_hi; ++w) {
+    const int k = k_lo + static_cast<int>(Uniform(rng) * (k_hi - k_lo + 1));
+    const double weight = Uniform(rng, 0.5, 1.0), phase = Uniform(rng, 0.0, 2.0 * kPi);
+    for (int i = 0; i < g.rows; ++i) {
+      for (int j = 0; j < g.columns; ++j) {
+        v[g.index(i, j)] += weight * std::cos(k * g.column_angle(j) + phase);
+      }
+    }
+  }
+  const double pitch = g.rows > 1 ? length / g.rows : length;
+  const double lambda_lo = std::max(1e-3, 4.0 * pitch), lambda_hi = std::min(10e-3, length);
+  if (lambda_lo <= lambda_hi) {
+    const double lambda = Uniform(rng, lambda_lo, lambda_hi);
+    const double weight = Uniform(rng, 0.5, 1.0), phase = Uniform(rng, 0.0, 2.0 * kPi);
+    for (int i = 0; i < g.rows; ++i) {
+      const double a = weight * std::cos(2.0 * kPi * g.row_position(i) / lambda + phase);
+      for (int j = 0; j < g.columns; ++j) v[g.index(i, j)] += a;
+    }
+  }
+  const double pv = v.size() > 0 ? v.maxCoeff() - v.minCoeff() : 0.0;
+  return pv > 0.0 ? Eigen::VectorXd(v * (height / pv)) : v;
+}
+
 struct FormCheck {
   FormCharacteristic characteristic;
   double tolerance;
@@ -213,7 +240,8 @@ std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g,
 }  // namespace
 
 void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
-  options.ExpectOnlyKeys({"size_draw", "size_limit"});
+  options.ExpectOnlyKeys({"size_draw", "size_limit", "tilt", "section"});
+  ParseElasticOptions(options);  // the elastic law's keys, checked here so that validate sees them
   if (auto node = options.Find("size_draw")) {
     options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart
                                                                                : SizeDraw::kPerCell;
@@ -339,6 +367,20 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
       t > 0.0) {
     integrate([&] { return RoundnessComponent(grid, geometry.diameter(), length, t, rng); });
   }
+  // A statistical process uses a Rayleigh-drawn fraction of each form tolerance: the paper's form
+  // draw, scaled so that its most used characteristic uses exactly its drawn fraction (zone widths
+  // scale with the data, so every other characteristic stays within its own fraction).
+  const ProcessSpec& process = part.process;
+  if (process.kind == ProcessKind::kStatistical && form.cwiseAbs().maxCoeff() > 0.0) {
+    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
+    double k = std::numeric_limits<double>::infinity();
+    for (const auto& [c, t] : part.form.tolerance) {
+      const double r = DrawFormUtilisation(process, rng, &sms.rejections);
+      const double w = metrology::EvaluateCylinderForm(c, samples);
+      if (t > 0.0 && w > 0.0) k = std::min(k, r * t / w);
+    }
+    if (std::isfinite(k)) form *= k;
+  }
   // Eq. 6: texture as a truncated Gaussian per cell, only when sampled. Limits +-(A + Rz)/2 at
   // 3 sigma (sigma = (A + Rz)/6), the same distribution the contact analysis uses in expected mode.
   Eigen::VectorXd surface = Eigen::VectorXd::Zero(grid.size());
@@ -352,10 +394,37 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
       surface(c) = x;
     }
   }
+  if (texture == TextureMode::kDin7190 && part.texture.waviness > 0.0) {
+    surface = WavinessComponent(grid, geometry.diameter(), length, part.texture.waviness, rng);
+  }
   // Eqs. 1-2: the dimensional variation (radial: half the diameter deviation).
   const Eigen::VectorXd local = form + surface;
   Eigen::VectorXd dimension(grid.size());
-  if (options_.size_draw == SizeDraw::kPerPart) {
+  if (process.kind == ProcessKind::kStatistical) {
+    if (options_.size_draw != SizeDraw::kPerPart) {
+      throw UserError("part '" + part.name +
+                      "': process: statistical draws one actual size per part; "
+                      "model.options.size_draw: per_cell is the paper's literal eq. 1");
+    }
+    // Normal actual size; a part whose local sizes leave the limits is scrap and drawn again.
+    const auto [a, b] = Spread(local, grid, options_.size_limit);
+    const NormalLaw law = SizeLaw(process, lo, up, part.role);
+    double D = 0.0;
+    if (up - lo >= b - a) {
+      for (;;) {
+        D = law.mean + law.sd * Normal(rng);
+        if (lo <= D + a && D + b <= up) break;
+        if (++sms.rejections > kMaxSizeRedraws) {
+          throw UserError("part '" + part.name + "': the size process (Cp " +
+                          std::to_string(process.cp) + ", Cpk " + std::to_string(process.cpk) +
+                          ") rejects every part");
+        }
+      }
+    } else {
+      D = lo - (up - lo) / (b - a) * a;  // as the paper's branch: the clamp scales the form back
+    }
+    dimension.setConstant(D / 2.0);
+  } else if (options_.size_draw == SizeDraw::kPerPart) {
     const auto [a, b] = Spread(local, grid, options_.size_limit);
     const double u = Uniform(rng);
     // The diameter deviation D must satisfy lo <= D + s <= up for every local contribution s in

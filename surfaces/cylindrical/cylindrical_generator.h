@@ -48,6 +48,7 @@ class CylindricalVariationGenerator final : public VariationGenerator {
   void DoConfigure(const ConfigNode& options) override;
   SkinModelShape DoGenerate(const PartSpec& part, const SurfaceGrid& grid, TextureMode texture,
                             Rng& rng) const override;
+  bool DoSupports(ProcessKind) const override { return true; }
 
  private:
   GeneratorOptions options_;

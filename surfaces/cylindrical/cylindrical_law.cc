@@ -1,5 +1,6 @@
 #include "surfaces/cylindrical/cylindrical_law.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -88,6 +89,27 @@ void GpsLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
   const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
   const double pressure_sum = pressure_per_interference_ * contact.interference_volume;  // eq. 11
   const double normal = radial.norm() + pressure_sum;                                    // eq. 12
+  out->force = Eigen::Vector3d(radial.x(), Friction(mu_, normal, motion.velocity.y()), radial.y());
+}
+
+void ElasticLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
+                           const ModelSettings& settings) {
+  CheckMaterial(inner);
+  CheckMaterial(outer);
+  const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
+  mu_ = settings.friction;
+  stiffness_ = settings.contact_stiffness;
+  d1_ = d.d1;
+  pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
+}
+
+void ElasticLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                            Wrench* out) const noexcept {
+  out->SetZero();
+  if (!contact.engaged) return;
+  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
+  const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
+  const double normal = std::max(contact.normal_force, radial.norm());
   out->force = Eigen::Vector3d(radial.x(), Friction(mu_, normal, motion.velocity.y()), radial.y());
 }
 

@@ -15,7 +15,7 @@ struct PressFitDimensions {
 // UserError when a part has no cylindrical geometry or the diameters do not nest.
 PressFitDimensions PressFitDimensionsOf(const PartSpec& inner, const PartSpec& outer);
 
-// Contact pressure per unit radial interference, Pa/m (paper eq. 10, reference/oracles.md):
+// Contact pressure per unit radial interference, Pa/m (paper eq. 10, docs/oracles.md):
 // p = (2 delta / d1) / ( c_shaft / E1 + ((d2^2 + d1^2)/(d2^2 - d1^2) + nu2) / E2 ),
 // c_shaft = 1 - nu1 for a solid shaft, (d1^2 + di^2)/(d1^2 - di^2) - nu1 for a hollow one.
 double LamePressurePerInterference(const PressFitDimensions& d, const Material& shaft,
@@ -55,6 +55,32 @@ class GpsLaw final : public ResistanceLaw {
  private:
   double mu_ = 0.0;
   double stiffness_ = 0.0;  // 0: Lame stiffness of the engaged length
+  double d1_ = 0.0;
+  double pressure_per_interference_ = 0.0;
+};
+
+// The elastic model (docs/contact-mechanics.md): the analyzer solves the contact pressure at the
+// part's equilibrium (compliance per harmonic, non-negative pressure, offset and tilt free, DIN
+// 7190 smoothing with texture din7190) and reports its normal force N = sum p A. Radially the
+// part is held at that equilibrium by the joint's Lame radial stiffness (or k_p), as in the gps
+// law; axially friction acts on the larger of N and the radial spring's force: a radial load
+// carried by a part in all-round contact only shifts its pressure (the cos theta it adds
+// integrates to zero), while one carried on a line of contact is the normal force itself. So the
+// normal force is never counted twice (eq. 12 adds |F_radial| to sum p A).
+class ElasticLaw final : public ResistanceLaw {
+ public:
+  double pressure_per_interference() const { return pressure_per_interference_; }
+
+ protected:
+  void DoPrepare(const PartSpec& inner, const PartSpec& outer,
+                 const ModelSettings& settings) override;
+  void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                  Wrench* out) const noexcept override;
+  double DoPressurePerInterference() const override { return pressure_per_interference_; }
+
+ private:
+  double mu_ = 0.0;
+  double stiffness_ = 0.0;
   double d1_ = 0.0;
   double pressure_per_interference_ = 0.0;
 };

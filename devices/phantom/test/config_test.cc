@@ -4,7 +4,7 @@
 #include "devices/phantom/phantom_device.h"
 #include "framework/core/error.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 namespace {
 
 ConfigNode Node(const std::string& text) {
@@ -29,4 +29,4 @@ TEST(PhantomConfig, RefusesUnknownKeysAndModels) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

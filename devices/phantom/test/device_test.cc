@@ -14,7 +14,7 @@
 
 extern "C" const FitfeelPluginDescriptor* fitfeel_plugin_register();
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 namespace {
 
 // Each test sets the fake's scenario through the environment, which the fake reads in
@@ -419,4 +419,4 @@ TEST(PhantomPlugin, DescriptorAndFactory) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

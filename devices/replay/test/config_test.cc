@@ -6,7 +6,7 @@
 #include "devices/replay/replay_device.h"
 #include "framework/core/error.h"
 
-namespace fitfeel {
+namespace fitfeel::replay {
 namespace {
 
 namespace fs = std::filesystem;
@@ -37,4 +37,4 @@ TEST(ReplayConfig, ParsesKeysAndResolvesTheFileBesideTheScenario) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

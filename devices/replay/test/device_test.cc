@@ -13,7 +13,7 @@
 
 extern "C" const FitfeelPluginDescriptor* fitfeel_plugin_register();
 
-namespace fitfeel {
+namespace fitfeel::replay {
 namespace {
 
 namespace fs = std::filesystem;
@@ -237,4 +237,4 @@ TEST(ReplayPlugin, DescriptorAndFactory) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

@@ -11,7 +11,7 @@
 
 FITFEEL_COUNT_ALLOCATIONS();
 
-namespace fitfeel {
+namespace fitfeel::replay {
 namespace {
 
 TEST(ReplayTick, ReadAndWriteDoNotAllocate) {
@@ -47,4 +47,4 @@ TEST(ReplayTick, ReadAndWriteDoNotAllocate) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

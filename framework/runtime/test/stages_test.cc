@@ -48,6 +48,17 @@ TEST(PositioningStageTest, RendersNothingAndHandsOverAtTheEntranceWhenAligned) {
   EXPECT_EQ(out.next, StageId::kConstrained);
 }
 
+// A state belongs to the stage that made it: another stage's (or none) is a caller's bug, caught
+// in Release too.
+TEST(StageStateDeathTest, EvaluateRefusesAStateOfAnotherStage) {
+  const PositioningStage stage, other;
+  const std::unique_ptr<StageState> foreign = other.MakeState();
+  StageOutput out;
+  EXPECT_EQ(foreign->owner(), &other);
+  EXPECT_DEATH(stage.Evaluate(At(0.0, 0.0, 0.0), foreign.get(), &out), "demand failed: state");
+  EXPECT_DEATH(stage.Evaluate(At(0.0, 0.0, 0.0), nullptr, &out), "demand failed: state");
+}
+
 TEST(PositioningStageTest, KeepsATiltedOrOffPart) {
   const PositioningStage stage;
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
