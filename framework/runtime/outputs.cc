@@ -195,6 +195,7 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
                  {"energy_absorbed_J", safety.energy},
                  {"energy_created_J", safety.energy_created},
                  {"controller_energy_J", safety.controller_energy}};
+  if (!info.device_report.is_null()) j["device_report"] = info.device_report;
   j["prepare_s"] = {{"discretize", info.discretize_seconds},
                     {"generate", info.generate_seconds},
                     {"analyze", info.analyze_seconds},

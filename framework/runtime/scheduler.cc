@@ -113,6 +113,7 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
     throw UserError("scheduler: duration must be a positive number of seconds");
   }
   period_ = 1.0 / settings.rate;
+  device_clock_ = device.clock_owner() == ClockOwner::kDevice;
   const double ticks = std::round(settings.duration * settings.rate);
   if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
   if (ticks * static_cast<double>(sizeof(TickRecord)) > kMaxTraceBytes) {
@@ -164,7 +165,12 @@ bool Scheduler::Tick(double time) noexcept {
   // The chain zeroes (and counts) a non-finite wrench itself; the guard keeps the trace's physical
   // wrench finite too and flags the tick.
   run.chain.SetEnvironmentStiffness(output.stiffness);
-  const Wrench device_wrench = run.chain.Apply(output.wrench, run.device, period_);
+  // A device that owns the clock ticks when its servo thread does: the coupling and the observer
+  // integrate over the period it measured, not the nominal one.
+  double dt = period_;
+  if (device_clock_ && k > 0 && time > run.last_time) dt = time - run.last_time;
+  run.last_time = time;
+  const Wrench device_wrench = run.chain.Apply(output.wrench, run.device, dt);
   const bool fault = !output.wrench.AllFinite();
   if (fault) {
     run.output.wrench.SetZero();

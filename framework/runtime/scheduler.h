@@ -54,6 +54,7 @@ struct RunState {
   SafetyChain chain;
   bool chain_reset = true;  // reset the chain at the next tick's device state
   std::uint64_t guard_faults = 0;
+  double last_time = 0.0;  // the previous tick's time (a device's clock: measured)
 };
 
 // One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench
@@ -108,6 +109,7 @@ class FITFEEL_API Scheduler {
   std::array<const Stage*, 2> stages_;
   SchedulerSettings settings_;
   double period_ = 0.0;
+  bool device_clock_ = false;
   std::uint64_t planned_ticks_ = 0;
 
   RunState run_;

@@ -1,4 +1,5 @@
 #include "surfaces/conical/conical_surface.h"
+#include "surfaces/conical/conical_coarse_mesh.h"
 #include "surfaces/conical/number_text.h"
 
 #include <cmath>
@@ -64,6 +65,10 @@ std::unique_ptr<ResistanceLaw> ConicalSurface::DoMakeLaw(std::string_view name) 
 std::vector<CharacteristicCheck> ConicalSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
   return EvaluateConeCharacteristics(part, sms);
+}
+
+CoarseMeshes ConicalSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+  return MakeConicalCoarseMeshes(inner, outer);
 }
 
 }  // namespace fitfeel::conical

@@ -1,4 +1,5 @@
 #include "surfaces/planar/planar_surface.h"
+#include "surfaces/planar/planar_coarse_mesh.h"
 
 #include <cmath>
 
@@ -66,6 +67,10 @@ std::unique_ptr<ResistanceLaw> PlanarSurface::DoMakeLaw(std::string_view name) c
 std::vector<CharacteristicCheck> PlanarSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
   return EvaluatePlanarCharacteristics(part, sms);
+}
+
+CoarseMeshes PlanarSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+  return MakePlanarCoarseMeshes(inner, outer);
 }
 
 }  // namespace fitfeel::planar
