@@ -7,7 +7,7 @@
 #include "devices/replay/replay_device.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::replay {
 
 void ReplayDevice::DoConfigure(const ConfigNode& node) {
   node.ExpectOnlyKeys({"plugin", "file", "speed", "start", "loop", "model", "spec"});
@@ -63,4 +63,4 @@ void ReplayDevice::DoConfigure(const ConfigNode& node) {
   Configure(settings, std::move(recording));
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

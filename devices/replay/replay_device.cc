@@ -6,7 +6,7 @@
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::replay {
 
 void ReplayDevice::Configure(const ReplaySettings& settings) {
   Configure(settings, ReadRecording(settings.file));
@@ -97,4 +97,4 @@ void ReplayDevice::DoRead(double time, DeviceState* out) noexcept {
 
 void ReplayDevice::DoWrite(const Wrench& wrench) noexcept { written_ = wrench; }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

@@ -14,5 +14,6 @@ void AddSmsCommand(CLI::App& app);
 void AddPlotCommand(CLI::App& app);
 void AddStabilityCommand(CLI::App& app);
 void AddTradeoffCommand(CLI::App& app);
+void AddStudyCommand(CLI::App& app);
 
 }  // namespace fitfeel::cli

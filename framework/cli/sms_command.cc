@@ -129,7 +129,7 @@ void Run(const Options& options) {
               << "  grid " << sms.grid.rows << " x " << sms.grid.columns << " = " << sms.grid.size()
               << " cells (" << (scene.model.resolution.is_auto() ? "auto" : "from the scenario")
               << "), seed " << seed << ", texture "
-              << (scene.model.texture == TextureMode::kSampled ? "sampled" : "expected")
+              << TextureModeName(scene.model.texture)
               << ", form regenerations " << sms.regenerations << ", cells scaled back "
               << sms.scaled_back_cells << "\n"
               << "  V from " << Micrometres(sms.variation.minCoeff()) << " to "

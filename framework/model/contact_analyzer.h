@@ -41,6 +41,13 @@ struct ContactState {
   double max_interference = 0.0;     // largest delta(P_ij), m
   // Resultant direction of the contact normal force in the cross-section when interfering.
   Eigen::Vector2d pressure_resultant{0.0, 0.0};  // sum of delta * area * u_j, m^3
+  // Models that solve the contact pressure (the cylinder's elastic model): the total normal force
+  // sum p * A of the part at its equilibrium pose for this depth (N; 0 where a model does not
+  // solve for pressure, or in clearance), and the equilibrium tilt of its axis (slopes dx/dy,
+  // dz/dy, rad). A friction law takes its normal force from here instead of a pressure per unit
+  // interference.
+  double normal_force = 0.0;
+  Eigen::Vector2d tilt{0.0, 0.0};
 };
 
 // Builds per-depth tables in prepare and answers per-tick queries in bounded time.

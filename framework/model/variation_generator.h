@@ -17,7 +17,23 @@ using Rng = std::mt19937_64;
 enum class TextureMode {
   kExpected,  // not sampled into V; the analyzer uses the expected interference of its distribution
   kSampled,   // a truncated-Gaussian draw per cell added to V
+  // Waviness drawn into V as geometry; roughness removed from the interference by DIN 7190-1
+  // smoothing (0.8 (Rz_i + Rz_a) on the diameter) in the contact analysis.
+  kDin7190,
 };
+
+// The scenario's name of a texture mode (model.texture).
+inline const char* TextureModeName(TextureMode mode) {
+  switch (mode) {
+    case TextureMode::kExpected:
+      return "expected";
+    case TextureMode::kSampled:
+      return "sampled";
+    case TextureMode::kDin7190:
+      return "din7190";
+  }
+  return "?";
+}
 
 // Prepare-time: draws the variation V of every cell of a part so that it meets the part's GPS
 // spec (paper section 2.2, steps 2 and 3).
@@ -35,6 +51,8 @@ class FITFEEL_API VariationGenerator {
   virtual void DoConfigure(const ConfigNode& options);
   virtual SkinModelShape DoGenerate(const PartSpec& part, const SurfaceGrid& grid,
                                     TextureMode texture, Rng& rng) const = 0;
+  // The process models (PartSpec::process) the generator draws from; the default, the paper's.
+  virtual bool DoSupports(ProcessKind kind) const { return kind == ProcessKind::kPaper; }
 };
 
 }  // namespace fitfeel

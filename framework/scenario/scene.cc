@@ -190,8 +190,10 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
     model.resolution = ParseResolution(*resolution);
   }
   if (std::optional<ConfigNode> texture = node.Find("texture")) {
-    model.texture = texture->AsOneOf({"expected", "sampled"}) == "expected" ? TextureMode::kExpected
-                                                                            : TextureMode::kSampled;
+    const std::string mode = texture->AsOneOf({"expected", "sampled", "din7190"});
+    model.texture = mode == "expected"  ? TextureMode::kExpected
+                    : mode == "sampled" ? TextureMode::kSampled
+                                        : TextureMode::kDin7190;
   }
   if (std::optional<ConfigNode> step = node.Find("depth_step")) {
     if (!(step->is_scalar() && step->AsString() == "auto")) {

@@ -67,7 +67,7 @@ std::string DescribeScene(const Scene& scene) {
          (model.resolution.is_auto() ? std::string("auto")
                                      : std::to_string(model.resolution.rows) + " x " +
                                            std::to_string(model.resolution.columns)) +
-         ", texture " + (model.texture == TextureMode::kExpected ? "expected" : "sampled") +
+         ", texture " + TextureModeName(model.texture) +
          ", depth step " + (model.depth_step > 0.0 ? Length(model.depth_step) : "auto") + "\n";
   out += "device       " + scene.device_id;
   if (scene.device) {

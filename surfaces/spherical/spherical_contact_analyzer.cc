@@ -13,6 +13,10 @@ namespace fitfeel::spherical {
 void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                          const PartSpec& outer, const SkinModelShape& outer_sms,
                                          const ModelSettings& settings) {
+  if (settings.texture == TextureMode::kDin7190) {
+    throw UserError("texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
+                    "the cylindrical surface only; use expected or sampled here");
+  }
   texture_ = settings.texture == TextureMode::kExpected
                  ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
                  : ExpectedInterferenceTable();

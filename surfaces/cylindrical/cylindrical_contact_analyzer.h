@@ -1,0 +1,116 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/texture_contact.h"
+
+namespace fitfeel::cylindrical {
+
+// Contact and space analysis of a shaft (inner part, moving along +y) in a bushing (paper 3.1).
+//
+// Alignment. Each part's rows cover [first boundary, last boundary] along its own y (boundaries
+// halfway between row centres; a one-row grid takes the part's mating length). Depth D = 0 puts
+// the shaft's leading end (its largest y) at the bushing's entrance (its smallest y); at depth D a
+// shaft point at distance s behind its leading end sits D - s into the bushing. The overlap is cut
+// into slices at every row boundary of either part, so each slice faces exactly one shaft row and
+// one bushing row: grids of different row pitch are matched through axial position, exactly for
+// piecewise-constant cells (paper step 1). A slice's cell area is the shaft cell's area times the
+// slice's share of the shaft row.
+//
+// Tables (prepare, per depth step D_k = k * step, k = 0 .. K, D_K >= L_shaft + L_bushing):
+// per-angle minima h_j = min S_T over the overlapping slices (eq. 8) and the assembly-space
+// polygon { p : p . u_j <= h_j } as vertices; when it is empty (interference, 3.2.2) the axis
+// position p* minimising the elastic energy sum(area * delta^2) (a Winkler bed: pressure linear in
+// delta, energy quadratic), found by Newton's method on that convex piecewise-quadratic function
+// with a backtracking line search (exact in finitely many steps; warm-started from the previous
+// depth); and at the anchor position (p* under interference, the polygon's centroid otherwise) the
+// interference volume sum(area * delta), its largest delta and its resultant sum(area * delta *
+// u_j), where delta is the sharp max(0, -gap), or, with TextureMode::kExpected, the expected
+// interference E[(X - gap)+] of the equivalent rough-on-smooth texture (texture_contact.h).
+//
+// Elastic model (law `elastic`, docs/contact-mechanics.md). Where the assembly space of the
+// smoothed gaps is empty, the part's equilibrium in offset and (unless fixed) tilt is solved
+// against the elastic contact of every slice: non-negative pressure per column, compliance per
+// circumferential harmonic (Michell; framework/model/section_contact.h). The elastic solve runs on
+// the grid's columns averaged in blocks to at most 120 (harmonics up to 60, waviness down to
+// 1 mm at d = 20 mm). The anchor is then the equilibrium offset at the middle of the engaged
+// length, and the tables add the normal force sum p A and the tilt.
+//
+// Per tick: linear interpolation between the two neighbouring depth steps of every tabulated
+// scalar, and of the anchor points: the point the axis may take is the nearest assembly-space
+// point (or p*) at each of the two steps, blended with the same weight. Forces built from it are
+// continuous in depth and offset (taking the nearest step would make them jump by a whole row's
+// change at each step, which a haptic device renders as a click). Cost O(vertices) <= O(n + 4),
+// independent of m, with no allocation.
+class CylinderContactAnalyzer final : public ContactAnalyzer {
+ public:
+  // Per-tick footprint: the largest vertex count of any tabulated polygon (<= n + 4).
+  int max_polygon_vertices() const { return max_vertices_; }
+  int depth_steps() const { return static_cast<int>(depth_.size()); }
+  double depth_step() const { return step_; }
+  double max_depth() const { return max_depth_; }
+  // Tabulated anchor (p* or centroid) and interference flag at step k, for tests and pictures.
+  // InterferenceMap maps each shaft row through its centre's axial position; the axis is at the
+  // energy-minimising position under interference and at the pose's offset in clearance.
+  Eigen::Vector2d anchor(int k) const { return anchor_[static_cast<std::size_t>(k)]; }
+  bool interference_at(int k) const { return empty_[static_cast<std::size_t>(k)] != 0; }
+  int newton_iterations() const { return newton_iterations_; }
+  // Elastic model (law `elastic`): equilibrium normal force and tilt at step k, the DIN 7190
+  // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
+  bool elastic() const { return elastic_; }
+  double normal_force(int k) const { return normal_[static_cast<std::size_t>(k)]; }
+  Eigen::Vector2d tilt(int k) const { return tilt_[static_cast<std::size_t>(k)]; }
+  double smoothing() const { return smoothing_; }
+  int elastic_columns() const { return elastic_ ? n_ / block_ : 0; }
+
+ protected:
+  void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+                 const SkinModelShape& outer_sms, const ModelSettings& settings) override;
+  void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
+  void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+
+ private:
+  struct Slice {
+    int shaft_row;
+    int bushing_row;
+    double length;
+  };
+  void SlicesAt(double depth, std::vector<Slice>* slices) const;
+  // Anchor of step k for an axis at x: where the spring of eq. 9 / 12 pulls it.
+  Eigen::Vector2d AnchorAt(std::size_t k, const Eigen::Vector2d& x) const noexcept;
+  // Interpolation position of a depth: step index k (< K) and weight t of step k + 1.
+  bool Locate(double depth, std::size_t* k, double* t) const noexcept;
+
+  // Inputs kept for slicing and the interference map.
+  int n_ = 0;
+  int shaft_rows_ = 0, bushing_rows_ = 0;
+  std::vector<double> shaft_edges_;    // a_i: row boundaries from the shaft's trailing end, m
+  std::vector<double> bushing_edges_;  // c_k: row boundaries from the bushing's entrance, m
+  double shaft_length_ = 0.0, bushing_length_ = 0.0;
+  Eigen::VectorXd v_shaft_, v_bushing_, shaft_area_;
+  Eigen::VectorXd shaft_row_centre_;  // from the shaft's trailing end, m
+  std::vector<double> cos_, sin_, angle_;
+  ExpectedInterferenceTable texture_;
+
+  // Tables, one entry per depth step.
+  double step_ = 0.0, max_depth_ = 0.0;
+  std::vector<double> depth_, length_, area_, volume_, max_delta_;
+  std::vector<Eigen::Vector2d> resultant_, anchor_;
+  std::vector<char> empty_, unconstrained_;
+  std::vector<int> vertex_begin_, vertex_count_;
+  std::vector<Eigen::Vector2d> vertices_;
+  int max_vertices_ = 0;
+  int newton_iterations_ = 0;
+
+  // Elastic model.
+  bool elastic_ = false;
+  int block_ = 1;            // grid columns averaged into one column of the elastic solve
+  double smoothing_ = 0.0;   // m, added to every gap
+  std::vector<double> normal_;
+  std::vector<Eigen::Vector2d> tilt_;
+};
+
+}  // namespace fitfeel::cylindrical
