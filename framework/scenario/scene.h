@@ -22,7 +22,7 @@ enum class ClockMode { kVirtual, kRealTime };
 // What a run holds in memory per tick until its outputs are written: the trace record and its
 // three timing stamps, and the device sample when it records. The scheduler checks at compile
 // time that its records fit these, so the loader's refusal and the scheduler's agree.
-inline constexpr double kTraceBytesPerTick = 344.0;
+inline constexpr double kTraceBytesPerTick = 400.0;
 inline constexpr double kRecordingBytesPerTick = 240.0;
 // The buffers of one run: beyond this a scene is refused rather than swapped.
 inline constexpr double kMaxRunBufferBytes = 2.0 * 1024 * 1024 * 1024;
