@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
 #include "framework/device/device_specs.h"
@@ -155,6 +156,7 @@ void Run(const Options& options) {
   std::sort(map.stiffnesses.begin(), map.stiffnesses.end());
 
   const std::string path = options.output.empty() ? scene.name + "-stability.csv" : options.output;
+  CheckOutputFile("--output", path);
 
   const std::vector<StabilityMapRow> rows = SweepStabilityMap(map);
   WriteFileAtomically(path, StabilityMapCsv(rows));
@@ -275,13 +277,15 @@ void AddStabilityCommand(CLI::App& app) {
       ->default_str("100 N/m");
   cmd->add_option("--stiffness-max", options->stiffness_max, "High end of the stiffness sweep")
       ->default_str("100 N/mm");
-  cmd->add_option("--per-decade", options->per_decade, "Stiffness values per decade")
-      ->default_val(8)
-      ->check(CLI::Range(1, 100));
+  AddIntegerOption(
+      cmd, "--per-decade", 1, 100,
+      [options](long n) { options->per_decade = static_cast<int>(n); },
+      "Stiffness values per decade (default 8)");
   cmd->add_option("--hand-mass", options->hand_mass, "Mass of the simulated hand (default 0.2 kg)");
   cmd->add_option("--push", options->push, "Steady push of the hand (default 0.5 N)");
   cmd->add_option("--horizon", options->horizon, "Simulated time per run (default 2 s)");
-  cmd->add_option("--force-scale", options->force_scale,
+  AddQuantityOption(cmd, "--force-scale", Dimension::kDimensionless, 1e-6, 1e6,
+                    [options](double scale) { options->force_scale = scale; },
                   "Device N per physical N (default: the scene's safety section, else 1)");
   cmd->callback([options] { Run(*options); });
 }

@@ -62,6 +62,14 @@ struct Material {
   double yield_strength = 0.0;
 };
 
+// The Poisson's ratios every resistance law accepts and the scenario parser admits: one range, so
+// that a scene `validate` accepts is never refused by a law. Machined metals, ceramics and
+// polymers lie in [0.1, 0.45]. At 0.5 (incompressible) the Lame and plane-strain compliances
+// degenerate, and negative ratios belong to engineered auxetic foams, not to machined parts.
+inline constexpr double kMinPoisson = 0.0;  // inclusive
+inline constexpr double kMaxPoisson = 0.5;  // exclusive
+inline bool PoissonInRange(double nu) { return nu >= kMinPoisson && nu < kMaxPoisson; }
+
 // Surface-type-specific nominal geometry of one part's mating surface; each surface plugin derives
 // its own and parses it from the part's `geometry` node.
 class FITFEEL_API Geometry {

@@ -36,11 +36,21 @@ ContactAnalyzer::~ContactAnalyzer() = default;
 ResistanceLaw::~ResistanceLaw() = default;
 SurfaceType::~SurfaceType() = default;
 
-SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& resolution) const {
+GridShape Discretizer::Shape(const PartSpec& part, const Resolution& resolution) const {
   if (!part.geometry) throw UserError("part '" + part.name + "' has no geometry to discretize");
   if (resolution.rows < 0 || resolution.columns < 0) {
     throw UserError("resolution of part '" + part.name + "' must not be negative");
   }
+  return DoShape(part, resolution);
+}
+
+GridShape Discretizer::DoShape(const PartSpec&, const Resolution& resolution) const {
+  if (resolution.is_auto()) return GridShape{};
+  return GridShape{resolution.rows, resolution.columns};
+}
+
+SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& resolution) const {
+  Shape(part, resolution);
   SurfaceGrid grid = DoDiscretize(part, resolution);
   FITFEEL_DEMAND(grid.rows > 0 && grid.columns > 0);
   FITFEEL_DEMAND(grid.area.size() == grid.size() && grid.centre.cols() == grid.size());

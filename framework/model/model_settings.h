@@ -10,6 +10,13 @@
 
 namespace fitfeel {
 
+// The largest depth tables a contact analyzer builds (their rows are depth steps along the mating
+// axis, each with up to columns + 4 polygon vertices): a step far finer than the grid's rows buys
+// nothing, since cells are piecewise constant, and 1e8 vertices are 1.6 GB. The scenario loader
+// refuses a depth_step beyond them, the analyzers never build one.
+inline constexpr double kMaxDepthSteps = 2e6;
+inline constexpr double kMaxDepthTableVertices = 1e8;
+
 // The scenario's `model` section, in SI.
 struct ModelSettings {
   std::string law;                     // law name offered by the surface type ("gps", "ve1", ...)

@@ -31,8 +31,9 @@ timespec ToTimespec(std::int64_t ns) {
   return ts;
 }
 
-// The trace buffer is sized before the loop; beyond this the run is refused rather than swapped.
-constexpr double kMaxTraceBytes = 2.0 * 1024 * 1024 * 1024;
+// The loader refuses a run whose buffers exceed kMaxRunBufferBytes by these per-tick sizes.
+static_assert(sizeof(TickRecord) + 3 * sizeof(double) <= kTraceBytesPerTick);
+static_assert(sizeof(RecordedSample) <= kRecordingBytesPerTick);
 
 // Priority of the real-time loop under SCHED_FIFO: above ordinary real-time helpers (IRQ threads
 // run at 50 by default on PREEMPT_RT) and below the kernel's watchdogs at 99.
@@ -116,11 +117,11 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
   device_clock_ = device.clock_owner() == ClockOwner::kDevice;
   const double ticks = std::round(settings.duration * settings.rate);
   if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
-  if (ticks * static_cast<double>(sizeof(TickRecord)) > kMaxTraceBytes) {
+  const double per_tick = kTraceBytesPerTick + (settings.record ? kRecordingBytesPerTick : 0.0);
+  if (ticks * per_tick > kMaxRunBufferBytes) {
     throw UserError("scheduler: a run of " + std::to_string(settings.duration) + " s at " +
                     std::to_string(settings.rate) +
-                    " Hz needs a trace buffer of more than 2 GiB; "
-                    "shorten run.duration");
+                    " Hz needs trace buffers of more than 2 GiB; shorten run.duration");
   }
   planned_ticks_ = static_cast<std::uint64_t>(ticks);
   run_.chain.Configure(settings.safety, device.spec(), period_);

@@ -29,11 +29,6 @@ std::string Num(double v) {
   return buf;
 }
 
-// Largest table we build: beyond this the depth step is a user error (a step far finer than the
-// grid buys nothing, since the cells are piecewise constant).
-constexpr double kMaxDepthSteps = 2e6;
-// 1e8 vertices are 1.6 GB of tables: the most a scene may ask for.
-constexpr double kMaxTableVertices = 1e8;
 // An automatic step never makes more rows than this (a step of 3 um on a 60 mm stroke), however
 // fine the grid: a haptic hand does not resolve the difference, and the tables stay in memory.
 constexpr double kAutoDepthSteps = 20000;
@@ -161,7 +156,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
                                     : std::max(min_row, max_depth_ / kAutoDepthSteps);
   const double steps = std::ceil(max_depth_ / step_);
   // Each step stores up to n + 4 polygon vertices.
-  if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxTableVertices)) {
+  if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxDepthTableVertices)) {
     throw UserError("depth_step " + Num(step_) + " m gives " + Num(steps) +
                     " table rows of up to " + Num(n_ + 4) +
                     " vertices, more than the analyzer holds; use a coarser step");

@@ -31,7 +31,7 @@ const CylindricalGeometry& Cylinder(const PartSpec& part) {
 
 void CheckMaterial(const PartSpec& part) {
   const Material& m = part.material;
-  if (!(m.youngs_modulus > 0.0) || !(m.poisson >= 0.0 && m.poisson < 0.5)) {
+  if (!(m.youngs_modulus > 0.0) || !PoissonInRange(m.poisson)) {
     throw UserError("part '" + part.name +
                     "': the press-fit law needs a Young's modulus > 0 and 0 <= Poisson < 0.5");
   }

@@ -37,10 +37,9 @@ void PlanarGpsLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
                              const ModelSettings& settings) {
   const PlanarGeometry& g = PlanarGeometryOf(inner);
   for (const PartSpec* p : {&inner, &outer}) {
-    if (!(p->material.youngs_modulus > 0.0) || !(p->material.poisson > -1.0) ||
-        !(p->material.poisson < 0.5)) {
+    if (!(p->material.youngs_modulus > 0.0) || !PoissonInRange(p->material.poisson)) {
       throw UserError("part '" + p->name + "': the planar law needs a Young's modulus and a " +
-                      "Poisson's ratio in (-1, 0.5)");
+                      "Poisson's ratio in [0, 0.5)");
     }
   }
   friction_ = StickSlipFriction(FrictionOf(settings));

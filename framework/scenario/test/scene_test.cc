@@ -192,9 +192,35 @@ INSTANTIATE_TEST_SUITE_P(
                 "nominal: 20 mm",
                 "nominal: 0 mm"},
         Variant{{"poisson_above_half", 20, 50, "parts.bushing.material.poisson",
-                 "a dimensionless number in (-1, 0.5]", "'0.7'"},
+                 "a Poisson's ratio in [0, 0.5)", "'0.7'"},
                 "poisson: 0.34",
                 "poisson: 0.7"},
+        // The laws' range: -0.5 passed the parser once and was refused by the cylinder law.
+        Variant{{"poisson_negative", 20, 50, "parts.bushing.material.poisson",
+                 "a Poisson's ratio in [0, 0.5)", "'-0.5'"},
+                "poisson: 0.34",
+                "poisson: -0.5"},
+        Variant{{"poisson_half", 20, 50, "parts.bushing.material.poisson",
+                 "a Poisson's ratio in [0, 0.5)", "'0.5'"},
+                "poisson: 0.34",
+                "poisson: 0.5"},
+        // What the scheduler and the analyzers would refuse, refused by the loader at its key.
+        Variant{{"shorter_than_a_tick", 37, 13, "run.duration", "a run of at least one tick",
+                 "'0.1 ms' at 2e+03 Hz"},
+                "duration: 5 s",
+                "duration: 0.1 ms"},
+        Variant{{"trace_over_its_cap", 37, 13, "run.duration", "2 GiB of trace and recording",
+                 "'3600 s'"},
+                "duration: 5 s",
+                "duration: 3600 s"},
+        Variant{{"depth_table_over_its_cap", 28, 15, "model.depth_step",
+                 "fewer than 2e+06 depth-table rows", "'1 nm'"},
+                "depth_step: 0.5 mm",
+                "depth_step: 1 nm"},
+        Variant{{"large_grid_without_allow_large", 26, 15, "model.resolution",
+                 "or --allow-large to run it anyway", "cells"},
+                "resolution: {rows: 40, columns: 72}",
+                "resolution: {rows: 2000, columns: 2000}"},
         Variant{{"modulus_too_small", 20, 32, "parts.bushing.material.youngs_modulus",
                  "a pressure in [1 MPa, 1200 GPa]", "'5 kPa'"},
                 "youngs_modulus: 110 GPa",
@@ -360,6 +386,35 @@ INSTANTIATE_TEST_SUITE_P(
                 "role: outer",
                 "role: outter"}),
     [](const ::testing::TestParamInfo<Variant>& p) { return p.param.expect.name; });
+
+TEST_F(SceneTest, LargeGridIsAcceptedWhenAllowedWithItsCost) {
+  LoadOptions options;
+  options.allow_large = true;
+  const Scene scene = LoadScene(WriteVariant("large_allowed", "resolution: {rows: 40, columns: 72}",
+                                             "resolution: {rows: 2000, columns: 2000}"),
+                                registry_, options);
+  EXPECT_EQ(scene.cost.inner_cells, 4'000'000);
+  EXPECT_GT(scene.cost.prepare_bytes, kLargeSceneBytes);
+}
+
+TEST_F(SceneTest, CarriageReturnOnlyLineEndingsReadAsLines) {
+  std::string text = ReadFile(kTestDir / "good" / "full.yaml");
+  for (char& c : text) {
+    if (c == '\n') c = '\r';
+  }
+  const fs::path file = fs::path(::testing::TempDir()) / "fitfeel_scene_cr.yaml";
+  std::ofstream(file, std::ios::binary) << text;
+  const Scene scene = LoadScene(file, registry_);
+  EXPECT_EQ(scene.run.duration, 5.0);
+  // Line numbers stay those an editor shows.
+  const fs::path bad = WriteVariant("cr_bad", "duration: 5 s", "duration: 5");
+  std::string bad_text = ReadFile(bad);
+  for (char& c : bad_text) {
+    if (c == '\n') c = '\r';
+  }
+  std::ofstream(bad, std::ios::binary) << bad_text;
+  ExpectRefused(bad, {"cr_bad", 37, 13, "run.duration", "a time", "'5'"}, registry_);
+}
 
 TEST_F(SceneTest, FileLevelProblemsAreScenarioErrors) {
   const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_scene_files";
