@@ -7,7 +7,7 @@
 
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \
             libboost-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev \
-            libgmock-dev libbenchmark-dev gnuplot-nox
+            libgmock-dev libbenchmark-dev gnuplot-nox libjs-three chromium nodejs
 JOBS ?= $(shell nproc)
 # Where `fitfeel run` puts the default scenario's outputs (out/<scenario name>).
 DEFAULT_RUN := out/paper-case1-h7js6

@@ -91,6 +91,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
                              "coupling: spring_damper renders it through a virtual coupling");
     }
     Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    scheduler.set_observer(options.observer);
     if (options.watch) options.watch(&scheduler);
     try {
       scheduler.Run();
@@ -99,6 +100,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       throw;
     }
     if (options.watch) options.watch(nullptr);
+    if (options.observer != nullptr) options.observer->OnRunEnd(scheduler.trace());
     result.stats = scheduler.stats();
     if (!result.stats.realtime_note.empty() &&
         result.stats.realtime_note.find("not permitted") != std::string::npos) {

@@ -23,6 +23,8 @@ struct RunOptions {
   // Called with the scheduler just before its loop starts and with null once it has ended, on
   // the calling thread; the scheduler's ticks_done() may be polled from another thread between.
   std::function<void(const Scheduler*)> watch;
+  // Watches every tick and the finished trace (a live viewer); borrowed, may be null.
+  TickObserver* observer = nullptr;
 };
 
 struct RunResult {
