@@ -37,6 +37,7 @@ struct ViewArgs {
   bool virtual_clock = false;
   double frame_rate = 60.0;
   double exit_after = -1.0;
+  bool wait = false;
 };
 
 // The constrained rows of a finished run as viewer samples (the trace keeps no torque there).
@@ -127,6 +128,11 @@ void View(const ViewArgs& args) {
     return;
   }
 
+  if (args.wait) {
+    std::printf("  waiting for a browser to connect before running\n");
+    std::fflush(stdout);
+    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   RunOptions run;
   run.out_dir = args.out;
   run.seed = seed;
@@ -173,6 +179,8 @@ void AddViewCommand(CLI::App& app) {
   cmd->add_option("--exit-after", args->exit_after,
                   "stop serving this many seconds after the run ends (default: serve until "
                   "interrupted)");
+  cmd->add_flag("--wait", args->wait,
+                "start the run only once a browser has connected (watch it from the first tick)");
   auto* realtime = cmd->add_flag("--realtime", args->realtime,
                                  "real-time clock (the default for view: watch it at 1 kHz)");
   auto* virtual_clock = cmd->add_flag(
