@@ -22,32 +22,75 @@ function(fitfeel_add_plugin name)
   endif()
   if(ARG_OUTPUT_DIR STREQUAL FITFEEL_BUILD_PLUGIN_DIR)
     install(TARGETS ${name} LIBRARY DESTINATION lib/fitfeel/plugins)
-    set_property(GLOBAL APPEND PROPERTY FITFEEL_PLUGIN_TARGETS ${name})
+    add_dependencies(fitfeel_plugins ${name})
   endif()
 endfunction()
 
-# fitfeel_add_test(<name> SOURCES ... [LIBS ...]) builds a GoogleTest binary and registers its
-# tests with ctest. Tests run with the build tree's plugins and the repository as the working tree.
+# fitfeel_add_plugin_folder(<surface|device> <name> SOURCES ... [LIBS ...] [OUTPUT_DIR dir]) is the
+# whole CMakeLists.txt of a plugin folder, which has one shape for every plugin:
+#   <name>_<role>.h/.cc  the model, a static library fitfeel_<kind>_<name>_model, namespace
+#                        fitfeel::<name>, so tests use its classes directly;
+#   register.cc          the plugin fitfeel_<kind>_<name>: the model and its one exported hook,
+#                        FITFEEL_REGISTER_SURFACE or FITFEEL_REGISTER_DEVICE;
+#   test/                its tests (fitfeel_<kind>_<name>_test and, for the allocation-counting
+#                        conformance suite, fitfeel_<kind>_<name>_conformance_test);
+#   bench/               its benchmarks (built only with FITFEEL_BUILD_BENCHMARKS);
+#   README.md            what it models, its choices and its tests.
+function(fitfeel_add_plugin_folder kind name)
+  cmake_parse_arguments(ARG "" "OUTPUT_DIR" "SOURCES;LIBS" ${ARGN})
+  set(plugin fitfeel_${kind}_${name})
+  add_library(${plugin}_model STATIC ${ARG_SOURCES})
+  target_link_libraries(${plugin}_model PUBLIC fitfeel::framework ${ARG_LIBS})
+  set(output_dir)
+  if(ARG_OUTPUT_DIR)
+    set(output_dir OUTPUT_DIR ${ARG_OUTPUT_DIR})
+  endif()
+  fitfeel_add_plugin(${plugin} SOURCES register.cc LIBS ${plugin}_model ${output_dir})
+  if(FITFEEL_BUILD_TESTS AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/test/CMakeLists.txt)
+    add_subdirectory(test)
+  endif()
+  if(FITFEEL_BUILD_BENCHMARKS AND EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/bench/CMakeLists.txt)
+    add_subdirectory(bench)
+  endif()
+endfunction()
+
+# fitfeel_add_test(<name> SOURCES ... [LIBS ...] [NEEDS target...] [LABELS ...]) builds a
+# GoogleTest binary and registers its tests with ctest. Tests run with the build tree's plugins and
+# the repository as the working tree. Calls with the same name from several folders add their
+# sources to one binary: tests are grouped by module (a binary per plugin, one for the framework's
+# core), so the build links and lists a few executables instead of one per folder. A binary that
+# replaces the global operator new (FITFEEL_COUNT_ALLOCATIONS) takes a name of its own. NEEDS names
+# what the tests load or run (plugins, the CLI); it may be defined later in the tree.
 function(fitfeel_add_test name)
   if(NOT FITFEEL_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})
-  add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock
-                                        GTest::gtest_main ${ARG_LIBS})
-  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
-  # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees
-  # come from a generated library; the macros call it (framework/testing/test_paths.h).
-  target_link_libraries(${name} PRIVATE fitfeel_test_paths)
-  target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR=fitfeel_test_source_dir\(\)
-                                             FITFEEL_TEST_BUILD_DIR=fitfeel_test_build_dir\(\))
-  target_compile_options(${name} PRIVATE
-                         -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
-  gtest_discover_tests(${name}
-    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-    PROPERTIES LABELS "${ARG_LABELS}"
-    DISCOVERY_TIMEOUT 60)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;NEEDS;LABELS" ${ARGN})
+  if(TARGET ${name})
+    target_sources(${name} PRIVATE ${ARG_SOURCES})
+  else()
+    add_executable(${name} ${ARG_SOURCES})
+    target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock
+                                          GTest::gtest_main)
+    set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+    # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees
+    # come from a generated library; the macros call it (framework/testing/test_paths.h).
+    target_link_libraries(${name} PRIVATE fitfeel_test_paths)
+    target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR=fitfeel_test_source_dir\(\)
+                                               FITFEEL_TEST_BUILD_DIR=fitfeel_test_build_dir\(\))
+    target_compile_options(${name} PRIVATE
+                           -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
+    gtest_discover_tests(${name}
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+      PROPERTIES LABELS "${ARG_LABELS}"
+      DISCOVERY_TIMEOUT 60)
+  endif()
+  if(ARG_LIBS)
+    target_link_libraries(${name} PRIVATE ${ARG_LIBS})
+  endif()
+  if(ARG_NEEDS)
+    add_dependencies(${name} ${ARG_NEEDS})
+  endif()
 endfunction()
 
 # fitfeel_add_benchmark(<name> SOURCES ... [LIBS ...]) builds a Google Benchmark binary into

@@ -3,7 +3,7 @@
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 
 void PhantomDevice::DoConfigure(const ConfigNode& node) {
   node.ExpectOnlyKeys({"plugin", "model", "spec", "auto_calibrate"});
@@ -27,4 +27,4 @@ void PhantomDevice::DoConfigure(const ConfigNode& node) {
   Configure(settings);
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

@@ -8,7 +8,7 @@
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 namespace {
 
 constexpr double kMillimetre = 1e-3;
@@ -313,4 +313,4 @@ void PhantomDevice::DoWrite(const Wrench& wrench) noexcept { pending_force_ = wr
 
 PhantomDiagnostics PhantomDevice::diagnostics() const { return diagnostics_; }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

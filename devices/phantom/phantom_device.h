@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "devices/phantom/hd_library.h"
+#include "devices/phantom/phantom_hd_library.h"
 #include "framework/device/device.h"
 
-namespace fitfeel {
+namespace fitfeel::phantom {
 
 struct PhantomSettings {
   // Spec: `spec` if given, else the table entry for `model`, else the table entry for the model
@@ -85,4 +85,4 @@ class PhantomDevice final : public Device {
   std::atomic<std::uint64_t> ticks_{0};
 };
 
-}  // namespace fitfeel
+}  // namespace fitfeel::phantom

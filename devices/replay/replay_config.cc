@@ -4,7 +4,7 @@
 #include "devices/replay/replay_device.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::replay {
 
 void ReplayDevice::DoConfigure(const ConfigNode& node) {
   node.ExpectOnlyKeys({"plugin", "file", "speed", "start", "loop", "model", "spec"});
@@ -49,4 +49,4 @@ void ReplayDevice::DoConfigure(const ConfigNode& node) {
   Configure(settings);
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

@@ -6,7 +6,7 @@
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
 
-namespace fitfeel {
+namespace fitfeel::replay {
 
 void ReplayDevice::Configure(const ReplaySettings& settings) {
   if (!(settings.speed > 0.0) || !std::isfinite(settings.speed)) {
@@ -94,4 +94,4 @@ void ReplayDevice::DoRead(double time, DeviceState* out) noexcept {
 
 void ReplayDevice::DoWrite(const Wrench& wrench) noexcept { written_ = wrench; }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

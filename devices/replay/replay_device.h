@@ -7,7 +7,7 @@
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
 
-namespace fitfeel {
+namespace fitfeel::replay {
 
 struct ReplaySettings {
   std::filesystem::path file;
@@ -50,4 +50,4 @@ class ReplayDevice final : public Device {
   Wrench written_;
 };
 
-}  // namespace fitfeel
+}  // namespace fitfeel::replay

@@ -16,6 +16,7 @@ void AddSmsCommand(CLI::App& app);
 void AddPlotCommand(CLI::App& app);
 void AddStabilityCommand(CLI::App& app);
 void AddTradeoffCommand(CLI::App& app);
+void AddStudyCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
 
 // The scenario `run` and `view` take when given none.

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddPlotCommand(app);
   fitfeel::cli::AddStabilityCommand(app);
   fitfeel::cli::AddTradeoffCommand(app);
+  fitfeel::cli::AddStudyCommand(app);
   fitfeel::cli::AddViewCommand(app);
   try {
     app.parse(argc, argv);

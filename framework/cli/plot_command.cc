@@ -15,9 +15,12 @@
 #include "framework/plot/run_record.h"
 #include "framework/plot/scene_charts.h"
 #include "framework/plot/scene_shapes.h"
+#include "framework/plot/study_chart.h"
 #include "framework/plot/trace_chart.h"
 #include "framework/plugin/registry.h"
+#include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
+#include "framework/study/study_record.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -170,6 +173,48 @@ void AddPressure(CLI::App& plot) {
   });
 }
 
+void AddStudy(CLI::App& plot) {
+  struct Options {
+    std::vector<std::string> dirs;
+    std::string reference;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  auto* cmd = plot.add_subcommand(
+      "study", "Distribution of insertion force over the part pairs of one or more studies");
+  cmd->add_option("DIR", options->dirs, "study folders holding pairs.csv and study.json")
+      ->required()
+      ->expected(1, -1);
+  cmd->add_option("--reference", options->reference,
+                  "scenario whose mean axial resistance is drawn as a line (e.g. the paper's "
+                  "VE1 method, scenarios/paper-case1-ve1.yaml)");
+  cmd->add_option("-o,--output", options->output,
+                  "image file: .png, .svg, or no extension for both")
+      ->required();
+  cmd->callback([options] {
+    const auto outputs = plot::ResolveOutputs(options->output);
+    std::vector<study::StudyRecord> studies;
+    for (const auto& dir : options->dirs) studies.push_back(study::LoadStudy(dir));
+    std::optional<plot::ReferenceLine> reference;
+    if (!options->reference.empty()) {
+      const auto registry = LoadPlugins();
+      Scene scene = LoadScene(options->reference, *registry);
+      const std::string name = scene.name;
+      RunOptions run;
+      run.clock = ClockMode::kVirtual;
+      const RunResult result = RunScene(std::move(scene), run);
+      const auto& axial = result.summary.at("axial_resistance_N");
+      if (axial.is_null()) {
+        throw UserError("--reference " + options->reference + ": the run never reached the "
+                        "constrained stage, so it has no axial resistance to draw");
+      }
+      reference = plot::ReferenceLine{name + " (mean)", axial.at("mean").get<double>()};
+    }
+    plot::Render(plot::MakeStudyChart(studies, reference), outputs);
+    PrintWritten(outputs);
+  });
+}
+
 }  // namespace
 
 void AddPlotCommand(CLI::App& app) {
@@ -178,6 +223,7 @@ void AddPlotCommand(CLI::App& app) {
   AddTrace(*cmd);
   AddSms(*cmd);
   AddPressure(*cmd);
+  AddStudy(*cmd);
 }
 
 }  // namespace fitfeel::cli

@@ -17,7 +17,7 @@ struct TriangleMesh {
   bool empty() const { return triangles.empty(); }
 };
 
-// The coarse meshes of a mating pair for free-motion collision (architecture.md section 4: only
+// The coarse meshes of a mating pair for free-motion collision (docs/architecture.md, section 4: only
 // mating surfaces get a skin model shape; the rest of a part is a coarse mesh for FCL). Each is in
 // the scene's mating frame as it would be were the inner part the moving one:
 //  - inner: the moving part's frame, its leading end at the origin, its axis +y (the direction of

@@ -8,8 +8,8 @@
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/narrowphase/collision.h>
-#include <fcl/narrowphase/collision_object.h>
 
+#include "framework/core/demand.h"
 #include "framework/core/error.h"
 
 namespace fitfeel {
@@ -40,52 +40,77 @@ std::shared_ptr<Bvh> BuildBvh(const TriangleMesh& mesh, const char* which) {
 
 }  // namespace
 
+// Immutable after construction: the BVHs, which every query only reads. Queries go through FCL's
+// geometry-and-transform overload of collide: a CollisionObject would hold the pose (state of a
+// run) and recompute the shared geometry's local bounding box whenever one is made.
 struct MeshCollider::Impl {
-  Impl(const TriangleMesh& fixed_mesh, const TriangleMesh& moving_mesh, int max_contacts)
+  Impl(const TriangleMesh& fixed_mesh, const TriangleMesh& moving_mesh)
       : fixed_vertices(fixed_mesh.vertices),
         fixed_triangles(fixed_mesh.triangles),
         moving_vertices(moving_mesh.vertices),
         moving_triangles(moving_mesh.triangles),
         fixed(BuildBvh(fixed_mesh, "fixed")),
-        moving(BuildBvh(moving_mesh, "moving")),
-        request(max_contacts, /*enable_contact=*/true) {
-    // The contact buffer the query fills, grown here so that the tick only reuses it: the vector
-    // is private to FCL, but clear() keeps its capacity, so filling it once reserves it.
-    for (int i = 0; i < max_contacts; ++i) result.addContact(fcl::Contactd());
-    result.clear();
+        moving(BuildBvh(moving_mesh, "moving")) {
+    fixed->computeLocalAABB();
+    moving->computeLocalAABB();
   }
   // The meshes again, for the separating-axis projections (FCL reports triangle indices).
   std::vector<Eigen::Vector3d> fixed_vertices;
   std::vector<Eigen::Vector3i> fixed_triangles;
   std::vector<Eigen::Vector3d> moving_vertices;
   std::vector<Eigen::Vector3i> moving_triangles;
-  fcl::CollisionObjectd fixed;
-  fcl::CollisionObjectd moving;
+  std::shared_ptr<Bvh> fixed;
+  std::shared_ptr<Bvh> moving;
+};
+
+struct CollisionScratch::Impl {
+  explicit Impl(int max_contacts) : request(max_contacts, /*enable_contact=*/true) {
+    // The contact buffer the query fills, grown here so that the tick only reuses it: the vector
+    // is private to FCL, but clear() keeps its capacity, so filling it once reserves it.
+    for (int i = 0; i < max_contacts; ++i) result.addContact(fcl::Contactd());
+    result.clear();
+  }
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
 };
+
+CollisionScratch::CollisionScratch(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+CollisionScratch::~CollisionScratch() = default;
 
 MeshCollider::MeshCollider(const TriangleMesh& fixed, const TriangleMesh& moving,
                            int max_contacts) {
   if (max_contacts < 1) throw UserError("mesh collider: max_contacts must be >= 1");
   max_contacts_ = max_contacts;
-  impl_ = std::make_unique<Impl>(fixed, moving, max_contacts);
+  impl_ = std::make_unique<Impl>(fixed, moving);
 }
 
 MeshCollider::~MeshCollider() = default;
 
-void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, Penetration* out) const noexcept {
+std::unique_ptr<CollisionScratch> MeshCollider::MakeScratch() const {
+  std::unique_ptr<CollisionScratch> scratch(new CollisionScratch(
+      std::make_unique<CollisionScratch::Impl>(max_contacts_)));
+  scratch->owner_ = this;
+  return scratch;
+}
+
+void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, CollisionScratch* scratch,
+                         Penetration* out) const noexcept {
+  FITFEEL_DEMAND(out != nullptr);
+  FITFEEL_DEMAND(scratch != nullptr && scratch->owner_ == this);
   *out = Penetration{};
-  Impl& impl = *impl_;
-  impl.moving.setTransform(moving_pose);
+  const Impl& impl = *impl_;
+  CollisionScratch::Impl& query = *scratch->impl_;
   // clear() keeps the contact vector's capacity: collide's push_backs then reuse the buffer.
-  impl.result.clear();
+  query.result.clear();
   try {
-    fcl::collide(&impl.moving, &impl.fixed, impl.request, impl.result);
+    fcl::collide<double>(impl.moving.get(), moving_pose, impl.fixed.get(),
+                         fcl::Transform3d::Identity(), query.request, query.result);
   } catch (...) {
     return;  // FCL does not throw on this path; never let anything escape the tick
   }
-  const std::size_t n = impl.result.numContacts();
+  const fcl::CollisionResultd& result = query.result;
+  const std::size_t n = result.numContacts();
   if (n == 0) return;
   out->contact = true;
   out->contacts = static_cast<int>(n);
@@ -107,11 +132,11 @@ void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, Penetration* out)
   std::size_t best = 0;
   double best_overlap = kInfinity;
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d axis = -impl.result.getContact(i).normal.normalized();
+    const Eigen::Vector3d axis = -result.getContact(i).normal.normalized();
     if (!axis.allFinite()) continue;
     bool seen = false;  // an earlier contact already tried this axis
     for (std::size_t j = 0; j < i && !seen; ++j) {
-      seen = impl.result.getContact(j).normal.normalized().dot(-axis) >= kSameDirection;
+      seen = result.getContact(j).normal.normalized().dot(-axis) >= kSameDirection;
     }
     if (seen) continue;
     // Moving vertices are in the moving frame: m.d = m_local.(R^T d) + t.d.
@@ -119,7 +144,7 @@ void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, Penetration* out)
     const double offset = translation.dot(axis);
     double required = 0.0;
     for (std::size_t j = 0; j < n && required < best_overlap; ++j) {
-      const fcl::Contactd& c = impl.result.getContact(j);
+      const fcl::Contactd& c = result.getContact(j);
       const double cosine = -c.normal.normalized().dot(axis);
       const double plane = cosine > 1e-12 ? c.penetration_depth / cosine : kInfinity;
       const Eigen::Vector3i& ft = impl.fixed_triangles[static_cast<std::size_t>(c.b2)];
@@ -137,7 +162,7 @@ void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, Penetration* out)
       best = i;
     }
   }
-  const fcl::Contactd& c = impl.result.getContact(best);
+  const fcl::Contactd& c = result.getContact(best);
   const Eigen::Vector3d normal = -c.normal.normalized();
   out->point = c.pos;
   // Touching (no overlap along some axis) or no usable normal: in contact, but nothing to push.

@@ -22,9 +22,29 @@ struct Penetration {
   Eigen::Vector3d point{0.0, 0.0, 0.0};  // a point of the chosen contact (FCL's contact position)
 };
 
+class MeshCollider;
+
+// What one query changes: FCL's request, its result with a contact buffer reserved up front, and
+// the moving part's collision object (which holds the pose). One scratch serves one thread at a
+// time; a collider serves any number of them at once (see MeshCollider::MakeScratch).
+class FITFEEL_API CollisionScratch {
+ public:
+  ~CollisionScratch();
+  CollisionScratch(const CollisionScratch&) = delete;
+  CollisionScratch& operator=(const CollisionScratch&) = delete;
+
+ private:
+  friend class MeshCollider;
+  struct Impl;
+  explicit CollisionScratch(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+  const MeshCollider* owner_ = nullptr;
+};
+
 // FCL mesh-mesh collision between a fixed and a moving coarse mesh (OBBRSS bounding volume
-// hierarchies, built once here). Query is the per-tick path: it keeps one pre-reserved FCL
-// result and request and is therefore not re-entrant; one collider serves one tick thread.
+// hierarchies, built once here and only read afterwards). Query is the per-tick path; what it
+// changes lives in a CollisionScratch, so one collider serves several threads, each with its own
+// scratch.
 //
 // Depth: FCL reports, per intersecting triangle pair (fcl::detail::Intersect::intersect_Triangle),
 // one triangle's plane normal and a depth through it; FCL has no mesh-mesh minimum translation.
@@ -44,10 +64,14 @@ class FITFEEL_API MeshCollider {
   MeshCollider(const MeshCollider&) = delete;
   MeshCollider& operator=(const MeshCollider&) = delete;
 
-  // Places the moving mesh at `moving_pose` (its frame in the scene frame) and collides it with
-  // the fixed one. Does not allocate once the result's contact buffer has its capacity (see
+  // A scratch for Query with its contact buffer reserved (prepare time: allocates).
+  std::unique_ptr<CollisionScratch> MakeScratch() const;
+  // Places the moving mesh at `moving_pose` (its frame in the scene frame) in `scratch` and
+  // collides it with the fixed one. `scratch` must come from this collider's MakeScratch
+  // (aborts otherwise). Does not allocate (the scratch's contact buffer has its capacity, see
   // mesh_collider.cc); noexcept: an FCL failure reports no contact.
-  void Query(const Eigen::Isometry3d& moving_pose, Penetration* out) const noexcept;
+  void Query(const Eigen::Isometry3d& moving_pose, CollisionScratch* scratch,
+             Penetration* out) const noexcept;
 
   int max_contacts() const { return max_contacts_; }
 

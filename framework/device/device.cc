@@ -1,8 +1,9 @@
 #include "framework/device/device.h"
 
-#include <cassert>
 #include <cmath>
+#include <memory>
 
+#include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "framework/device/stage.h"
 
@@ -31,7 +32,7 @@ void Device::Start(double period) {
 void Device::Stop() noexcept { DoStop(); }
 
 void Device::Read(double time, DeviceState* out) noexcept {
-  assert(out != nullptr);
+  FITFEEL_DEMAND(out != nullptr);
   DoRead(time, out);
 }
 
@@ -48,9 +49,29 @@ void Device::RunServoLoop(double, const std::function<bool(double)>&) {
   throw UnsupportedError("this device does not own a servo clock; run it from the scheduler");
 }
 
-void Stage::Evaluate(const DeviceState& device, StageOutput* out) const noexcept {
-  assert(out != nullptr);
-  DoEvaluate(device, out);
+StageState::~StageState() = default;
+
+namespace {
+// A stage that keeps nothing between ticks.
+class EmptyStageState final : public StageState {};
+}  // namespace
+
+std::unique_ptr<StageState> Stage::MakeState() const {
+  std::unique_ptr<StageState> state = DoMakeState();
+  FITFEEL_DEMAND(state != nullptr);
+  state->owner_ = this;
+  return state;
+}
+
+std::unique_ptr<StageState> Stage::DoMakeState() const {
+  return std::make_unique<EmptyStageState>();
+}
+
+void Stage::Evaluate(const DeviceState& device, StageState* state,
+                     StageOutput* out) const noexcept {
+  FITFEEL_DEMAND(out != nullptr);
+  FITFEEL_DEMAND(state != nullptr && state->owner() == this);
+  DoEvaluate(device, state, out);
 }
 
 }  // namespace fitfeel

@@ -8,7 +8,7 @@
 namespace fitfeel {
 namespace {
 
-// Peak force, max stable stiffness and damping: /work/shared/reference/oracles.md ("Haptic
+// Peak force, max stable stiffness and damping: docs/oracles.md ("Haptic
 // stability and devices"), which the stability tests use as their oracle.
 // Continuous force and workspace: the SensAble / Geomagic / 3D Systems data sheets as published
 // for each model (PHANTOM Desktop: 1.75 N continuous for 24 h, 160 W x 120 H x 120 D mm; PHANTOM

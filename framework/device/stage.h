@@ -1,6 +1,7 @@
 #pragma once
 
 #include <limits>
+#include <memory>
 #include <string_view>
 
 #include "framework/core/export.h"
@@ -30,15 +31,43 @@ struct StageOutput {
   Eigen::Vector2d gap_direction{0.0, 0.0};
 };
 
-// One stage of the assembly. Prepare may allocate; Evaluate is the per-tick path.
+class Stage;
+
+// What one run of a stage changes from tick to tick (see docs/run-state.md): a stage itself is
+// immutable once built, so one prepared stage serves any number of runs at once, each with its
+// own state. A stage derives its own kind; the base carries only which stage made it.
+class FITFEEL_API StageState {
+ public:
+  virtual ~StageState();
+  StageState(const StageState&) = delete;
+  StageState& operator=(const StageState&) = delete;
+  const Stage* owner() const { return owner_; }
+
+ protected:
+  StageState() = default;
+
+ private:
+  friend class Stage;
+  const Stage* owner_ = nullptr;
+};
+
+// One stage of the assembly. Construction and MakeState may allocate; Evaluate is the per-tick
+// path and reads the stage, writing only the run's state and the output.
 class FITFEEL_API Stage {
  public:
   virtual ~Stage();
   virtual StageId id() const = 0;
-  void Evaluate(const DeviceState& device, StageOutput* out) const noexcept;
+  // A fresh state for one run (prepare time: may allocate). Never null.
+  std::unique_ptr<StageState> MakeState() const;
+  // Per tick. `state` must come from this stage's MakeState (aborts otherwise) and serve one
+  // thread at a time; different states may be evaluated concurrently.
+  void Evaluate(const DeviceState& device, StageState* state, StageOutput* out) const noexcept;
 
  protected:
-  virtual void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept = 0;
+  // The default is a state with nothing in it, for stages that keep nothing between ticks.
+  virtual std::unique_ptr<StageState> DoMakeState() const;
+  virtual void DoEvaluate(const DeviceState& device, StageState* state,
+                          StageOutput* out) const noexcept = 0;
 };
 
 }  // namespace fitfeel

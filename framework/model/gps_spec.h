@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "framework/core/export.h"
+#include "framework/model/process_spec.h"
 
 namespace fitfeel {
 
@@ -80,6 +81,7 @@ struct PartSpec {
   TextureSpec texture;
   Material material;
   std::shared_ptr<const Geometry> geometry;
+  ProcessSpec process;  // how the part's size and form are spread (paper: uniform)
 };
 
 }  // namespace fitfeel

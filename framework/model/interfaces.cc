@@ -2,9 +2,9 @@
 // wrappers of the Drake-style public/protected-virtual pairs.
 #include <algorithm>
 #include <stdexcept>
-#include <cassert>
 #include <string>
 
+#include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/discretizer.h"
@@ -42,16 +42,21 @@ SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& reso
     throw UserError("resolution of part '" + part.name + "' must not be negative");
   }
   SurfaceGrid grid = DoDiscretize(part, resolution);
-  assert(grid.rows > 0 && grid.columns > 0);
-  assert(grid.area.size() == grid.size() && grid.centre.cols() == grid.size());
+  FITFEEL_DEMAND(grid.rows > 0 && grid.columns > 0);
+  FITFEEL_DEMAND(grid.area.size() == grid.size() && grid.centre.cols() == grid.size());
   return grid;
 }
 
 SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceGrid& grid,
                                             TextureMode texture, Rng& rng) const {
   if (grid.size() == 0) throw UserError("part '" + part.name + "' has an empty grid");
+  if (!DoSupports(part.process.kind)) {
+    throw UnsupportedError("part '" + part.name +
+                           "': this surface type's generator draws only the paper's process; "
+                           "process: statistical is not implemented for it yet");
+  }
   SkinModelShape sms = DoGenerate(part, grid, texture, rng);
-  assert(sms.variation.size() == grid.size());
+  FITFEEL_DEMAND(sms.variation.size() == grid.size());
   return sms;
 }
 
@@ -70,7 +75,7 @@ void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner
 }
 
 void ContactAnalyzer::Evaluate(const MatingPose& pose, ContactState* out) const noexcept {
-  assert(prepared_ && out != nullptr);
+  FITFEEL_DEMAND(prepared_ && out != nullptr);
   DoEvaluate(pose, out);
 }
 
@@ -105,13 +110,13 @@ void ResistanceLaw::Prepare(const PartSpec& inner, const PartSpec& outer,
 
 void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& motion,
                              Wrench* out) const noexcept {
-  assert(out != nullptr);
+  FITFEEL_DEMAND(out != nullptr);
   DoEvaluate(contact, motion, out);
 }
 
 double ResistanceLaw::PressurePerInterference() const {
   const double coefficient = DoPressurePerInterference();
-  assert(coefficient >= 0.0);
+  FITFEEL_DEMAND(coefficient >= 0.0);
   return coefficient;
 }
 
@@ -122,7 +127,7 @@ double ResistanceLaw::DoPressurePerInterference() const {
 std::shared_ptr<const Geometry> SurfaceType::ParseGeometry(const PartSpec& part,
                                                            const ConfigNode& geometry) const {
   auto parsed = DoParseGeometry(part, geometry);
-  assert(parsed != nullptr);
+  FITFEEL_DEMAND(parsed != nullptr);
   return parsed;
 }
 

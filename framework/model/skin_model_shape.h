@@ -34,6 +34,7 @@ struct SkinModelShape {
   Eigen::VectorXd surface_part;         // V_surface per cell (zero when texture is not sampled), m
   int regenerations = 0;                // how often step 3 regenerated the form variation
   int scaled_back_cells = 0;            // cells scaled back into the size limits by the final clamp
+  int rejections = 0;  // parts a statistical process scrapped (out of tolerance) before this one
 };
 
 }  // namespace fitfeel

@@ -15,7 +15,7 @@ struct TruncatedGaussian {
   double upper = 3.0;
 };
 
-// Closed forms of reference/oracles.md for X ~ TruncatedGaussian and a gap g. They are the
+// Closed forms of docs/oracles.md for X ~ TruncatedGaussian and a gap g. They are the
 // expected interference of a rough contact whose height difference X meets a gap g (paper eq. 6):
 // no special cases beyond g <= lower (all of X interferes) and g >= upper (none does).
 FITFEEL_API double ExceedanceProbability(const TruncatedGaussian& x, double gap);  // P(X > g)

@@ -35,6 +35,8 @@ class FITFEEL_API VariationGenerator {
   virtual void DoConfigure(const ConfigNode& options);
   virtual SkinModelShape DoGenerate(const PartSpec& part, const SurfaceGrid& grid,
                                     TextureMode texture, Rng& rng) const = 0;
+  // The process models (PartSpec::process) the generator draws from; the default, the paper's.
+  virtual bool DoSupports(ProcessKind kind) const { return kind == ProcessKind::kPaper; }
 };
 
 }  // namespace fitfeel

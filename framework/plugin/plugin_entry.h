@@ -1,26 +1,18 @@
 #pragma once
 
-// What a plugin's register.cc includes to describe itself. It declares the registration hook with
-// the exact signature and default visibility the loader expects (so a typo in the signature is a
-// compile error, not a refused library), and builds the descriptor and its entries at compile time:
+// What a plugin's register.cc includes to describe itself. One macro line builds the descriptor and
+// its entries at compile time and defines the registration hook with the exact signature and
+// default visibility the loader expects (so a typo is a compile error, not a refused library):
 //
 //   #include "framework/plugin/plugin_entry.h"
-//   #include "surfaces/cylindrical/cylindrical_surface.h"
+//   #include "surfaces/conical/conical_surface.h"
 //
-//   namespace {
-//   constexpr FitfeelPluginEntry kEntries[] = {
-//       fitfeel::plugin::SurfaceEntry<fitfeel::cylindrical::CylindricalSurface>(
-//           "fitfeel.surface.cylindrical", "1.0.0", "Shaft in bushing, pin in hole (the paper)"),
-//   };
-//   constexpr FitfeelPluginDescriptor kDescriptor = fitfeel::plugin::MakeDescriptor(kEntries);
-//   }  // namespace
+//   FITFEEL_REGISTER_SURFACE(fitfeel::conical::ConicalSurface, "fitfeel.surface.conical", "1.0.0",
+//                            "Taper pin in a taper-reamed hole (ISO 2339 1:50)");
 //
-//   extern "C" __attribute__((visibility("default"))) const FitfeelPluginDescriptor*
-//   fitfeel_plugin_register() {
-//     return &kDescriptor;
-//   }
-//
-// Everything else in a plugin stays hidden (the project builds with -fvisibility=hidden).
+// FITFEEL_REGISTER_DEVICE is the same for a device. A library offering several objects lists their
+// entries: FITFEEL_REGISTER_PLUGIN(SurfaceEntry<A>(...), DeviceEntry<B>(...)). Everything else in a
+// plugin stays hidden (the project builds with -fvisibility=hidden).
 
 #include <cstddef>
 #include <cstdint>
@@ -87,6 +79,29 @@ constexpr FitfeelPluginDescriptor MakeDescriptor(const FitfeelPluginEntry (&entr
 
 }  // namespace fitfeel::plugin
 
-// Shorthands for a factory pointer with the right base-class cast, for hand-written entries.
+// Defines the descriptor of this plugin from its entries (FitfeelPluginEntry values, usually
+// fitfeel::plugin::SurfaceEntry<T>(...) or DeviceEntry<T>(...)) and the hook that returns it. Use it
+// once, at namespace scope, in the plugin's register.cc.
+#define FITFEEL_REGISTER_PLUGIN(...)                                                    \
+  namespace {                                                                           \
+  constexpr FitfeelPluginEntry kFitfeelPluginEntries[] = {__VA_ARGS__};                 \
+  constexpr FitfeelPluginDescriptor kFitfeelPluginDescriptor =                          \
+      ::fitfeel::plugin::MakeDescriptor(kFitfeelPluginEntries);                         \
+  }                                                                                     \
+  extern "C" const FitfeelPluginDescriptor* fitfeel_plugin_register() {                 \
+    return &kFitfeelPluginDescriptor;                                                   \
+  }                                                                                     \
+  static_assert(true, "a registration ends with a semicolon")
+
+// A plugin that makes one surface type T (derived from fitfeel::SurfaceType).
+#define FITFEEL_REGISTER_SURFACE(T, id, version, summary) \
+  FITFEEL_REGISTER_PLUGIN(::fitfeel::plugin::SurfaceEntry<T>(id, version, summary))
+
+// A plugin that makes one device T (derived from fitfeel::Device).
+#define FITFEEL_REGISTER_DEVICE(T, id, version, summary) \
+  FITFEEL_REGISTER_PLUGIN(::fitfeel::plugin::DeviceEntry<T>(id, version, summary))
+
+// Shorthands for a factory pointer with the right base-class cast, for the hand-written entries of
+// the deliberately broken test plugins (tests/plugins).
 #define FITFEEL_SURFACE_FACTORY(Type) (&::fitfeel::plugin::MakeSurfaceObject<Type>)
 #define FITFEEL_DEVICE_FACTORY(Type) (&::fitfeel::plugin::MakeDeviceObject<Type>)

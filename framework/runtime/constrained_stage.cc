@@ -3,18 +3,32 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "framework/core/error.h"
 #include "framework/runtime/positioning_stage.h"
 
 namespace fitfeel {
+namespace {
+
+struct ConstrainedState final : StageState {
+  // Where the last settled tick left the part: the next settle's starting point.
+  Eigen::Vector2d last_settled{0.0, 0.0};
+};
+
+}  // namespace
 
 ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law)
     : analyzer_(analyzer), law_(law) {
   if (!analyzer.prepared()) throw UserError("constrained stage needs a prepared contact analyzer");
 }
 
-void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept {
+std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
+  return std::make_unique<ConstrainedState>();
+}
+
+void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
+                                  StageOutput* out) const noexcept {
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
   analyzer_.Evaluate(out->pose, &out->contact);
@@ -24,7 +38,8 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   out->wrench.SetZero();
   law_.Evaluate(out->contact, motion, &out->wrench);
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
-  if (device.settle_load.squaredNorm() > 0.0 && Settle(device.settle_load, motion, out)) {
+  if (device.settle_load.squaredNorm() > 0.0 && Settle(device.settle_load, motion,
+                                                  &static_cast<ConstrainedState*>(state)->last_settled, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
@@ -114,7 +129,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
 }
 
 bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-                              StageOutput* out) const noexcept {
+                              Eigen::Vector2d* last_settled, StageOutput* out) const noexcept {
   const double weight = load.norm();
   if (!std::isfinite(weight)) return false;
   const Eigen::Vector2d down = load / weight;
@@ -133,7 +148,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // is below tan(pi/n) of the load anyway, so clearance fits need no sideways solve at all.
   const double along_tolerance = 1e-6 * weight;
   const double across_tolerance = 1e-2 * weight;
-  Eigen::Vector2d at = last_settled_;
+  Eigen::Vector2d at = *last_settled;
   double s = 0.0;
   if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
@@ -164,7 +179,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;
-  last_settled_ = at;
+  *last_settled = at;
   return true;
 }
 

@@ -11,7 +11,8 @@ namespace fitfeel {
 // part's mating frame (see positioning_stage.h for the frame convention), the contact analyzer
 // answers from its prepared tables and the law turns the contact state into the wrench on the
 // moving part. Withdrawing the part past the entrance (depth < 0) hands back to positioning.
-// Evaluate allocates nothing: both collaborators are prepared and only read.
+// Evaluate allocates nothing: both collaborators are prepared and only read; where the last
+// settled tick left the part (the next settle's starting point) lives in the run's state.
 class FITFEEL_API ConstrainedStage final : public Stage {
  public:
   // Both must be prepared and outlive the stage. Throws UserError if the analyzer is not prepared.
@@ -20,7 +21,9 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   StageId id() const override { return StageId::kConstrained; }
 
  protected:
-  void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept override;
+  std::unique_ptr<StageState> DoMakeState() const override;
+  void DoEvaluate(const DeviceState& device, StageState* state,
+                  StageOutput* out) const noexcept override;
 
  private:
   // -dF/dx of the radial force along its own direction, by a second evaluation 1 nm deeper
@@ -29,10 +32,11 @@ class FITFEEL_API ConstrainedStage final : public Stage {
                          const Wrench& wrench) const noexcept;
 
   // Quasi-static placement (DeviceState::settle_load): finds the offset along the load where the
-  // rendered radial force balances it, and leaves pose, contact and wrench there. Returns false
-  // (outputs untouched) where nothing can carry the load, e.g. before the surfaces overlap.
+  // rendered radial force balances it, starting from and updating `*last_settled` (the previous
+  // settled offset), and leaves pose, contact and wrench there. Returns false (outputs and
+  // `*last_settled` untouched) where nothing can carry the load, e.g. before the surfaces overlap.
   bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-              StageOutput* out) const noexcept;
+              Eigen::Vector2d* last_settled, StageOutput* out) const noexcept;
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
   // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
@@ -41,9 +45,6 @@ class FITFEEL_API ConstrainedStage final : public Stage {
 
   const ContactAnalyzer& analyzer_;
   const ResistanceLaw& law_;
-  // Where the last settled tick left the part: the next tick's starting point. Evaluate is called
-  // from one thread at a time (the tick), so this cache needs no lock; it is deterministic.
-  mutable Eigen::Vector2d last_settled_{0.0, 0.0};
 };
 
 }  // namespace fitfeel

@@ -19,6 +19,10 @@ TriangleMesh HalfTurnAboutZ(TriangleMesh mesh) {
   return mesh;
 }
 
+struct PositioningState final : StageState {
+  std::unique_ptr<CollisionScratch> scratch;  // null without coarse meshes
+};
+
 }  // namespace
 
 MatingPose MatingPoseOf(const DeviceState& device) noexcept {
@@ -78,7 +82,14 @@ PositioningStage::PositioningStage(const Options& options, const CoarseMeshes& m
 
 PositioningStage::~PositioningStage() = default;
 
-void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept {
+std::unique_ptr<StageState> PositioningStage::DoMakeState() const {
+  auto state = std::make_unique<PositioningState>();
+  if (collider_ != nullptr) state->scratch = collider_->MakeScratch();
+  return state;
+}
+
+void PositioningStage::DoEvaluate(const DeviceState& device, StageState* state,
+                                  StageOutput* out) const noexcept {
   out->wrench.SetZero();
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
@@ -99,7 +110,7 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageOutput* out) c
   pose.linear() = orientation.toRotationMatrix();
   pose.translation() = device.position;
   Penetration penetration;
-  collider_->Query(pose, &penetration);
+  collider_->Query(pose, static_cast<PositioningState*>(state)->scratch.get(), &penetration);
   if (!penetration.contact || !(penetration.depth > 0.0)) return;
   const double k = options_.free_stiffness;
   out->wrench.force = k * penetration.depth * penetration.normal;

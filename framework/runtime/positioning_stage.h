@@ -10,6 +10,7 @@
 namespace fitfeel {
 
 class MeshCollider;
+class CollisionScratch;
 
 // Frame convention of a run (shared by every stage and device): the scene frame is the fixed
 // part's mating frame. y is the mating axis, pointing in the direction of insertion; the fixed
@@ -18,7 +19,7 @@ class MeshCollider;
 // moving part's axis. The insertion depth is then the y of the leading end.
 
 // Free motion before mating (paper section 3: "positioning stage"). Collides the parts' coarse
-// meshes with FCL (architecture.md section 4: FCL here and only here, since mesh-mesh queries
+// meshes with FCL (docs/architecture.md, section 4: FCL here and only here, since mesh-mesh queries
 // between mated surfaces cost 1-35 ms) and renders a penalty force k_free * depth along the
 // contact normal, zero when free. Hands over to the constrained stage once the leading end has
 // reached the entrance (depth >= 0) with the part's axis aligned with the mating axis and inside
@@ -77,8 +78,10 @@ class FITFEEL_API PositioningStage final : public Stage {
   bool collides() const { return collider_ != nullptr; }
 
  protected:
-  // Not re-entrant when collides(): the collider's FCL result buffer is reused each tick.
-  void DoEvaluate(const DeviceState& device, StageOutput* out) const noexcept override;
+  // The run's state holds the collider's scratch (FCL's request and reserved result buffer).
+  std::unique_ptr<StageState> DoMakeState() const override;
+  void DoEvaluate(const DeviceState& device, StageState* state,
+                  StageOutput* out) const noexcept override;
 
  private:
   Options options_;

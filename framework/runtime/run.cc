@@ -39,6 +39,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
 
   RunResult result;
   PreparedScene prepared = Prepare(scene);
+  if (options.prepared) options.prepared(prepared);
   // Free motion collides the surface type's coarse meshes (none: collision-free), with the
   // penalty stiffness the scenario's contact stiffness capped at the device's stable limit.
   PositioningStage::Options free_motion;

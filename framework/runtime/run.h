@@ -11,6 +11,7 @@
 
 #include "framework/core/export.h"
 #include "framework/runtime/outputs.h"
+#include "framework/runtime/prepare.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
 
@@ -23,6 +24,8 @@ struct RunOptions {
   // Called with the scheduler just before its loop starts and with null once it has ended, on
   // the calling thread; the scheduler's ticks_done() may be polled from another thread between.
   std::function<void(const Scheduler*)> watch;
+  // Called once the scene is prepared, before the device starts (a study reads the drawn parts).
+  std::function<void(const PreparedScene&)> prepared;
   // Watches every tick and the finished trace (a live viewer); borrowed, may be null.
   TickObserver* observer = nullptr;
 };

@@ -122,7 +122,8 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
                     "shorten run.duration");
   }
   planned_ticks_ = static_cast<std::uint64_t>(ticks);
-  chain_.Configure(settings.safety, device.spec(), period_);
+  run_.chain.Configure(settings.safety, device.spec(), period_);
+  MakeStageStates();
   // Sized (and its pages touched) here, so that the loop never allocates or faults them in.
   trace_.resize(planned_ticks_);
   wake_ns_.assign(planned_ticks_, 0.0);
@@ -134,77 +135,85 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
 void Scheduler::Rewind() noexcept {
   trace_.resize(planned_ticks_);  // within capacity: no allocation
   if (settings_.record) recording_.resize(planned_ticks_);
-  chain_reset_ = true;
+  run_.chain_reset = true;
+  run_.guard_faults = 0;
   ticks_done_.store(0, std::memory_order_relaxed);
-  current_ = StageId::kPositioning;
+  run_.current = StageId::kPositioning;
+}
+
+void Scheduler::MakeStageStates() {
+  for (std::size_t i = 0; i < stages_.size(); ++i) run_.stages[i] = stages_[i]->MakeState();
 }
 
 bool Scheduler::Tick(double time) noexcept {
   const std::uint64_t k = ticks_done_.load(std::memory_order_relaxed);
   if (k >= trace_.size() || !device_.active()) return false;
   const std::int64_t start = NowNs();
-  device_.Read(time, &state_);
-  if (chain_reset_) {
-    chain_.Reset(state_);  // proxy at the handle, energy and counters at zero
-    chain_reset_ = false;
+  RunState& run = run_;
+  device_.Read(time, &run.device);
+  if (run.chain_reset) {
+    run.chain.Reset(run.device);  // proxy at the handle, energy and counters at zero
+    run.chain_reset = false;
   }
-  chain_.SimulatedState(state_, &law_state_);
-  const StageId stage = current_;
-  stages_[static_cast<int>(stage)]->Evaluate(law_state_, &output_);
+  run.chain.SimulatedState(run.device, &run.law_state);
+  const StageId stage = run.current;
+  const auto index = static_cast<std::size_t>(stage);
+  stages_[index]->Evaluate(run.law_state, run.stages[index].get(), &run.output);
+  const StageOutput& output = run.output;
 
   // The chain zeroes (and counts) a non-finite wrench itself; the guard keeps the trace's physical
   // wrench finite too and flags the tick.
-  chain_.SetEnvironmentStiffness(output_.stiffness);
-  const Wrench device_wrench = chain_.Apply(output_.wrench, state_, period_);
-  const bool fault = !output_.wrench.AllFinite();
+  run.chain.SetEnvironmentStiffness(output.stiffness);
+  const Wrench device_wrench = run.chain.Apply(output.wrench, run.device, period_);
+  const bool fault = !output.wrench.AllFinite();
   if (fault) {
-    output_.wrench.SetZero();
-    ++guard_faults_;
+    run.output.wrench.SetZero();
+    ++run.guard_faults;
   }
-  device_.SetEnvironmentStiffness(DeviceStiffness(chain_, output_.stiffness));
-  if (chain_.settings().coupling == CouplingMode::kSpringDamper) {
+  device_.SetEnvironmentStiffness(DeviceStiffness(run.chain, output.stiffness));
+  if (run.chain.settings().coupling == CouplingMode::kSpringDamper) {
     // The handle meets the coupling spring, not the surface: its free way is unknown.
-    device_.SetEnvironmentGap(std::numeric_limits<double>::infinity(), output_.gap_direction);
+    device_.SetEnvironmentGap(std::numeric_limits<double>::infinity(), output.gap_direction);
   } else {
-    device_.SetEnvironmentGap(output_.gap, output_.gap_direction);
+    device_.SetEnvironmentGap(output.gap, output.gap_direction);
   }
   device_.Write(device_wrench);
   const std::int64_t end = NowNs();
 
   TickRecord& record = trace_[k];
   record.time = time;
-  record.position = law_state_.position;  // the simulated part: the proxy when coupled
-  record.pose = output_.pose;
-  record.contact = output_.contact;
-  record.wrench = output_.wrench;
+  record.position = run.law_state.position;  // the simulated part: the proxy when coupled
+  record.pose = output.pose;
+  record.contact = output.contact;
+  record.wrench = output.wrench;
   record.device_wrench = device_wrench;
-  record.stiffness = output_.stiffness;
+  record.stiffness = output.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;
   record.guard_fault = fault;
   if (!recording_.empty()) {
     RecordedSample& sample = recording_[k];
     sample.time = time;
-    sample.position = state_.position;
-    sample.orientation = state_.orientation;
-    sample.velocity = state_.velocity;
-    sample.angular_velocity = state_.angular_velocity;
-    sample.buttons = state_.buttons;
+    sample.position = run.device.position;
+    sample.orientation = run.device.orientation;
+    sample.velocity = run.device.velocity;
+    sample.angular_velocity = run.device.angular_velocity;
+    sample.buttons = run.device.buttons;
     sample.commanded = device_wrench;
-    sample.delivered = state_.delivered;
-    sample.settle_load = state_.settle_load;
+    sample.delivered = run.device.delivered;
+    sample.settle_load = run.device.settle_load;
   }
   wake_ns_[k] = static_cast<double>(start);
   end_ns_[k] = static_cast<double>(end);
   if (observer_ != nullptr) observer_->OnTick(record);
-  current_ = output_.next;
+  run.current = output.next;
   ticks_done_.store(k + 1, std::memory_order_relaxed);
   return true;
 }
 
 void Scheduler::Run() {
   Rewind();
-  guard_faults_ = 0;
+  MakeStageStates();
   stats_ = RunStats{};
   stats_.planned_ticks = planned_ticks_;
   const std::int64_t start = NowNs();
@@ -269,9 +278,9 @@ void Scheduler::ComputeStats() {
   const std::uint64_t n = ticks_done_.load(std::memory_order_relaxed);
   trace_.resize(n);  // shrinking never allocates
   if (!recording_.empty()) recording_.resize(n);
-  stats_.safety = chain_.report();
+  stats_.safety = run_.chain.report();
   stats_.ticks = n;
-  stats_.guard_faults = guard_faults_;
+  stats_.guard_faults = run_.guard_faults;
   std::vector<double> compute(n);
   for (std::uint64_t k = 0; k < n; ++k) compute[k] = trace_[k].compute_us;
   stats_.compute_us = ComputePercentiles(std::move(compute));

@@ -3,6 +3,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "framework/core/export.h"
@@ -43,6 +44,19 @@ struct SchedulerSettings {
 FITFEEL_API SafetySettings RuntimeSafetySettings(const std::optional<ConfigNode>& safety,
                                                  const DeviceSpec& spec);
 
+// What the ticks of one run change, apart from the buffers they fill (see docs/run-state.md). The
+// stages it serves stay immutable; the scheduler owns one of these per run.
+struct RunState {
+  std::array<std::unique_ptr<StageState>, 2> stages;  // indexed by StageId
+  StageId current = StageId::kPositioning;
+  DeviceState device;     // as the device reported it
+  DeviceState law_state;  // where the stage is evaluated (the proxy when coupled)
+  StageOutput output;
+  SafetyChain chain;
+  bool chain_reset = true;  // reset the chain at the next tick's device state
+  std::uint64_t guard_faults = 0;
+};
+
 // One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench
 // guard (and the safety chain's call site), device Write, record into a buffer sized before the
 // loop. Two clocks:
@@ -52,6 +66,9 @@ FITFEEL_API SafetySettings RuntimeSafetySettings(const std::optional<ConfigNode>
 //    TIMER_ABSTIME on CLOCK_MONOTONIC), with 1 ns timer slack and SCHED_FIFO when permitted.
 // A device that owns the clock (ClockOwner::kDevice) calls the same tick from its servo thread
 // through Device::RunServoLoop.
+//
+// A scheduler is one run: it borrows immutable stages (which other schedulers may use at the same
+// time from other threads) and a device of its own, and owns the run's state and buffers.
 class FITFEEL_API Scheduler {
  public:
   // Devices and stages are borrowed and must outlive the scheduler; the device must be started.
@@ -61,7 +78,8 @@ class FITFEEL_API Scheduler {
   Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
             const SchedulerSettings& settings);
 
-  // Runs every tick (or until the device becomes inactive). Allocates before the loop only.
+  // Runs every tick (or until the device becomes inactive) from fresh stage states. Allocates
+  // before the loop only.
   void Run();
 
   // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
@@ -70,13 +88,14 @@ class FITFEEL_API Scheduler {
   // An observer called at the end of every tick with its record (null: none). Borrowed; set it
   // before Run, not while the loop runs.
   void set_observer(TickObserver* observer) { observer_ = observer; }
-  // Empties the buffer so that it can be filled again (benchmarks); keeps its capacity.
+  // Empties the buffer so that it can be filled again (benchmarks); keeps its capacity and the
+  // stages' states (Run starts from fresh ones).
   void Rewind() noexcept;
 
   const std::vector<TickRecord>& trace() const { return trace_; }
   // The device stream, one sample per tick done; empty unless settings.record.
   const std::vector<RecordedSample>& recording() const { return recording_; }
-  const SafetyChain& safety() const { return chain_; }
+  const SafetyChain& safety() const { return run_.chain; }
   const RunStats& stats() const { return stats_; }
   std::uint64_t planned_ticks() const { return planned_ticks_; }
   // Ticks done so far; safe to read from another thread (progress display).
@@ -87,6 +106,7 @@ class FITFEEL_API Scheduler {
   void RunRealTime();
   void RunDeviceClock();
   void ComputeStats();
+  void MakeStageStates();
 
   Device& device_;
   std::array<const Stage*, 2> stages_;
@@ -94,18 +114,12 @@ class FITFEEL_API Scheduler {
   double period_ = 0.0;
   std::uint64_t planned_ticks_ = 0;
 
-  StageId current_ = StageId::kPositioning;
-  DeviceState state_;      // as the device reported it
-  DeviceState law_state_;  // where the stage is evaluated (the proxy when coupled)
-  StageOutput output_;
-  SafetyChain chain_;
-  bool chain_reset_ = true;  // reset the chain at the next tick's device state
+  RunState run_;
   std::vector<TickRecord> trace_;
   std::vector<RecordedSample> recording_;
   std::vector<double> wake_ns_;  // real time: absolute wake-up of each tick, ns
   std::vector<double> deadline_ns_;
   std::vector<double> end_ns_;
-  std::uint64_t guard_faults_ = 0;
   std::atomic<std::uint64_t> ticks_done_{0};
   TickObserver* observer_ = nullptr;
   RunStats stats_;

@@ -1,13 +1,14 @@
 #include "framework/safety/force_limiter.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "framework/core/demand.h"
 
 namespace fitfeel {
 
 void ForceLimiter::Configure(double peak_force, double continuous_force, double window) {
-  assert(peak_force > 0.0 && continuous_force > 0.0 && window > 0.0);
+  FITFEEL_DEMAND(peak_force > 0.0 && continuous_force > 0.0 && window > 0.0);
   peak_ = peak_force;
   continuous_ = std::min(continuous_force, peak_force);
   window_ = window;

@@ -48,7 +48,7 @@ FITFEEL_API std::string FormatSafetyReport(const SafetyReport& report);
 //
 // Prepare time: Configure (may throw UserError). Per tick, in this order:
 //   1. chain.SimulatedState(device_state, &law_state)  // where to evaluate the stage
-//   2. stage.Evaluate(law_state, &out)                  // physical wrench on the simulated part
+//   2. stage.Evaluate(law_state, stage_state, &out)     // physical wrench on the simulated part
 //   3. [optional] chain.SetEnvironmentStiffness(k)      // physical N/m when the law knows it
 //   4. device.Write(chain.Apply(out.wrench, device_state, dt))
 // With the coupling, the law must be evaluated at the proxy (step 1), not at the device.

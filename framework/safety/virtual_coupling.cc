@@ -1,8 +1,9 @@
 #include "framework/safety/virtual_coupling.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "framework/core/demand.h"
 
 namespace fitfeel {
 namespace {
@@ -18,7 +19,7 @@ constexpr double kEstimateDecayTime = 0.1;  // s
 }  // namespace
 
 CouplingGains DefaultCouplingGains(const DeviceSpec& spec, double period) {
-  assert(period > 0.0 && spec.damping > 0.0 && spec.max_stiffness > 0.0);
+  FITFEEL_DEMAND(period > 0.0 && spec.damping > 0.0 && spec.max_stiffness > 0.0);
   CouplingGains gains;
   const double bound_stiffness = 2.0 * spec.damping / period;
   gains.stiffness = kStiffnessMargin * std::min(spec.max_stiffness, bound_stiffness);
@@ -32,7 +33,7 @@ bool CouplingGainsArePassive(const CouplingGains& gains, const DeviceSpec& spec,
 }
 
 void VirtualCoupling::Configure(const CouplingGains& gains, double proxy_mass) {
-  assert(gains.stiffness > 0.0 && gains.damping >= 0.0 && proxy_mass >= 0.0);
+  FITFEEL_DEMAND(gains.stiffness > 0.0 && gains.damping >= 0.0 && proxy_mass >= 0.0);
   gains_ = gains;
   mass_ = proxy_mass;
   Reset(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());

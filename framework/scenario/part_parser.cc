@@ -1,6 +1,7 @@
 #include "framework/scenario/part_parser.h"
 
 #include <cctype>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -164,6 +165,45 @@ Material ParseMaterial(const ConfigNode& node) {
   return material;
 }
 
+// `process: paper` or `process: {model: statistical, cp: 1.33, cpk: 1.33, form_cpk: 1.33,
+// lean: maximum_material}` (every key but model optional).
+ProcessSpec ParseProcess(const ConfigNode& node) {
+  ProcessSpec process;
+  const auto model_of = [](const ConfigNode& n) {
+    return n.AsOneOf({"paper", "statistical"}) == "paper" ? ProcessKind::kPaper
+                                                           : ProcessKind::kStatistical;
+  };
+  if (node.is_scalar()) {
+    process.kind = model_of(node);
+    return process;
+  }
+  node.ExpectOnlyKeys({"model", "cp", "cpk", "form_cpk", "lean"});
+  process.kind = model_of(node.Child("model"));
+  if (process.kind == ProcessKind::kPaper && node.Keys().size() > 1) {
+    node.Fail("only `model: paper` (the paper's uniform draws take no capability)",
+              "capability keys with model: paper");
+  }
+  auto index = [&](const char* key, double fallback) {
+    std::optional<ConfigNode> child = node.Find(key);
+    return child ? child->AsQuantityIn(Dimension::kDimensionless, 0.1, 10.0) : fallback;
+  };
+  process.cp = index("cp", process.cp);
+  process.cpk = index("cpk", std::min(process.cp, process.cpk));
+  process.form_cpk = index("form_cpk", process.form_cpk);
+  if (process.cpk > process.cp) {
+    const ConfigNode at = node.Find("cpk") ? *node.Find("cpk") : node;
+    char cp[32];
+    std::snprintf(cp, sizeof cp, "%g", process.cp);
+    at.Fail(std::string("cpk <= cp (") + cp + "): Cpk never exceeds Cp", at.Describe());
+  }
+  if (std::optional<ConfigNode> lean = node.Find("lean")) {
+    process.lean = lean->AsOneOf({"maximum_material", "least_material"}) == "maximum_material"
+                       ? ProcessLean::kMaximumMaterial
+                       : ProcessLean::kLeastMaterial;
+  }
+  return process;
+}
+
 }  // namespace
 
 SizeSpec ParseSize(const ConfigNode& node, Role role) {
@@ -174,7 +214,7 @@ SizeSpec ParseSize(const ConfigNode& node, Role role) {
 
 PartSpec ParsePart(const std::string& name, const ConfigNode& node, const SurfaceType& surface,
                    const std::string& surface_id) {
-  node.ExpectOnlyKeys({"role", "size", "geometry", "form", "texture", "material"});
+  node.ExpectOnlyKeys({"role", "size", "geometry", "form", "texture", "material", "process"});
   PartSpec part;
   part.name = name;
   part.role =
@@ -187,6 +227,9 @@ PartSpec ParsePart(const std::string& name, const ConfigNode& node, const Surfac
     part.texture = ParseTexture(*texture);
   }
   part.material = ParseMaterial(node.Child("material"));
+  if (std::optional<ConfigNode> process = node.Find("process")) {
+    part.process = ParseProcess(*process);
+  }
   return part;
 }
 

@@ -59,6 +59,16 @@ class Reader {
   std::size_t pos_ = 0;
 };
 
+// Pose and wrench: the same order in state frames and history rows.
+void PutPoseAndWrench(Writer& w, const ViewSample& s) {
+  w.F32(s.depth);
+  w.F32(s.offset_x);
+  w.F32(s.offset_z);
+  w.F32(s.angle);
+  for (double f : s.force) w.F32(f);
+  for (double t : s.torque) w.F32(t);
+}
+
 }  // namespace
 
 double QuantisePressure(const Eigen::VectorXd& pressure, std::vector<std::uint8_t>* out) {
@@ -116,12 +126,7 @@ std::string EncodeStateFrame(const ViewSample& s, const StateExtras& x) {
   w.Put<std::uint32_t>(static_cast<std::uint32_t>(s.tick));
   w.Put<std::uint32_t>(static_cast<std::uint32_t>(std::min<std::uint64_t>(
       x.dropped, std::numeric_limits<std::uint32_t>::max())));
-  w.F32(s.depth);
-  w.F32(s.offset_x);
-  w.F32(s.offset_z);
-  w.F32(s.angle);
-  for (double f : s.force) w.F32(f);
-  for (double t : s.torque) w.F32(t);
+  PutPoseAndWrench(w, s);
   w.F32(s.offset_distance);
   w.F32(s.offset_angle);
   w.F32(s.assembly_extent);
@@ -157,12 +162,7 @@ std::string EncodeHistoryFrame(const std::vector<ViewSample>& samples) {
   w.Put<std::uint32_t>(static_cast<std::uint32_t>(samples.size()));
   for (const auto& s : samples) {
     w.F32(s.time);
-    w.F32(s.depth);
-    w.F32(s.offset_x);
-    w.F32(s.offset_z);
-    w.F32(s.angle);
-    for (double f : s.force) w.F32(f);
-    for (double t : s.torque) w.F32(t);
+    PutPoseAndWrench(w, s);
     w.F32(s.stage);
   }
   return w.Take();

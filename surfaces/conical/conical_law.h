@@ -6,7 +6,7 @@
 namespace fitfeel::conical {
 
 // Contact pressure per unit radial interference of a solid pin of diameter d in a thick-walled hub
-// of outer diameter d2 (Lame, the paper's eq. 10, reference/oracles.md), Pa/m:
+// of outer diameter d2 (Lame, the paper's eq. 10, docs/oracles.md), Pa/m:
 //   p / delta = (2 / d) / ( (1 - nu1)/E1 + ((d2^2 + d^2)/(d2^2 - d^2) + nu2)/E2 ).
 double LamePressurePerInterference(double d, double d2, const Material& pin, const Material& hub);
 
@@ -26,7 +26,7 @@ inline constexpr double kFrictionSmoothingVelocity = 1e-3;
 //   radial:   F_(x,z) = -P cos(alpha) * sum(delta * ds * u_j)
 // With a uniform interference over the hole's length L: N = p pi dm L / cos(alpha), so
 //   F_in  = N (sin a + mu cos a) = p pi dm L (mu + tan a)
-//   F_out = N (mu cos a - sin a) = p pi dm L (mu - tan a)      (DIN 7190, oracles.md)
+//   F_out = N (mu cos a - sin a) = p pi dm L (mu - tan a)      (DIN 7190, docs/oracles.md)
 // The returned wrench acts on the pin (the inner part), in the hole's mating frame.
 class TaperPressFitLaw final : public ResistanceLaw {
  public:

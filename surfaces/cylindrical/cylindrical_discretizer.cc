@@ -6,7 +6,7 @@
 #include <string>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/form_wavelengths.h"
+#include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
 
 namespace fitfeel::cylindrical {
 

@@ -4,11 +4,12 @@
 #include <string>
 
 #include "framework/metrology/sms_conformance.h"
-#include "surfaces/cylindrical/contact_factory.h"
 #include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 
 namespace fitfeel::cylindrical {
 std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const {
@@ -16,7 +17,8 @@ std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const
           FormCharacteristic::kRoundness, FormCharacteristic::kCylindricity};
 }
 
-std::vector<std::string> CylindricalSurface::law_names() const { return LawNames(); }
+// Default first: "gps" (the paper's eqs. 9-12) and "ve1" (its ideal-geometry baseline).
+std::vector<std::string> CylindricalSurface::law_names() const { return {"gps", "ve1"}; }
 
 std::unique_ptr<Discretizer> CylindricalSurface::MakeDiscretizer() const {
   return std::make_unique<CylindricalDiscretizer>();
@@ -27,7 +29,7 @@ std::unique_ptr<VariationGenerator> CylindricalSurface::MakeVariationGenerator()
 }
 
 std::unique_ptr<ContactAnalyzer> CylindricalSurface::MakeContactAnalyzer() const {
-  return cylindrical::MakeContactAnalyzer();
+  return std::make_unique<CylinderContactAnalyzer>();
 }
 
 CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
@@ -36,7 +38,9 @@ CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
 }
 
 std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view name) const {
-  return cylindrical::MakeLaw(name);
+  if (name == "gps") return std::make_unique<GpsLaw>();
+  if (name == "ve1") return std::make_unique<Ve1Law>();
+  return nullptr;
 }
 
 void CylindricalSurface::DoCheckOptions(const ConfigNode& options) const {

@@ -2,15 +2,6 @@
 #include "framework/plugin/plugin_entry.h"
 #include "surfaces/cylindrical/cylindrical_surface.h"
 
-namespace {
-
-constexpr FitfeelPluginEntry kEntries[] = {
-    fitfeel::plugin::SurfaceEntry<fitfeel::cylindrical::CylindricalSurface>(
-        "fitfeel.surface.cylindrical", "1.0.0",
-        "Cylindrical mating (shaft in bushing, pin in hole): the paper's GPS skin model shapes"),
-};
-constexpr FitfeelPluginDescriptor kDescriptor = fitfeel::plugin::MakeDescriptor(kEntries);
-
-}  // namespace
-
-const FitfeelPluginDescriptor* fitfeel_plugin_register() { return &kDescriptor; }
+FITFEEL_REGISTER_SURFACE(
+    fitfeel::cylindrical::CylindricalSurface, "fitfeel.surface.cylindrical", "1.0.0",
+    "Cylindrical mating (shaft in bushing, pin in hole): the paper's GPS skin model shapes");

@@ -8,7 +8,7 @@
 #include "framework/model/skin_model_shape.h"
 #include "framework/model/surface_type.h"
 #include "surfaces/planar/planar_form.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 
 namespace fitfeel::planar {
 

@@ -7,7 +7,7 @@
 
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/texture_contact.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 
 namespace fitfeel::planar {
 

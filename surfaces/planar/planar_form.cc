@@ -1,10 +1,11 @@
 #include "surfaces/planar/planar_form.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numeric>
+
+#include "framework/core/demand.h"
 
 namespace fitfeel::planar {
 namespace {
@@ -28,7 +29,7 @@ double Cross(double at, double av, double bt, double bv, double ct, double cv) {
 }  // namespace
 
 LineZone MinZoneStraightness(const std::vector<double>& t, const std::vector<double>& v) {
-  assert(t.size() == v.size());
+  FITFEEL_DEMAND(t.size() == v.size());
   LineZone zone;
   if (t.empty()) return zone;
   std::vector<std::size_t> order(t.size());
@@ -83,7 +84,7 @@ double RangeAlong(const std::vector<double>& y, const std::vector<double>& z,
 
 PlaneZone MinZoneFlatness(const std::vector<double>& y, const std::vector<double>& z,
                           const std::vector<double>& v) {
-  assert(y.size() == z.size() && y.size() == v.size());
+  FITFEEL_DEMAND(y.size() == z.size() && y.size() == v.size());
   PlaneZone zone;
   if (y.empty()) return zone;
   const auto [ymin, ymax] = std::minmax_element(y.begin(), y.end());

@@ -9,7 +9,7 @@
 #include "framework/core/error.h"
 #include "surfaces/planar/planar_characteristics.h"
 #include "surfaces/planar/planar_geometry.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 
 namespace fitfeel::planar {
 namespace {

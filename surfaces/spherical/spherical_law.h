@@ -6,7 +6,7 @@
 namespace fitfeel::spherical {
 
 // Contact pressure per unit radial interference of a solid ball of radius a in a thick spherical
-// shell of outer radius b (Lame's solution for spheres, reference/oracles.md), Pa/m:
+// shell of outer radius b (Lame's solution for spheres, docs/oracles.md), Pa/m:
 //   p / delta = 1 / ( a [ (1 - 2 nu1)/E1 + ((1 - 2 nu2) a^3 + (1 + nu2) b^3 / 2) / (E2 (b^3 - a^3))
 //   ] )
 // The inner ring of a real bearing has a cylindrical bore; it is taken as a solid ball (its bore

@@ -4,8 +4,8 @@
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
-#include "surfaces/thread/helicoid_geometry.h"
-#include "surfaces/thread/helicoid_model.h"
+#include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_shape.h"
 
 namespace fitfeel::thread {
 

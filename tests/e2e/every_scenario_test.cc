@@ -1,8 +1,11 @@
 // Every scenario shipped in scenarios/ validates and runs with the real CLI and plugins, and
-// writes the output contract's files with a constrained stage (issue 4: "All five scenarios run,
-// and fitfeel validate accepts them").
+// writes the output contract's files with a constrained stage whose statistics in summary.json
+// are those of the ticks in trace.csv (two outputs written by separate code from one run).
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,12 +51,46 @@ TEST_P(EveryScenarioTest, ValidatesAndRunsToTheOutputContract) {
   const nlohmann::json summary = nlohmann::json::parse(ReadText(out / "summary.json"));
   EXPECT_FALSE(summary["scenario"].get<std::string>().empty());
   EXPECT_GT(summary["constrained_ticks"].get<double>(), 0.0) << "never reached the mating stage";
-  for (const char* key : {"axial_resistance_N", "radial_resistance_N"}) {
+  // The constrained ticks of trace.csv, whose numbers are written to round trip exactly.
+  std::istringstream rows(trace);
+  std::string line;
+  std::getline(rows, line);
+  struct Stats {
+    double min = std::numeric_limits<double>::infinity();
+    double max = -std::numeric_limits<double>::infinity();
+    double sum = 0.0;
+    int count = 0;
+    void Add(double v) {
+      min = std::min(min, v);
+      max = std::max(max, v);
+      sum += v;
+      ++count;
+    }
+  } axial, radial;
+  int ticks = 0, interference_ticks = 0;
+  while (std::getline(rows, line)) {
+    ++ticks;
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 16u) << line;
+    if (cells[1] != "constrained") continue;
+    const double fx = std::stod(cells[3]), fy = std::stod(cells[4]), fz = std::stod(cells[5]);
+    axial.Add(std::abs(fy));
+    radial.Add(std::hypot(fx, fz));
+    if (cells[15] == "1") ++interference_ticks;
+  }
+  EXPECT_EQ(summary["ticks"].get<int>(), ticks);
+  EXPECT_EQ(summary["constrained_ticks"].get<int>(), axial.count);
+  EXPECT_EQ(summary["interference_ticks"].get<int>(), interference_ticks);
+  for (const auto& [key, stats] : {std::pair{"axial_resistance_N", axial},
+                                   std::pair{"radial_resistance_N", radial}}) {
     const auto& s = summary[key];
-    // A constant force's mean may round a few ulp past its extremes.
-    const double slack = 1e-12 * std::max(1.0, s["max"].get<double>());
-    EXPECT_LE(s["min"].get<double>(), s["mean"].get<double>() + slack) << key;
-    EXPECT_LE(s["mean"].get<double>(), s["max"].get<double>() + slack) << key;
+    EXPECT_EQ(s["min"].get<double>(), stats.min) << key;
+    EXPECT_EQ(s["max"].get<double>(), stats.max) << key;
+    EXPECT_NEAR(s["mean"].get<double>(), stats.sum / stats.count,
+                1e-12 * std::max(1.0, std::abs(stats.max)))
+        << key;
   }
   EXPECT_EQ(summary["guard_faults"], 0);
 }

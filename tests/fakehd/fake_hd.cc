@@ -1,5 +1,5 @@
 // A fake OpenHaptics HD library (libHD.so) for the tests: same entry points and constants as the
-// real one (devices/phantom/hd_api.h), a scripted device, a servo thread at 1 kHz.
+// real one (devices/phantom/phantom_hd_api.h), a scripted device, a servo thread at 1 kHz.
 
 #include "tests/fakehd/fake_hd.h"
 
@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "devices/phantom/hd_api.h"
+#include "devices/phantom/phantom_hd_api.h"
 
 #define FAKEHD_EXPORT extern "C" __attribute__((visibility("default")))
 

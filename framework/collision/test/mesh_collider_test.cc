@@ -31,10 +31,11 @@ MeshCollider MakePair() {
 
 TEST(MeshColliderTest, FarAwayIsFree) {
   const MeshCollider collider = MakePair();
+  const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
   Penetration p;
-  collider.Query(At(0.0, -5e-3, 0.0), &p);
+  collider.Query(At(0.0, -5e-3, 0.0), collider_scratch.get(), &p);
   EXPECT_FALSE(p.contact);
-  collider.Query(At(50e-3, 30e-3, 0.0), &p);  // beside the hub
+  collider.Query(At(50e-3, 30e-3, 0.0), collider_scratch.get(), &p);  // beside the hub
   EXPECT_FALSE(p.contact);
   EXPECT_EQ(p.depth, 0.0);
   EXPECT_EQ(p.normal, Eigen::Vector3d::Zero());
@@ -42,6 +43,7 @@ TEST(MeshColliderTest, FarAwayIsFree) {
 
 TEST(MeshColliderTest, AnEndOnTheFaceReportsItsDepthAndPushesBackAlongMinusY) {
   const MeshCollider collider = MakePair();
+  const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> radial(1.2 * kRadius, 1.9 * kRadius);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI);
@@ -51,7 +53,7 @@ TEST(MeshColliderTest, AnEndOnTheFaceReportsItsDepthAndPushesBackAlongMinusY) {
     // partly: the face is struck whatever the offset.
     const double r = radial(gen), a = angle(gen), y = depth(gen);
     Penetration p;
-    collider.Query(At(r * std::cos(a), y, r * std::sin(a)), &p);
+    collider.Query(At(r * std::cos(a), y, r * std::sin(a)), collider_scratch.get(), &p);
     ASSERT_TRUE(p.contact) << "r " << r << " y " << y;
     // A flat end on a flat face: exact (no chordal error enters along y).
     EXPECT_NEAR(p.depth, y, 1e-12 + 1e-9 * y);
@@ -62,9 +64,10 @@ TEST(MeshColliderTest, AnEndOnTheFaceReportsItsDepthAndPushesBackAlongMinusY) {
 
 TEST(MeshColliderTest, ACentredShaftPassesTheEntrance) {
   const MeshCollider collider = MakePair();
+  const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
   Penetration p;
   for (double y : {-1e-3, 0.0, 1e-6, 1e-3, 20e-3, 39e-3}) {
-    collider.Query(At(0.0, y, 0.0), &p);
+    collider.Query(At(0.0, y, 0.0), collider_scratch.get(), &p);
     EXPECT_FALSE(p.contact) << y;
   }
   // The meshes are similar polygons, the bore's scaled by 1 / cos(pi / n): a radial slack of the
@@ -72,7 +75,7 @@ TEST(MeshColliderTest, ACentredShaftPassesTheEntrance) {
   const double slack = ChordalError(kRadius, kFacets);
   for (int i = 0; i < 16; ++i) {
     const double a = 2.0 * M_PI * i / 16;
-    collider.Query(At(0.5 * slack * std::cos(a), 10e-3, 0.5 * slack * std::sin(a)), &p);
+    collider.Query(At(0.5 * slack * std::cos(a), 10e-3, 0.5 * slack * std::sin(a)), collider_scratch.get(), &p);
     EXPECT_FALSE(p.contact) << a;
   }
   // Far enough off the axis, the shaft's wall enters the bore's: pushed back towards the axis by
@@ -86,15 +89,16 @@ TEST(MeshColliderTest, ACentredShaftPassesTheEntrance) {
   std::uniform_real_distribution<double> offset(3.0 * slack, 0.3e-3);
   const MeshCollider exhaustive(MakeTube(kRadius, 20e-3, 0.0, 40e-3, kFacets),
                                 MakeClosedCylinder(kRadius, -60e-3, 0.0, kFacets), 256);
+  const std::unique_ptr<CollisionScratch> exhaustive_scratch = exhaustive.MakeScratch();
   for (int i = 0; i < 50; ++i) {
     const double a = angle(gen), s = offset(gen);
     const Eigen::Vector3d inward(-std::cos(a), 0.0, -std::sin(a));
-    exhaustive.Query(At(s * std::cos(a), 10e-3, s * std::sin(a)), &p);
+    exhaustive.Query(At(s * std::cos(a), 10e-3, s * std::sin(a)), exhaustive_scratch.get(), &p);
     ASSERT_TRUE(p.contact);
     EXPECT_GE(p.depth, s - slack) << s;
     EXPECT_LE(p.depth, s + 0.5 * slack) << s;
     EXPECT_GE(p.normal.dot(inward), std::cos(2.0 * M_PI / kFacets)) << a;
-    collider.Query(At(s * std::cos(a), 10e-3, s * std::sin(a)), &p);
+    collider.Query(At(s * std::cos(a), 10e-3, s * std::sin(a)), collider_scratch.get(), &p);
     ASSERT_TRUE(p.contact);
     EXPECT_GE(p.depth, s - slack) << s;
     EXPECT_LE(p.depth, s + slack) << s;
@@ -123,13 +127,14 @@ TEST(MeshColliderTest, CounterSeesAllocations) {
 // the contact buffer grown once at construction, a query must not reach operator new.
 TEST(MeshColliderTest, QueriesDoNotAllocate) {
   const MeshCollider collider = MakePair();
+  const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
   Penetration p;
   int in_contact = 0;
   test_support::ScopedAllocationCounter allocations;
   for (int k = 0; k < 2000; ++k) {
     const double x = 15e-3 * std::sin(k * 0.01);
     const double y = 2e-3 * std::cos(k * 0.013);
-    collider.Query(At(x, y, 0.0), &p);
+    collider.Query(At(x, y, 0.0), collider_scratch.get(), &p);
     in_contact += p.contact ? 1 : 0;
   }
   allocations.Stop();

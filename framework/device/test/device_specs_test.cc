@@ -7,7 +7,7 @@
 namespace fitfeel {
 namespace {
 
-// Oracle: /work/shared/reference/oracles.md, "Haptic stability and devices".
+// Oracle: docs/oracles.md, "Haptic stability and devices".
 TEST(DeviceSpecs, OracleValues) {
   const DeviceSpec desktop = LookupDeviceSpec("PHANTOM Desktop");
   EXPECT_DOUBLE_EQ(desktop.max_force, 7.9);

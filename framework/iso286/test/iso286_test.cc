@@ -1,4 +1,4 @@
-// Table values of ISO 286 checked one by one: the oracles of shared/reference/oracles.md, values
+// Table values of ISO 286 checked one by one: the oracles of docs/oracles.md, values
 // printed in ISO 286-2 (and reproduced in every fits handbook) and the worked examples of ISO
 // 286-1.
 
@@ -48,7 +48,7 @@ double ItUm(double nominal_mm, const std::string& grade) {
   return Lookup(nominal_mm * 1e-3, "h" + grade).it / kUm;
 }
 
-// oracles.md: size step 18-30 mm.
+// docs/oracles.md: size step 18-30 mm.
 TEST(Iso286Oracles, StandardTolerances18To30) {
   EXPECT_DOUBLE_EQ(ItUm(20, "5"), 9);
   EXPECT_DOUBLE_EQ(ItUm(20, "6"), 13);

@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// r = R + a cos(k theta) about `centre`: minimum-zone roundness 2a (oracles.md), whatever the
+// r = R + a cos(k theta) about `centre`: minimum-zone roundness 2a (docs/oracles.md), whatever the
 // centre, because the 2k alternating extremes satisfy the Chebyshev alternation criterion.
 Eigen::Matrix2Xd Lobed(double R, double a, int k, const Eigen::Vector2d& centre, int n) {
   Eigen::Matrix2Xd p(2, n);
@@ -24,7 +24,7 @@ Eigen::Matrix2Xd Lobed(double R, double a, int k, const Eigen::Vector2d& centre,
   return p;
 }
 
-// r = R + a cos(k theta) about `centre`: minimum-zone roundness 2a (oracles.md), whatever the
+// r = R + a cos(k theta) about `centre`: minimum-zone roundness 2a (docs/oracles.md), whatever the
 // centre. 840 points so that every extreme of every k tested is sampled (2k divides 840).
 TEST(MinimumZoneRoundness, LobedProfilesGiveTwiceTheAmplitude) {
   for (int k = 2; k <= 7; ++k) {

@@ -8,7 +8,7 @@
 namespace fitfeel {
 namespace {
 
-// reference/oracles.md, N(0,1) truncated to [-3, 3].
+// docs/oracles.md, N(0,1) truncated to [-3, 3].
 struct Row {
   double g, exceed, first, second;
 };

@@ -49,7 +49,7 @@ class LameLaw final : public ResistanceLaw {
   void DoEvaluate(const ContactState&, const MatingMotion&, Wrench* out) const noexcept override {
     out->SetZero();
   }
-  // reference/oracles.md: steel, d1 = 20 mm, d2 = 30 mm: 5.8333 MPa per um of radial interference.
+  // docs/oracles.md: steel, d1 = 20 mm, d2 = 30 mm: 5.8333 MPa per um of radial interference.
   double DoPressurePerInterference() const override { return 5.8333e12; }
 };
 

@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 
 #include "framework/collision/coarse_mesh.h"
 #include "framework/runtime/positioning_stage.h"
@@ -22,9 +23,10 @@ PositioningStage MakeStage(int facets) {
 
 void Run(benchmark::State& state, const DeviceState& device) {
   const PositioningStage stage = MakeStage(static_cast<int>(state.range(0)));
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   for (auto _ : state) {
-    stage.Evaluate(device, &out);
+    stage.Evaluate(device, stage_run.get(), &out);
     benchmark::DoNotOptimize(out.wrench.force.data());
   }
   state.counters["force_N"] = out.wrench.force.norm();

@@ -44,11 +44,12 @@ DeviceState At(double x, double y, double z, double tilt_about_z = 0.0) {
 
 TEST(PositioningCollisionTest, FarAwayIsFreeAndRendersNothing) {
   const PositioningStage stage(WithStiffness(), Meshes(), Role::kInner);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   ASSERT_TRUE(stage.collides());
   StageOutput out;
   out.wrench.force.setConstant(7.0);
   for (const DeviceState& s : {At(0.0, -10e-3, 0.0), At(40e-3, 5e-3, 0.0), At(3e-3, -1e-6, 0.0)}) {
-    stage.Evaluate(s, &out);
+    stage.Evaluate(s, stage_run.get(), &out);
     EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
     EXPECT_EQ(out.wrench.torque, Eigen::Vector3d::Zero());
     EXPECT_EQ(out.stiffness, 0.0);
@@ -60,6 +61,7 @@ TEST(PositioningCollisionTest, FarAwayIsFreeAndRendersNothing) {
 // is the leading end's y exactly (no chordal error along y); the force is k * depth along -y.
 TEST(PositioningCollisionTest, AnOffAxisEndOnTheFaceIsPushedBackAlongMinusY) {
   const PositioningStage stage(WithStiffness(), Meshes(), Role::kInner);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   const double chordal = ChordalError(kRadius, kFacets);
   for (unsigned seed = 1; seed <= 20; ++seed) {
     std::mt19937 gen(seed);
@@ -70,7 +72,7 @@ TEST(PositioningCollisionTest, AnOffAxisEndOnTheFaceIsPushedBackAlongMinusY) {
     for (int i = 0; i < 10; ++i) {
       const double r = radial(gen), a = angle(gen), y = depth(gen);
       StageOutput out;
-      stage.Evaluate(At(r * std::cos(a), y, r * std::sin(a)), &out);
+      stage.Evaluate(At(r * std::cos(a), y, r * std::sin(a)), stage_run.get(), &out);
       EXPECT_EQ(out.next, StageId::kPositioning);
       ASSERT_LT(out.wrench.force.y(), 0.0) << "seed " << seed << " r " << r << " y " << y;
       EXPECT_NEAR(out.wrench.force.y(), -kStiffness * y, kStiffness * chordal);
@@ -86,9 +88,10 @@ TEST(PositioningCollisionTest, AnOffAxisEndOnTheFaceIsPushedBackAlongMinusY) {
 
 TEST(PositioningCollisionTest, ACentredShaftPassesTheEntranceAndIsHandedOver) {
   const PositioningStage stage(WithStiffness(), Meshes(), Role::kInner);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   for (double y : {-1e-3, -1e-9, 0.0, 1e-6, 1e-3}) {
-    stage.Evaluate(At(0.0, y, 0.0), &out);
+    stage.Evaluate(At(0.0, y, 0.0), stage_run.get(), &out);
     EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero()) << y;
     EXPECT_EQ(out.next, y >= 0.0 ? StageId::kConstrained : StageId::kPositioning);
   }
@@ -98,13 +101,14 @@ TEST(PositioningCollisionTest, ACentredShaftPassesTheEntranceAndIsHandedOver) {
   PositioningStage::Options strict = WithStiffness();
   strict.alignment_tolerance = 0.0;
   const PositioningStage strict_stage(strict, Meshes(), Role::kInner);
+  const std::unique_ptr<StageState> strict_stage_run = strict_stage.MakeState();
   for (double y : {0.0, 1e-3, 10e-3, 19e-3}) {
-    strict_stage.Evaluate(At(0.0, y, 0.0, 1e-5), &out);
+    strict_stage.Evaluate(At(0.0, y, 0.0, 1e-5), strict_stage_run.get(), &out);
     EXPECT_EQ(out.next, StageId::kPositioning);
     EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero()) << y;
   }
   // The same strict stage does feel a shaft off by more than the slack: the walls collide.
-  strict_stage.Evaluate(At(0.2e-3, 10e-3, 0.0, 1e-5), &out);
+  strict_stage.Evaluate(At(0.2e-3, 10e-3, 0.0, 1e-5), strict_stage_run.get(), &out);
   EXPECT_GT(out.wrench.force.norm(), 0.0);
   EXPECT_LT(out.wrench.force.x(), 0.0);  // pushed back towards the axis
 }
@@ -113,21 +117,23 @@ TEST(PositioningCollisionTest, ACentredShaftPassesTheEntranceAndIsHandedOver) {
 // sits at the entrance and the bushing's face strikes it when the bushing is off-axis.
 TEST(PositioningCollisionTest, AMovingBushingStrikesTheShaftsEnd) {
   const PositioningStage stage(WithStiffness(), Meshes(), Role::kOuter);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
-  stage.Evaluate(At(0.0, 5e-3, 0.0), &out);  // centred: the shaft is inside the bore
+  stage.Evaluate(At(0.0, 5e-3, 0.0), stage_run.get(), &out);  // centred: the shaft is inside the bore
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
-  stage.Evaluate(At(15e-3, -1e-3, 0.0), &out);  // in front of the shaft's end
+  stage.Evaluate(At(15e-3, -1e-3, 0.0), stage_run.get(), &out);  // in front of the shaft's end
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
   const double y = 3e-4;
-  stage.Evaluate(At(15e-3, y, 0.0), &out);
+  stage.Evaluate(At(15e-3, y, 0.0), stage_run.get(), &out);
   EXPECT_NEAR(out.wrench.force.y(), -kStiffness * y, 1e-9 * kStiffness * y);
 }
 
 TEST(PositioningCollisionTest, WithoutMeshesFreeMotionIsCollisionFree) {
   const PositioningStage stage(WithStiffness(), CoarseMeshes{}, Role::kInner);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   EXPECT_FALSE(stage.collides());
   StageOutput out;
-  stage.Evaluate(At(5e-3, 1e-3, 0.0), &out);
+  stage.Evaluate(At(5e-3, 1e-3, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
 }
 
@@ -158,13 +164,14 @@ TEST(PositioningCollisionTest, CounterSeesAllocations) {
 // whether free, striking the face, or handed over.
 TEST(PositioningCollisionTest, TheTickDoesNotAllocate) {
   const PositioningStage stage(WithStiffness(), Meshes(), Role::kInner);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   int in_contact = 0;
   test_support::ScopedAllocationCounter allocations;
   for (int k = 0; k < 3000; ++k) {
     const double x = 15e-3 * std::sin(k * 0.01);
     const double y = 2e-3 * std::cos(k * 0.013);
-    stage.Evaluate(At(x, y, 0.3 * x, 0.02 * std::sin(k * 0.007)), &out);
+    stage.Evaluate(At(x, y, 0.3 * x, 0.02 * std::sin(k * 0.007)), stage_run.get(), &out);
     in_contact += out.stiffness > 0.0 ? 1 : 0;
   }
   allocations.Stop();

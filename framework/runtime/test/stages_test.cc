@@ -1,5 +1,6 @@
 
 #include <cmath>
+#include <memory>
 
 #include "framework/core/error.h"
 #include "framework/runtime/constrained_stage.h"
@@ -35,26 +36,39 @@ TEST(MatingPoseTest, DepthIsTheLeadingEndsYAndOffsetItsXZ) {
 
 TEST(PositioningStageTest, RendersNothingAndHandsOverAtTheEntranceWhenAligned) {
   const PositioningStage stage;
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   out.wrench.force.setConstant(7.0);
-  stage.Evaluate(At(0.0, -1e-6, 0.0), &out);
+  stage.Evaluate(At(0.0, -1e-6, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
   EXPECT_EQ(out.next, StageId::kPositioning);
-  stage.Evaluate(At(0.0, 0.0, 0.0), &out);
+  stage.Evaluate(At(0.0, 0.0, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
-  stage.Evaluate(At(1e-4, 2e-3, -1e-4), &out);
+  stage.Evaluate(At(1e-4, 2e-3, -1e-4), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
+}
+
+// A state belongs to the stage that made it: another stage's (or none) is a caller's bug, caught
+// in Release too.
+TEST(StageStateDeathTest, EvaluateRefusesAStateOfAnotherStage) {
+  const PositioningStage stage, other;
+  const std::unique_ptr<StageState> foreign = other.MakeState();
+  StageOutput out;
+  EXPECT_EQ(foreign->owner(), &other);
+  EXPECT_DEATH(stage.Evaluate(At(0.0, 0.0, 0.0), foreign.get(), &out), "demand failed: state");
+  EXPECT_DEATH(stage.Evaluate(At(0.0, 0.0, 0.0), nullptr, &out), "demand failed: state");
 }
 
 TEST(PositioningStageTest, KeepsATiltedOrOffPart) {
   const PositioningStage stage;
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   const double tolerance = stage.options().alignment_tolerance;
-  stage.Evaluate(At(0.0, 1e-3, 0.0, 0.99 * tolerance), &out);
+  stage.Evaluate(At(0.0, 1e-3, 0.0, 0.99 * tolerance), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
-  stage.Evaluate(At(0.0, 1e-3, 0.0, 1.01 * tolerance), &out);
+  stage.Evaluate(At(0.0, 1e-3, 0.0, 1.01 * tolerance), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
-  stage.Evaluate(At(0.0, 1e-3, -1.01 * stage.options().capture_radius), &out);
+  stage.Evaluate(At(0.0, 1e-3, -1.01 * stage.options().capture_radius), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
 }
 
@@ -71,9 +85,10 @@ TEST(ConstrainedStageTest, EvaluatesAnalyzerAndLawAndHandsBackWhenWithdrawn) {
   const PreparedScene prepared = Prepare(testing::MakeFakeScene(3));
   const auto& analyzer = static_cast<const testing::FakeAnalyzer&>(*prepared.analyzer);
   const ConstrainedStage stage(*prepared.analyzer, *prepared.law);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   DeviceState s = At(0.0, 5e-3, -(analyzer.clearance() + 2e-6));
-  stage.Evaluate(s, &out);
+  stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
   EXPECT_TRUE(out.contact.engaged);
   EXPECT_NEAR(out.contact.penetration, 2e-6, 1e-15);
@@ -84,14 +99,14 @@ TEST(ConstrainedStageTest, EvaluatesAnalyzerAndLawAndHandsBackWhenWithdrawn) {
   // The fake law's radial spring, found by the stage's own difference.
   EXPECT_NEAR(out.stiffness, 1e5, 1e-3);
   EXPECT_TRUE(std::isinf(out.gap));  // in contact: no free way
-  stage.Evaluate(At(0.0, 5e-3, -0.5 * analyzer.clearance()), &out);
+  stage.Evaluate(At(0.0, 5e-3, -0.5 * analyzer.clearance()), stage_run.get(), &out);
   EXPECT_EQ(out.stiffness, 0.0);
   // Free: half the clearance left, downwards along the offset.
   EXPECT_NEAR(out.gap, 0.5 * analyzer.clearance(), 1e-18);
   EXPECT_NEAR(out.gap_direction.y(), -1.0, 1e-15);
   EXPECT_NEAR(out.gap_direction.x(), 0.0, 1e-15);
 
-  stage.Evaluate(At(0.0, -1e-6, 0.0), &out);
+  stage.Evaluate(At(0.0, -1e-6, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
 }
 
@@ -99,11 +114,12 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   const PreparedScene prepared = Prepare(testing::MakeFakeScene(3));
   const auto& analyzer = static_cast<const testing::FakeAnalyzer&>(*prepared.analyzer);
   const ConstrainedStage stage(*prepared.analyzer, *prepared.law);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   // The device holds the part on the axis; a 2 N load along -z settles it at clearance + W/k.
   DeviceState s = At(0.0, 5e-3, 0.0);
   s.settle_load = Eigen::Vector2d(0.0, -2.0);
-  stage.Evaluate(s, &out);
+  stage.Evaluate(s, stage_run.get(), &out);
   // Along the load, balanced to 1e-6 of it (2 uN, i.e. 2e-11 m on this 1e5 N/m spring).
   EXPECT_NEAR(out.pose.offset.y(), -(analyzer.clearance() + 2.0 / 1e5), 3e-11);
   EXPECT_NEAR(out.pose.offset.x(), 0.0, 1e-15);
@@ -113,7 +129,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   // A load along +x, starting from that equilibrium: the part slides round until the sideways
   // push is below 1 % of the load, and carries the load along x.
   s.settle_load = Eigen::Vector2d(3.0, 0.0);
-  stage.Evaluate(s, &out);
+  stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_NEAR(out.wrench.force.x(), -3.0, 3e-6);
   EXPECT_LE(std::abs(out.wrench.force.z()), 0.03);
   EXPECT_GT(out.pose.offset.x(), analyzer.clearance());
@@ -122,7 +138,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   // Not yet engaged: nothing carries the load, the device's own pose stands.
   s = At(0.0, 0.0, 0.0);
   s.settle_load = Eigen::Vector2d(0.0, -2.0);
-  stage.Evaluate(s, &out);
+  stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_EQ(out.pose.offset, Eigen::Vector2d(0.0, 0.0));
   EXPECT_EQ(out.wrench.force.z(), 0.0);
 }

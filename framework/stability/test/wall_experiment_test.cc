@@ -22,7 +22,7 @@ constexpr double kUnstableShare = 1.25;
 // The case study's contact stiffness (scenarios/paper-case1-h7js6.yaml: k_p = 3665 N/um).
 constexpr double kPaperKp = 3.665e9;
 
-// Lame press-fit stiffness of the case-study joint from reference/oracles.md, computed here:
+// Lame press-fit stiffness of the case-study joint from docs/oracles.md, computed here:
 // pressure per radial interference p' = (2/d1) / ((1 - nu)/E + ((d2^2 + d1^2)/(d2^2 - d1^2) +
 // nu)/E), total normal force per radial interference p' pi d1 L (twice the radial k_p).
 double LameNormalStiffness() {

@@ -147,7 +147,7 @@ function frameCamera() {
   if (box.isEmpty()) return;
   const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3());
   const r = Math.max(size.x, size.y, size.z);
-  camera.position.set(centre.x + 1.5 * r, centre.y - 0.35 * r, centre.z + 0.6 * r);
+  camera.position.set(centre.x + 1.9 * r, centre.y - 0.45 * r, centre.z + 0.75 * r);
   camera.near = r / 100;
   camera.far = r * 100;
   camera.updateProjectionMatrix();
@@ -219,7 +219,7 @@ function showState(state) {
   drawLegend(state);
   drawSpace(state);
   if (!finished && state.stage === 1) {
-    view.trace.push([MM * state.depth, Math.abs(fy), Math.hypot(fx, fz)]);
+    view.trace.push([abscissa(state), Math.abs(fy), Math.hypot(fx, fz)]);
     if (view.trace.length > 600) view.trace.shift();  // scrolls: the newest 10 s at 60 Hz
   }
   drawTrace();
@@ -279,11 +279,15 @@ function drawSpace(state) {
       : 'no section engaged');
 }
 
+// The trace runs over depth, or over the angle for a pair that mates by rotation.
+const rotationalPair = () => Boolean(view.scene && view.scene.rotational);
+const abscissa = (s) => (rotationalPair() ? s.angle * 180 / Math.PI : MM * s.depth);
+
 function drawTrace() {
   const cv = $('trace'), g = cv.getContext('2d');
   g.clearRect(0, 0, cv.width, cv.height);
   const rows = view.history
-    ? view.history.filter((h) => h.stage === 1).map((h) => [MM * h.depth, Math.abs(h.force[1]),
+    ? view.history.filter((h) => h.stage === 1).map((h) => [abscissa(h), Math.abs(h.force[1]),
       Math.hypot(h.force[0], h.force[2])])
     : view.trace;
   g.font = '11px system-ui';
@@ -304,11 +308,11 @@ function drawTrace() {
   g.fillText(`${fmt(y1, 2)} N`, 2, 14);
   g.fillText('0', 24, B);
   g.fillText(`${x0.toFixed(1)}`, L, cv.height - 4);
-  g.textAlign = 'right'; g.fillText(`${x1.toFixed(1)} mm depth`, cv.width - 6, cv.height - 4);
+  g.textAlign = 'right'; g.fillText(`${x1.toFixed(1)} ${rotationalPair() ? '° angle' : 'mm depth'}`, cv.width - 6, cv.height - 4);
   g.textAlign = 'left';
   if (view.state) {
     g.strokeStyle = '#000'; g.setLineDash([3, 3]); g.beginPath();
-    g.moveTo(X(MM * view.state.depth), 6); g.lineTo(X(MM * view.state.depth), B); g.stroke();
+    g.moveTo(X(abscissa(view.state)), 6); g.lineTo(X(abscissa(view.state)), B); g.stroke();
     g.setLineDash([]);
   }
 }

@@ -1,4 +1,4 @@
-// Form evaluation against the oracles of reference/oracles.md ("Form tolerance evaluation") on a
+// Form evaluation against the oracles of docs/oracles.md ("Form tolerance evaluation") on a
 // cone's grid, and the generator's properties over many seeds.
 #include <cmath>
 

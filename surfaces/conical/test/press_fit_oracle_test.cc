@@ -1,4 +1,4 @@
-// The DIN 7190 closed forms (reference/oracles.md, "Press fit, cone") against the analyzer and
+// The DIN 7190 closed forms (docs/oracles.md, "Press fit, cone") against the analyzer and
 // law with zero form and texture: a pin advanced a beyond first contact has the uniform radial
 // interference a * C / 2 (diametral a * C) over the hole's whole length.
 #include <cmath>
@@ -76,7 +76,7 @@ struct Oracle {
 };
 
 TEST(ConicalLame, MatchesTheCylinderOracle) {
-  // oracles.md: d1 = 20 mm, d2 = 30 mm, steel, delta = 1 um -> 5.8333 MPa.
+  // docs/oracles.md: d1 = 20 mm, d2 = 30 mm, steel, delta = 1 um -> 5.8333 MPa.
   const Material steel = test::Steel();
   EXPECT_NEAR(LamePressurePerInterference(20e-3, 30e-3, steel, steel) * 1e-6, 5.8333e6, 50.0);
 }
@@ -229,7 +229,7 @@ namespace {
 
 TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
   // Only the pin is rough: Rz = 6 um gives sigma = (A + Rz)/6 = 1 um and limits +-3 sigma, the
-  // N(0,1) truncated to [-3, 3] of reference/oracles.md. With zero form, every cell sees the same
+  // N(0,1) truncated to [-3, 3] of docs/oracles.md. With zero form, every cell sees the same
   // nominal gap g = (L - s) tan(alpha), so the interference volume is E[(X - g)+] times the area.
   PartSpec pin = test::Pin();
   pin.texture.rz = 6e-6;
@@ -249,7 +249,7 @@ TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
   ConicalContactAnalyzer analyzer;
   analyzer.Prepare(pin, pin_sms, hole, hole_sms, settings);
   const double area = M_PI * 8.2e-3 * 20e-3 / std::cos(std::atan(0.01));
-  // oracles.md table: g = -1, 0, 1, 2 sigma -> E[(X - g)+] = 1.080451, 0.395578, 0.080451,
+  // docs/oracles.md table: g = -1, 0, 1, 2 sigma -> E[(X - g)+] = 1.080451, 0.395578, 0.080451,
   // 0.006777.
   const double table[][2] = {{-1.0, 1.080451}, {0.0, 0.395578}, {1.0, 0.080451}, {2.0, 0.006777}};
   for (const auto& [g, expected] : table) {

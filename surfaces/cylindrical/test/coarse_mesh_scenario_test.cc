@@ -2,6 +2,7 @@
 // cylindrical plugin's coarse meshes reach the positioning stage, which lets the centred shaft in
 // and pushes an off-axis one back from the bushing's face.
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "framework/collision/coarse_mesh.h"
@@ -41,14 +42,15 @@ TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
   PositioningStage::Options options;
   options.free_stiffness = 1e3;
   const PositioningStage stage(options, meshes, scene.moving);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
   ASSERT_TRUE(stage.collides());
   StageOutput out;
-  stage.Evaluate(At(0.0, -1e-3, 0.0), &out);
+  stage.Evaluate(At(0.0, -1e-3, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
-  stage.Evaluate(At(0.0, 0.0, 0.0), &out);
+  stage.Evaluate(At(0.0, 0.0, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
-  stage.Evaluate(At(0.0, 2e-4, 4e-3), &out);  // 4 mm off: the end lands on the face
+  stage.Evaluate(At(0.0, 2e-4, 4e-3), stage_run.get(), &out);  // 4 mm off: the end lands on the face
   EXPECT_EQ(out.next, StageId::kPositioning);
   EXPECT_NEAR(out.wrench.force.y(), -1e3 * 2e-4, 1e-9);
 }

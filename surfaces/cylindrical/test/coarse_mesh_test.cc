@@ -1,6 +1,7 @@
 #include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
 
 #include <cmath>
+#include <memory>
 
 #include "framework/collision/mesh_collider.h"
 #include "framework/core/error.h"
@@ -72,15 +73,16 @@ TEST(CylindricalCoarseMeshTest, ACentredShaftClearsTheBoreAndAnOffOneStrikesTheF
   const PartSpec hole = Hub(PaperHole(), 0.030);
   const CoarseMeshes meshes = MakeCylindricalCoarseMeshes(PaperShaft(), hole);
   const MeshCollider collider(meshes.outer, meshes.inner);
+  const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   Penetration p;
   for (double y : {0.0, 1e-3, 0.019, 0.030}) {
     pose.translation() = Eigen::Vector3d(0.0, y, 0.0);
-    collider.Query(pose, &p);
+    collider.Query(pose, collider_scratch.get(), &p);
     EXPECT_FALSE(p.contact) << y;
   }
   pose.translation() = Eigen::Vector3d(0.0, 1e-4, 2e-3);
-  collider.Query(pose, &p);
+  collider.Query(pose, collider_scratch.get(), &p);
   EXPECT_TRUE(p.contact);
   EXPECT_NEAR(p.depth, 1e-4, 1e-12);
 }

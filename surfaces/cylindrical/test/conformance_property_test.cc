@@ -9,7 +9,7 @@
 
 #include "framework/metrology/sms_conformance.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/test/test_parts.h"
 
 namespace fitfeel::cylindrical {

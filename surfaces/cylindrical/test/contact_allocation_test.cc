@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <random>
 
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.

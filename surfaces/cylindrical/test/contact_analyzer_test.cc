@@ -6,8 +6,8 @@
 
 #include "framework/core/error.h"
 #include "framework/model/texture_contact.h"
-#include "surfaces/cylindrical/contact_factory.h"
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_surface.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
@@ -252,12 +252,13 @@ TEST(CylinderContact, RefusesMismatchedGrids) {
       UserError);
 }
 
-TEST(CylinderContact, FactoryOffersBothLaws) {
-  EXPECT_EQ(LawNames(), (std::vector<std::string>{"gps", "ve1"}));
-  EXPECT_NE(MakeLaw("gps"), nullptr);
-  EXPECT_NE(MakeLaw("ve1"), nullptr);
-  EXPECT_EQ(MakeLaw("vE2"), nullptr);
-  EXPECT_NE(MakeContactAnalyzer(), nullptr);
+TEST(CylinderContact, SurfaceOffersBothLaws) {
+  const CylindricalSurface surface;
+  EXPECT_EQ(surface.law_names(), (std::vector<std::string>{"gps", "ve1"}));
+  EXPECT_NE(surface.MakeLaw("gps"), nullptr);
+  EXPECT_NE(surface.MakeLaw("ve1"), nullptr);
+  EXPECT_NE(surface.MakeContactAnalyzer(), nullptr);
+  EXPECT_THROW(surface.MakeLaw("vE2"), UserError);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "surfaces/cylindrical/assembly_polygon.h"
+#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
 #include <gtest/gtest.h>

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
@@ -129,7 +129,7 @@ TEST(FailureCases, EmptyAssemblySpaceEverywhere) {
   EXPECT_GE(s.interfering, s.engaged - 12);
   // Fully engaged (depth 20..40 mm), eq. 12: |F_y| = mu (|F_radial| + p' V) with the interference
   // volume V between the smallest (1.2 um) and the largest (4.8 um) radial interference times the
-  // whole contact area, and p' V pi d1 L mu = 1099.6 N per um (reference/oracles.md).
+  // whole contact area, and p' V pi d1 L mu = 1099.6 N per um (docs/oracles.md).
   for (double depth = 20.5e-3; depth < 39.5e-3; depth += 1.3e-3) {
     const Wrench w = joint.At(depth, {0.0, 0.0}, kSpeed);
     const double radial = std::hypot(w.force.x(), w.force.z());

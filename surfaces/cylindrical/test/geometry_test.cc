@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/cylindrical_variation_generator.h"
+#include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/test/test_parts.h"
 
 namespace fitfeel::cylindrical {

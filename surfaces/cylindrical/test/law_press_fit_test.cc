@@ -2,8 +2,8 @@
 #include <numbers>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/cylinder_contact_analyzer.h"
-#include "surfaces/cylindrical/cylinder_laws.h"
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+#include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
@@ -30,7 +30,7 @@ Wrench Apply(const ContactAnalyzer& analyzer, const ResistanceLaw& law, double d
   return w;
 }
 
-// reference/oracles.md: E = 210 GPa, nu = 0.3, d1 = 20, d2 = 30, L = 20 mm, delta = 1 um radial,
+// docs/oracles.md: E = 210 GPa, nu = 0.3, d1 = 20, d2 = 30, L = 20 mm, delta = 1 um radial,
 // mu = 0.15 -> p = 5.8333 MPa, F = 1099.6 N. Uniform interference skin model shapes (no form, no
 // texture) through analyzer and law; the 20 mm bushing is fully engaged from 20 to 40 mm.
 TEST(GpsLaw, LamePressFitOracle) {

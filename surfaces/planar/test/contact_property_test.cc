@@ -9,7 +9,7 @@
 
 #include "surfaces/planar/planar_contact_analyzer.h"
 #include "surfaces/planar/planar_generator.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 #include "surfaces/planar/test/test_support.h"
 
 namespace fitfeel::planar {

@@ -6,7 +6,7 @@
 
 #include "framework/model/texture_contact.h"
 #include "surfaces/planar/planar_contact_analyzer.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 #include "surfaces/planar/test/test_support.h"
 
 namespace fitfeel::planar {
@@ -157,7 +157,7 @@ TEST(PlanarContactTest, RefusesMismatchedStrips) {
 TEST(PlanarContactTest, ExpectedTextureInterferenceInClearanceIsTheTruncatedGaussianClosedForm) {
   // Uniform clearance g per flank, both parts textured: at the middle of the interval each flank
   // has gap g, and the expected interference per unit area is E[(X - g)+] of the equivalent
-  // texture (reference/oracles.md closed form).
+  // texture (docs/oracles.md closed form).
   Pair p;
   p.key.texture = {3.2e-6, 0.4e-6, 1.6e-6};
   p.slot.texture = {3.2e-6, 0.4e-6, 1.6e-6};

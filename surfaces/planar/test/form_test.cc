@@ -1,4 +1,4 @@
-// Minimum-zone form evaluation against the closed forms of reference/oracles.md and brute force.
+// Minimum-zone form evaluation against the closed forms of docs/oracles.md and brute force.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,7 +13,7 @@ namespace fitfeel::planar {
 namespace {
 
 TEST(PlanarFormTest, ParabolicProfileWithTiltHasStraightnessAL2Over4) {
-  // oracles.md: profile a x^2 over length L, any added tilt -> straightness a L^2 / 4.
+  // docs/oracles.md: profile a x^2 over length L, any added tilt -> straightness a L^2 / 4.
   const double a = 3.0, length = 0.04;
   for (double tilt : {0.0, 1e-4, -5e-3}) {
     std::vector<double> t, v;
@@ -28,7 +28,7 @@ TEST(PlanarFormTest, ParabolicProfileWithTiltHasStraightnessAL2Over4) {
 }
 
 TEST(PlanarFormTest, SaddleHasFlatness2AH2) {
-  // oracles.md: saddle a (x^2 - y^2) on [-h, h]^2 -> flatness 2 a h^2.
+  // docs/oracles.md: saddle a (x^2 - y^2) on [-h, h]^2 -> flatness 2 a h^2.
   const double a = 2.0, h = 0.01;
   std::vector<double> y, z, v;
   for (int i = 0; i <= 20; ++i) {

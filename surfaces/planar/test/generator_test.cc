@@ -7,7 +7,7 @@
 
 #include "surfaces/planar/planar_characteristics.h"
 #include "surfaces/planar/planar_generator.h"
-#include "surfaces/planar/planar_grid.h"
+#include "surfaces/planar/planar_discretizer.h"
 #include "surfaces/planar/test/test_support.h"
 
 namespace fitfeel::planar {
@@ -107,7 +107,7 @@ TEST(PlanarGeneratorTest, AxisStraightnessIsTheMedianLinesAndIsDrawnWithinItsTol
   const SurfaceGrid g = PlanarDiscretizer().Discretize(key, Resolution{});
   const FaceLayout layout = LayoutOf(g);
   // A key bent into a parabola a y^2 (each flank moves with the median): median straightness
-  // a L^2 / 4 over a span L (oracles.md); sampled at 16 row centres with no sample at the vertex,
+  // a L^2 / 4 over a span L (docs/oracles.md); sampled at 16 row centres with no sample at the vertex,
   // the lowest samples sit half a pitch p off it: a ((L/2)^2 - (p/2)^2), L the centres' span.
   const double a = 0.02, span = g.row_position[g.rows - 1] - g.row_position[0];
   const double pitch = g.row_position[1] - g.row_position[0];

@@ -1,4 +1,4 @@
-// The thick spherical shell oracle (reference/oracles.md: a = 10 mm, b = 15 mm, steel,
+// The thick spherical shell oracle (docs/oracles.md: a = 10 mm, b = 15 mm, steel,
 // delta = 1 um -> p = 14.07 MPa) through the analyzer and law with zero form and texture and a
 // uniform interference, and the friction torque against its integral.
 #include <cmath>
@@ -88,7 +88,7 @@ TEST(KnuckleBearing, UniformInterferenceGivesTheShellPressureOverTheBand) {
 TEST(KnuckleBearing, ReportsTheThickShellCoefficientOfItsForcesForPressureMaps) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
-  // Closed form (oracles.md), a = 10 mm, b = 15 mm, steel: 14.07 MPa per um.
+  // Closed form (docs/oracles.md), a = 10 mm, b = 15 mm, steel: 14.07 MPa per um.
   const double a = kA, b = 15e-3, E = 210e9, nu = 0.3;
   const double expected =
       1.0 /
@@ -196,7 +196,7 @@ namespace fitfeel::spherical {
 namespace {
 
 TEST(KnuckleTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
-  // Only the socket is rough (Rz = 6 um: sigma = 1 um, limits +-3 sigma, oracles.md's truncated
+  // Only the socket is rough (Rz = 6 um: sigma = 1 um, limits +-3 sigma, docs/oracles.md's truncated
   // N(0,1)); a ball of actual size nominal - 2 g um leaves the uniform gap g.
   PartSpec socket = test::Socket();
   socket.texture.rz = 6e-6;

@@ -1,6 +1,6 @@
 #pragma once
 
-// The thick-shell oracle's parts (reference/oracles.md): a steel ball of radius a = 10 mm in a
+// The thick-shell oracle's parts (docs/oracles.md): a steel ball of radius a = 10 mm in a
 // shell of outer radius b = 15 mm; bands of 14 mm (ball) and 10 mm (socket).
 #include <memory>
 

@@ -1,0 +1,65 @@
+#include "framework/core/atomic_files.h"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <system_error>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+void WriteOne(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw UserError("cannot create '" + path.string() + "'");
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();
+  if (!out) throw UserError("cannot write '" + path.string() + "' (disk full?)");
+}
+
+}  // namespace
+
+void WriteFilesAtomically(const fs::path& dir,
+                          const std::vector<std::pair<std::string, std::string>>& files) {
+  for (const auto& [name, content] : files) {
+    if (name.empty() || fs::path(name).filename() != fs::path(name)) {
+      throw UserError("internal: '" + name + "' is not a plain file name");
+    }
+  }
+  std::error_code ec;
+  const bool created_dir = !fs::exists(dir, ec);
+  if (created_dir && !fs::create_directories(dir, ec) && ec) {
+    throw UserError("cannot create output folder '" + dir.string() + "': " + ec.message());
+  }
+  if (!fs::is_directory(dir, ec)) {
+    throw UserError("output path '" + dir.string() + "' is not a folder");
+  }
+  const std::string suffix = ".tmp-" + std::to_string(::getpid());
+  std::vector<fs::path> temporaries;
+  std::vector<fs::path> renamed;
+  try {
+    for (const auto& [name, content] : files) {
+      temporaries.push_back(dir / ("." + name + suffix));
+      WriteOne(temporaries.back(), content);
+    }
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      const fs::path final_path = dir / files[i].first;
+      fs::rename(temporaries[i], final_path, ec);
+      if (ec) {
+        throw UserError("cannot move '" + temporaries[i].string() + "' to '" +
+                        final_path.string() + "': " + ec.message());
+      }
+      renamed.push_back(final_path);
+    }
+  } catch (...) {
+    for (const auto& p : temporaries) fs::remove(p, ec);
+    for (const auto& f : renamed) fs::remove(f, ec);
+    if (created_dir) fs::remove(dir, ec);  // only removes it if empty
+    throw;
+  }
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,150 @@
+#include "framework/model/harmonic_compliance.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+// Effective constants of the 2-D problem: plane strain is plane stress with E / (1 - nu^2) and
+// nu / (1 - nu).
+struct Elastic {
+  double e;
+  double nu;
+};
+
+Elastic Effective(const Material& m, bool plane_strain) {
+  if (!(m.youngs_modulus > 0.0) || !(m.poisson >= 0.0 && m.poisson < 0.5)) {
+    throw UserError("material '" + m.name +
+                    "': elastic compliance needs E > 0 and 0 <= Poisson < 0.5");
+  }
+  if (!plane_strain) return {m.youngs_modulus, m.poisson};
+  return {m.youngs_modulus / (1.0 - m.poisson * m.poisson), m.poisson / (1.0 - m.poisson)};
+}
+
+// One Michell term, Airy function phi = (r / R)^k cos(n theta): its sigma_rr and sigma_rtheta
+// amplitudes (cos and sin parts) and the radial displacement u_r at radius r. Normalising each
+// power at its own radius R keeps every value at most of order one for any n.
+struct Term {
+  double srr, srt, ur;
+};
+
+Term MichellTerm(double k, double big_r, double r, int n, const Elastic& m) {
+  const double nn = static_cast<double>(n) * n;
+  const double s = std::pow(r / big_r, k - 2.0) / (big_r * big_r);
+  Term t;
+  t.srr = (k - nn) * s;
+  t.srt = n * (k - 1.0) * s;
+  // eps_rr = (sigma_rr - nu sigma_tt) / E integrated in r; for n >= 2 no rigid motion remains.
+  t.ur = ((k - nn) - m.nu * k * (k - 1.0)) / ((k - 1.0) * m.e) * std::pow(r / big_r, k - 1.0) /
+         big_r;
+  return t;
+}
+
+// Radial displacement at r = a of a ring a0 < a1 (solid when a0 = 0) loaded by p cos(n theta) on
+// the boundary `loaded` (a0 or a1, the other free), per unit p: the ring's part of the closure.
+double RingDisplacement(double a0, double a1, bool load_outer, int n, const Elastic& m) {
+  const double nd = n;
+  const double loaded = load_outer ? a1 : a0;
+  if (a0 == 0.0) {
+    // Solid disc: the regular terms r^n and r^{n+2}.
+    const double ks[2] = {nd, nd + 2.0};
+    Eigen::Matrix2d a;
+    for (int c = 0; c < 2; ++c) {
+      const Term t = MichellTerm(ks[c], a1, a1, n, m);
+      a(0, c) = t.srr;
+      a(1, c) = t.srt;
+    }
+    const Eigen::Vector2d coef = a.fullPivLu().solve(Eigen::Vector2d(-1.0, 0.0));
+    double u = 0.0;
+    for (int c = 0; c < 2; ++c) u += coef[c] * MichellTerm(ks[c], a1, a1, n, m).ur;
+    return u;
+  }
+  // Growing powers normalised at the outer radius, decaying ones at the inner.
+  const double ks[4] = {nd, nd + 2.0, -nd, 2.0 - nd};
+  const double rs[4] = {a1, a1, a0, a0};
+  Eigen::Matrix4d a;
+  Eigen::Vector4d rhs(0.0, 0.0, 0.0, 0.0);
+  const double radii[2] = {a0, a1};
+  for (int b = 0; b < 2; ++b) {
+    for (int c = 0; c < 4; ++c) {
+      const Term t = MichellTerm(ks[c], rs[c], radii[b], n, m);
+      a(2 * b, c) = t.srr;
+      a(2 * b + 1, c) = t.srt;
+    }
+    if (radii[b] == loaded) rhs[2 * b] = -1.0;  // sigma_rr = -p, sigma_rtheta = 0
+  }
+  const Eigen::Vector4d coef = a.fullPivLu().solve(rhs);
+  double u = 0.0;
+  for (int c = 0; c < 4; ++c) u += coef[c] * MichellTerm(ks[c], rs[c], loaded, n, m).ur;
+  return u;
+}
+
+void CheckSection(const PressFitSection& s) {
+  if (!(s.d1 > 0.0) || !(s.d2 > s.d1) || !(s.di >= 0.0 && s.di < s.d1)) {
+    throw UserError("press-fit section needs 0 <= shaft bore < interface diameter < hub outer "
+                    "diameter");
+  }
+}
+
+}  // namespace
+
+double HarmonicCompliance(const PressFitSection& s, int n) {
+  CheckSection(s);
+  if (n < 0 || n == 1) {
+    throw UserError("harmonic compliance is defined for orders 0 and >= 2 (order " +
+                    std::to_string(n) + " asked)");
+  }
+  const Elastic ms = Effective(s.shaft, s.plane_strain);
+  const Elastic mh = Effective(s.hub, s.plane_strain);
+  const double a = 0.5 * s.d1, b = 0.5 * s.d2, c = 0.5 * s.di;
+  if (n == 0) {
+    // Lame: u = a (c_shaft / E1 + c_hub / E2) per unit pressure.
+    const double c_shaft = (a * a + c * c) / (a * a - c * c) - ms.nu;
+    const double c_hub = (b * b + a * a) / (b * b - a * a) + mh.nu;
+    return a * (c_shaft / ms.e + c_hub / mh.e);
+  }
+  // The shaft moves inward (its displacement along +r is negative under pressure), the hub out.
+  return -RingDisplacement(c, a, /*load_outer=*/true, n, ms) +
+         RingDisplacement(a, b, /*load_outer=*/false, n, mh);
+}
+
+std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns) {
+  if (n_columns < 4 || n_columns % 2 != 0) {
+    throw UserError("a circulant contact needs an even number of columns >= 4");
+  }
+  std::vector<double> c(static_cast<std::size_t>(n_columns / 2) + 1);
+  for (int k = 0; k <= n_columns / 2; ++k) {
+    c[static_cast<std::size_t>(k)] = HarmonicCompliance(section, k == 1 ? 0 : k);
+  }
+  return c;
+}
+
+double Din7190RadialSmoothing(const TextureSpec& inner, const TextureSpec& outer) {
+  return 0.4 * (inner.rz + outer.rz);
+}
+
+double ContactModulus(const Material& a, const Material& b) {
+  return 1.0 / ((1.0 - a.poisson * a.poisson) / a.youngs_modulus +
+                (1.0 - b.poisson * b.poisson) / b.youngs_modulus);
+}
+
+double PlasticityIndex(double contact_modulus, double hardness, double sigma,
+                       double summit_radius) {
+  if (!(hardness > 0.0) || !(summit_radius > 0.0) || !(sigma >= 0.0)) {
+    throw UserError("plasticity index needs hardness > 0, summit radius > 0 and sigma >= 0");
+  }
+  return contact_modulus / hardness * std::sqrt(sigma / summit_radius);
+}
+
+double EquivalentSigmaFromRa(const TextureSpec& a, const TextureSpec& b) {
+  const double k = std::sqrt(std::numbers::pi / 2.0);
+  return std::hypot(k * a.ra, k * b.ra);
+}
+
+}  // namespace fitfeel

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <vector>
+
+#include "framework/core/export.h"
+#include "framework/model/gps_spec.h"
+
+namespace fitfeel {
+
+// A press-fit cross-section: a shaft (solid, or hollow with bore di) in a thick ring hub of outer
+// diameter d2, both linear elastic, frictionless at the interface of diameter d1.
+struct PressFitSection {
+  double d1 = 0.0;  // interface diameter, m
+  double d2 = 0.0;  // hub outer diameter, m
+  double di = 0.0;  // shaft bore, m (0 = solid)
+  Material shaft;
+  Material hub;
+  // Plane stress (the default) suits a hub no longer than a few wall thicknesses, free at both
+  // faces; plane strain a long one. docs/contact-mechanics.md says when each applies.
+  bool plane_strain = false;
+};
+
+// Radial closure of the interface per unit normal pressure p cos(n theta), m/Pa: the shaft's
+// inward plus the hub's outward radial displacement amplitude, from the Michell solution of each
+// ring (Airy stress function r^{+-n}, r^{2+-n} times cos n theta; Lame for n = 0). The interface
+// stiffness per harmonic is K_n = 1 / HarmonicCompliance(n). n = 1 carries a net force, which the
+// rigid-body equilibrium of the part balances, not a deformation mode of the section: refused
+// here (UserError), see CirculantCompliance for what the contact solver uses in its place.
+FITFEEL_API double HarmonicCompliance(const PressFitSection& section, int n);
+
+// The compliance of every order 0 .. n_columns/2 a circulant contact solve on n_columns needs.
+// Order 1 is taken as order 0's (the breathing mode's): it only decides how a tilt-constrained
+// rigid part shares a net radial load between sections, never the pressure distribution of one
+// section in equilibrium.
+FITFEEL_API std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns);
+
+// DIN 7190-1 smoothing: the diametral interference lost while joining as the asperity peaks are
+// flattened, 0.8 (Rz_inner + Rz_outer). Radial: half of it.
+FITFEEL_API double Din7190RadialSmoothing(const TextureSpec& inner, const TextureSpec& outer);
+
+// Plasticity index of Greenwood and Williamson (1966), psi = (E*/H) sqrt(sigma / beta), with E* the
+// contact modulus 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2), H the softer part's hardness (Pa), sigma
+// the equivalent surface's asperity height deviation and beta the asperity summit radius (m).
+// psi > 1: the asperities yield on first contact (the case for ground and turned steel), so an
+// elastic asperity model does not apply and DIN 7190 smoothing does. Reported, not used in forces.
+FITFEEL_API double ContactModulus(const Material& a, const Material& b);
+FITFEEL_API double PlasticityIndex(double contact_modulus, double hardness, double sigma,
+                                   double summit_radius);
+// Equivalent height deviation of two Gaussian textures from their Ra: sigma = sqrt(pi/2) Ra per
+// surface, root-sum-square of the two (independent heights add).
+FITFEEL_API double EquivalentSigmaFromRa(const TextureSpec& a, const TextureSpec& b);
+
+}  // namespace fitfeel

@@ -1,0 +1,300 @@
+#include "framework/model/section_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+
+CirculantContact::CirculantContact(const std::vector<double>& compliance, int n) : n_(n) {
+  if (n < 4 || n % 2 != 0 || compliance.size() != static_cast<std::size_t>(n / 2 + 1)) {
+    throw UserError("circulant contact needs an even column count >= 4 and n/2 + 1 compliances");
+  }
+  for (double c : compliance) {
+    if (!(c > 0.0) || !std::isfinite(c)) throw UserError("compliances must be positive");
+  }
+  // First column of the circulant: the inverse real DFT of the compliance spectrum.
+  std::vector<double> col(static_cast<std::size_t>(n), 0.0);
+  for (int m = 0; m < n; ++m) {
+    double s = compliance[0] + compliance[static_cast<std::size_t>(n / 2)] * ((m % 2) ? -1.0 : 1.0);
+    for (int k = 1; k < n / 2; ++k) {
+      s += 2.0 * compliance[static_cast<std::size_t>(k)] *
+           std::cos(2.0 * std::numbers::pi * k * m / n);
+    }
+    col[static_cast<std::size_t>(m)] = s / n;
+  }
+  g_.resize(n, n);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) g_(i, j) = col[static_cast<std::size_t>((i - j + n) % n)];
+  }
+  cos_.resize(static_cast<std::size_t>(n));
+  sin_.resize(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    cos_[static_cast<std::size_t>(j)] = std::cos(2.0 * std::numbers::pi * j / n);
+    sin_[static_cast<std::size_t>(j)] = std::sin(2.0 * std::numbers::pi * j / n);
+  }
+}
+
+int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active) {
+  const int n = n_;
+  std::vector<char>& f = *active;
+  if (static_cast<int>(f.size()) != n) f.assign(static_cast<std::size_t>(n), 0);
+  double scale = 0.0;
+  for (int j = 0; j < n; ++j) scale = std::max(scale, std::abs(delta[j]));
+  // Tolerances relative to the data: a closure error of 1e-12 of the largest interference (and the
+  // pressure that would cause it) is rounding, not contact.
+  const double tol_w = 1e-12 * scale + 1e-300;
+  const double tol_p = tol_w / g_(0, 0);
+  int best = n + 1, chances = 3, steps = 0;
+  Eigen::VectorXd w(n);
+  while (true) {
+    ++steps;
+    if (steps > 20 * n + 50) {
+      throw UserError("section contact: pivoting did not terminate (" + std::to_string(steps) +
+                      " steps); the compliance is not positive definite?");
+    }
+    index_.clear();
+    for (int j = 0; j < n; ++j) {
+      if (f[static_cast<std::size_t>(j)]) index_.push_back(j);
+    }
+    const int m = static_cast<int>(index_.size());
+    std::fill(p, p + n, 0.0);
+    if (m > 0) {
+      gff_.resize(m, m);
+      Eigen::VectorXd rhs(m);
+      for (int a = 0; a < m; ++a) {
+        rhs[a] = delta[index_[static_cast<std::size_t>(a)]];
+        for (int b = 0; b < m; ++b) {
+          gff_(a, b) = g_(index_[static_cast<std::size_t>(a)], index_[static_cast<std::size_t>(b)]);
+        }
+      }
+      llt_.compute(gff_);
+      const Eigen::VectorXd pf = llt_.solve(rhs);
+      for (int a = 0; a < m; ++a) p[index_[static_cast<std::size_t>(a)]] = pf[a];
+    }
+    // Closure minus interference where there is no pressure.
+    int infeasible = 0, last = -1;
+    for (int j = 0; j < n; ++j) {
+      bool bad;
+      if (f[static_cast<std::size_t>(j)]) {
+        bad = p[j] < -tol_p;
+      } else {
+        double closure = 0.0;
+        for (int a : index_) closure += g_(j, a) * p[a];
+        w[j] = closure - delta[j];
+        bad = w[j] < -tol_w;
+      }
+      if (bad) {
+        ++infeasible;
+        last = j;
+      }
+    }
+    if (infeasible == 0) break;
+    if (infeasible < best) {
+      best = infeasible;
+      chances = 3;
+    } else if (chances > 0) {
+      --chances;
+    } else {
+      // Murty: flip only the largest infeasible index; finite by a lexicographic argument.
+      f[static_cast<std::size_t>(last)] = !f[static_cast<std::size_t>(last)];
+      continue;
+    }
+    for (int j = 0; j < n; ++j) {
+      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w[j] < -tol_w;
+      if (bad) f[static_cast<std::size_t>(j)] = !f[static_cast<std::size_t>(j)];
+    }
+  }
+  for (int j = 0; j < n; ++j) p[j] = std::max(p[j], 0.0);
+  return steps;
+}
+
+Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
+  const int m = static_cast<int>(index_.size());
+  if (m == 0) return Eigen::Matrix2d::Zero();
+  Eigen::MatrixXd u(m, 2);
+  for (int a = 0; a < m; ++a) {
+    u(a, 0) = cos_[static_cast<std::size_t>(index_[static_cast<std::size_t>(a)])];
+    u(a, 1) = sin_[static_cast<std::size_t>(index_[static_cast<std::size_t>(a)])];
+  }
+  const Eigen::MatrixXd x = llt_.solve(u);
+  return u.transpose() * x;
+}
+
+RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_columns)
+    : contact_(CirculantCompliance(section, n_columns), n_columns) {
+  cos_.resize(static_cast<std::size_t>(n_columns));
+  sin_.resize(static_cast<std::size_t>(n_columns));
+  for (int j = 0; j < n_columns; ++j) {
+    cos_[static_cast<std::size_t>(j)] = std::cos(2.0 * std::numbers::pi * j / n_columns);
+    sin_[static_cast<std::size_t>(j)] = std::sin(2.0 * std::numbers::pi * j / n_columns);
+  }
+}
+
+double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
+                                     const RigidFreedom& freedom, const Eigen::Vector4d& q,
+                                     bool derivatives, Eigen::Vector4d* grad,
+                                     Eigen::Matrix4d* hess) {
+  const int n = contact_.columns();
+  const auto nn = static_cast<std::size_t>(n);
+  delta_.resize(nn);
+  pressure_.resize(sections.size() * nn);
+  if (active_.size() != sections.size()) active_.assign(sections.size(), std::vector<char>(nn, 0));
+  const Eigen::Vector2d e0 = q.head<2>(), t = q.tail<2>();
+  double phi = 0.0;
+  if (derivatives) {
+    grad->setZero();
+    hess->setZero();
+  }
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    const ContactSection& sec = sections[s];
+    const Eigen::Vector2d e = freedom.tilt ? Eigen::Vector2d(e0 + sec.y * t) : e0;
+    double* p = pressure_.data() + s * nn;
+    bool any = false;
+    for (std::size_t j = 0; j < nn; ++j) {
+      delta_[j] = e.x() * cos_[j] + e.y() * sin_[j] - sec.gap[j];
+      any = any || delta_[j] > 0.0;
+    }
+    bool none_active = true;
+    for (char a : active_[s]) none_active = none_active && !a;
+    if (!any && none_active) {
+      std::fill(p, p + n, 0.0);
+      continue;
+    }
+    contact_.Solve(delta_.data(), p, &active_[s]);
+    double energy = 0.0;
+    Eigen::Vector2d f(0.0, 0.0);
+    for (std::size_t j = 0; j < nn; ++j) {
+      energy += delta_[j] * p[j];
+      f += p[j] * Eigen::Vector2d(cos_[j], sin_[j]);
+    }
+    phi += 0.5 * sec.cell_area * energy;
+    if (derivatives) {
+      f *= sec.cell_area;
+      const Eigen::Matrix2d k = sec.cell_area * contact_.OffsetStiffness();
+      grad->head<2>() += f;
+      hess->topLeftCorner<2, 2>() += k;
+      if (freedom.tilt) {
+        grad->tail<2>() += sec.y * f;
+        hess->topRightCorner<2, 2>() += sec.y * k;
+        hess->bottomLeftCorner<2, 2>() += sec.y * k;
+        hess->bottomRightCorner<2, 2>() += sec.y * sec.y * k;
+      }
+    }
+  }
+  phi -= freedom.force.dot(e0);
+  if (freedom.tilt) phi += 0.5 * freedom.tilt_stiffness * t.squaredNorm() - freedom.moment.dot(t);
+  if (derivatives) {
+    grad->head<2>() -= freedom.force;
+    if (freedom.tilt) {
+      grad->tail<2>() += freedom.tilt_stiffness * t - freedom.moment;
+      hess->bottomRightCorner<2, 2>() += freedom.tilt_stiffness * Eigen::Matrix2d::Identity();
+    }
+  }
+  return phi;
+}
+
+double RigidSectionContact::DistanceToContact(std::span<const ContactSection> sections,
+                                              const RigidFreedom& freedom,
+                                              const Eigen::Vector4d& q,
+                                              const Eigen::Vector4d& dir) const {
+  double reach = std::numeric_limits<double>::infinity();
+  for (const ContactSection& sec : sections) {
+    const double y = freedom.tilt ? sec.y : 0.0;
+    const Eigen::Vector2d e = q.head<2>() + y * q.tail<2>();
+    const Eigen::Vector2d de = dir.head<2>() + y * dir.tail<2>();
+    for (std::size_t j = 0; j < cos_.size(); ++j) {
+      const double rate = de.x() * cos_[j] + de.y() * sin_[j];
+      if (!(rate > 0.0)) continue;
+      const double gap = sec.gap[j] - (e.x() * cos_[j] + e.y() * sin_[j]);
+      reach = std::min(reach, std::max(gap, 0.0) / rate);
+    }
+  }
+  return reach;
+}
+
+RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> sections,
+                                              const RigidFreedom& freedom,
+                                              const Eigen::Vector4d& warm) {
+  active_.assign(sections.size(), std::vector<char>(static_cast<std::size_t>(columns()), 0));
+  double length = 0.0;
+  for (const ContactSection& s : sections) length = std::max(length, std::abs(s.y));
+  length = std::max(length, 1e-6);
+  Eigen::Vector4d q = warm;
+  if (!freedom.tilt) q.tail<2>().setZero();
+  RigidContactResult r;
+  Eigen::Vector4d grad;
+  Eigen::Matrix4d hess;
+  for (int it = 0; it < 60; ++it) {
+    ++r.newton_iterations;
+    const double phi = Evaluate(sections, freedom, q, true, &grad, &hess);
+    // Force scale of the problem: what the sections carry and what is applied.
+    double load = freedom.force.norm() + freedom.moment.norm() / length;
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+      double sum = 0.0;
+      for (int j = 0; j < columns(); ++j) {
+        sum += pressure_[s * static_cast<std::size_t>(columns()) + static_cast<std::size_t>(j)];
+      }
+      load += sum * sections[s].cell_area;
+    }
+    Eigen::Vector4d scaled = grad;
+    scaled.tail<2>() /= length;
+    if (scaled.norm() <= 1e-10 * load + 1e-12) break;
+    const int dofs = freedom.tilt ? 4 : 2;
+    Eigen::MatrixXd h = hess.topLeftCorner(dofs, dofs);
+    const double tr = h.trace();
+    if (!(tr > 0.0)) {
+      // Nothing touches yet, but a load pushes: move along it to the first touching column.
+      Eigen::Vector4d dir = Eigen::Vector4d::Zero();
+      dir.head(dofs) = -grad.head(dofs);
+      dir.tail<2>() /= length * length;
+      const double reach = DistanceToContact(sections, freedom, q, dir);
+      if (!std::isfinite(reach)) {
+        throw UserError("rigid contact: the load pushes the part where nothing holds it");
+      }
+      // A picometre past touching, so that the contact has a stiffness for the Newton step.
+      Eigen::Vector4d unit = dir;
+      unit.tail<2>() *= length;
+      q += (reach + 1e-12 / unit.norm()) * dir;
+      continue;
+    }
+    const Eigen::VectorXd step = -h.completeOrthogonalDecomposition().solve(grad.head(dofs));
+    Eigen::Vector4d dir = Eigen::Vector4d::Zero();
+    dir.head(dofs) = step;
+    const double slope = grad.dot(dir);
+    if (!(slope < 0.0)) break;
+    double alpha = 1.0;
+    Eigen::Vector4d dummy_g;
+    Eigen::Matrix4d dummy_h;
+    while (alpha > 1e-12 &&
+           Evaluate(sections, freedom, q + alpha * dir, false, &dummy_g, &dummy_h) >
+               phi + 1e-4 * alpha * slope) {
+      alpha *= 0.5;
+    }
+    q += alpha * dir;
+    Eigen::Vector4d moved = alpha * dir;
+    moved.tail<2>() *= length;
+    if (moved.norm() < 1e-15) break;  // a femtometre: converged to rounding
+  }
+  Evaluate(sections, freedom, q, false, &grad, &hess);
+  r.offset = q.head<2>();
+  r.tilt = freedom.tilt ? Eigen::Vector2d(q.tail<2>()) : Eigen::Vector2d::Zero();
+  const auto nn = static_cast<std::size_t>(columns());
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    for (std::size_t j = 0; j < nn; ++j) {
+      const double p = pressure_[s * nn + j];
+      r.normal_force += p * sections[s].cell_area;
+      r.resultant += p * sections[s].cell_area * Eigen::Vector2d(cos_[j], sin_[j]);
+      r.max_pressure = std::max(r.max_pressure, p);
+    }
+  }
+  return r;
+}
+
+}  // namespace fitfeel

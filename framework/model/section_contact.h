@@ -1,0 +1,104 @@
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Cholesky>
+
+#include "framework/core/export.h"
+#include "framework/model/harmonic_compliance.h"
+
+namespace fitfeel {
+
+// Unilateral (non-negative pressure) contact of one press-fit cross-section on n equally spaced
+// columns, with the interface compliance per circumferential harmonic (harmonic_compliance.h).
+// The compliance is circulant: the closure at column i from a pressure at column j depends only on
+// i - j, g(m) = (1/n) sum_k C_k cos(2 pi k m / n). Given the rigid interference delta_j (positive
+// where the undeformed surfaces overlap), finds p >= 0 with closure G p >= delta and
+// p_j (G p - delta)_j = 0: the minimum of 1/2 p'Gp - delta'p over p >= 0, a linear
+// complementarity problem with a symmetric positive definite matrix, solved exactly (to rounding)
+// by block principal pivoting (Judice and Pires 1994) with Murty's single-pivot rule as the
+// fallback that guarantees termination. Prepare-time only: it allocates.
+class FITFEEL_API CirculantContact {
+ public:
+  // compliance[k] for k = 0 .. n/2 (m/Pa); n even >= 4.
+  CirculantContact(const std::vector<double>& compliance, int n);
+
+  int columns() const { return n_; }
+  const Eigen::MatrixXd& matrix() const { return g_; }
+  // Solves the LCP for delta (n values). `active` (n flags) is the warm start on entry and the
+  // contact set on exit. Returns the number of pivoting steps; throws if it fails to terminate.
+  int Solve(const double* delta, double* p, std::vector<char>* active);
+  // After Solve: d(sum_j p_j u_j)/d(offset), the section's 2x2 radial contact stiffness per unit
+  // cell area (Pa/m), for the rigid-body Newton step.
+  Eigen::Matrix2d OffsetStiffness() const;
+
+ private:
+  int n_;
+  Eigen::MatrixXd g_;
+  std::vector<double> cos_, sin_;
+  // Workspace of the last solve.
+  std::vector<int> index_;
+  Eigen::MatrixXd gff_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
+};
+
+// One cross-section (slice) of the engaged length for the rigid-body problem.
+struct ContactSection {
+  const double* gap = nullptr;  // rigid gap per column (S_T), m; positive = clearance
+  double cell_area = 0.0;       // area of one column's cell in this slice, m^2
+  double y = 0.0;               // axial position of the slice from the reference point, m
+};
+
+// How the moving part may move against the fixed one, and what holds it.
+struct RigidFreedom {
+  bool tilt = false;            // 4 DOF (offset and tilt) instead of 2 (offset)
+  double tilt_stiffness = 0.0;  // holder's rotational stiffness, N*m/rad (0 = free)
+  Eigen::Vector2d force{0.0, 0.0};   // external radial load on the part (x, z), N
+  Eigen::Vector2d moment{0.0, 0.0};  // its first moment about the reference point, N*m
+};
+
+struct RigidContactResult {
+  Eigen::Vector2d offset{0.0, 0.0};  // axis offset at the reference point, m
+  Eigen::Vector2d tilt{0.0, 0.0};    // axis slope (dx/dy, dz/dy), rad
+  double normal_force = 0.0;         // sum p * A, N
+  Eigen::Vector2d resultant{0.0, 0.0};  // sum p * A * u_j, N
+  double max_pressure = 0.0;         // Pa
+  int newton_iterations = 0;
+};
+
+// The rigid part's equilibrium in offset (and tilt) against the elastic contact of every section:
+// minimises the convex potential sum_s phi_s(e_s) - load . q (+ the holder's tilt energy) with
+// e_s = offset + y_s tilt and phi_s the section's stored elastic energy at its LCP solution, by
+// Newton's method with backtracking (the gradient is the unbalanced force, the Hessian the
+// sections' contact stiffness). Each section deforms on its own (plane sections, no axial
+// coupling). Prepare-time only.
+class FITFEEL_API RigidSectionContact {
+ public:
+  RigidSectionContact(const PressFitSection& section, int n_columns);
+
+  int columns() const { return contact_.columns(); }
+  const CirculantContact& contact() const { return contact_; }
+  // Pressures of every section of the last Solve, section-major (Pa).
+  const std::vector<double>& pressures() const { return pressure_; }
+
+  RigidContactResult Solve(std::span<const ContactSection> sections, const RigidFreedom& freedom,
+                           const Eigen::Vector4d& warm);
+
+ private:
+  // Potential, gradient and Hessian at q (gradient and Hessian only if `derivatives`).
+  double Evaluate(std::span<const ContactSection> sections, const RigidFreedom& freedom,
+                  const Eigen::Vector4d& q, bool derivatives, Eigen::Vector4d* grad,
+                  Eigen::Matrix4d* hess);
+
+  // Step length along dir (4-vector in q) at which the first column touches; inf if none.
+  double DistanceToContact(std::span<const ContactSection> sections, const RigidFreedom& freedom,
+                           const Eigen::Vector4d& q, const Eigen::Vector4d& dir) const;
+
+  CirculantContact contact_;
+  std::vector<double> cos_, sin_, delta_, pressure_;
+  std::vector<std::vector<char>> active_;
+};
+
+}  // namespace fitfeel

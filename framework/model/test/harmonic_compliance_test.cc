@@ -1,0 +1,88 @@
+#include "framework/model/harmonic_compliance.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+PressFitSection SteelPair() {
+  PressFitSection s;
+  s.d1 = 0.020;
+  s.d2 = 0.030;
+  s.shaft = {"steel", 210e9, 0.3};
+  s.hub = s.shaft;
+  return s;
+}
+
+TEST(HarmonicCompliance, BreathingModeIsLame) {
+  // Lame, solid shaft d1 = 20 in a hub d2 = 30, steel: 5.8333 MPa per um of radial interference.
+  EXPECT_NEAR(1.0 / HarmonicCompliance(SteelPair(), 0), 5.8333e12, 5e8);
+}
+
+TEST(HarmonicCompliance, MichellStiffnessPerHarmonic) {
+  // K_n / P0 for the same pair in plane stress: independent values 0.145, 0.78, 3.15, 8.8.
+  const PressFitSection s = SteelPair();
+  const double p0 = 1.0 / HarmonicCompliance(s, 0);
+  const struct {
+    int n;
+    double ratio, tol;
+  } rows[] = {{2, 0.145, 0.0015}, {3, 0.78, 0.008}, {5, 3.15, 0.02}, {10, 8.8, 0.06}};
+  for (const auto& r : rows) {
+    EXPECT_NEAR(1.0 / HarmonicCompliance(s, r.n) / p0, r.ratio, r.tol) << "n = " << r.n;
+  }
+}
+
+TEST(HarmonicCompliance, HighOrdersTendToTwoHalfSpaces) {
+  // Pressure cos(n theta) on an elastic half-space closes 2 p a / (E n) per body (plane stress).
+  const PressFitSection s = SteelPair();
+  const double a = 0.01;
+  for (int n : {200, 400}) {
+    const double half_spaces = 4.0 * a / (210e9 * n);
+    EXPECT_NEAR(HarmonicCompliance(s, n) / half_spaces, 1.0, 2.0 / n) << n;
+  }
+  PressFitSection strain = s;
+  strain.plane_strain = true;
+  EXPECT_NEAR(HarmonicCompliance(strain, 300) / (4.0 * a * (1 - 0.09) / (210e9 * 300)), 1.0, 0.01);
+}
+
+TEST(HarmonicCompliance, StifferWithThickerHubAndSofterWithHollowShaft) {
+  PressFitSection s = SteelPair();
+  const double base = HarmonicCompliance(s, 2);
+  s.d2 = 0.060;
+  EXPECT_LT(HarmonicCompliance(s, 2), base);
+  s = SteelPair();
+  s.di = 0.010;
+  EXPECT_GT(HarmonicCompliance(s, 2), base);
+}
+
+TEST(HarmonicCompliance, RefusesOrderOneAndBadSections) {
+  EXPECT_THROW(HarmonicCompliance(SteelPair(), 1), UserError);
+  PressFitSection s = SteelPair();
+  s.d2 = 0.019;
+  EXPECT_THROW(HarmonicCompliance(s, 2), UserError);
+}
+
+TEST(Din7190, SmoothingOfTwoRz16Surfaces) {
+  // 0.8 (1.6 + 1.6) um on the diameter: 1.28 um radial.
+  TextureSpec t{3.2e-6, 0.4e-6, 1.6e-6};
+  EXPECT_NEAR(Din7190RadialSmoothing(t, t), 1.28e-6, 1e-15);
+}
+
+TEST(PlasticityIndex, GroundSteelYields) {
+  const Material steel{"steel", 210e9, 0.3};
+  const double e_star = ContactModulus(steel, steel);
+  EXPECT_NEAR(e_star, 210e9 / (2 * 0.91), 1e6);
+  TextureSpec t{0.0, 0.4e-6, 1.6e-6};
+  const double sigma = EquivalentSigmaFromRa(t, t);
+  EXPECT_NEAR(sigma, std::sqrt(2.0) * 0.4e-6 * std::sqrt(std::numbers::pi / 2), 1e-12);
+  // Hardness 2 GPa (about 200 HV), summit radius 10 um: psi well above 1.
+  EXPECT_GT(PlasticityIndex(e_star, 2e9, sigma, 10e-6), 10.0);
+}
+
+}  // namespace
+}  // namespace fitfeel

@@ -1,0 +1,129 @@
+#include "framework/model/section_contact.h"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace fitfeel {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+PressFitSection SteelPair() {
+  PressFitSection s;
+  s.d1 = 0.020;
+  s.d2 = 0.030;
+  s.shaft = {"steel", 210e9, 0.3};
+  s.hub = s.shaft;
+  return s;
+}
+
+// One slice of length L as a section of n cells.
+ContactSection Slice(const std::vector<double>& gap, double length, double d = 0.020) {
+  ContactSection s;
+  s.gap = gap.data();
+  s.cell_area = kPi * d * length / static_cast<double>(gap.size());
+  return s;
+}
+
+TEST(CirculantContact, SolutionIsComplementary) {
+  const int n = 72;
+  CirculantContact c(CirculantCompliance(SteelPair(), n), n);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2e-6, 1e-6);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> delta(n), p(n);
+    for (double& d : delta) d = u(rng);
+    std::vector<char> active;
+    c.Solve(delta.data(), p.data(), &active);
+    const Eigen::Map<const Eigen::VectorXd> pv(p.data(), n), dv(delta.data(), n);
+    const Eigen::VectorXd w = c.matrix() * pv - dv;
+    for (int j = 0; j < n; ++j) {
+      EXPECT_GE(p[j], 0.0);
+      EXPECT_GE(w[j], -1e-17);
+      EXPECT_LE(p[j] * w[j], 1e-9 * 1e-6 * 1e6) << j;
+    }
+  }
+}
+
+TEST(RigidSectionContact, OvalFieldInFullContactCarriesOnlyItsMean) {
+  // delta0 + delta2 cos 2 theta with delta0 >= 0.145 delta2 stays in full contact, and the normal
+  // force is P0 delta0 pi d L exactly: cos 2 theta integrates to zero.
+  const PressFitSection sec = SteelPair();
+  const double p0 = 1.0 / HarmonicCompliance(sec, 0);
+  const int n = 90;
+  const double d2 = 4e-6, l = 0.02;
+  RigidSectionContact solver(sec, n);
+  for (double ratio : {0.146, 0.2, 0.5}) {
+    std::vector<double> gap(n);
+    for (int j = 0; j < n; ++j) gap[j] = -(ratio * d2 + d2 * std::cos(2 * 2 * kPi * j / n));
+    const ContactSection s = Slice(gap, l);
+    const RigidContactResult r = solver.Solve({&s, 1}, RigidFreedom{}, Eigen::Vector4d::Zero());
+    EXPECT_NEAR(r.normal_force / (p0 * ratio * d2 * kPi * 0.020 * l), 1.0, 1e-9) << ratio;
+    EXPECT_LT(r.offset.norm(), 1e-15);
+  }
+  // Below the threshold contact opens and the force exceeds the mean's share.
+  std::vector<double> gap(n);
+  for (int j = 0; j < n; ++j) gap[j] = -(0.05 * d2 + d2 * std::cos(2 * 2 * kPi * j / n));
+  const ContactSection s = Slice(gap, l);
+  const RigidContactResult r = solver.Solve({&s, 1}, RigidFreedom{}, Eigen::Vector4d::Zero());
+  EXPECT_GT(r.normal_force, 1.01 * p0 * 0.05 * d2 * kPi * 0.020 * l);
+}
+
+TEST(RigidSectionContact, OffsetFieldIsTakenUpByTheRigidOffset) {
+  // A shaft displaced sideways in a bore of equal size: the part moves back, no force remains.
+  const int n = 48;
+  RigidSectionContact solver(SteelPair(), n);
+  std::vector<double> gap(n);
+  for (int j = 0; j < n; ++j) gap[j] = 0.5e-6 - 3e-6 * std::cos(2 * kPi * j / n);
+  const ContactSection s = Slice(gap, 0.01);
+  const RigidContactResult r = solver.Solve({&s, 1}, RigidFreedom{}, Eigen::Vector4d::Zero());
+  EXPECT_LT(r.normal_force, 1e-6);
+}
+
+TEST(RigidSectionContact, TiltedBoreWithinClearanceCarriesNoForceWhenTiltIsFree) {
+  // Bore tilted by phi over L = 20 mm: phi L / 2 = 3 um against a radial clearance of 2 um, so a
+  // shaft that may not tilt interferes at both ends, and one that may tilt carries nothing.
+  const int n = 48, rows = 20;
+  const double l = 0.02, phi = 3e-4, clearance = 2e-6;
+  RigidSectionContact solver(SteelPair(), n);
+  std::vector<std::vector<double>> gaps(rows, std::vector<double>(n));
+  std::vector<ContactSection> sections;
+  for (int i = 0; i < rows; ++i) {
+    const double y = (i + 0.5) * l / rows - l / 2;
+    for (int j = 0; j < n; ++j) gaps[i][j] = clearance + phi * y * std::sin(2 * kPi * j / n);
+    ContactSection s = Slice(gaps[i], l / rows);
+    s.y = y;
+    sections.push_back(s);
+  }
+  RigidFreedom fixed;
+  EXPECT_GT(solver.Solve(sections, fixed, Eigen::Vector4d::Zero()).normal_force, 10.0);
+  RigidFreedom free;
+  free.tilt = true;
+  const RigidContactResult r = solver.Solve(sections, free, Eigen::Vector4d::Zero());
+  EXPECT_LT(r.normal_force, 1e-6);
+  // A holder that resists tilt shares the misalignment with the contact.
+  free.tilt_stiffness = 1e5;
+  const RigidContactResult held = solver.Solve(sections, free, Eigen::Vector4d::Zero());
+  EXPECT_GT(held.normal_force, 0.0);
+  EXPECT_LT(held.normal_force, solver.Solve(sections, fixed, Eigen::Vector4d::Zero()).normal_force);
+}
+
+TEST(RigidSectionContact, WeightIsCarriedInClearance) {
+  const int n = 64;
+  RigidSectionContact solver(SteelPair(), n);
+  std::vector<double> gap(n, 5e-6);
+  const ContactSection s = Slice(gap, 0.02);
+  RigidFreedom load;
+  load.force = Eigen::Vector2d(0.0, -2.0);
+  const RigidContactResult r = solver.Solve({&s, 1}, load, Eigen::Vector4d::Zero());
+  EXPECT_NEAR(r.resultant.y(), -2.0, 1e-6);
+  EXPECT_NEAR(r.normal_force, 2.0, 0.2);  // a narrow contact patch: sum p A close to its resultant
+  EXPECT_NEAR(r.offset.y(), -5e-6, 1e-7);
+}
+
+}  // namespace
+}  // namespace fitfeel

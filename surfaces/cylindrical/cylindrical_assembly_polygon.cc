@@ -1,0 +1,155 @@
+#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace fitfeel::cylindrical {
+namespace {
+
+struct Line {
+  Eigen::Vector2d u;  // outward normal; inside is p . u <= h
+  double h;
+  double angle;
+  Eigen::Vector2d dir() const { return {-u.y(), u.x()}; }  // inside lies on the left
+};
+
+double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+Eigen::Vector2d Intersect(const Line& a, const Line& b) {
+  const double det = Cross(a.u, b.u);
+  return {(a.h * b.u.y() - b.h * a.u.y()) / det, (a.u.x() * b.h - b.u.x() * a.h) / det};
+}
+
+}  // namespace
+
+bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<double>& h,
+                         double bound, std::vector<Eigen::Vector2d>* vertices) {
+  vertices->clear();
+  std::vector<Line> lines;
+  lines.reserve(angle.size() + 4);
+  for (std::size_t j = 0; j < angle.size(); ++j) {
+    lines.push_back({{std::cos(angle[j]), std::sin(angle[j])}, h[j], 0.0});
+  }
+  for (int q = 0; q < 4; ++q) {
+    const double a = q * M_PI / 2;
+    lines.push_back({{std::cos(a), std::sin(a)}, bound, 0.0});
+  }
+  for (Line& l : lines) l.angle = std::atan2(l.u.y(), l.u.x());
+  std::sort(lines.begin(), lines.end(),
+            [](const Line& a, const Line& b) { return a.angle < b.angle; });
+  // Lengths here are metres of micrometre scale: an absolute tolerance far below any clearance.
+  const double eps = 1e-15 * std::max(1.0, bound);
+  auto out = [eps](const Line& l, const Eigen::Vector2d& p) { return p.dot(l.u) > l.h + eps; };
+
+  std::vector<Line> dq(lines.size() + 1);
+  int front = 0, len = 0;  // dq[front .. front+len)
+  for (const Line& l : lines) {
+    while (len > 1 && out(l, Intersect(dq[front + len - 1], dq[front + len - 2]))) --len;
+    while (len > 1 && out(l, Intersect(dq[front], dq[front + 1]))) {
+      ++front;
+      --len;
+    }
+    if (len > 0) {
+      const Line& back = dq[front + len - 1];
+      if (std::abs(Cross(l.dir(), back.dir())) < 1e-12) {
+        if (l.dir().dot(back.dir()) < 0.0) {
+          // Anti-parallel neighbours: the strip between them is all that is left.
+          if (l.h + back.h < -eps) return false;
+        } else {
+          if (l.h < back.h) {
+            --len;
+          } else {
+            continue;
+          }
+        }
+      }
+    }
+    dq[front + len] = l;
+    ++len;
+  }
+  while (len > 2 && out(dq[front], Intersect(dq[front + len - 1], dq[front + len - 2]))) --len;
+  while (len > 2 && out(dq[front + len - 1], Intersect(dq[front], dq[front + 1]))) {
+    ++front;
+    --len;
+  }
+  if (len < 3) return false;
+  for (int k = 0; k < len; ++k) {
+    const Line& a = dq[front + k];
+    const Line& b = dq[front + (k + 1) % len];
+    if (Cross(a.u, b.u) <= 0.0) return false;  // consecutive normals must turn left by < pi
+    vertices->push_back(Intersect(a, b));
+  }
+  return true;
+}
+
+Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count,
+                                   const Eigen::Vector2d& x) noexcept {
+  if (count == 1) return v[0];
+  bool inside = count >= 3;
+  double best = std::numeric_limits<double>::infinity();
+  double area2 = 0.0, longest2 = 0.0;
+  Eigen::Vector2d nearest = v[0];
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector2d& a = v[k];
+    const Eigen::Vector2d& b = v[(k + 1) % count];
+    const Eigen::Vector2d e = b - a;
+    if (Cross(e, x - a) < 0.0) inside = false;
+    area2 += Cross(a - v[0], b - v[0]);
+    longest2 = std::max(longest2, e.squaredNorm());
+    const double ee = e.squaredNorm();
+    const double t = ee > 0.0 ? std::clamp((x - a).dot(e) / ee, 0.0, 1.0) : 0.0;
+    const Eigen::Vector2d c = a + t * e;
+    const double d = (x - c).squaredNorm();
+    if (d < best) {
+      best = d;
+      nearest = c;
+    }
+  }
+  // A polygon closed down to a point or a segment (coincident vertices, zero-length edges) has
+  // no inside to test against: every point's answer is its nearest point.
+  if (!(area2 > 1e-12 * longest2) || longest2 == 0.0) inside = false;
+  return inside ? x : nearest;
+}
+
+double RayExtent(const Eigen::Vector2d* v, int count, const Eigen::Vector2d& direction) noexcept {
+  if (count < 3) return 0.0;
+  double extent = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector2d& a = v[k];
+    const Eigen::Vector2d e = v[(k + 1) % count] - a;
+    const Eigen::Vector2d normal(e.y(), -e.x());  // outward for a CCW polygon
+    const double offset = normal.dot(a);          // origin inside <=> offset >= 0 for all edges
+    if (normal.squaredNorm() == 0.0) continue;
+    if (offset < 0.0) return 0.0;
+    const double along = normal.dot(direction);
+    if (along > 0.0) extent = std::min(extent, offset / along);
+  }
+  return std::isfinite(extent) ? extent : 0.0;
+}
+
+Eigen::Vector2d PolygonCentroid(const Eigen::Vector2d* v, int count) noexcept {
+  Eigen::Vector2d mean(0.0, 0.0);
+  for (int k = 0; k < count; ++k) mean += v[k];
+  mean /= std::max(count, 1);
+  // Shoelace about the vertex mean, so that a micrometre polygon far from the origin keeps its
+  // digits.
+  double area2 = 0.0, size2 = 0.0;
+  Eigen::Vector2d sum(0.0, 0.0);
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector2d a = v[k] - mean;
+    const Eigen::Vector2d b = v[(k + 1) % count] - mean;
+    const double c = Cross(a, b);
+    area2 += c;
+    sum += c * (a + b);
+    size2 = std::max(size2, a.squaredNorm());
+  }
+  // Below this the polygon is a point or a segment (rounding noise in the shoelace sum).
+  if (!(std::abs(area2) > 1e-9 * size2)) return mean;
+  return mean + sum / (3.0 * area2);
+}
+
+}  // namespace fitfeel::cylindrical

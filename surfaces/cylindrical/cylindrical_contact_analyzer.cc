@@ -1,0 +1,378 @@
+#include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "framework/core/error.h"
+#include "framework/model/grid_rows.h"
+#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
+
+namespace fitfeel::cylindrical {
+namespace {
+
+// Numbers in messages. snprintf rather than std::to_string, whose integer path instantiates a
+// GNU-unique (exported) table in the plugin, and whose "%f" hides micrometres.
+std::string Num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Largest table we build: beyond this the depth step is a user error (a step far finer than the
+// grid buys nothing, since the cells are piecewise constant).
+constexpr double kMaxDepthSteps = 2e6;
+// 1e8 vertices are 1.6 GB of tables: the most a scene may ask for.
+constexpr double kMaxTableVertices = 1e8;
+// An automatic step never makes more rows than this (a step of 3 um on a 60 mm stroke), however
+// fine the grid: a haptic hand does not resolve the difference, and the tables stay in memory.
+constexpr double kAutoDepthSteps = 20000;
+// Half-width of the box that bounds an assembly space whose normals do not surround the origin;
+// clearances are micrometres, so one metre never binds.
+constexpr double kPolygonBound = 1.0;
+
+void CheckShape(const PartSpec& part, const SkinModelShape& sms) {
+  const SurfaceGrid& g = sms.grid;
+  if (g.columns < 3) {
+    throw UserError("part '" + part.name + "': the assembly space needs at least 3 columns");
+  }
+  if (sms.variation.size() != g.size() || g.area.size() != g.size() ||
+      g.column_angle.size() != g.columns) {
+    throw UserError("part '" + part.name + "': skin model shape arrays do not match its grid");
+  }
+  if (!sms.variation.allFinite() || !(g.area.minCoeff() > 0.0)) {
+    throw UserError("part '" + part.name + "': variations must be finite and cell areas positive");
+  }
+}
+
+}  // namespace
+
+void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
+                                        const PartSpec& outer, const SkinModelShape& outer_sms,
+                                        const ModelSettings& settings) {
+  if (inner.role != Role::kInner || outer.role != Role::kOuter) {
+    throw UserError("cylindrical contact needs the inner part (shaft) first, the outer second");
+  }
+  CheckShape(inner, inner_sms);
+  CheckShape(outer, outer_sms);
+  const SurfaceGrid& gs = inner_sms.grid;
+  const SurfaceGrid& gb = outer_sms.grid;
+  if (gs.columns != gb.columns) {
+    throw UserError("cylindrical contact needs the same number of columns on both parts (" +
+                    Num(gs.columns) + " and " + Num(gb.columns) + ")");
+  }
+  n_ = gs.columns;
+  angle_.assign(static_cast<std::size_t>(n_), 0.0);
+  cos_ = sin_ = angle_;
+  for (int j = 0; j < n_; ++j) {
+    const double d = std::remainder(gs.column_angle[j] - gb.column_angle[j], 2 * std::numbers::pi);
+    if (std::abs(d) > 1e-9) {
+      throw UserError("cylindrical contact needs the same column angles on both parts");
+    }
+    angle_[static_cast<std::size_t>(j)] = gs.column_angle[j];
+    cos_[static_cast<std::size_t>(j)] = std::cos(gs.column_angle[j]);
+    sin_[static_cast<std::size_t>(j)] = std::sin(gs.column_angle[j]);
+  }
+  shaft_edges_ = RowEdges(inner, gs);
+  bushing_edges_ = RowEdges(outer, gb);
+  shaft_rows_ = gs.rows;
+  bushing_rows_ = gb.rows;
+  shaft_length_ = shaft_edges_.back();
+  bushing_length_ = bushing_edges_.back();
+  shaft_row_centre_ = gs.row_position.array() - (gs.row_position[0] - 0.5 * shaft_edges_[1]);
+  if (shaft_rows_ == 1) shaft_row_centre_[0] = 0.5 * shaft_length_;
+  v_shaft_ = inner_sms.variation;
+  v_bushing_ = outer_sms.variation;
+  shaft_area_ = gs.area;
+
+  texture_ = settings.texture == TextureMode::kExpected
+                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
+                 : ExpectedInterferenceTable();
+
+  // Auto step: the shortest row of either part. Between two row boundaries the slices only change
+  // length, so every tabulated quantity is piecewise linear or smooth there; a finer step adds
+  // nothing the cells can resolve.
+  double min_row = std::numeric_limits<double>::infinity();
+  for (const auto* e : {&shaft_edges_, &bushing_edges_}) {
+    for (std::size_t i = 1; i < e->size(); ++i) min_row = std::min(min_row, (*e)[i] - (*e)[i - 1]);
+  }
+  if (settings.depth_step < 0.0) throw UserError("depth_step must not be negative");
+  max_depth_ = shaft_length_ + bushing_length_;
+  step_ = settings.depth_step > 0.0 ? settings.depth_step
+                                    : std::max(min_row, max_depth_ / kAutoDepthSteps);
+  const double steps = std::ceil(max_depth_ / step_);
+  // Each step stores up to n + 4 polygon vertices.
+  if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxTableVertices)) {
+    throw UserError("depth_step " + Num(step_) + " m gives " + Num(steps) +
+                    " table rows of up to " + Num(n_ + 4) +
+                    " vertices, more than the analyzer holds; use a coarser step");
+  }
+  const std::size_t count = static_cast<std::size_t>(steps) + 1;
+
+  depth_.assign(count, 0.0);
+  length_ = area_ = volume_ = max_delta_ = depth_;
+  resultant_.assign(count, Eigen::Vector2d::Zero());
+  anchor_ = resultant_;
+  empty_.assign(count, 0);
+  unconstrained_.assign(count, 0);
+  vertex_begin_.assign(count, 0);
+  vertex_count_.assign(count, 0);
+  vertices_.clear();
+  max_vertices_ = 0;
+  newton_iterations_ = 0;
+
+  const std::size_t n = static_cast<std::size_t>(n_);
+  std::vector<Slice> slices;
+  std::vector<double> st, w, h(n), col_a(n), col_b(n), proj(n);
+  std::vector<Eigen::Vector2d> polygon;
+  Eigen::Vector2d warm(0.0, 0.0);
+
+  // Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
+  auto energy = [&](const Eigen::Vector2d& p, bool moments) {
+    double e = 0.0;
+    if (moments) {
+      std::fill(col_a.begin(), col_a.end(), 0.0);
+      std::fill(col_b.begin(), col_b.end(), 0.0);
+    }
+    for (std::size_t j = 0; j < n; ++j) proj[j] = p.x() * cos_[j] + p.y() * sin_[j];
+    const std::size_t rows = st.size() / n;
+    for (std::size_t r = 0; r < rows; ++r) {
+      const double* g = st.data() + r * n;
+      const double* a = w.data() + r * n;
+      for (std::size_t j = 0; j < n; ++j) {
+        const double d = std::max(0.0, proj[j] - g[j]);
+        e += a[j] * d * d;
+        if (moments) {
+          col_a[j] += a[j] * d;
+          col_b[j] += d > 0.0 ? a[j] : 0.0;
+        }
+      }
+    }
+    return e;
+  };
+
+  for (std::size_t k = 0; k < count; ++k) {
+    const double depth = static_cast<double>(k) * step_;
+    depth_[k] = depth;
+    vertex_begin_[k] = static_cast<int>(vertices_.size());
+    SlicesAt(depth, &slices);
+    if (slices.empty()) {
+      unconstrained_[k] = 1;
+      continue;
+    }
+    st.resize(slices.size() * n);
+    w.resize(slices.size() * n);
+    std::fill(h.begin(), h.end(), std::numeric_limits<double>::infinity());
+    double length = 0.0, area = 0.0;
+    for (std::size_t s = 0; s < slices.size(); ++s) {
+      const Slice& sl = slices[s];
+      const auto i = static_cast<std::size_t>(sl.shaft_row);
+      const double share = sl.length / (shaft_edges_[i + 1] - shaft_edges_[i]);
+      const Eigen::Index rs = static_cast<Eigen::Index>(sl.shaft_row) * n_;
+      const Eigen::Index rb = static_cast<Eigen::Index>(sl.bushing_row) * n_;
+      length += sl.length;
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto jj = static_cast<Eigen::Index>(j);
+        const double gap = v_bushing_[rb + jj] - v_shaft_[rs + jj];  // eq. 8
+        st[s * n + j] = gap;
+        w[s * n + j] = shaft_area_[rs + jj] * share;
+        area += w[s * n + j];
+        h[j] = std::min(h[j], gap);
+      }
+    }
+    length_[k] = length;
+    area_[k] = area;
+
+    Eigen::Vector2d anchor;
+    if (IntersectHalfPlanes(angle_, h, kPolygonBound, &polygon)) {
+      vertices_.insert(vertices_.end(), polygon.begin(), polygon.end());
+      vertex_count_[k] = static_cast<int>(polygon.size());
+      max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
+      anchor = PolygonCentroid(polygon.data(), static_cast<int>(polygon.size()));
+      warm = anchor;
+    } else {
+      empty_[k] = 1;
+      // Newton on the convex piecewise-quadratic energy, Armijo backtracking.
+      Eigen::Vector2d p = warm;
+      for (int it = 0; it < 100; ++it) {
+        ++newton_iterations_;
+        const double e0 = energy(p, true);
+        Eigen::Vector2d grad(0.0, 0.0);
+        Eigen::Matrix2d hess = Eigen::Matrix2d::Zero();
+        for (std::size_t j = 0; j < n; ++j) {
+          const Eigen::Vector2d u(cos_[j], sin_[j]);
+          grad += 2.0 * col_a[j] * u;
+          hess += 2.0 * col_b[j] * u * u.transpose();
+        }
+        const double trace = hess.trace();
+        if (!(trace > 0.0)) break;  // no cell interferes: p is already a minimiser
+        hess += 1e-12 * trace * Eigen::Matrix2d::Identity();
+        const Eigen::Vector2d dir = -hess.ldlt().solve(grad);
+        double alpha = 1.0;
+        const double slope = grad.dot(dir);
+        while (alpha > 1e-12 && energy(p + alpha * dir, false) > e0 + 1e-4 * alpha * slope) {
+          alpha *= 0.5;
+        }
+        p += alpha * dir;
+        // A picometre-scale step on micrometre interferences: converged.
+        if ((alpha * dir).norm() < 1e-13) break;
+      }
+      anchor = p;
+      warm = p;
+    }
+    anchor_[k] = anchor;
+
+    // Interference at the anchor: none is possible with a sharp contact inside the polygon.
+    if (empty_[k] || !texture_.sharp()) {
+      double volume = 0.0, max_delta = 0.0;
+      Eigen::Vector2d resultant(0.0, 0.0);
+      for (std::size_t j = 0; j < n; ++j) proj[j] = anchor.x() * cos_[j] + anchor.y() * sin_[j];
+      std::fill(col_a.begin(), col_a.end(), 0.0);
+      for (std::size_t c = 0; c < st.size(); ++c) {
+        const std::size_t j = c - (c / n) * n;
+        const double d = texture_(st[c] - proj[j]);
+        col_a[j] += w[c] * d;
+        max_delta = std::max(max_delta, d);
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        volume += col_a[j];
+        resultant += col_a[j] * Eigen::Vector2d(cos_[j], sin_[j]);
+      }
+      volume_[k] = volume;
+      max_delta_[k] = max_delta;
+      resultant_[k] = resultant;
+    }
+  }
+}
+
+void CylinderContactAnalyzer::SlicesAt(double depth, std::vector<Slice>* slices) const {
+  slices->clear();
+  const double shift = depth - shaft_length_;  // bushing coordinate of the shaft's trailing end
+  const double lo = std::max(shift, 0.0);
+  const double hi = std::min(depth, bushing_length_);
+  if (!(hi > lo)) return;
+  // First rows containing lo.
+  int i = static_cast<int>(std::upper_bound(shaft_edges_.begin(), shaft_edges_.end(), lo - shift) -
+                           shaft_edges_.begin()) -
+          1;
+  int k = static_cast<int>(std::upper_bound(bushing_edges_.begin(), bushing_edges_.end(), lo) -
+                           bushing_edges_.begin()) -
+          1;
+  i = std::clamp(i, 0, shaft_rows_ - 1);
+  k = std::clamp(k, 0, bushing_rows_ - 1);
+  // Slivers below a femtometre are rounding of equal boundaries, not geometry.
+  constexpr double kSliver = 1e-15;
+  double pos = lo;
+  while (pos < hi - kSliver && i < shaft_rows_ && k < bushing_rows_) {
+    const double shaft_end = shaft_edges_[static_cast<std::size_t>(i) + 1] + shift;
+    const double bushing_end = bushing_edges_[static_cast<std::size_t>(k) + 1];
+    const double next = std::min({shaft_end, bushing_end, hi});
+    if (next - pos > kSliver) slices->push_back({i, k, next - pos});
+    if (shaft_end <= next + kSliver) ++i;
+    if (bushing_end <= next + kSliver) ++k;
+    pos = next;
+  }
+}
+
+bool CylinderContactAnalyzer::Locate(double depth, std::size_t* k, double* t) const noexcept {
+  if (!(depth > 0.0) || !(depth < max_depth_)) return false;
+  const double s = depth / step_;
+  const std::size_t last = depth_.size() - 1;
+  std::size_t i = static_cast<std::size_t>(s);
+  if (i >= last) i = last - 1;
+  *k = i;
+  *t = std::clamp(s - static_cast<double>(i), 0.0, 1.0);
+  return true;
+}
+
+Eigen::Vector2d CylinderContactAnalyzer::AnchorAt(std::size_t k,
+                                                  const Eigen::Vector2d& x) const noexcept {
+  if (unconstrained_[k]) return x;
+  if (empty_[k]) return anchor_[k];
+  return ProjectOntoPolygon(vertices_.data() + vertex_begin_[k], vertex_count_[k], x);
+}
+
+void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
+  *out = ContactState{};
+  const Eigen::Vector2d x = pose.offset;
+  out->offset_distance = x.norm();
+  out->offset_angle = std::atan2(x.y(), x.x());
+  std::size_t k = 0;
+  double t = 0.0;
+  // A non-finite offset is an upstream fault: report no contact rather than NaN forces.
+  if (!x.allFinite() || !Locate(pose.depth, &k, &t)) return;
+  const double s = 1.0 - t;
+  out->engaged_length = s * length_[k] + t * length_[k + 1];
+  out->engaged_area = s * area_[k] + t * area_[k + 1];
+  out->engaged = out->engaged_length > 0.0;
+  if (!out->engaged) return;
+
+  const Eigen::Vector2d anchor = s * AnchorAt(k, x) + t * AnchorAt(k + 1, x);
+  const Eigen::Vector2d pen = x - anchor;
+  out->penetration = pen.norm();
+  if (out->penetration > 0.0) out->penetration_direction = pen / out->penetration;
+
+  const std::size_t nearest = t < 0.5 ? k : k + 1;
+  out->interference = empty_[nearest] != 0;
+  if (!out->interference && !unconstrained_[nearest]) {
+    const Eigen::Vector2d dir(std::cos(out->offset_angle), std::sin(out->offset_angle));
+    out->assembly_extent =
+        RayExtent(vertices_.data() + vertex_begin_[nearest], vertex_count_[nearest], dir);
+  }
+  out->interference_volume = s * volume_[k] + t * volume_[k + 1];
+  out->max_interference = s * max_delta_[k] + t * max_delta_[k + 1];
+  out->pressure_resultant = s * resultant_[k] + t * resultant_[k + 1];
+}
+
+void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
+                                                Eigen::VectorXd* delta) const {
+  delta->setZero(static_cast<Eigen::Index>(shaft_rows_) * n_);
+  std::size_t k = 0;
+  double t = 0.0;
+  if (!pose.offset.allFinite()) throw UserError("interference map of a non-finite axis offset");
+  if (!Locate(pose.depth, &k, &t)) return;
+  // Where the laws take the axis to be: under interference the energy-minimising position (the
+  // offset from it is the radial spring's), in clearance the pose's own offset, so that a shaft
+  // pressed against the bore by a radial load shows its contact line.
+  const bool interference = empty_[t < 0.5 ? k : k + 1] != 0;
+  const Eigen::Vector2d anchor =
+      interference
+          ? Eigen::Vector2d((1.0 - t) * AnchorAt(k, pose.offset) + t * AnchorAt(k + 1, pose.offset))
+          : pose.offset;
+  const double shift = pose.depth - shaft_length_;
+  for (int i = 0; i < shaft_rows_; ++i) {
+    const double pos = shaft_row_centre_[i] + shift;  // bushing coordinate of the row's centre
+    if (pos < 0.0 || pos >= bushing_length_) continue;
+    int b = static_cast<int>(std::upper_bound(bushing_edges_.begin(), bushing_edges_.end(), pos) -
+                             bushing_edges_.begin()) -
+            1;
+    b = std::clamp(b, 0, bushing_rows_ - 1);
+    for (int j = 0; j < n_; ++j) {
+      const auto jj = static_cast<std::size_t>(j);
+      const double gap = v_bushing_[b * n_ + j] - v_shaft_[i * n_ + j] -
+                         (anchor.x() * cos_[jj] + anchor.y() * sin_[jj]);
+      (*delta)[i * n_ + j] = texture_(gap);
+    }
+  }
+}
+
+// The tabulated polygon of the nearer depth step: what the tick interpolates between.
+bool CylinderContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                              std::vector<Eigen::Vector2d>* polygon) const {
+  std::size_t k = 0;
+  double t = 0.0;
+  if (!Locate(pose.depth, &k, &t)) return true;
+  if (t >= 0.5) ++k;
+  if (unconstrained_[k] || empty_[k]) return true;
+  const auto begin = vertices_.begin() + vertex_begin_[k];
+  polygon->assign(begin, begin + vertex_count_[k]);
+  return true;
+}
+
+}  // namespace fitfeel::cylindrical

@@ -1,0 +1,416 @@
+#include "surfaces/cylindrical/cylindrical_generator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "framework/core/error.h"
+#include "framework/metrology/sms_conformance.h"
+#include "framework/model/process_model.h"
+#include "framework/model/random_draws.h"
+#include "surfaces/cylindrical/cylindrical_discretizer.h"
+#include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
+
+namespace fitfeel::cylindrical {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// A capable process scraps a few parts per million; this many in a row means it cannot make one.
+constexpr int kMaxSizeRedraws = 100000;
+
+// Paper Fig. 3: the sampling sections of one form wave. Its wavelength is drawn in
+// (10 mm, l) (eq. 3's companion rule); the sections sit at its peaks and troughs, every half wave
+// from a random phase, each snapped to the row that contains it. The two end rows are sampling
+// sections too: the wave goes on past the ends of the surface, so the profile there is a value of
+// it like any other. A surface shorter than 10 mm holds at most half a form wave: only its ends.
+std::vector<int> SamplingRows(const SurfaceGrid& g, double length, Rng& rng) {
+  const double lambda =
+      length > kMinFormWavelength ? Uniform(rng, kMinFormWavelength, length) : 2.0 * length;
+  const double half = lambda / 2.0;
+  const double pitch = length / g.rows;
+  std::vector<int> rows = {0, g.rows - 1};
+  for (double y = Uniform(rng, 0.0, half); y < length; y += half) {
+    rows.push_back(std::clamp(static_cast<int>(std::floor(y / pitch)), 0, g.rows - 1));
+  }
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  return rows;
+}
+
+// Values at every row from values at the sampling rows (one column per sampling row), by
+// half-cosine interpolation: each stretch between a peak and the next trough is half a cosine
+// wave, as the paper's form wave is, and every interpolated value is a convex combination of its
+// two neighbours, so no interpolated section exceeds the sampled ones' limits.
+Eigen::MatrixXd Interpolate(const SurfaceGrid& g, const std::vector<int>& rows,
+                            const Eigen::MatrixXd& values) {
+  Eigen::MatrixXd out(values.rows(), g.rows);
+  size_t k = 0;
+  for (int i = 0; i < g.rows; ++i) {
+    while (k + 1 < rows.size() && rows[k + 1] <= i) ++k;
+    if (k + 1 >= rows.size() || rows[k] == i) {
+      out.col(i) = values.col(k);
+      continue;
+    }
+    const double t = (g.row_position(i) - g.row_position(rows[k])) /
+                     (g.row_position(rows[k + 1]) - g.row_position(rows[k]));
+    const double w = (1.0 - std::cos(kPi * t)) / 2.0;
+    out.col(i) = (1.0 - w) * values.col(k) + w * values.col(k + 1);
+  }
+  return out;
+}
+
+// Axis straightness, eqs. 3-4: at each sampling section the axis is displaced by e in direction
+// alpha, alpha ~ U(0, 2 pi), e ~ U(0, t/2); the displacement vector is interpolated between
+// sections, and V = e cos(alpha - beta_j). Every section centre stays within t/2 of the nominal
+// axis (eq. 5), so the axis lies in a cylinder of diameter t.
+Eigen::VectorXd AxisComponent(const SurfaceGrid& g, double length, double t, Rng& rng) {
+  const std::vector<int> rows = SamplingRows(g, length, rng);
+  Eigen::MatrixXd centres(2, rows.size());
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const double alpha = Uniform(rng, 0.0, 2.0 * kPi);
+    const double e = Uniform(rng, 0.0, t / 2.0);
+    centres.col(k) << e * std::cos(alpha), e * std::sin(alpha);
+  }
+  const Eigen::MatrixXd c = Interpolate(g, rows, centres);
+  Eigen::VectorXd v(g.size());
+  for (int i = 0; i < g.rows; ++i)
+    for (int j = 0; j < g.columns; ++j)
+      v(g.index(i, j)) =
+          c(0, i) * std::cos(g.column_angle(j)) + c(1, i) * std::sin(g.column_angle(j));
+  return v;
+}
+
+// Generatrix straightness: an axisymmetric wave of the radius along the axis (barrel, hourglass,
+// waviness of the diameter), alternating peaks and troughs of height U(0, t/2) on either side of
+// the nominal radius, so each generatrix alone stays within a zone of width t.
+Eigen::VectorXd GeneratrixComponent(const SurfaceGrid& g, double length, double t, Rng& rng) {
+  const std::vector<int> rows = SamplingRows(g, length, rng);
+  Eigen::MatrixXd values(1, rows.size());
+  const double first = Uniform(rng) < 0.5 ? 1.0 : -1.0;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    values(0, k) = (k % 2 == 0 ? first : -first) * Uniform(rng, 0.0, t / 2.0);
+  }
+  const Eigen::MatrixXd r = Interpolate(g, rows, values);
+  Eigen::VectorXd v(g.size());
+  for (int i = 0; i < g.rows; ++i) v.segment(i * g.columns, g.columns).setConstant(r(0, i));
+  return v;
+}
+
+// Roundness: at each sampling section, 1 to 3 distinct random lobing harmonics k in [2, K]
+// (K = MaxRoundnessHarmonic(d), and at most n/4 so that each lobe has 4 or more cells) with
+// random amplitudes and phases, scaled so that the section's peak-to-valley about the nominal
+// centre is a drawn U(0, t): its minimum-zone roundness is then at most that. Harmonics k >= 2 do
+// not move the section centre (no axis change) and leave the mean radius (the size) alone.
+Eigen::VectorXd RoundnessComponent(const SurfaceGrid& g, double diameter, double length, double t,
+                                   Rng& rng) {
+  const int K = std::min(MaxRoundnessHarmonic(diameter), g.columns / 4);
+  if (K < 2) return Eigen::VectorXd::Zero(g.size());
+  const std::vector<int> rows = SamplingRows(g, length, rng);
+  Eigen::MatrixXd profiles = Eigen::MatrixXd::Zero(g.columns, rows.size());
+  std::vector<int> harmonics;
+  for (size_t s = 0; s < rows.size(); ++s) {
+    harmonics.clear();
+    for (int k = 2; k <= K; ++k) harmonics.push_back(k);
+    const int count = std::min<int>(1 + static_cast<int>(3.0 * Uniform(rng)), harmonics.size());
+    for (int h = 0; h < count; ++h) {
+      // Partial Fisher-Yates: harmonics[h] becomes a random one of the remaining.
+      const int pick = h + static_cast<int>(Uniform(rng) * (harmonics.size() - h));
+      std::swap(harmonics[h], harmonics[pick]);
+      const double amplitude = Uniform(rng);
+      const double phase = Uniform(rng, 0.0, 2.0 * kPi);
+      for (int j = 0; j < g.columns; ++j) {
+        profiles(j, s) += amplitude * std::cos(harmonics[h] * g.column_angle(j) + phase);
+      }
+    }
+    const double pv = profiles.col(s).maxCoeff() - profiles.col(s).minCoeff();
+    const double target = Uniform(rng, 0.0, t);
+    profiles.col(s) *= pv > 0.0 ? target / pv : 0.0;
+  }
+  const Eigen::MatrixXd r = Interpolate(g, rows, profiles);  // columns x rows
+  Eigen::VectorXd v(g.size());
+  for (int i = 0; i < g.rows; ++i) v.segment(i * g.columns, g.columns) = r.col(i);
+  return v;
+}
+
+struct FormCheck {
+  FormCharacteristic characteristic;
+  double tolerance;
+};
+
+bool MeetsForm(const std::vector<FormCheck>& checks, double radius, const SurfaceGrid& g,
+               const Eigen::VectorXd& form) {
+  if (checks.empty()) return true;
+  const metrology::CylinderSamples s = metrology::SamplesFromGrid(radius, g, form);
+  for (const auto& c : checks) {
+    if (metrology::EvaluateCylinderForm(c.characteristic, s) > c.tolerance) return false;
+  }
+  return true;
+}
+
+// Largest k in [0, 1] with V_dimension + k F inside the size limits everywhere; `violating`
+// counts the cells outside them at k = 1. Feasible at k = 0 whenever V_dimension is.
+double FeasibleScale(const Eigen::VectorXd& vd, const Eigen::VectorXd& f, const SurfaceGrid& g,
+                     SizeLimit mode, double lo, double up, int* violating) {
+  double k = 1.0;
+  *violating = 0;
+  // 1e-18 m: floating-point rounding of sums of micrometre values, not a violation.
+  constexpr double kRounding = 1e-18;
+  auto limit = [&](double a, double b, double low, double high, int cells) {
+    if (a + b > high + kRounding) {
+      *violating += cells;
+      if (b > 0.0) k = std::min(k, std::max(0.0, (high - a) / b));
+    } else if (a + b < low - kRounding) {
+      *violating += cells;
+      if (b < 0.0) k = std::min(k, std::max(0.0, (low - a) / b));
+    }
+  };
+  if (mode == SizeLimit::kTwoPoint) {
+    const int half = g.columns / 2;
+    for (int i = 0; i < g.rows; ++i)
+      for (int j = 0; j < half; ++j) {
+        const int p = g.index(i, j), q = g.index(i, j + half);
+        limit(vd(p) + vd(q), f(p) + f(q), lo, up, 2);
+      }
+  } else {
+    for (int c = 0; c < g.size(); ++c) limit(vd(c), f(c), lo / 2.0, up / 2.0, 1);
+  }
+  return k;
+}
+
+// The range of F's contribution to the constrained quantity (two-point: F_a + F_b over opposite
+// pairs; radial: 2 F per cell, in diameter terms), for the per-part size draw.
+std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g, SizeLimit mode) {
+  double a = std::numeric_limits<double>::infinity(), b = -a;
+  if (mode == SizeLimit::kTwoPoint) {
+    const int half = g.columns / 2;
+    for (int i = 0; i < g.rows; ++i)
+      for (int j = 0; j < half; ++j) {
+        const double s = f(g.index(i, j)) + f(g.index(i, j + half));
+        a = std::min(a, s);
+        b = std::max(b, s);
+      }
+  } else {
+    a = 2.0 * f.minCoeff();
+    b = 2.0 * f.maxCoeff();
+  }
+  return {a, b};
+}
+
+}  // namespace
+
+void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
+  options.ExpectOnlyKeys({"size_draw", "size_limit"});
+  if (auto node = options.Find("size_draw")) {
+    options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart
+                                                                               : SizeDraw::kPerCell;
+  }
+  if (auto node = options.Find("size_limit")) {
+    options_.size_limit = node->AsOneOf({"two_point", "radial"}) == "two_point"
+                              ? SizeLimit::kTwoPoint
+                              : SizeLimit::kRadial;
+  }
+}
+
+SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
+                                                         const SurfaceGrid& grid,
+                                                         TextureMode texture, Rng& rng) const {
+  const CylindricalGeometry& geometry = AsCylinder(part);
+  const double lo = part.size.lower_deviation, up = part.size.upper_deviation;
+  if (!(lo <= up)) {
+    throw UserError("part '" + part.name + "': lower size deviation exceeds the upper one");
+  }
+  if (grid.columns % 2 != 0) {
+    throw UserError("part '" + part.name + "': the grid needs an even number of columns");
+  }
+  // Step 3's order: form first, characteristic by characteristic, each checked against every
+  // specified form tolerance on the accumulated form.
+  std::vector<FormCheck> checks;
+  double t_axis = 0.0, t_gen = 0.0, t_round = 0.0, t_cyl = 0.0;
+  for (const auto& [c, t] : part.form.tolerance) {
+    if (!(t >= 0.0)) throw UserError("part '" + part.name + "': negative " + ToString(c));
+    switch (c) {
+      case FormCharacteristic::kAxisStraightness:
+        t_axis = t;
+        break;
+      case FormCharacteristic::kGeneratrixStraightness:
+        t_gen = t;
+        break;
+      case FormCharacteristic::kRoundness:
+        t_round = t;
+        break;
+      case FormCharacteristic::kCylindricity:
+        t_cyl = t;
+        break;
+      default:
+        throw UnsupportedError("part '" + part.name + "': a cylindrical surface has no " +
+                               ToString(c) + " tolerance");
+    }
+    checks.push_back({c, t});
+  }
+  // A component without its own tolerance but bounded by cylindricity (which covers axis,
+  // generatrix and roundness deviations alike) is drawn with the cylindricity tolerance.
+  const bool has_cyl = part.form.tolerance.count(FormCharacteristic::kCylindricity) > 0;
+  auto budget = [&](FormCharacteristic c, double own) {
+    return part.form.tolerance.count(c) > 0 ? own : (has_cyl ? t_cyl : 0.0);
+  };
+  const double radius = geometry.diameter() / 2.0;
+  const double length = geometry.length();
+  SkinModelShape sms;
+  sms.grid = grid;
+  Eigen::VectorXd form = Eigen::VectorXd::Zero(grid.size());
+  auto integrate = [&](const std::function<Eigen::VectorXd()>& draw) {
+    Eigen::VectorXd component;
+    for (int attempt = 0; attempt <= options_.max_regenerations; ++attempt) {
+      if (attempt > 0) ++sms.regenerations;
+      component = draw();
+      if (MeetsForm(checks, radius, grid, form + component)) {
+        form += component;
+        return;
+      }
+    }
+    // Last resort: scale the last draw back. Every zone width is a convex function of the data,
+    // so the k that pass form an interval from 0 (where the accumulated form passed): bisection.
+    double good = 0.0, bad = 1.0;
+    for (int it = 0; it < 30; ++it) {
+      const double mid = (good + bad) / 2.0;
+      (MeetsForm(checks, radius, grid, form + mid * component) ? good : bad) = mid;
+    }
+    form += good * component;
+  };
+  // Each component is drawn within the tolerance left by those before it. Zone widths are
+  // subadditive (w(F + C) <= w(F) + w(C)), and a component drawn with bound B contributes at most
+  // B to every characteristic it touches (see the component functions), so drawing with
+  // B <= t - w(F) for each touched, specified characteristic keeps the sum in tolerance; the check
+  // and regeneration remain the guard for what the linear bounds do not see (e.g. the e^2/2R
+  // curvature terms of a displaced circle).
+  struct Touch {
+    FormCharacteristic characteristic;
+    double gain;  // the component adds at most gain * B to it
+  };
+  auto remaining = [&](double own, std::initializer_list<Touch> touched) {
+    double bound = own;
+    if (bound <= 0.0) return 0.0;
+    const bool flat = form.cwiseAbs().maxCoeff() == 0.0;
+    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
+    for (const Touch& touch : touched) {
+      const auto it = part.form.tolerance.find(touch.characteristic);
+      if (it == part.form.tolerance.end()) continue;
+      const double used =
+          flat ? 0.0 : metrology::EvaluateCylinderForm(touch.characteristic, samples);
+      bound = std::min(bound, (it->second - used) / touch.gain);
+    }
+    return std::max(bound, 0.0);
+  };
+  using FC = FormCharacteristic;
+  // Axis bow: every V within +-B/2, so at most B on axis straightness, generatrices and
+  // cylindricity.
+  if (const double t =
+          remaining(budget(FC::kAxisStraightness, t_axis), {{FC::kAxisStraightness, 1.0},
+                                                            {FC::kGeneratrixStraightness, 1.0},
+                                                            {FC::kCylindricity, 1.0}});
+      t > 0.0) {
+    integrate([&] { return AxisComponent(grid, length, t, rng); });
+  }
+  // Axisymmetric radius wave within +-B/2: generatrices and cylindricity, not axis or roundness.
+  if (const double t = remaining(budget(FC::kGeneratrixStraightness, t_gen),
+                                 {{FC::kGeneratrixStraightness, 1.0}, {FC::kCylindricity, 1.0}});
+      t > 0.0) {
+    integrate([&] { return GeneratrixComponent(grid, length, t, rng); });
+  }
+  // Lobing: peak-to-valley <= B per section about a zero mean, so values within +-B: at most B on
+  // roundness, 2B on cylindricity and on generatrices (sections differ).
+  if (const double t = remaining(
+          budget(FC::kRoundness, t_round),
+          {{FC::kRoundness, 1.0}, {FC::kGeneratrixStraightness, 2.0}, {FC::kCylindricity, 2.0}});
+      t > 0.0) {
+    integrate([&] { return RoundnessComponent(grid, geometry.diameter(), length, t, rng); });
+  }
+  // A statistical process uses a Rayleigh-drawn fraction of each form tolerance: the paper's form
+  // draw, scaled so that its most used characteristic uses exactly its drawn fraction (zone widths
+  // scale with the data, so every other characteristic stays within its own fraction).
+  const ProcessSpec& process = part.process;
+  if (process.kind == ProcessKind::kStatistical && form.cwiseAbs().maxCoeff() > 0.0) {
+    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
+    double k = std::numeric_limits<double>::infinity();
+    for (const auto& [c, t] : part.form.tolerance) {
+      const double r = DrawFormUtilisation(process, rng, &sms.rejections);
+      const double w = metrology::EvaluateCylinderForm(c, samples);
+      if (t > 0.0 && w > 0.0) k = std::min(k, r * t / w);
+    }
+    if (std::isfinite(k)) form *= k;
+  }
+  // Eq. 6: texture as a truncated Gaussian per cell, only when sampled. Limits +-(A + Rz)/2 at
+  // 3 sigma (sigma = (A + Rz)/6), the same distribution the contact analysis uses in expected mode.
+  Eigen::VectorXd surface = Eigen::VectorXd::Zero(grid.size());
+  const double half_range = (part.texture.waviness + part.texture.rz) / 2.0;
+  if (texture == TextureMode::kSampled && half_range > 0.0) {
+    const double sigma = half_range / 3.0;
+    for (int c = 0; c < grid.size(); ++c) {
+      double x = 0.0;
+      do x = sigma * Normal(rng);
+      while (std::abs(x) > half_range);
+      surface(c) = x;
+    }
+  }
+  // Eqs. 1-2: the dimensional variation (radial: half the diameter deviation).
+  const Eigen::VectorXd local = form + surface;
+  Eigen::VectorXd dimension(grid.size());
+  if (process.kind == ProcessKind::kStatistical) {
+    if (options_.size_draw != SizeDraw::kPerPart) {
+      throw UserError("part '" + part.name +
+                      "': process: statistical draws one actual size per part; "
+                      "model.options.size_draw: per_cell is the paper's literal eq. 1");
+    }
+    // Normal actual size; a part whose local sizes leave the limits is scrap and drawn again.
+    const auto [a, b] = Spread(local, grid, options_.size_limit);
+    const NormalLaw law = SizeLaw(process, lo, up, part.role);
+    double D = 0.0;
+    if (up - lo >= b - a) {
+      for (;;) {
+        D = law.mean + law.sd * Normal(rng);
+        if (lo <= D + a && D + b <= up) break;
+        if (++sms.rejections > kMaxSizeRedraws) {
+          throw UserError("part '" + part.name + "': the size process (Cp " +
+                          std::to_string(process.cp) + ", Cpk " + std::to_string(process.cpk) +
+                          ") rejects every part");
+        }
+      }
+    } else {
+      D = lo - (up - lo) / (b - a) * a;  // as the paper's branch: the clamp scales the form back
+    }
+    dimension.setConstant(D / 2.0);
+  } else if (options_.size_draw == SizeDraw::kPerPart) {
+    const auto [a, b] = Spread(local, grid, options_.size_limit);
+    const double u = Uniform(rng);
+    // The diameter deviation D must satisfy lo <= D + s <= up for every local contribution s in
+    // [a, b]; if the form spreads wider than the tolerance, D takes the value that the final
+    // clamp's scaled-back form fits exactly.
+    double D = 0.0;
+    if (up - lo >= b - a) {
+      D = (lo - a) + u * ((up - b) - (lo - a));
+    } else {
+      const double k = (up - lo) / (b - a);
+      D = lo - k * a;
+    }
+    dimension.setConstant(D / 2.0);
+  } else {
+    for (int c = 0; c < grid.size(); ++c) dimension(c) = Uniform(rng, lo / 2.0, up / 2.0);
+  }
+  // Step 3's final clamp: scale the form and texture back (uniformly, which keeps every form
+  // characteristic within its tolerance since zone widths scale with the data) until every size
+  // constraint holds.
+  const double k =
+      FeasibleScale(dimension, local, grid, options_.size_limit, lo, up, &sms.scaled_back_cells);
+  sms.dimension_part = dimension;
+  sms.form_part = k * form;
+  sms.surface_part = k * surface;
+  sms.variation = sms.dimension_part + sms.form_part + sms.surface_part;
+  return sms;
+}
+
+}  // namespace fitfeel::cylindrical

@@ -1,0 +1,88 @@
+#include "surfaces/thread/thread_geometry.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "framework/core/error.h"
+#include "framework/core/quantity.h"
+
+namespace fitfeel::thread {
+
+HelicoidGeometry::HelicoidGeometry(Role role, double diameter, double pitch, double flank_angle,
+                                   double length, double pitch_error, double flank_angle_error)
+    : role_(role),
+      diameter_(diameter),
+      pitch_(pitch),
+      flank_angle_(flank_angle),
+      length_(length),
+      pitch_error_(pitch_error),
+      flank_angle_error_(flank_angle_error) {}
+
+double HelicoidGeometry::triangle_height() const { return pitch_ / (2.0 * std::tan(half_angle())); }
+double HelicoidGeometry::inner_radius() const {
+  return 0.5 * diameter_ - 5.0 / 8.0 * triangle_height();
+}
+double HelicoidGeometry::pitch_radius() const {
+  return 0.5 * diameter_ - 3.0 / 8.0 * triangle_height();
+}
+
+double HelicoidGeometry::AreaPrimitive(double r) const {
+  const double k = std::tan(half_angle());
+  const double a = std::sqrt(1.0 + k * k);
+  const double c = pitch_ / (2.0 * std::numbers::pi);
+  return 0.5 * r * std::sqrt(a * a * r * r + c * c) + c * c / (2.0 * a) * std::asinh(a * r / c);
+}
+
+double HelicoidGeometry::flank_area() const {
+  return 2.0 * std::numbers::pi * turns() *
+         (AreaPrimitive(outer_radius()) - AreaPrimitive(inner_radius()));
+}
+
+std::string HelicoidGeometry::Describe() const {
+  return "thread d=" + FormatQuantity(diameter_, Dimension::kLength) +
+         " P=" + FormatQuantity(pitch_, Dimension::kLength) +
+         " flank angle=" + FormatQuantity(flank_angle_, Dimension::kAngle) +
+         " L=" + FormatQuantity(length_, Dimension::kLength);
+}
+
+std::shared_ptr<const HelicoidGeometry> ParseHelicoidGeometry(const PartSpec& part,
+                                                              const ConfigNode& node) {
+  if (!node.is_map()) {
+    node.Fail("a map {pitch, flank_angle, length, pitch_error, flank_angle_error}",
+              node.Describe());
+  }
+  node.ExpectOnlyKeys(
+      {"nominal_diameter", "pitch", "flank_angle", "length", "pitch_error", "flank_angle_error"});
+  const double d = part.size.nominal;
+  if (std::optional<ConfigNode> nominal = node.Find("nominal_diameter")) {
+    const double given = nominal->AsQuantity(Dimension::kLength);
+    if (std::abs(given - d) > 1e-12) {
+      nominal->Fail("the part's nominal size " + FormatQuantity(d, Dimension::kLength),
+                    nominal->Describe());
+    }
+  }
+  // ISO 261 coarse pitches stay below d/4 (M1 x 0.25); a pitch above d/3 leaves no core.
+  const double pitch = node.QuantityIn("pitch", Dimension::kLength, 1e-6, d / 3.0);
+  // Symmetric V and trapezoidal threads: 29 deg (ACME) and 30 deg (ISO 2904) up to 60 deg
+  // (ISO 68-1) and beyond; below 20 deg or above 120 deg no standard thread exists.
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  const double angle =
+      node.Child("flank_angle").AsQuantityIn(Dimension::kAngle, 20.0 * kDeg, 120.0 * kDeg);
+  // At least one turn; beyond 100 diameters no thread is engaged at once.
+  const double length = node.QuantityIn("length", Dimension::kLength, pitch, 100.0 * d);
+  // A pitch deviation above a tenth of the pitch, or a half-angle deviation above 5 deg, is a
+  // different thread, not a deviation of this one.
+  const double pitch_error = node.QuantityIn("pitch_error", Dimension::kLength, 0.0, 0.1 * pitch);
+  const double angle_error =
+      node.Child("flank_angle_error").AsQuantityIn(Dimension::kAngle, 0.0, 5.0 * kDeg);
+  return std::make_shared<HelicoidGeometry>(part.role, d, pitch, angle, length, pitch_error,
+                                            angle_error);
+}
+
+const HelicoidGeometry& HelicoidGeometryOf(const PartSpec& part) {
+  const auto* g = dynamic_cast<const HelicoidGeometry*>(part.geometry.get());
+  if (g == nullptr) throw UserError("part '" + part.name + "' has no helicoid geometry");
+  return *g;
+}
+
+}  // namespace fitfeel::thread
