@@ -12,7 +12,7 @@
 
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \
             libboost-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev \
-            libgmock-dev libbenchmark-dev gnuplot-nox
+            libgmock-dev libbenchmark-dev gnuplot-nox libjs-three chromium nodejs
 # Only for `make fem-check`: the tests use the committed FEM data and need no solver.
 FEM_PACKAGES := calculix-ccx python3-numpy
 JOBS ?= $(shell nproc)

@@ -27,8 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
-
 struct RunArgs {
   std::string file;
   std::string out;
@@ -37,22 +35,6 @@ struct RunArgs {
   bool virtual_clock = false;
   bool allow_large = false;
 };
-
-// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
-fs::path FindDefaultScenario() {
-  const fs::path here = kDefaultScenario;
-  if (fs::exists(here)) return here;
-  std::string searched = "'" + fs::absolute(here).string() + "'";
-  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
-    const fs::path there = fs::path(source) / kDefaultScenario;
-    if (fs::exists(there)) return there;
-    searched += " and '" + there.string() + "'";
-  } else {
-    searched += " (FITFEEL_SOURCE_DIR is not set)";
-  }
-  throw UserError("no scenario file given and the default '" + std::string(kDefaultScenario) +
-                  "' was not found: looked in " + searched);
-}
 
 // A progress line on a terminal for runs longer than a second, drawn from a thread of its own:
 // the tick loop only publishes its tick count.
@@ -180,6 +162,22 @@ void Run(const RunArgs& args) {
 }
 
 }  // namespace
+
+// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
+std::filesystem::path FindDefaultScenario() {
+  const fs::path here = kDefaultScenario;
+  if (fs::exists(here)) return here;
+  std::string searched = "'" + fs::absolute(here).string() + "'";
+  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
+    const fs::path there = fs::path(source) / kDefaultScenario;
+    if (fs::exists(there)) return there;
+    searched += " and '" + there.string() + "'";
+  } else {
+    searched += " (FITFEEL_SOURCE_DIR is not set)";
+  }
+  throw UserError("no scenario file given and the default '" + std::string(kDefaultScenario) +
+                  "' was not found: looked in " + searched);
+}
 
 void AddRunCommand(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();

@@ -27,7 +27,6 @@
 namespace fitfeel::cli {
 namespace {
 
-constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
 
 struct Options {
   std::string scenario = kDefaultScenario;

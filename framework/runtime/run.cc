@@ -93,6 +93,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
                              "coupling: spring_damper renders it through a virtual coupling");
     }
     Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    scheduler.set_observer(options.observer);
     if (options.watch) options.watch(&scheduler);
     try {
       scheduler.Run();
@@ -101,6 +102,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       throw;
     }
     if (options.watch) options.watch(nullptr);
+    if (options.observer != nullptr) options.observer->OnRunEnd(scheduler.trace());
     result.stats = scheduler.stats();
     info.device_report = scene.device->report();
     if (info.device_report.is_object() && info.device_report.value("stopped_on_faults", false)) {

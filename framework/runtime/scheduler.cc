@@ -213,6 +213,7 @@ bool Scheduler::Tick(double time) noexcept {
   }
   wake_ns_[k] = static_cast<double>(start);
   end_ns_[k] = static_cast<double>(end);
+  if (observer_ != nullptr) observer_->OnTick(record);
   run.current = output.next;
   ticks_done_.store(k + 1, std::memory_order_relaxed);
   return true;

@@ -10,6 +10,7 @@
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
 #include "framework/device/stage.h"
+#include "framework/runtime/tick_observer.h"
 #include "framework/runtime/tick_record.h"
 #include "framework/safety/safety_chain.h"
 #include "framework/scenario/scene.h"
@@ -85,6 +86,9 @@ class FITFEEL_API Scheduler {
   // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
   // Returns false once the buffer is full or the device is inactive. No allocation, lock or I/O.
   bool Tick(double time) noexcept;
+  // An observer called at the end of every tick with its record (null: none). Borrowed; set it
+  // before Run, not while the loop runs.
+  void set_observer(TickObserver* observer) { observer_ = observer; }
   // Empties the buffer so that it can be filled again (benchmarks); keeps its capacity and the
   // stages' states (Run starts from fresh ones).
   void Rewind() noexcept;
@@ -119,6 +123,7 @@ class FITFEEL_API Scheduler {
   std::vector<double> deadline_ns_;
   std::vector<double> end_ns_;
   std::atomic<std::uint64_t> ticks_done_{0};
+  TickObserver* observer_ = nullptr;
   RunStats stats_;
 };
 

@@ -490,4 +490,17 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose,
   return true;
 }
 
+// The tabulated polygon of the nearer depth step: what the tick interpolates between.
+bool CylinderContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                              std::vector<Eigen::Vector2d>* polygon) const {
+  std::size_t k = 0;
+  double t = 0.0;
+  if (!Locate(pose.depth, &k, &t)) return true;
+  if (t >= 0.5) ++k;
+  if (unconstrained_[k] || empty_[k]) return true;
+  const auto begin = vertices_.begin() + vertex_begin_[k];
+  polygon->assign(begin, begin + vertex_count_[k]);
+  return true;
+}
+
 }  // namespace fitfeel::cylindrical

@@ -73,4 +73,12 @@ CoarseMeshes PlanarSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSp
   return MakePlanarCoarseMeshes(inner, outer);
 }
 
+// Strips of one face are height / columns-per-face wide; the inner part's leading end is its last
+// row's far edge (the analyzer's shift depth - inner length), put at the origin.
+RenderMesh PlanarSurface::DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {
+  const double width = PlanarGeometryOf(part).height() / LayoutOf(grid).columns_per_face;
+  const double length = grid.row_position[0] + grid.row_position[grid.rows - 1];
+  return FlatCellRenderMesh(grid, width, 1.0, part.role == Role::kInner ? -length : 0.0);
+}
+
 }  // namespace fitfeel::planar
