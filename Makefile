@@ -2,21 +2,24 @@
 #   make run    install missing packages, build (Release), run the default scenario and draw
 #               its force trace next to its CSV
 #   make test   install missing packages, build, run the whole test suite
-#   make bench  build (benchmarks on) and run the benchmarks
+#   make bench  build (benchmarks on) and run the benchmarks, then every shipped scenario as a
+#               whole run (table of medians)
 #   make clean  remove the build tree and the outputs
+#   make check-sanitizers  the whole suite under AddressSanitizer + UndefinedBehaviorSanitizer
+#               (preset asan, build-asan/) and the concurrency test under ThreadSanitizer (tsan)
 #   make fem-check  rerun the CalculiX reference of the elastic contact model (tools/fem) and
 #               compare it with the committed data the tests use (minutes; needs no build)
 
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \
             libboost-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev \
-            libgmock-dev libbenchmark-dev gnuplot-nox
+            libgmock-dev libbenchmark-dev gnuplot-nox libjs-three chromium nodejs
 # Only for `make fem-check`: the tests use the committed FEM data and need no solver.
 FEM_PACKAGES := calculix-ccx python3-numpy
 JOBS ?= $(shell nproc)
 # Where `fitfeel run` puts the default scenario's outputs (out/<scenario name>).
 DEFAULT_RUN := out/paper-case1-h7js6
 
-.PHONY: run test bench clean deps fem-deps configure build fem-check
+.PHONY: run test bench clean deps fem-deps configure build fem-check check-sanitizers
 
 # apt-get only for what dpkg does not already list as installed; update only then.
 deps fem-deps: PACKAGES_WANTED = $(if $(filter fem-deps,$@),$(FEM_PACKAGES),$(PACKAGES))
@@ -50,7 +53,10 @@ test: build
 bench: deps
 	cmake --preset release -DFITFEEL_BUILD_BENCHMARKS=ON
 	cmake --build --preset release -j $(JOBS)
-	@for b in build/bench/*; do [ -x "$$b" ] && "$$b"; done
+	@for b in build/bench/*; do \
+	  [ -x "$$b" ] && [ "$$b" != build/bench/scene_benchmark ] && "$$b"; \
+	done; true
+	build/bench/scene_benchmark
 
 clean:
 	rm -rf build build-debug out
@@ -61,3 +67,13 @@ fem-check: fem-deps
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/harmonic.csv" tools/fem/data/harmonic.csv && \
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/contact.csv" tools/fem/data/contact.csv && \
 	echo "fem-check: CalculiX reproduces tools/fem/data within 0.5 %"
+
+# Not part of `make test`: a sanitized build of everything takes about as long again as the
+# release build.
+check-sanitizers: deps
+	cmake --preset asan
+	cmake --build --preset asan -j $(JOBS)
+	ctest --preset asan
+	cmake --preset tsan
+	cmake --build build-tsan --target concurrent_runs_test -j $(JOBS)
+	ctest --test-dir build-tsan -R concurrent_runs_test --output-on-failure

@@ -68,12 +68,18 @@ typedef HDCallbackCode (*HDSchedulerCallback)(void* pUserData);
 #define HD_CURRENT_TRANSFORM 0x2052         // 16 doubles, column-major, translation in mm
 #define HD_CURRENT_ANGULAR_VELOCITY 0x2053  // 3 doubles, rad/s
 #define HD_DEVICE_MODEL_TYPE 0x2501
+#define HD_DEVICE_SERIAL_NUMBER 0x2504
+#define HD_INPUT_DOF 0x2553
+#define HD_OUTPUT_DOF 0x2554
 #define HD_USABLE_WORKSPACE_DIMENSIONS 0x2551  // 6 doubles: min x, y, z, max x, y, z (mm)
 #define HD_CALIBRATION_STYLE 0x2555
+#define HD_UPDATE_RATE 0x2600  // 1 integer, Hz: the servo loop's rate
+#define HD_INSTANTANEOUS_UPDATE_RATE 0x2601
 #define HD_NOMINAL_MAX_STIFFNESS 0x2602         // N/mm
 #define HD_NOMINAL_MAX_FORCE 0x2603             // N
 #define HD_NOMINAL_MAX_CONTINUOUS_FORCE 0x2604  // N
 #define HD_NOMINAL_MAX_DAMPING 0x2609           // N*s/mm
+#define HD_MOTOR_TEMPERATURE 0x2605  // one double per motor, 0 cold .. 1 the driver's cut-off
 // Set parameters.
 #define HD_CURRENT_FORCE 0x2700  // 3 doubles, N
 // Capabilities.
@@ -112,8 +118,12 @@ using GetStringFn = HDstring (*)(HDenum);
 using SetDoublevFn = void (*)(HDenum, const HDdouble*);
 using FrameFn = void (*)(HHD);
 using ScheduleAsynchronousFn = HDSchedulerHandle (*)(HDSchedulerCallback, void*, HDushort);
+using ScheduleSynchronousFn = void (*)(HDSchedulerCallback, void*, HDushort);
 using UnscheduleFn = void (*)(HDSchedulerHandle);
 using SchedulerFn = void (*)();
+
+// Motors the HD_MOTOR_TEMPERATURE array can report (6-DOF output devices have six).
+constexpr int kMaxMotors = 6;
 
 inline bool IsForceError(HDerror code) { return code >= HD_WARM_MOTORS && code <= HD_FORCE_ERROR; }
 

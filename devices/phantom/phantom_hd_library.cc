@@ -79,8 +79,16 @@ std::vector<std::string> CandidatePaths() {
   if (const char* env = std::getenv(kEnvironment); env != nullptr && *env != '\0') {
     return {env};
   }
-  return {"libHD.so", "/usr/lib/libHD.so", "/usr/lib64/libHD.so", "/usr/local/lib/libHD.so",
-          "/usr/lib/x86_64-linux-gnu/libHD.so"};
+  // The runtime packages install only the versioned names (libHD.so.3.4.0 and its soname
+  // links); the unversioned link comes with the developer files, so both are looked for.
+  std::vector<std::string> paths;
+  for (const char* dir : {"", "/usr/lib/", "/usr/lib64/", "/usr/local/lib/",
+                          "/usr/lib/x86_64-linux-gnu/", "/opt/OpenHaptics/Developer/lib/"}) {
+    for (const char* name : {"libHD.so", "libHD.so.3.4", "libHD.so.3.4.0", "libHD.so.3"}) {
+      paths.push_back(std::string(dir) + name);
+    }
+  }
+  return paths;
 }
 
 Library LoadLibrary() {
@@ -101,7 +109,7 @@ Library LoadLibrary() {
         "the Phantom device needs the OpenHaptics HD library (libHD.so), which was not found; "
         "tried:" +
         tried + "\nInstall the OpenHaptics for Linux runtime or set " + kEnvironment +
-        " to the library's path.");
+        " to the library's path (with its file name, e.g. /opt/OpenHaptics/lib/libHD.so.3.4.0).");
   }
   Resolve(handle, "hdInitDevice", hd.path, &hd.hdInitDevice);
   Resolve(handle, "hdDisableDevice", hd.path, &hd.hdDisableDevice);
@@ -118,6 +126,7 @@ Library LoadLibrary() {
   Resolve(handle, "hdBeginFrame", hd.path, &hd.hdBeginFrame);
   Resolve(handle, "hdEndFrame", hd.path, &hd.hdEndFrame);
   Resolve(handle, "hdScheduleAsynchronous", hd.path, &hd.hdScheduleAsynchronous);
+  Resolve(handle, "hdScheduleSynchronous", hd.path, &hd.hdScheduleSynchronous);
   Resolve(handle, "hdUnschedule", hd.path, &hd.hdUnschedule);
   Resolve(handle, "hdStartScheduler", hd.path, &hd.hdStartScheduler);
   Resolve(handle, "hdStopScheduler", hd.path, &hd.hdStopScheduler);

@@ -26,6 +26,7 @@ struct Library {
   FrameFn hdBeginFrame = nullptr;
   FrameFn hdEndFrame = nullptr;
   ScheduleAsynchronousFn hdScheduleAsynchronous = nullptr;
+  ScheduleSynchronousFn hdScheduleSynchronous = nullptr;
   UnscheduleFn hdUnschedule = nullptr;
   SchedulerFn hdStartScheduler = nullptr;
   SchedulerFn hdStopScheduler = nullptr;

@@ -1,5 +1,8 @@
 // Scenario-facing part of the replay device.
+#include <cstdio>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include "devices/replay/replay_device.h"
 #include "framework/device/device_specs.h"
@@ -21,7 +24,8 @@ void ReplayDevice::DoConfigure(const ConfigNode& node) {
   if (auto n = node.Find("speed")) {
     settings.speed = n->AsQuantityIn(Dimension::kDimensionless, 0.0, kInf, false);
   }
-  if (auto n = node.Find("start")) settings.start = n->AsQuantityIn(Dimension::kTime, 0.0, kInf);
+  const std::optional<ConfigNode> start = node.Find("start");
+  if (start) settings.start = start->AsQuantityIn(Dimension::kTime, 0.0, kInf);
   if (auto n = node.Find("loop")) settings.loop = n->AsBool();
   if (auto n = node.Find("model")) {
     settings.model = n->AsString();
@@ -46,7 +50,17 @@ void ReplayDevice::DoConfigure(const ConfigNode& node) {
           e.what());
     }
   }
-  Configure(settings);
+  // The recording's own errors carry its file and line; the start is checked against its length
+  // here so that the refusal names the key.
+  Recording recording = ReadRecording(settings.file);
+  if (recording.samples.empty()) file.Fail("a recording with samples", "none");
+  const double duration = recording.samples.back().time - recording.samples.front().time;
+  if (start && settings.start > duration) {
+    char text[96];
+    std::snprintf(text, sizeof text, "a start within the recording's %g s", duration);
+    start->Fail(text, start->Describe());
+  }
+  Configure(settings, std::move(recording));
 }
 
 }  // namespace fitfeel::replay

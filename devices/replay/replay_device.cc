@@ -9,13 +9,16 @@
 namespace fitfeel::replay {
 
 void ReplayDevice::Configure(const ReplaySettings& settings) {
+  Configure(settings, ReadRecording(settings.file));
+}
+
+void ReplayDevice::Configure(const ReplaySettings& settings, Recording recording) {
   if (!(settings.speed > 0.0) || !std::isfinite(settings.speed)) {
     throw UserError("replay: speed must be a positive factor");
   }
   if (!(settings.start >= 0.0) || !std::isfinite(settings.start)) {
     throw UserError("replay: start must be a time of zero or more seconds");
   }
-  Recording recording = ReadRecording(settings.file);
   if (recording.samples.empty()) {
     throw UserError("replay: recording " + settings.file.string() + " holds no samples");
   }

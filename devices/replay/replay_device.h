@@ -29,6 +29,8 @@ class ReplayDevice final : public Device {
  public:
   // Loads and checks the recording (RecordingError, UserError).
   void Configure(const ReplaySettings& settings);
+  // The same with the recording already read from settings.file.
+  void Configure(const ReplaySettings& settings, Recording recording);
   using Device::Configure;
 
   DeviceSpec spec() const override { return spec_; }

@@ -25,13 +25,16 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
       mode ? mode->AsOneOf({"constant_speed", "constant_rotation", "scripted"}) : "constant_speed";
   if (name == "constant_speed") {
     node.ExpectOnlyKeys(
-        {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping", "radial"});
+        {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping", "radial",
+         "stop_force"});
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
     // robot holds; 1 m of approach is the size of a workcell.
     s.speed = node.Child("speed").AsQuantityIn(Dimension::kVelocity, 0.0, 1.0, false);
     s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
     s.start_offset = Optional(node, "start_offset", Dimension::kLength, 0.0, 1.0, 1e-3);
+    // A press's force monitoring: 1 MN is beyond any bench press.
+    s.stop_force = Optional(node, "stop_force", Dimension::kForce, 0.0, 1e6, 0.0);
     s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
     if (const auto radial = node.Find("radial")) {
       s.radial = radial->AsOneOf({"quasi_static", "dynamic"}) == "dynamic"

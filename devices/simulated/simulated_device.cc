@@ -22,6 +22,7 @@ void Validate(const Settings& s) {
   if (s.mode == Settings::Mode::kConstantSpeed) {
     Require(InRange(s.speed, 0.0, 1.0) && s.speed > 0.0, "speed must be in (0, 1] m/s");
     Require(InRange(s.start_offset, 0.0, 1.0), "start_offset must be in [0, 1] m");
+    Require(InRange(s.stop_force, 0.0, 1e6), "stop_force must be in [0, 1] MN");
     Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
     Require(InRange(s.radial_damping, 0.0, 1e6), "radial_damping must be in [0, 1e6] N*s/m");
     return;
@@ -105,6 +106,8 @@ void SimulatedDevice::DoStart(double period) {
   has_anchor_ = false;
   plane_valid_ = false;
   previous_stiffness_ = 0.0;
+  stopped_ = false;
+  stop_position_ = 0.0;
   gap_ = std::numeric_limits<double>::infinity();
   gap_direction_.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
@@ -165,8 +168,8 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   out->angular_velocity.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     // Computed from the time, never accumulated: the axial position is exact at every tick.
-    position_.y() = -settings_.start_offset + settings_.speed * time;
-    velocity_.y() = settings_.speed;
+    position_.y() = stopped_ ? stop_position_ : -settings_.start_offset + settings_.speed * time;
+    velocity_.y() = stopped_ ? 0.0 : settings_.speed;
   } else if (settings_.mode == Settings::Mode::kConstantRotation) {
     double angle = 0.0, rate = 0.0;
     Twist(time, &angle, &rate);
@@ -191,6 +194,12 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
 void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
   delivered_ = wrench;
   const double h = period_;
+  if (settings_.mode == Settings::Mode::kConstantSpeed && settings_.stop_force > 0.0 &&
+      !stopped_ && -wrench.force.y() >= settings_.stop_force) {
+    // The press's force monitor: the ram holds where the resistance reached the set force.
+    stopped_ = true;
+    stop_position_ = position_.y();
+  }
   if (settings_.mode != Settings::Mode::kScripted) {
     const double m = mass();
     // Held on the axis by the robot until the leading end is inside; with no weight, no mass;

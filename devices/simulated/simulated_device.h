@@ -26,6 +26,9 @@ struct Settings {
   double start_offset = 1e-3;   // leading end this far before the entrance at t = 0, m
   double radial_load = 0.0;     // constant radial load along -z (the part's weight), N
   double radial_damping = 0.0;  // viscous damping of the part's radial motion, N*s/m
+  // A force-driven press: the ram stops advancing (and holds its position) at the first tick whose
+  // axial resistance reaches this force; 0: it never stops (a position-driven robot).
+  double stop_force = 0.0;  // N
   // How the radial load meets the contact: kQuasiStatic (default) has the constrained stage place
   // the part where the contact balances the load each tick (DeviceState::settle_load), as the
   // paper's case study describes it; kDynamic integrates the part's radial motion (below).
@@ -152,6 +155,8 @@ class SimulatedDevice final : public Device {
   double plane_stiffness_ = 0.0;
   bool plane_valid_ = false;
   double previous_stiffness_ = 0.0;                       // slope used in the previous tick, N/m
+  bool stopped_ = false;        // constant speed with stop_force: the ram has stopped
+  double stop_position_ = 0.0;  // where, m
   double gap_ = std::numeric_limits<double>::infinity();  // free way along gap_direction_, m
   Eigen::Vector2d gap_direction_{0.0, 0.0};
 };

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <filesystem>
+
 #include <CLI/CLI.hpp>
 
 namespace fitfeel::cli {
@@ -15,5 +17,12 @@ void AddPlotCommand(CLI::App& app);
 void AddStabilityCommand(CLI::App& app);
 void AddTradeoffCommand(CLI::App& app);
 void AddStudyCommand(CLI::App& app);
+void AddViewCommand(CLI::App& app);
+
+// The scenario `run` and `view` take when given none.
+inline constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
+// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR; throws
+// UserError naming both places when it is in neither.
+std::filesystem::path FindDefaultScenario();
 
 }  // namespace fitfeel::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddStabilityCommand(app);
   fitfeel::cli::AddTradeoffCommand(app);
   fitfeel::cli::AddStudyCommand(app);
+  fitfeel::cli::AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

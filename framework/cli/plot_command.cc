@@ -3,11 +3,13 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/plot/gnuplot.h"
 #include "framework/plot/pressure_chart.h"
@@ -26,6 +28,12 @@ namespace fitfeel::cli {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The image path as given: a device or a folder there is refused before anything is drawn.
+const std::string& CheckedOutput(const std::string& output) {
+  CheckOutputFile("--output", output);
+  return output;
+}
 
 void PrintWritten(const std::vector<plot::OutputFile>& outputs) {
   for (const auto& output : outputs) std::cout << "wrote " << output.path.string() << "\n";
@@ -49,7 +57,7 @@ void AddTrace(CLI::App& plot) {
   cmd->add_flag("--log", options->log_scale,
                 "logarithmic force axes (runs that differ by orders of magnitude)");
   cmd->callback([options] {
-    const auto outputs = plot::ResolveOutputs(options->output);
+    const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
     std::vector<plot::RunRecord> runs;
     for (const auto& dir : options->dirs) runs.push_back(plot::LoadRun(dir));
     plot::Render(plot::MakeTraceChart(runs, options->log_scale), outputs);
@@ -103,12 +111,15 @@ void AddSms(CLI::App& plot) {
       "insertion");
   cmd->add_option("SCENARIO", options->scenario, "scenario file (YAML)")->required();
   cmd->add_option("--part", options->part, "draw only this part's skin profile");
-  cmd->add_option("--seed", options->seed, "seed of the skin model shapes (default: run.seed)");
+  AddIntegerOption(
+      cmd, "--seed", 0, std::numeric_limits<long>::max(),
+      [options](long s) { options->seed = static_cast<std::uint64_t>(s); },
+      "seed of the skin model shapes (default: run.seed; the same range)");
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")
       ->required();
   cmd->callback([options] {
-    const auto outputs = plot::ResolveOutputs(options->output);
+    const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
     const auto registry = LoadPlugins();
     LoadOptions load;
     load.allow_non_rendering = true;  // a surface without laws still has skin model shapes
@@ -134,8 +145,10 @@ void AddPressure(CLI::App& plot) {
       "pressure",
       "Contact pressure map of a run at one insertion depth, with the resultant forces");
   cmd->add_option("DIR", options->dir, "run folder holding trace.csv and summary.json")->required();
-  cmd->add_option("--depth", options->depth_mm,
-                  "insertion depth in mm, inside the run's constrained range")
+  AddQuantityOption(
+      cmd, "--depth", Dimension::kDimensionless, -1e4, 1e4,
+      [options](double depth) { options->depth_mm = depth; },
+      "insertion depth in mm, inside the run's constrained range")
       ->required();
   cmd->add_option("--scenario", options->scenario,
                   "scenario file of the run (default: the one its summary.json names)");
@@ -143,7 +156,7 @@ void AddPressure(CLI::App& plot) {
                   "image file: .png, .svg, or no extension for both")
       ->required();
   cmd->callback([options] {
-    const auto outputs = plot::ResolveOutputs(options->output);
+    const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
     const plot::RunRecord run = plot::LoadRun(options->dir);
     plot::RowAtDepth(run.trace, options->depth_mm);  // refuse a depth the run never reached
     std::string file = options->scenario;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,6 +16,7 @@
 #include <thread>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
@@ -25,31 +27,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
-
 struct RunArgs {
   std::string file;
   std::string out;
   std::optional<std::uint64_t> seed;
   bool realtime = false;
   bool virtual_clock = false;
+  bool allow_large = false;
 };
-
-// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
-fs::path FindDefaultScenario() {
-  const fs::path here = kDefaultScenario;
-  if (fs::exists(here)) return here;
-  std::string searched = "'" + fs::absolute(here).string() + "'";
-  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
-    const fs::path there = fs::path(source) / kDefaultScenario;
-    if (fs::exists(there)) return there;
-    searched += " and '" + there.string() + "'";
-  } else {
-    searched += " (FITFEEL_SOURCE_DIR is not set)";
-  }
-  throw UserError("no scenario file given and the default '" + std::string(kDefaultScenario) +
-                  "' was not found: looked in " + searched);
-}
 
 // A progress line on a terminal for runs longer than a second, drawn from a thread of its own:
 // the tick loop only publishes its tick count.
@@ -150,13 +135,17 @@ void PrintSummary(const RunResult& r) {
 
 void Run(const RunArgs& args) {
   const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
+  if (!args.out.empty()) CheckOutputFolder("--out", args.out);
   PluginRegistry registry;
   registry.LoadAll();
   // Every check of the scenario happens here, before anything runs or any file is created.
-  Scene scene = LoadScene(file, registry);
+  LoadOptions load;
+  load.allow_large = args.allow_large;
+  Scene scene = LoadScene(file, registry, load);
 
   RunOptions options;
   options.out_dir = args.out.empty() ? fs::path("out") / scene.name : fs::path(args.out);
+  CheckOutputFolder("--out", options.out_dir);
   options.seed = args.seed;
   if (args.realtime) options.clock = ClockMode::kRealTime;
   if (args.virtual_clock) options.clock = ClockMode::kVirtual;
@@ -174,6 +163,22 @@ void Run(const RunArgs& args) {
 
 }  // namespace
 
+// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
+std::filesystem::path FindDefaultScenario() {
+  const fs::path here = kDefaultScenario;
+  if (fs::exists(here)) return here;
+  std::string searched = "'" + fs::absolute(here).string() + "'";
+  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
+    const fs::path there = fs::path(source) / kDefaultScenario;
+    if (fs::exists(there)) return there;
+    searched += " and '" + there.string() + "'";
+  } else {
+    searched += " (FITFEEL_SOURCE_DIR is not set)";
+  }
+  throw UserError("no scenario file given and the default '" + std::string(kDefaultScenario) +
+                  "' was not found: looked in " + searched);
+}
+
 void AddRunCommand(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
   auto* cmd = app.add_subcommand(
@@ -184,8 +189,12 @@ void AddRunCommand(CLI::App& app) {
                   std::string("scenario file (default: ") + kDefaultScenario +
                       ", looked up in the current folder, then in FITFEEL_SOURCE_DIR)");
   cmd->add_option("--out", args->out, "output folder (default: out/<scenario name>)");
-  cmd->add_option("--seed", args->seed,
-                  "seed of the scene's random generator (overrides run.seed)");
+  AddIntegerOption(
+      cmd, "--seed", 0, std::numeric_limits<long>::max(),
+      [args](long seed) { args->seed = static_cast<std::uint64_t>(seed); },
+      "seed of the scene's random generator (overrides run.seed; the same range)");
+  cmd->add_flag("--allow-large", args->allow_large,
+                "run a scene whose estimated preparation exceeds 1 GiB or 30 s");
   auto* realtime = cmd->add_flag("--realtime", args->realtime,
                                  "real-time clock: absolute 1 kHz deadlines (overrides run.clock)");
   auto* virtual_clock = cmd->add_flag("--virtual", args->virtual_clock,

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <limits>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -16,6 +17,7 @@
 #include <unistd.h>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/runtime/prepare.h"
 #include "framework/core/error.h"
 #include "framework/model/surface_type.h"
@@ -106,6 +108,7 @@ void Run(const Options& options) {
     throw UserError("sms: the scene has no part '" + options.part + "' (its parts: '" +
                     scene.inner.name + "', '" + scene.outer.name + "')");
   }
+  if (!options.output.empty()) CheckOutputFile("--output", options.output);
   if (!options.output.empty() && selected.size() != 1) {
     throw UserError("sms: -o writes one part; choose it with --part ('" + scene.inner.name +
                     "' or '" + scene.outer.name + "')");
@@ -174,9 +177,10 @@ void AddSmsCommand(CLI::App& app) {
   cmd->add_option("-o,--output", options->output,
                   "CSV file: row, column, axial_mm, angle_deg, x_mm, y_mm, z_mm, area_mm2, v_um, "
                   "v_dimension_um, v_form_um, v_surface_um (needs --part)");
-  cmd->add_option_function<std::uint64_t>(
-      "--seed", [options](const std::uint64_t& s) { options->seed = s; },
-      "Seed (default: the scenario's run.seed)");
+  AddIntegerOption(
+      cmd, "--seed", 0, std::numeric_limits<long>::max(),
+      [options](long s) { options->seed = static_cast<std::uint64_t>(s); },
+      "Seed (default: the scenario's run.seed; the same range)");
   cmd->callback([options] { Run(*options); });
 }
 

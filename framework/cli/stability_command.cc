@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
 #include "framework/device/device_specs.h"
@@ -21,11 +22,11 @@
 #include "framework/safety/virtual_coupling.h"
 #include "framework/scenario/scene.h"
 #include "framework/stability/stability_map.h"
+#include "framework/stability/stiction_experiment.h"
 
 namespace fitfeel::cli {
 namespace {
 
-constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
 
 struct Options {
   std::string scenario = kDefaultScenario;
@@ -154,6 +155,7 @@ void Run(const Options& options) {
   std::sort(map.stiffnesses.begin(), map.stiffnesses.end());
 
   const std::string path = options.output.empty() ? scene.name + "-stability.csv" : options.output;
+  CheckOutputFile("--output", path);
 
   const std::vector<StabilityMapRow> rows = SweepStabilityMap(map);
   WriteFileAtomically(path, StabilityMapCsv(rows));
@@ -207,6 +209,42 @@ void Run(const Options& options) {
                 gains.damping, r.outcome.stable ? "yes" : "no", r.outcome.energy_growth,
                 r.outcome.peak_force);
   }
+  // Stiction (docs/friction.md): the scene's stick-slip friction under a normal force whose
+  // breakaway is 1.5 pushes at the device, held (push) and broken (the breakaway plus a third of
+  // the way to the continuous rating), direct and coupled, at the scene's rate.
+  const FrictionParameters friction = FrictionOf(scene.model);
+  if (friction.static_coefficient > 0.0) {
+    const double breakaway = std::min(1.5 * base.push_force, 0.9 * spec.max_continuous_force);
+    const double hold = breakaway / 1.5;
+    const double slide = breakaway + (spec.max_continuous_force - breakaway) / 3.0;
+    StictionExperiment e;
+    e.spec = spec;
+    e.rate = scene.run.rate;
+    e.force_scale = scale;
+    e.friction = friction;
+    e.normal_force = breakaway / (scale * friction.static_coefficient);
+    e.hand_mass = base.hand_mass;
+    e.horizon = base.horizon;
+    std::cout << "\nstiction: mu_s " << Number(friction.static_coefficient) << ", mu_k "
+              << Number(friction.kinetic_coefficient) << ", breakaway displacement "
+              << Number(friction.breakaway_displacement * 1e6) << " um, normal force "
+              << Number(e.normal_force) << " N: breakaway " << Number(breakaway)
+              << " N at the device\n";
+    std::cout << "  method   push_N  sliding  displacement_mm  final_speed_mm_s  contact_work_J  "
+                 "stable\n";
+    for (RenderingMethod method : {RenderingMethod::kDirect, RenderingMethod::kCoupled}) {
+      for (double push : {hold, slide}) {
+        e.method = method;
+        e.push_force = push;
+        const StictionOutcome out = RunStictionExperiment(e);
+        std::printf("  %-7s  %6.3g  %-7s  %15.4g  %16.4g  %14.4g  %s\n", ToString(method).c_str(),
+                    push, out.sliding ? "yes" : "no", out.displacement * 1e3,
+                    out.final_speed * 1e3, out.contact_work,
+                    push == hold ? (out.stable ? "yes" : "no") : "-");
+      }
+    }
+  }
+
   std::size_t stable = 0;
   for (const StabilityMapRow& r : rows) stable += r.outcome.stable ? 1 : 0;
   std::cout << "\nstability map: " << rows.size() << " runs (" << stable << " stable) -> " << path
@@ -238,13 +276,15 @@ void AddStabilityCommand(CLI::App& app) {
       ->default_str("100 N/m");
   cmd->add_option("--stiffness-max", options->stiffness_max, "High end of the stiffness sweep")
       ->default_str("100 N/mm");
-  cmd->add_option("--per-decade", options->per_decade, "Stiffness values per decade")
-      ->default_val(8)
-      ->check(CLI::Range(1, 100));
+  AddIntegerOption(
+      cmd, "--per-decade", 1, 100,
+      [options](long n) { options->per_decade = static_cast<int>(n); },
+      "Stiffness values per decade (default 8)");
   cmd->add_option("--hand-mass", options->hand_mass, "Mass of the simulated hand (default 0.2 kg)");
   cmd->add_option("--push", options->push, "Steady push of the hand (default 0.5 N)");
   cmd->add_option("--horizon", options->horizon, "Simulated time per run (default 2 s)");
-  cmd->add_option("--force-scale", options->force_scale,
+  AddQuantityOption(cmd, "--force-scale", Dimension::kDimensionless, 1e-6, 1e6,
+                    [options](double scale) { options->force_scale = scale; },
                   "Device N per physical N (default: the scene's safety section, else 1)");
   cmd->callback([options] { Run(*options); });
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
 #include "framework/plot/gnuplot.h"
@@ -78,6 +79,10 @@ void Run(const Options& options) {
   }
   plot::Gnuplot::Find();  // UnsupportedError now rather than after the runs
   const fs::path csv = prefix.string() + ".csv";
+  CheckOutputFile("-o", prefix);
+  for (const char* extension : {".csv", ".png", ".svg"}) {
+    CheckOutputFile("-o", prefix.string() + extension);
+  }
   const std::vector<plot::OutputFile> images = {
       {prefix.string() + ".png", plot::ImageFormat::kPng},
       {prefix.string() + ".svg", plot::ImageFormat::kSvg}};
@@ -134,9 +139,9 @@ void AddTradeoffCommand(CLI::App& app) {
                   "Grids ROWSxCOLUMNS per part, comma-separated, 'auto' for the surface type's "
                   "(default: 8x36,10x72,20x90,20x180,40x180,40x360,80x720,160x1440, the "
                   "scene's grid and auto); the finest is the reference");
-  cmd->add_option("--seeds", options->seeds,
-                  "Runs per grid, seeds run.seed, run.seed+1, ... (default 10)")
-      ->check(CLI::Range(1, 1000));
+  AddIntegerOption(
+      cmd, "--seeds", 1, 1000, [options](long n) { options->seeds = static_cast<int>(n); },
+      "Runs per grid, seeds run.seed, run.seed+1, ... (default 10)");
   cmd->add_option("--duration", options->duration,
                   "Run duration, overrides run.duration (e.g. '2 s')");
   cmd->add_option("--cost", options->cost,

@@ -17,14 +17,19 @@ void AddValidateCommand(CLI::App& app) {
       "validate", "Check a scenario file (units, ranges, plugins) without running it");
   auto file = std::make_shared<std::string>();
   cmd->add_option("file", *file, "Scenario file (YAML)")->required();
-  cmd->callback([file] {
+  auto allow_large = std::make_shared<bool>(false);
+  cmd->add_flag("--allow-large", *allow_large,
+                "accept a scene whose estimated preparation exceeds 1 GiB or 30 s, as run does");
+  cmd->callback([file, allow_large] {
     PluginRegistry registry;
     registry.LoadAll();
     for (const RefusedLibrary& refused : registry.refused()) {
       std::cerr << "fitfeel: note: plugin library " << refused.library.string()
                 << " was not loaded: " << refused.reason << "\n";
     }
-    const Scene scene = LoadScene(*file, registry);
+    LoadOptions options;
+    options.allow_large = *allow_large;
+    const Scene scene = LoadScene(*file, registry, options);
     std::cout << DescribeScene(scene) << "valid\n";
   });
 }

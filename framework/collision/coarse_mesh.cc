@@ -1,5 +1,6 @@
 #include "framework/collision/coarse_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -72,16 +73,20 @@ int FacetsForChordalError(double radius, double max_chordal_error) {
 }
 
 TriangleMesh MakeClosedCylinder(double radius, double y0, double y1, int facets) {
-  CheckSpan("closed cylinder", y0, y1);
-  CheckFacets("closed cylinder", facets);
-  if (!(radius > 0.0) || !std::isfinite(radius)) {
-    throw UserError("closed cylinder: radius must be finite and > 0");
+  return MakeClosedFrustum(radius, radius, y0, y1, facets);
+}
+
+TriangleMesh MakeClosedFrustum(double radius0, double radius1, double y0, double y1, int facets) {
+  CheckSpan("closed frustum", y0, y1);
+  CheckFacets("closed frustum", facets);
+  if (!(radius0 > 0.0) || !std::isfinite(radius0) || !(radius1 > 0.0) || !std::isfinite(radius1)) {
+    throw UserError("closed frustum: radii must be finite and > 0");
   }
   TriangleMesh mesh;
   mesh.vertices.reserve(2 * facets + 2);
   mesh.triangles.reserve(4 * facets);
-  const int low = AddRing(&mesh, radius, y0, facets);
-  const int high = AddRing(&mesh, radius, y1, facets);
+  const int low = AddRing(&mesh, radius0, y0, facets);
+  const int high = AddRing(&mesh, radius1, y1, facets);
   const int low_centre = static_cast<int>(mesh.vertices.size());
   mesh.vertices.emplace_back(0.0, y0, 0.0);
   const int high_centre = low_centre + 1;
@@ -97,20 +102,25 @@ TriangleMesh MakeClosedCylinder(double radius, double y0, double y1, int facets)
 }
 
 TriangleMesh MakeTube(double inner_radius, double outer_radius, double y0, double y1, int facets) {
+  return MakeTaperedTube(inner_radius, inner_radius, outer_radius, y0, y1, facets);
+}
+
+TriangleMesh MakeTaperedTube(double inner_radius0, double inner_radius1, double outer_radius,
+                             double y0, double y1, int facets) {
   CheckSpan("tube", y0, y1);
   CheckFacets("tube", facets);
-  const double inner_vertex_radius = inner_radius / std::cos(M_PI / facets);
-  if (!(inner_radius > 0.0) || !std::isfinite(outer_radius) ||
-      !(ChordalError(outer_radius, facets) + inner_vertex_radius < outer_radius)) {
-    throw UserError("tube: needs 0 < inner radius and the inner polygon inside the outer one");
+  const double widest = std::max(inner_radius0, inner_radius1) / std::cos(M_PI / facets);
+  if (!(inner_radius0 > 0.0) || !(inner_radius1 > 0.0) || !std::isfinite(outer_radius) ||
+      !(ChordalError(outer_radius, facets) + widest < outer_radius)) {
+    throw UserError("tube: needs 0 < inner radii and the inner polygon inside the outer one");
   }
   TriangleMesh mesh;
   mesh.vertices.reserve(4 * facets);
   mesh.triangles.reserve(8 * facets);
   const int outer_low = AddRing(&mesh, outer_radius, y0, facets);
   const int outer_high = AddRing(&mesh, outer_radius, y1, facets);
-  const int inner_low = AddRing(&mesh, inner_vertex_radius, y0, facets);
-  const int inner_high = AddRing(&mesh, inner_vertex_radius, y1, facets);
+  const int inner_low = AddRing(&mesh, inner_radius0 / std::cos(M_PI / facets), y0, facets);
+  const int inner_high = AddRing(&mesh, inner_radius1 / std::cos(M_PI / facets), y1, facets);
   for (int i = 0; i < facets; ++i) {
     const int j = (i + 1) % facets;
     AddWallQuad(&mesh, outer_low, outer_high, i, facets, /*outward=*/true);
@@ -122,6 +132,33 @@ TriangleMesh MakeTube(double inner_radius, double outer_radius, double y0, doubl
     mesh.triangles.emplace_back(inner_high + i, inner_high + j, outer_high + j);
   }
   return mesh;
+}
+
+TriangleMesh MakeBox(const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
+  if (!low.allFinite() || !high.allFinite() || !(low.array() < high.array()).all()) {
+    throw UserError("box: needs finite corners with low < high on every axis");
+  }
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k) {
+    mesh.vertices.emplace_back((k & 1) ? high.x() : low.x(), (k & 2) ? high.y() : low.y(),
+                               (k & 4) ? high.z() : low.z());
+  }
+  // Two triangles per face, counter-clockwise seen from outside.
+  const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& f : faces) {
+    mesh.triangles.emplace_back(f[0], f[1], f[2]);
+    mesh.triangles.emplace_back(f[0], f[2], f[3]);
+  }
+  return mesh;
+}
+
+void AppendMesh(const TriangleMesh& part, TriangleMesh* mesh) {
+  const int offset = static_cast<int>(mesh->vertices.size());
+  mesh->vertices.insert(mesh->vertices.end(), part.vertices.begin(), part.vertices.end());
+  for (const Eigen::Vector3i& t : part.triangles) {
+    mesh->triangles.push_back(t + Eigen::Vector3i::Constant(offset));
+  }
 }
 
 }  // namespace fitfeel

@@ -54,4 +54,20 @@ FITFEEL_API TriangleMesh MakeClosedCylinder(double radius, double y0, double y1,
 FITFEEL_API TriangleMesh MakeTube(double inner_radius, double outer_radius, double y0, double y1,
                                   int facets);
 
+// A closed frustum about the y axis: vertices on the circle of `radius0` at y0 and `radius1` at
+// y1, end caps at both ends (a cone's pin, a chamfered end). Throws UserError as the cylinder.
+FITFEEL_API TriangleMesh MakeClosedFrustum(double radius0, double radius1, double y0, double y1,
+                                           int facets);
+
+// A tube as MakeTube whose bore's facets are tangent to the circle of `inner_radius0` at y0 and
+// `inner_radius1` at y1 (a taper-reamed hole, a chamfered entrance).
+FITFEEL_API TriangleMesh MakeTaperedTube(double inner_radius0, double inner_radius1,
+                                         double outer_radius, double y0, double y1, int facets);
+
+// A closed axis-aligned box from `low` to `high`. Throws UserError unless low < high on every axis.
+FITFEEL_API TriangleMesh MakeBox(const Eigen::Vector3d& low, const Eigen::Vector3d& high);
+
+// Appends `part`'s vertices and triangles to `mesh` (several closed solids in one mesh).
+FITFEEL_API void AppendMesh(const TriangleMesh& part, TriangleMesh* mesh);
+
 }  // namespace fitfeel

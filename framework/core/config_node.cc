@@ -161,23 +161,19 @@ double ConfigNode::AsQuantityIn(Dimension dimension, double min, double max,
 }
 
 long ConfigNode::AsInteger(long min, long max) const {
-  std::string expected = "an integer";
-  if (min != std::numeric_limits<long>::min() && max != std::numeric_limits<long>::max()) {
-    expected += " in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-  } else if (min != std::numeric_limits<long>::min()) {
-    expected += " >= " + std::to_string(min);
-  } else if (max != std::numeric_limits<long>::max()) {
-    expected += " <= " + std::to_string(max);
-  }
+  const std::string expected = DescribeIntegerRange(min, max);
   if (!is_scalar()) Fail(expected, Describe());
-  std::string_view text = node_.Scalar();
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  long value = 0;
-  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || result.ptr != text.data() + text.size()) Fail(expected, Describe());
-  if (result.ec == std::errc::result_out_of_range) Fail(expected, Describe() + " (too large)");
-  if (value < min || value > max) Fail(expected, Describe());
-  return value;
+  const std::string& text = node_.Scalar();
+  const std::optional<long> value = ParseInteger(text, min, max);
+  if (!value) {
+    long ignored = 0;
+    const bool too_large =
+        !text.empty() && std::from_chars(text.data() + (text[0] == '+'), text.data() + text.size(),
+                                         ignored)
+                                 .ec == std::errc::result_out_of_range;
+    Fail(expected, Describe() + (too_large ? " (too large)" : ""));
+  }
+  return *value;
 }
 
 bool ConfigNode::AsBool() const {

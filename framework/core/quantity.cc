@@ -318,4 +318,24 @@ std::string FormatQuantity(double si_value, Dimension dimension) {
   return number(si_value / scale) + " " + std::string(chosen->symbol);
 }
 
+std::optional<long> ParseInteger(std::string_view text, long min, long max) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty() || (text.front() == '-' && min >= 0)) return std::nullopt;
+  long value = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size()) return std::nullopt;
+  if (value < min || value > max) return std::nullopt;
+  return value;
+}
+
+std::string DescribeIntegerRange(long min, long max) {
+  constexpr long kLow = std::numeric_limits<long>::min(), kHigh = std::numeric_limits<long>::max();
+  if (min != kLow && max != kHigh) {
+    return "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  }
+  if (min != kLow) return "an integer >= " + std::to_string(min);
+  if (max != kHigh) return "an integer <= " + std::to_string(max);
+  return "an integer";
+}
+
 }  // namespace fitfeel

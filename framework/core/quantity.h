@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <optional>
 #include <string_view>
 
 #include "framework/core/export.h"
@@ -35,6 +36,13 @@ FITFEEL_API std::string DescribeDimension(Dimension dimension);
 // text is not a number, the unit is missing, unknown or of another dimension, or the value is not
 // finite.
 FITFEEL_API double ParseQuantity(std::string_view text, Dimension dimension);
+
+// Integers as scenario keys and command-line options both take them: an optional '+', decimal
+// digits, nothing else, within [min, max]. Empty on anything else (empty text, a sign where none
+// belongs, an overflow, a fraction): never clamped.
+FITFEEL_API std::optional<long> ParseInteger(std::string_view text, long min, long max);
+// "an integer", "an integer >= 0", "an integer in [1, 1000]": what ParseInteger accepts.
+FITFEEL_API std::string DescribeIntegerRange(long min, long max);
 
 // Formats an SI value in a unit suited to its magnitude, e.g. 2.0e-5 m -> "20 um".
 FITFEEL_API std::string FormatQuantity(double value_si, Dimension dimension);

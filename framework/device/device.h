@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
@@ -20,6 +21,9 @@ struct DeviceSpec {
   double max_continuous_force = 0.0;         // N
   double max_stiffness = 0.0;                // N/m, largest stable rendered stiffness
   double damping = 0.0;                      // N*s/m, physical damping usable for passivity
+  // Whether the passivity observer may count `damping` as dissipation: false for hardware whose
+  // damping is a bound inferred from its stiffness limit rather than a measurement.
+  bool credit_damping = true;
   Eigen::Vector3d workspace{0.0, 0.0, 0.0};  // extent of the reachable box, m
   double native_rate = 1000.0;               // Hz
 };
@@ -72,6 +76,7 @@ class FITFEEL_API Device {
     DoSetEnvironmentGap(gap >= 0.0 ? gap : 0.0, direction);
   }
 
+  // The device's limits. A device that measures them (hardware) knows them only after Start.
   virtual DeviceSpec spec() const = 0;
   virtual ClockOwner clock_owner() const { return ClockOwner::kFramework; }
   // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
@@ -79,6 +84,9 @@ class FITFEEL_API Device {
   virtual void RunServoLoop(double duration, const std::function<bool(double)>& tick);
   // True while the device wants the run to continue (e.g. a replay that has not ended).
   virtual bool active() const { return true; }
+  // After a run: what the device saw (faults, recoveries, calibration, measured rate), written to
+  // summary.json's `device_report`; null when it has nothing to report.
+  virtual nlohmann::json report() const { return nullptr; }
 
  protected:
   virtual void DoConfigure(const ConfigNode& node) = 0;

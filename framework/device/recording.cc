@@ -2,9 +2,12 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <system_error>
+
+#include "framework/core/line_endings.h"
 
 namespace fitfeel {
 namespace {
@@ -59,6 +62,26 @@ void Unflatten(const double* in, RecordedSample* s) {
   for (int k = 0; k < 3; ++k) s->delivered.force[k] = in[i++];
   for (int k = 0; k < 3; ++k) s->delivered.torque[k] = in[i++];
   for (int k = 0; k < 2; ++k) s->settle_load[k] = in[i++];
+}
+
+// Physical bounds of a recorded sample: no haptic device's workspace reaches beyond a metre, so
+// 10 m is an order of magnitude past any; a hand moves at a few m/s and turns at a few rad/s
+// (100 m/s and 1000 rad/s are beyond any device's encoders); no part pair presses harder than
+// 10 MN (a 3 m shrink fit); a session is shorter than a year.
+constexpr double kMaxRecordedTime = 3.2e7;          // s
+constexpr double kMaxRecordedPosition = 10.0;       // m
+constexpr double kMaxRecordedSpeed = 100.0;         // m/s
+constexpr double kMaxRecordedAngularSpeed = 1000.0; // rad/s
+constexpr double kMaxRecordedForce = 1e7;           // N (torques: N*m)
+
+double ColumnBound(int column) {
+  const std::string unit = kColumns[column].unit;
+  if (unit == "s") return kMaxRecordedTime;
+  if (unit == "m") return kMaxRecordedPosition;
+  if (unit == "1") return kMaxRecordedForce;  // quaternion parts: the unit-length check is exact
+  if (unit == "m/s") return kMaxRecordedSpeed;
+  if (unit == "rad/s") return kMaxRecordedAngularSpeed;
+  return kMaxRecordedForce;
 }
 
 // A quaternion written from a rotation is unit to ~1e-16; 1e-9 leaves room for hand-made files
@@ -166,7 +189,7 @@ Recording ReadRecording(const std::filesystem::path& file) {
   if (!in) throw RecordingError(file, 0, "cannot open the recording");
   std::stringstream whole;
   whole << in.rdbuf();
-  const std::string text = whole.str();
+  const std::string text = NormalizeLineEndings(whole.str());
 
   Recording recording;
   int line_number = 0;
@@ -289,6 +312,12 @@ Recording ReadRecording(const std::filesystem::path& file) {
       if (r.ec != std::errc() || r.ptr != end || !std::isfinite(value)) {
         fail("field " + std::to_string(c + 1) + " (" + Expected(c) + ") '" + f[c] +
              "' is not a finite number");
+      }
+      if (!(std::abs(value) <= ColumnBound(c))) {
+        char bound[32];
+        std::snprintf(bound, sizeof bound, "%g", ColumnBound(c));
+        fail("field " + std::to_string(c + 1) + " (" + Expected(c) + ") '" + f[c] +
+             "' is outside physical sense (|value| <= " + bound + " " + kColumns[c].unit + ")");
       }
       values[v++] = value;
     }

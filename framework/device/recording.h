@@ -77,7 +77,8 @@ FITFEEL_API void WriteRecording(const std::filesystem::path& file, const Recordi
 
 // Reads and checks a recording; throws RecordingError with the line and reason for a missing or
 // unknown format line, a column without or with the wrong unit, a wrong field count, a field that
-// is not a finite number, time not strictly increasing, a non-unit quaternion, or a missing or
+// is not a finite number or lies outside physical sense (positions beyond 10 m, speeds above
+// 100 m/s, forces above 10 MN: recording.cc), time not strictly increasing, a non-unit quaternion, or a missing or
 // inconsistent end line (truncation).
 FITFEEL_API Recording ReadRecording(const std::filesystem::path& file);
 

@@ -8,6 +8,7 @@
 #include "framework/core/wrench.h"
 #include "framework/device/device.h"
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/resistance_law.h"
 
 namespace fitfeel {
 
@@ -21,6 +22,7 @@ struct StageOutput {
   Wrench wrench;                         // on the moving part, scene frame
   MatingPose pose;                       // where the moving part is relative to the fixed one
   ContactState contact;                  // filled by the constrained stage
+  ElasticLimitCheck elastic;             // the contact's stresses against yield (constrained)
   StageId next = StageId::kPositioning;  // stage for the next tick (hand-over)
   // Radial stiffness of the contact at this pose, -dF/dx along the force (N/m); 0 when free. A
   // simulated device integrates its inertia implicitly with it, the safety chain's coupling too.

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "framework/core/export.h"
@@ -63,6 +65,11 @@ class FITFEEL_API ContactAnalyzer {
   // Not for the tick (may allocate): the interference delta(P_ij) >= 0 of every cell of the inner
   // part's grid at `pose` (zero where there is clearance), for pressure maps and pictures.
   void InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
+  // Not for the tick (may allocate): the assembly space of the cross-sections engaged at `pose`
+  // (paper section 3.1), the convex polygon of (x, z) positions the moving axis may take, m,
+  // counter-clockwise. True when the analyzer describes it (the polygon is empty when the parts
+  // interfere or are not engaged); false (the default) when this surface type does not.
+  bool AssemblySpace(const MatingPose& pose, std::vector<Eigen::Vector2d>* polygon) const;
 
  protected:
   virtual void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
@@ -70,6 +77,8 @@ class FITFEEL_API ContactAnalyzer {
                          const ModelSettings& settings) = 0;
   virtual void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept = 0;
   virtual void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
+  virtual bool DoAssemblySpace(const MatingPose& pose,
+                               std::vector<Eigen::Vector2d>* polygon) const;
 
  private:
   bool prepared_ = false;

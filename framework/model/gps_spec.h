@@ -57,7 +57,18 @@ struct Material {
   std::string name;
   double youngs_modulus = 0.0;  // Pa
   double poisson = 0.0;
+  // Yield strength R_e (or R_p0.2), Pa, for the elastic-limit check (DIN 7190); 0 = not given,
+  // no check.
+  double yield_strength = 0.0;
 };
+
+// The Poisson's ratios every resistance law accepts and the scenario parser admits: one range, so
+// that a scene `validate` accepts is never refused by a law. Machined metals, ceramics and
+// polymers lie in [0.1, 0.45]. At 0.5 (incompressible) the Lame and plane-strain compliances
+// degenerate, and negative ratios belong to engineered auxetic foams, not to machined parts.
+inline constexpr double kMinPoisson = 0.0;  // inclusive
+inline constexpr double kMaxPoisson = 0.5;  // exclusive
+inline bool PoissonInRange(double nu) { return nu >= kMinPoisson && nu < kMaxPoisson; }
 
 // Surface-type-specific nominal geometry of one part's mating surface; each surface plugin derives
 // its own and parses it from the part's `geometry` node.

@@ -19,7 +19,7 @@ struct Elastic {
 };
 
 Elastic Effective(const Material& m, bool plane_strain) {
-  if (!(m.youngs_modulus > 0.0) || !(m.poisson >= 0.0 && m.poisson < 0.5)) {
+  if (!(m.youngs_modulus > 0.0) || !PoissonInRange(m.poisson)) {
     throw UserError("material '" + m.name +
                     "': elastic compliance needs E > 0 and 0 <= Poisson < 0.5");
   }

@@ -36,11 +36,21 @@ ContactAnalyzer::~ContactAnalyzer() = default;
 ResistanceLaw::~ResistanceLaw() = default;
 SurfaceType::~SurfaceType() = default;
 
-SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& resolution) const {
+GridShape Discretizer::Shape(const PartSpec& part, const Resolution& resolution) const {
   if (!part.geometry) throw UserError("part '" + part.name + "' has no geometry to discretize");
   if (resolution.rows < 0 || resolution.columns < 0) {
     throw UserError("resolution of part '" + part.name + "' must not be negative");
   }
+  return DoShape(part, resolution);
+}
+
+GridShape Discretizer::DoShape(const PartSpec&, const Resolution& resolution) const {
+  if (resolution.is_auto()) return GridShape{};
+  return GridShape{resolution.rows, resolution.columns};
+}
+
+SurfaceGrid Discretizer::Discretize(const PartSpec& part, const Resolution& resolution) const {
+  Shape(part, resolution);
   SurfaceGrid grid = DoDiscretize(part, resolution);
   FITFEEL_DEMAND(grid.rows > 0 && grid.columns > 0);
   FITFEEL_DEMAND(grid.area.size() == grid.size() && grid.centre.cols() == grid.size());
@@ -85,6 +95,18 @@ void ContactAnalyzer::InterferenceMap(const MatingPose& pose, Eigen::VectorXd* d
   DoInterferenceMap(pose, delta);
 }
 
+bool ContactAnalyzer::AssemblySpace(const MatingPose& pose,
+                                    std::vector<Eigen::Vector2d>* polygon) const {
+  if (polygon == nullptr) throw UserError("assembly space: no output polygon");
+  polygon->clear();
+  if (!prepared_) throw UserError("assembly space of an analyzer that is not prepared");
+  return DoAssemblySpace(pose, polygon);
+}
+
+bool ContactAnalyzer::DoAssemblySpace(const MatingPose&, std::vector<Eigen::Vector2d>*) const {
+  return false;
+}
+
 void ContactAnalyzer::DoInterferenceMap(const MatingPose&, Eigen::VectorXd*) const {
   throw UnsupportedError("this surface type does not produce interference maps");
 }
@@ -100,6 +122,25 @@ void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& mo
                              Wrench* out) const noexcept {
   FITFEEL_DEMAND(out != nullptr);
   DoEvaluate(contact, motion, out);
+}
+
+void ResistanceLaw::Evaluate(const ContactState& contact, const MatingMotion& motion,
+                             LawState* state, Wrench* out) const noexcept {
+  FITFEEL_DEMAND(out != nullptr && state != nullptr);
+  DoEvaluateWithState(contact, motion, state, out);
+}
+
+void ResistanceLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                        LawState*, Wrench* out) const noexcept {
+  DoEvaluate(contact, motion, out);
+}
+
+ElasticLimitCheck ResistanceLaw::CheckElasticLimit(const ContactState& contact) const noexcept {
+  return DoCheckElasticLimit(contact);
+}
+
+ElasticLimitCheck ResistanceLaw::DoCheckElasticLimit(const ContactState&) const noexcept {
+  return {};
 }
 
 double ResistanceLaw::PressurePerInterference() const {
@@ -143,6 +184,24 @@ std::vector<CharacteristicCheck> SurfaceType::DoEvaluateCharacteristics(
   throw UnsupportedError("part '" + part.name +
                          "': this surface type cannot evaluate its characteristics yet");
 }
+
+RenderMesh SurfaceType::MakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {
+  if (grid.size() <= 0 || grid.centre.cols() != grid.size() || grid.normal.cols() != grid.size()) {
+    throw UserError("part '" + part.name + "': render mesh of an empty or inconsistent grid");
+  }
+  RenderMesh mesh = DoMakeRenderMesh(part, grid);
+  if (mesh.empty() && mesh.corners.empty()) return mesh;
+  const auto cells = static_cast<std::size_t>(grid.size());
+  if (mesh.directions.size() != cells || mesh.corners.size() != 4 * cells) {
+    throw UserError("part '" + part.name + "': the surface plugin's render mesh has " +
+                    std::to_string(mesh.corners.size()) + " corners and " +
+                    std::to_string(mesh.directions.size()) + " directions for " +
+                    std::to_string(cells) + " cells (expected 4 corners and 1 direction each)");
+  }
+  return mesh;
+}
+
+RenderMesh SurfaceType::DoMakeRenderMesh(const PartSpec&, const SurfaceGrid&) const { return {}; }
 
 std::unique_ptr<ResistanceLaw> SurfaceType::MakeLaw(std::string_view name) const {
   const auto names = law_names();

@@ -5,19 +5,36 @@
 
 #include "framework/core/config_node.h"
 #include "framework/model/discretizer.h"
+#include "framework/model/friction.h"
 #include "framework/model/variation_generator.h"
 
 namespace fitfeel {
 
+// The largest depth tables a contact analyzer builds (their rows are depth steps along the mating
+// axis, each with up to columns + 4 polygon vertices): a step far finer than the grid's rows buys
+// nothing, since cells are piecewise constant, and 1e8 vertices are 1.6 GB. The scenario loader
+// refuses a depth_step beyond them, the analyzers never build one.
+inline constexpr double kMaxDepthSteps = 2e6;
+inline constexpr double kMaxDepthTableVertices = 1e8;
+
 // The scenario's `model` section, in SI.
 struct ModelSettings {
   std::string law;                     // law name offered by the surface type ("gps", "ve1", ...)
-  double friction = 0.0;               // Coulomb coefficient mu
+  double friction = 0.0;               // Coulomb (kinetic, sliding) coefficient mu_k
+  double static_friction = 0.0;        // breakaway coefficient mu_s >= mu_k
+  double breakaway_displacement = kSteelBreakawayDisplacement;  // m (friction.h)
   double contact_stiffness = 0.0;      // k_p, N/m (eq. 9)
   Resolution resolution;               // m x n, or auto
   TextureMode texture = TextureMode::kExpected;
   double depth_step = 0.0;             // tabulation step along the mating axis, m (0 = auto)
   std::optional<ConfigNode> extra;     // surface-specific keys under model.options, if any
 };
+
+// The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in
+// code that set only `friction`) is taken as mu_s = mu_k: Coulomb friction with stiction.
+inline FrictionParameters FrictionOf(const ModelSettings& s) {
+  return {s.static_friction > s.friction ? s.static_friction : s.friction, s.friction,
+          s.breakaway_displacement};
+}
 
 }  // namespace fitfeel

@@ -27,11 +27,7 @@
 
 namespace fitfeel::revolution {
 
-// Grid dimensions; a plugin fills the cells.
-struct GridShape {
-  int rows = 0;
-  int columns = 0;
-};
+using fitfeel::GridShape;
 
 // The automatic resolution of a surface of revolution: `auto_columns` columns and one row per
 // `auto_row_pitch` of the axial extent, clamped to [min_auto_rows, max_auto_rows].

@@ -10,6 +10,7 @@
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/discretizer.h"
+#include "framework/model/render_mesh.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/resistance_law.h"
 #include "framework/model/variation_generator.h"
@@ -79,6 +80,12 @@ class FITFEEL_API SurfaceType {
     return {};
   }
 
+  // The render mesh of `part`'s mating surface on its grid, for a viewer (RenderMesh says the
+  // frames); not for the tick. Empty when the surface type provides none (the default): a viewer
+  // then draws a placeholder that says so. Throws UserError for a grid that does not match the
+  // part, or when the plugin's mesh does not match the grid (4 corners and 1 direction per cell).
+  RenderMesh MakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const;
+
  protected:
   virtual std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                           const ConfigNode& geometry) const = 0;
@@ -87,6 +94,8 @@ class FITFEEL_API SurfaceType {
   virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
   // Default: the surface takes no options, so any key is unknown.
   virtual void DoCheckOptions(const ConfigNode& options) const;
+  // Default: an empty mesh (no render mesh for this surface type).
+  virtual RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const;
   // Default: throws UnsupportedError (a surface type without a metrology binding yet).
   virtual std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const;

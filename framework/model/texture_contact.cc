@@ -84,6 +84,13 @@ ExpectedInterferenceTable::ExpectedInterferenceTable(const TruncatedGaussian& te
   upper_ = texture.upper;
   mean_ = ExpectedInterference(texture, lower_) + lower_;  // E[X]
   step_ = (upper_ - lower_) / (points - 1);
+  // The truncated Gaussian's density peaks at its mean when the mean is inside the limits, else
+  // at the limit nearest to it.
+  const double peak = std::clamp(texture.mean, lower_, upper_);
+  const double z = (peak - texture.mean) / texture.sigma;
+  const double mass = 0.5 * (std::erf((upper_ - texture.mean) / (texture.sigma * M_SQRT2)) -
+                             std::erf((lower_ - texture.mean) / (texture.sigma * M_SQRT2)));
+  max_density_ = std::exp(-0.5 * z * z) / (texture.sigma * std::sqrt(2.0 * M_PI) * mass);
   values_.resize(static_cast<std::size_t>(points));
   for (int i = 0; i < points; ++i) {
     values_[static_cast<std::size_t>(i)] = ExpectedInterference(texture, lower_ + i * step_);

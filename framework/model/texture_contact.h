@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "framework/core/export.h"
@@ -45,7 +46,14 @@ class FITFEEL_API ExpectedInterferenceTable {
   explicit ExpectedInterferenceTable(const TruncatedGaussian& texture, int points = 4097);
 
   bool sharp() const { return sharp_; }
+  // Beyond [lower, upper] the expected interference is exact and simple: mean - g below, 0 above
+  // (both 0 for a sharp contact).
+  double lower() const { return lower_; }
   double upper() const { return upper_; }
+  double mean() const { return mean_; }
+  // Largest probability density of the height difference X (its second derivative in g), 1/m;
+  // +inf for a sharp contact. Bounds the error of interpolating E[(X - g)+] linearly in g.
+  double max_density() const { return max_density_; }
   // E[(X - g)+], or max(0, -g) for a sharp contact.
   double operator()(double gap) const noexcept;
 
@@ -54,6 +62,7 @@ class FITFEEL_API ExpectedInterferenceTable {
   double lower_ = 0.0;
   double upper_ = 0.0;
   double mean_ = 0.0;
+  double max_density_ = std::numeric_limits<double>::infinity();
   double step_ = 0.0;
   std::vector<double> values_;
 };

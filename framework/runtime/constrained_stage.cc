@@ -14,6 +14,8 @@ namespace {
 struct ConstrainedState final : StageState {
   // Where the last settled tick left the part: the next settle's starting point.
   Eigen::Vector2d last_settled{0.0, 0.0};
+  // The law's state (friction junctions), advanced once per tick at the rendered pose.
+  LawState law;
 };
 
 }  // namespace
@@ -31,21 +33,31 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
                                   StageOutput* out) const noexcept {
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
+  out->elastic = ElasticLimitCheck{};
   analyzer_.Evaluate(out->pose, &out->contact);
   MatingMotion motion;
   motion.velocity = device.velocity;
   motion.angular_velocity = device.angular_velocity;
+  motion.depth = out->pose.depth;
+  motion.angle = out->pose.angle;
   out->wrench.SetZero();
-  law_.Evaluate(out->contact, motion, &out->wrench);
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
-  if (device.settle_load.squaredNorm() > 0.0 && Settle(device.settle_load, motion,
-                                                  &static_cast<ConstrainedState*>(state)->last_settled, out)) {
+  auto* run = static_cast<ConstrainedState*>(state);
+  // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
+  // later re-entry forms its contact afresh rather than at a stale anchor.
+  if (!out->contact.engaged) run->law = LawState{};
+  const bool settle = device.settle_load.squaredNorm() > 0.0;
+  if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
+  if (settle && Settle(device.settle_load, motion, &run->last_settled, &run->law, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
     out->gap_direction.setZero();
     return;
   }
+  out->wrench.SetZero();
+  law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
+  out->elastic = law_.CheckElasticLimit(out->contact);
   out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
@@ -129,7 +141,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
 }
 
 bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-                              Eigen::Vector2d* last_settled, StageOutput* out) const noexcept {
+                              Eigen::Vector2d* last_settled, LawState* law_state,
+                              StageOutput* out) const noexcept {
   const double weight = load.norm();
   if (!std::isfinite(weight)) return false;
   const Eigen::Vector2d down = load / weight;
@@ -175,7 +188,8 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   work.pose.offset = at;
   analyzer_.Evaluate(work.pose, &work.contact);
   work.wrench.SetZero();
-  law_.Evaluate(work.contact, motion, &work.wrench);
+  law_.Evaluate(work.contact, motion, law_state, &work.wrench);
+  out->elastic = law_.CheckElasticLimit(work.contact);
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;

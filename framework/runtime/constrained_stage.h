@@ -16,6 +16,8 @@ namespace fitfeel {
 class FITFEEL_API ConstrainedStage final : public Stage {
  public:
   // Both must be prepared and outlive the stage. Throws UserError if the analyzer is not prepared.
+  // Probes (settling searches, stiffness) evaluate the law without history; the tick's wrench
+  // comes from one evaluation with the run's law state at the pose the part is rendered at.
   ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law);
 
   StageId id() const override { return StageId::kConstrained; }
@@ -33,10 +35,12 @@ class FITFEEL_API ConstrainedStage final : public Stage {
 
   // Quasi-static placement (DeviceState::settle_load): finds the offset along the load where the
   // rendered radial force balances it, starting from and updating `*last_settled` (the previous
-  // settled offset), and leaves pose, contact and wrench there. Returns false (outputs and
+  // settled offset), and leaves pose, contact and wrench there, the wrench from the law with the
+  // run's `*law_state` (advanced once, at the settled pose). Returns false (outputs, state and
   // `*last_settled` untouched) where nothing can carry the load, e.g. before the surfaces overlap.
   bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-              Eigen::Vector2d* last_settled, StageOutput* out) const noexcept;
+              Eigen::Vector2d* last_settled, LawState* law_state,
+              StageOutput* out) const noexcept;
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
   // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,

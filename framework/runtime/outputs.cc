@@ -61,7 +61,10 @@ std::string TraceHeader() {
          // Appended last so the contract's earlier columns keep their places. x_mm and z_mm are the
          // device's position; the pose's offset differs where the constrained stage settles the
          // part quasi-statically under a radial load (DeviceState::settle_load).
-         "offset_x_um,offset_z_um";
+         "offset_x_um,offset_z_um,"
+         // The largest equivalent stress over the yield strength (DIN 7190), and 1 where a part
+         // yields (the ratio exceeds 1): the elastic model no longer holds there.
+         "elastic_utilisation,yielding";
 }
 
 std::string TraceRow(const TickRecord& r) {
@@ -99,6 +102,8 @@ std::string TraceRow(const TickRecord& r) {
   for (int i = 0; i < 3; ++i) add(r.device_wrench.torque[i]);
   add(r.pose.offset.x() * 1e6);
   add(r.pose.offset.y() * 1e6);
+  add(r.elastic.utilisation);
+  row += r.elastic.utilisation > 1.0 ? ",1" : ",0";
   return row;
 }
 
@@ -106,8 +111,15 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
                            const RunStats& stats) {
   Summary axial, fy, radial, torque, depth;
   std::uint64_t interference_ticks = 0;
+  std::uint64_t yielding_ticks = 0;
+  const TickRecord* worst = nullptr;  // the tick with the largest elastic-limit utilisation
   for (const auto& r : trace) {
     if (r.stage != StageId::kConstrained) continue;
+    if (r.elastic.utilisation > 1.0) ++yielding_ticks;
+    if (r.elastic.utilisation > 0.0 &&
+        (worst == nullptr || r.elastic.utilisation > worst->elastic.utilisation)) {
+      worst = &r;
+    }
     axial.Add(std::abs(r.wrench.force.y()));
     fy.Add(r.wrench.force.y());
     radial.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
@@ -145,6 +157,20 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
   j["radial_resistance_N"] = radial.ToJson();
   if (info.rotational) j["torque_Nm"] = torque.ToJson();
   j["depth_mm"] = depth.ToJson();
+  // Where and by how much the contact's stresses came closest to (or passed) the yield strength.
+  nlohmann::json elastic = {{"yielding_ticks", yielding_ticks}};
+  if (worst != nullptr) {
+    const double u = worst->elastic.utilisation;
+    elastic["max_utilisation"] = u;
+    elastic["part"] = worst->elastic.part == 2 ? "inner" : "outer";
+    elastic["at_t_s"] = worst->time;
+    elastic["at_depth_mm"] = worst->pose.depth * 1e3;
+    elastic["at_angle_rad"] = worst->pose.angle;
+    elastic["excess_percent"] = u > 1.0 ? (u - 1.0) * 100.0 : 0.0;
+  } else {
+    elastic["max_utilisation"] = nullptr;  // not checked: no law check or no yield strength
+  }
+  j["elastic_limit"] = elastic;
   const SafetyReport& safety = stats.safety;
   nlohmann::json coupling = {
       {"mode", safety.coupling == CouplingMode::kSpringDamper ? "spring_damper" : "direct"}};
@@ -169,6 +195,7 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
                  {"energy_absorbed_J", safety.energy},
                  {"energy_created_J", safety.energy_created},
                  {"controller_energy_J", safety.controller_energy}};
+  if (!info.device_report.is_null()) j["device_report"] = info.device_report;
   j["prepare_s"] = {{"discretize", info.discretize_seconds},
                     {"generate", info.generate_seconds},
                     {"analyze", info.analyze_seconds},

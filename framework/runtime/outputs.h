@@ -33,6 +33,8 @@ struct RunInfo {
   double analyze_seconds = 0.0;
   double prepare_seconds = 0.0;
   int inner_rows = 0, inner_columns = 0, outer_rows = 0, outer_columns = 0;
+  // What the device reported after the run (Device::report); null: nothing.
+  nlohmann::json device_report;
 };
 
 struct OutputPaths {

@@ -93,6 +93,7 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageState* state,
   out->wrench.SetZero();
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
+  out->elastic = ElasticLimitCheck{};
   out->stiffness = 0.0;
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();

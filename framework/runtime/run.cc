@@ -40,13 +40,6 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   RunResult result;
   PreparedScene prepared = Prepare(scene);
   if (options.prepared) options.prepared(prepared);
-  // Free motion collides the surface type's coarse meshes (none: collision-free), with the
-  // penalty stiffness the scenario's contact stiffness capped at the device's stable limit.
-  PositioningStage::Options free_motion;
-  free_motion.free_stiffness =
-      FreeMotionStiffness(scene.model.contact_stiffness, scene.device->spec().max_stiffness);
-  const PositioningStage positioning(
-      free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving);
   ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
 
   RunInfo& info = result.info;
@@ -77,7 +70,15 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   settings.clock = scene.run.clock;
   {
     DeviceRun device_run(*scene.device, 1.0 / scene.run.rate);
+    // Hardware knows its limits only once started.
     const DeviceSpec spec = scene.device->spec();
+    // Free motion collides the surface type's coarse meshes (none: collision-free), with the
+    // penalty stiffness the scenario's contact stiffness capped at the device's stable limit.
+    PositioningStage::Options free_motion;
+    free_motion.free_stiffness =
+        FreeMotionStiffness(scene.model.contact_stiffness, spec.max_stiffness);
+    const PositioningStage positioning(
+        free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving);
     settings.safety = RuntimeSafetySettings(scene.safety, spec);
     settings.record = scene.run.write_recording;
     const bool coupled = settings.safety.coupling == CouplingMode::kSpringDamper;
@@ -92,6 +93,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
                              "coupling: spring_damper renders it through a virtual coupling");
     }
     Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    scheduler.set_observer(options.observer);
     if (options.watch) options.watch(&scheduler);
     try {
       scheduler.Run();
@@ -100,7 +102,14 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       throw;
     }
     if (options.watch) options.watch(nullptr);
+    if (options.observer != nullptr) options.observer->OnRunEnd(scheduler.trace());
     result.stats = scheduler.stats();
+    info.device_report = scene.device->report();
+    if (info.device_report.is_object() && info.device_report.value("stopped_on_faults", false)) {
+      result.notes.push_back("warning: the device '" + scene.device_id +
+                             "' kept faulting and the run was stopped early; see device_report "
+                             "in summary.json");
+    }
     if (!result.stats.realtime_note.empty() &&
         result.stats.realtime_note.find("not permitted") != std::string::npos) {
       result.notes.push_back(result.stats.realtime_note);

@@ -26,6 +26,8 @@ struct RunOptions {
   std::function<void(const Scheduler*)> watch;
   // Called once the scene is prepared, before the device starts (a study reads the drawn parts).
   std::function<void(const PreparedScene&)> prepared;
+  // Watches every tick and the finished trace (a live viewer); borrowed, may be null.
+  TickObserver* observer = nullptr;
 };
 
 struct RunResult {

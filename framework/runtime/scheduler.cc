@@ -31,8 +31,9 @@ timespec ToTimespec(std::int64_t ns) {
   return ts;
 }
 
-// The trace buffer is sized before the loop; beyond this the run is refused rather than swapped.
-constexpr double kMaxTraceBytes = 2.0 * 1024 * 1024 * 1024;
+// The loader refuses a run whose buffers exceed kMaxRunBufferBytes by these per-tick sizes.
+static_assert(sizeof(TickRecord) + 3 * sizeof(double) <= kTraceBytesPerTick);
+static_assert(sizeof(RecordedSample) <= kRecordingBytesPerTick);
 
 // Priority of the real-time loop under SCHED_FIFO: above ordinary real-time helpers (IRQ threads
 // run at 50 by default on PREEMPT_RT) and below the kernel's watchdogs at 99.
@@ -113,13 +114,14 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
     throw UserError("scheduler: duration must be a positive number of seconds");
   }
   period_ = 1.0 / settings.rate;
+  device_clock_ = device.clock_owner() == ClockOwner::kDevice;
   const double ticks = std::round(settings.duration * settings.rate);
   if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
-  if (ticks * static_cast<double>(sizeof(TickRecord)) > kMaxTraceBytes) {
+  const double per_tick = kTraceBytesPerTick + (settings.record ? kRecordingBytesPerTick : 0.0);
+  if (ticks * per_tick > kMaxRunBufferBytes) {
     throw UserError("scheduler: a run of " + std::to_string(settings.duration) + " s at " +
                     std::to_string(settings.rate) +
-                    " Hz needs a trace buffer of more than 2 GiB; "
-                    "shorten run.duration");
+                    " Hz needs trace buffers of more than 2 GiB; shorten run.duration");
   }
   planned_ticks_ = static_cast<std::uint64_t>(ticks);
   run_.chain.Configure(settings.safety, device.spec(), period_);
@@ -164,7 +166,12 @@ bool Scheduler::Tick(double time) noexcept {
   // The chain zeroes (and counts) a non-finite wrench itself; the guard keeps the trace's physical
   // wrench finite too and flags the tick.
   run.chain.SetEnvironmentStiffness(output.stiffness);
-  const Wrench device_wrench = run.chain.Apply(output.wrench, run.device, period_);
+  // A device that owns the clock ticks when its servo thread does: the coupling and the observer
+  // integrate over the period it measured, not the nominal one.
+  double dt = period_;
+  if (device_clock_ && k > 0 && time > run.last_time) dt = time - run.last_time;
+  run.last_time = time;
+  const Wrench device_wrench = run.chain.Apply(output.wrench, run.device, dt);
   const bool fault = !output.wrench.AllFinite();
   if (fault) {
     run.output.wrench.SetZero();
@@ -187,6 +194,7 @@ bool Scheduler::Tick(double time) noexcept {
   record.contact = output.contact;
   record.wrench = output.wrench;
   record.device_wrench = device_wrench;
+  record.elastic = output.elastic;
   record.stiffness = output.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;
@@ -205,6 +213,7 @@ bool Scheduler::Tick(double time) noexcept {
   }
   wake_ns_[k] = static_cast<double>(start);
   end_ns_[k] = static_cast<double>(end);
+  if (observer_ != nullptr) observer_->OnTick(record);
   run.current = output.next;
   ticks_done_.store(k + 1, std::memory_order_relaxed);
   return true;

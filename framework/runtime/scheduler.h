@@ -10,6 +10,7 @@
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
 #include "framework/device/stage.h"
+#include "framework/runtime/tick_observer.h"
 #include "framework/runtime/tick_record.h"
 #include "framework/safety/safety_chain.h"
 #include "framework/scenario/scene.h"
@@ -54,6 +55,7 @@ struct RunState {
   SafetyChain chain;
   bool chain_reset = true;  // reset the chain at the next tick's device state
   std::uint64_t guard_faults = 0;
+  double last_time = 0.0;  // the previous tick's time (a device's clock: measured)
 };
 
 // One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench
@@ -84,6 +86,9 @@ class FITFEEL_API Scheduler {
   // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
   // Returns false once the buffer is full or the device is inactive. No allocation, lock or I/O.
   bool Tick(double time) noexcept;
+  // An observer called at the end of every tick with its record (null: none). Borrowed; set it
+  // before Run, not while the loop runs.
+  void set_observer(TickObserver* observer) { observer_ = observer; }
   // Empties the buffer so that it can be filled again (benchmarks); keeps its capacity and the
   // stages' states (Run starts from fresh ones).
   void Rewind() noexcept;
@@ -108,6 +113,7 @@ class FITFEEL_API Scheduler {
   std::array<const Stage*, 2> stages_;
   SchedulerSettings settings_;
   double period_ = 0.0;
+  bool device_clock_ = false;
   std::uint64_t planned_ticks_ = 0;
 
   RunState run_;
@@ -117,6 +123,7 @@ class FITFEEL_API Scheduler {
   std::vector<double> deadline_ns_;
   std::vector<double> end_ns_;
   std::atomic<std::uint64_t> ticks_done_{0};
+  TickObserver* observer_ = nullptr;
   RunStats stats_;
 };
 

@@ -20,6 +20,7 @@ struct TickRecord {
   ContactState contact;
   Wrench wrench;            // model wrench on the moving part after the finite guard, N / N*m
   Wrench device_wrench;     // what the safety chain wrote to the device, device N / N*m
+  ElasticLimitCheck elastic;  // the contact's stresses against yield (DIN 7190)
   double stiffness = 0.0;   // radial contact stiffness handed to the device, N/m
   double compute_us = 0.0;  // wall time from device read to device write, us (a measurement)
   StageId stage = StageId::kPositioning;

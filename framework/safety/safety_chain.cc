@@ -107,7 +107,8 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
     coupling_.Configure(gains, settings.proxy_mass);
     report.coupling_gains = gains;
   }
-  observer_.Configure(spec.damping, settings.credit_device_damping, settings.passivity_controller,
+  observer_.Configure(spec.damping, settings.credit_device_damping && spec.credit_damping,
+                      settings.passivity_controller,
                       settings.passivity_max_damping.value_or(spec.damping));
   limiter_.Configure(spec.max_force, spec.max_continuous_force, settings.continuous_window);
   report.peak_force_limit = spec.max_force;

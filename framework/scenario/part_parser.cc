@@ -155,13 +155,21 @@ TextureSpec ParseTexture(const ConfigNode& node) {
 }
 
 Material ParseMaterial(const ConfigNode& node) {
-  node.ExpectOnlyKeys({"name", "youngs_modulus", "poisson"});
+  node.ExpectOnlyKeys({"name", "youngs_modulus", "poisson", "yield_strength"});
   Material material;
   material.name = node.StringOr("name", "");
   material.youngs_modulus = node.QuantityIn("youngs_modulus", Dimension::kPressure,
                                             limits::kMinYoungsModulus, limits::kMaxYoungsModulus);
-  material.poisson = node.Child("poisson").AsQuantityIn(
-      Dimension::kDimensionless, limits::kMinPoisson, limits::kMaxPoisson, /*min_inclusive=*/false);
+  const ConfigNode poisson = node.Child("poisson");
+  material.poisson = poisson.AsQuantity(Dimension::kDimensionless);
+  if (!PoissonInRange(material.poisson)) {
+    poisson.Fail("a Poisson's ratio in [0, 0.5) (the range of every resistance law)",
+                 poisson.Describe());
+  }
+  if (std::optional<ConfigNode> yield = node.Find("yield_strength")) {
+    // Soft solders (~10 MPa) to maraging steels and tungsten (~2.5 GPa), below E by far.
+    material.yield_strength = yield->AsQuantityIn(Dimension::kPressure, 1e6, 5e9);
+  }
   return material;
 }
 

@@ -19,9 +19,6 @@ inline constexpr double kMaxTexture = 1e-3;
 // From soft engineering elastomers (a few MPa) to diamond (about 1.05-1.2 TPa).
 inline constexpr double kMinYoungsModulus = 1e6;
 inline constexpr double kMaxYoungsModulus = 1.2e12;
-// Isotropic linear elasticity needs positive bulk and shear moduli: -1 < nu <= 0.5.
-inline constexpr double kMinPoisson = -1.0;
-inline constexpr double kMaxPoisson = 0.5;
 }  // namespace limits
 
 // Parses everything the scenario says about one part except its geometry (role, size, form,

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,6 +33,25 @@ constexpr double kMaxFriction = 1.5;
 // prepared within the design card's second and describes no feature of a machined surface.
 constexpr long kMaxGridSide = 10000;
 constexpr long kMaxGridCells = 4'000'000;
+
+// Runs a plugin's check on `node`: a plugin that refuses with a plain UserError (no location of its
+// own) is refused at `node`, so that no refusal reaches the user without file, line and key.
+template <typename Check>
+auto Located(const ConfigNode& node, const std::string& expected, Check&& check) {
+  try {
+    return check();
+  } catch (const ScenarioError&) {
+    throw;
+  } catch (const UserError& e) {
+    node.Fail(expected, e.what());
+  }
+}
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
 
 std::string Join(const std::vector<std::string>& items) {
   std::string out;
@@ -110,14 +132,17 @@ Parts ParseParts(const ConfigNode& root, const SurfaceType& surface,
     const ConfigNode node_of_part = node.Child(name);
     PartSpec part = scenario::ParsePart(name, node_of_part, surface, surface_id);
     // The plugin sees everything else the scenario said of the part (size, form, ...).
-    part.geometry = surface.ParseGeometry(part, node_of_part.Child("geometry"));
+    const ConfigNode geometry = node_of_part.Child("geometry");
+    part.geometry = Located(geometry, "a geometry the surface type accepts",
+                            [&] { return surface.ParseGeometry(part, geometry); });
     if (part.geometry == nullptr) {
       throw std::logic_error("surface plugin " + surface_id + " returned no geometry for part '" +
                              name + "'");
     }
     (part.role == Role::kInner ? parts.inner : parts.outer) = std::move(part);
   }
-  surface.CheckPair(parts.inner, parts.outer, node);
+  Located(node, "a pair of parts the surface type accepts",
+          [&] { surface.CheckPair(parts.inner, parts.outer, node); });
   const std::string moving = root.Child("moving").AsOneOf({names[0], names[1]});
   parts.moving = moving == parts.inner.name ? Role::kInner : Role::kOuter;
   return parts;
@@ -143,10 +168,46 @@ Resolution ParseResolution(const ConfigNode& node) {
   return resolution;
 }
 
+// Friction (docs/friction.md): `friction` is the sliding coefficient mu_k, `static_friction` the
+// breakaway one mu_s >= mu_k. A scene that names neither gets the handbook pair of its
+// `lubrication` (dry or lubricated hard steel, friction.h); one that names only mu_k gets
+// mu_s = mu_k (Coulomb friction with stiction at that level), since a handbook ratio applied to a
+// coefficient from elsewhere would be a guess.
+void ParseFriction(const ConfigNode& node, ModelSettings* model) {
+  bool dry = false;
+  std::optional<ConfigNode> lubrication = node.Find("lubrication");
+  if (lubrication) dry = lubrication->AsOneOf({"dry", "lubricated"}) == "dry";
+  std::optional<ConfigNode> kinetic = node.Find("friction");
+  std::optional<ConfigNode> stat = node.Find("static_friction");
+  if (kinetic) {
+    model->friction = kinetic->AsQuantityIn(Dimension::kDimensionless, 0.0, kMaxFriction);
+  } else {
+    model->friction = dry ? kDrySteelKineticFriction : kLubricatedSteelKineticFriction;
+  }
+  if (stat) {
+    model->static_friction = stat->AsQuantityIn(Dimension::kDimensionless, 0.0, kMaxFriction);
+    if (model->static_friction < model->friction) {
+      stat->Fail("a static coefficient at least the sliding one (friction: " +
+                     FormatQuantity(model->friction, Dimension::kDimensionless) + ")",
+                 stat->Describe());
+    }
+  } else if (kinetic) {
+    model->static_friction = model->friction;
+  } else {
+    model->static_friction = dry ? kDrySteelStaticFriction : kLubricatedSteelStaticFriction;
+  }
+  if (std::optional<ConfigNode> z = node.Find("breakaway_displacement")) {
+    // Junction deflections are micrometres; 1 mm would be a spring, not friction.
+    model->breakaway_displacement = z->AsQuantityIn(Dimension::kLength, 0.0, 1e-3,
+                                                    /*min_inclusive=*/false);
+  }
+}
+
 ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
                          const std::string& surface_id, const Parts& parts) {
   node.ExpectOnlyKeys(
-      {"law", "friction", "contact_stiffness", "resolution", "texture", "depth_step", "options"});
+      {"law", "friction", "static_friction", "lubrication", "breakaway_displacement",
+       "contact_stiffness", "resolution", "texture", "depth_step", "options"});
   ModelSettings model;
   const std::vector<std::string> laws = surface.law_names();
   // Empty only for a surface type loaded for inspection (LoadOptions::allow_non_rendering).
@@ -158,10 +219,14 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
                 law->Describe());
     }
   }
-  model.friction = node.QuantityIn("friction", Dimension::kDimensionless, 0.0, kMaxFriction);
-  model.contact_stiffness = node.Child("contact_stiffness")
-                                .AsQuantityIn(Dimension::kStiffness, 0.0, kInfinity,
-                                              /*min_inclusive=*/false);
+  ParseFriction(node, &model);
+  // `auto`: the law derives it from its own elastic model (0 in ModelSettings).
+  const ConfigNode stiffness = node.Child("contact_stiffness");
+  model.contact_stiffness =
+      stiffness.is_scalar() && stiffness.AsString() == "auto"
+          ? 0.0
+          : stiffness.AsQuantityIn(Dimension::kStiffness, 0.0, kInfinity,
+                                   /*min_inclusive=*/false);
   if (std::optional<ConfigNode> resolution = node.Find("resolution")) {
     model.resolution = ParseResolution(*resolution);
   }
@@ -184,7 +249,8 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   if (std::optional<ConfigNode> options = node.Find("options")) {
     if (!options->is_map()) options->Fail("a map of surface-specific options", options->Describe());
     options->Keys();  // no repeated keys
-    surface.CheckOptions(*options);
+    Located(*options, "options the surface type accepts",
+            [&] { surface.CheckOptions(*options); });
     model.extra = *options;
   }
   return model;
@@ -220,7 +286,93 @@ RunSettings ParseRun(const ConfigNode& node) {
       if (output == "recording") run.write_recording = true;
     }
   }
+  // The scheduler's own limits, checked here so that `validate` refuses what `run` would.
+  const ConfigNode duration = node.Child("duration");
+  const double ticks = std::round(run.duration * run.rate);
+  if (ticks < 1.0) {
+    duration.Fail("a run of at least one tick (1 / run.rate = " + Number(1.0 / run.rate) + " s)",
+                  duration.Describe() + " at " + Number(run.rate) + " Hz");
+  }
+  const double per_tick = kTraceBytesPerTick + (run.write_recording ? kRecordingBytesPerTick : 0);
+  if (ticks * per_tick > kMaxRunBufferBytes) {
+    duration.Fail("at most " + Number(std::floor(kMaxRunBufferBytes / per_tick / run.rate)) +
+                      " s at " + Number(run.rate) + " Hz (" +
+                      Number(kMaxRunBufferBytes / (1 << 30)) + " GiB of trace" +
+                      (run.write_recording ? " and recording" : "") + " buffers)",
+                  duration.Describe() + ", " + Number(ticks * per_tick / (1 << 30)) + " GiB");
+  }
   return run;
+}
+
+// Prepare's cost model, measured with `fitfeel run` on paper-case1-h7g6 at 40 x 360, 200 x 1440
+// and 400 x 3600 cells per part (docs/scenario-format.md, "Cost admission"): peak memory grows
+// by about 160 B per cell (grid centre, normal and area, the skin model shape, the analyzer's
+// copies), time by 14-21 us per cell on the shared two-core build machine; 10 us is taken, an
+// upper estimate on a quiet core. Depth tables add 12 doubles per row and 16 B per vertex.
+constexpr double kBytesPerCell = 160.0;
+constexpr double kBytesPerDepthStep = 96.0;
+constexpr double kBytesPerTableVertex = 16.0;
+constexpr double kSecondsPerCell = 1e-5;
+constexpr double kSecondsPerTableVertex = 5e-8;
+
+// The grid each part gets and what preparing the scene costs; refuses, at the key that causes it,
+// a resolution the surface type cannot discretize, a depth table over the analyzers' cap and,
+// unless `allow_large`, a cost over the large-scene thresholds.
+SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
+                       const PartSpec& inner, const PartSpec& outer, const ModelSettings& model,
+                       const RunSettings& run, const LoadOptions& options) {
+  const std::optional<ConfigNode> resolution_node = model_node.Find("resolution");
+  const ConfigNode& grid_key = resolution_node ? *resolution_node : model_node;
+  const std::unique_ptr<Discretizer> discretizer = surface.MakeDiscretizer();
+  GridShape shapes[2];
+  const PartSpec* parts[2] = {&inner, &outer};
+  for (int k = 0; k < 2; ++k) {
+    // A surface type without a discretizer (a test double) takes the resolution as given.
+    shapes[k] = discretizer == nullptr
+                    ? GridShape{model.resolution.rows, model.resolution.columns}
+                    : Located(grid_key, "a resolution the surface type can discretize",
+                              [&] { return discretizer->Shape(*parts[k], model.resolution); });
+  }
+  SceneCost cost;
+  cost.inner_cells = shapes[0].cells();
+  cost.outer_cells = shapes[1].cells();
+  const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
+  const double columns = std::max(shapes[0].columns, shapes[1].columns);
+  const double li = inner.geometry->mating_length(), lo = outer.geometry->mating_length();
+  const std::optional<ConfigNode> step_node = model_node.Find("depth_step");
+  if (model.depth_step > 0.0) {
+    cost.depth_steps = std::ceil((li + lo) / model.depth_step);
+  } else if (shapes[0].rows > 0 && shapes[1].rows > 0 && li > 0.0 && lo > 0.0) {
+    // Auto: one step per shortest row.
+    cost.depth_steps = std::ceil((li + lo) / std::min(li / shapes[0].rows, lo / shapes[1].rows));
+  }
+  const double vertices = cost.depth_steps * (columns + 4.0);
+  if (step_node && model.depth_step > 0.0 &&
+      (!(cost.depth_steps < kMaxDepthSteps) || !(vertices < kMaxDepthTableVertices))) {
+    step_node->Fail("a step giving fewer than " + Number(kMaxDepthSteps) +
+                        " depth-table rows and " + Number(kMaxDepthTableVertices) +
+                        " table vertices over the " + Number(li + lo) + " m stroke",
+                    step_node->Describe() + ": " + Number(cost.depth_steps) + " rows of up to " +
+                        Number(columns + 4.0) + " vertices");
+  }
+  cost.prepare_bytes = cells * kBytesPerCell + cost.depth_steps * kBytesPerDepthStep +
+                       vertices * kBytesPerTableVertex;
+  cost.prepare_seconds = cells * kSecondsPerCell + vertices * kSecondsPerTableVertex;
+  cost.run_bytes = std::round(run.duration * run.rate) *
+                   (kTraceBytesPerTick + (run.write_recording ? kRecordingBytesPerTick : 0.0));
+  if (!options.allow_large &&
+      (cost.prepare_bytes > kLargeSceneBytes || cost.prepare_seconds > kLargeSceneSeconds)) {
+    // The table is the cost when the step is finer than the rows; otherwise the grid is.
+    const bool table = step_node && model.depth_step > 0.0 &&
+                       vertices * kSecondsPerTableVertex > cells * kSecondsPerCell;
+    const ConfigNode& key = table ? *step_node : grid_key;
+    key.Fail("a scene that prepares within " + Number(kLargeSceneBytes / (1 << 30)) + " GiB and " +
+                 Number(kLargeSceneSeconds) + " s, or --allow-large to run it anyway",
+             key.Describe() + ": " + Number(cells) + " cells, " + Number(cost.depth_steps) +
+                 " depth steps, about " + Number(cost.prepare_bytes / (1 << 20)) + " MiB and " +
+                 Number(cost.prepare_seconds) + " s to prepare");
+  }
+  return cost;
 }
 
 }  // namespace
@@ -267,7 +419,8 @@ Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registr
         plugin.Describe() + " (" + e.what() + ")");
   }
   if (scene.device == nullptr) throw std::logic_error("plugin registry returned no device object");
-  scene.device->Configure(device);
+  Located(device, "a device configuration the plugin accepts",
+          [&] { scene.device->Configure(device); });
 
   if (std::optional<ConfigNode> safety = root.Find("safety")) {
     if (!safety->is_map()) safety->Fail("a map of safety settings", safety->Describe());
@@ -275,6 +428,8 @@ Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registr
     scene.safety = *safety;
   }
   scene.run = ParseRun(root.Child("run"));
+  scene.cost = CheckPrepare(root.Child("model"), *scene.surface, scene.inner, scene.outer,
+                            scene.model, scene.run, options);
   return scene;
 }
 

@@ -19,6 +19,27 @@ class PluginRegistry;
 
 enum class ClockMode { kVirtual, kRealTime };
 
+// What a run holds in memory per tick until its outputs are written: the trace record and its
+// three timing stamps, and the device sample when it records. The scheduler checks at compile
+// time that its records fit these, so the loader's refusal and the scheduler's agree.
+inline constexpr double kTraceBytesPerTick = 400.0;
+inline constexpr double kRecordingBytesPerTick = 240.0;
+// The buffers of one run: beyond this a scene is refused rather than swapped.
+inline constexpr double kMaxRunBufferBytes = 2.0 * 1024 * 1024 * 1024;
+
+// What preparing a scene will cost, estimated from its grid and depth-table sizes before anything
+// is allocated (LoadScene). A scene above kLargeSceneBytes or kLargeSceneSeconds is refused
+// unless LoadOptions::allow_large.
+struct SceneCost {
+  long inner_cells = 0, outer_cells = 0;
+  double depth_steps = 0.0;     // rows of the contact analyzer's depth tables
+  double prepare_bytes = 0.0;   // grids, skin model shapes, analyzer tables
+  double prepare_seconds = 0.0; // on one core of the reference machine (docs/scenario-format.md)
+  double run_bytes = 0.0;       // trace (and recording) buffers
+};
+inline constexpr double kLargeSceneBytes = 1.0 * 1024 * 1024 * 1024;
+inline constexpr double kLargeSceneSeconds = 30.0;
+
 // The scenario's `run` section.
 struct RunSettings {
   double rate = 1000.0;    // Hz
@@ -46,16 +67,24 @@ struct Scene {
   std::shared_ptr<Device> device;
   std::optional<ConfigNode> safety;  // the `safety` section when present (force scaling etc.)
   RunSettings run;
+  SceneCost cost;
 };
 
 struct LoadOptions {
   // Accept a surface type that renders no forces (the thread stub), for inspecting its skin model
   // shapes and for the conformance suite; `fitfeel run` never sets it.
   bool allow_non_rendering = false;
+  // Accept a scene whose estimated cost exceeds kLargeSceneBytes or kLargeSceneSeconds
+  // (`--allow-large`).
+  bool allow_large = false;
 };
 
 // Parses, validates and resolves plugins for one scenario file. Throws ScenarioError
-// (file:line:column, key path, expected, found) for any problem, before anything runs.
+// (file:line:column, key path, expected, found) for any problem, before anything runs: this is
+// the one checking path, so everything a run could refuse about the scene alone (grid shapes the
+// surface cannot discretize, depth tables over their cap, a run shorter than one tick or over
+// its buffer cap, a cost above the large-scene thresholds, a plugin's own constraints) is refused
+// here, located at the key that causes it.
 FITFEEL_API Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
                             const LoadOptions& options = {});
 

@@ -62,7 +62,12 @@ std::string DescribeScene(const Scene& scene) {
   out += DescribePart(scene.outer, scene.moving == Role::kOuter);
   const ModelSettings& model = scene.model;
   out += "model        law " + model.law + ", friction " + Number(model.friction) +
-         ", contact stiffness " + FormatQuantity(model.contact_stiffness, Dimension::kStiffness) +
+         " (static " + Number(model.static_friction) + ", breakaway " +
+         FormatQuantity(model.breakaway_displacement, Dimension::kLength) + ")" +
+         ", contact stiffness " +
+         (model.contact_stiffness > 0.0
+              ? FormatQuantity(model.contact_stiffness, Dimension::kStiffness)
+              : std::string("auto")) +
          ", resolution " +
          (model.resolution.is_auto() ? std::string("auto")
                                      : std::to_string(model.resolution.rows) + " x " +

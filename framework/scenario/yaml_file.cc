@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
+#include "framework/core/line_endings.h"
 
 namespace fitfeel::scenario {
 namespace {
@@ -41,7 +42,7 @@ ConfigNode LoadYamlFile(const std::filesystem::path& file) {
 
   std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(text.str());
+    documents = YAML::LoadAll(NormalizeLineEndings(text.str()));
   } catch (const YAML::Exception& e) {
     // yaml-cpp's own wording of the syntax error (e.g. "end of map not found") is what was found.
     throw ScenarioError(At(name, e.mark), "", "valid YAML", e.msg);

@@ -2,37 +2,38 @@
 
 #include <Eigen/Core>
 
+#include "framework/model/column_response_table.h"
 #include "framework/model/contact_analyzer.h"
-#include "framework/model/texture_contact.h"
+#include "surfaces/conical/conical_scan_analyzer.h"
 
 namespace fitfeel::conical {
 
-// Contact of a taper pin (inner) in a taper hole (outer) of the same taper.
+// The taper pin's contact (the model of ConicalScanAnalyzer, conical_scan_analyzer.h) tabulated in
+// prepare by what a tick's result depends on, so that a tick costs O(n) instead of O(m n).
 //
-// Pose: depth s is how far the pin's small end has passed the hole's entrance; offset is the
-// pin axis' radial offset e (x, z). A pin cell at t from the small end sits at y = s - t in the
-// hole. Both parts have the same taper, so the nominal radial clearance is uniform over the
-// overlap: (L_hole - s) tan(alpha); zero when the small ends meet (s = L_hole) and an interference
-// (s - L_hole) * C / 2 beyond (diametral: advance * C, DIN 7190). Per overlapping pin cell (i, j)
-//   gap = (L_hole - s) tan(alpha) + V_hole(y, j) - V_pin(i, j) - e . u_j,   delta = max(0, -gap)
-// with V_hole interpolated linearly between the hole's row centres (so the force is continuous in
-// s). A pin cell's contact area is the slant area of the hole's nominal cone over the part of the
-// cell's axial extent inside the hole (so cells enter and leave the overlap continuously, and the
-// areas of a full overlap sum to the bore's area exactly). Both parts must share the column angles.
+// At depth s and offset e, column j's cells have gaps Clearance(s) + g_ij(s) - e . u_j, where
+// g_ij = V_hole - V_pin depends on s only through which pin rows overlap the hole and where they
+// meet its rows. So per depth step s_k and column j the table holds the column's interference
+// volume, resultant and largest interference as functions of z = e . u_j - Clearance(s)
+// (ColumnResponseTable: sampled over the range where they are not simply zero or linear, exact
+// beyond it). A tick evaluates, per column, z from the pose (the clearance exactly), the two
+// neighbouring depth steps at that z and blends them linearly in s: continuous in depth and offset,
+// nondecreasing in the offset towards a wall. The engaged area is the scan's closed form.
 //
-// Every contact, whether from clearance closed by the offset or from interference, is elastic
-// (a Winkler bed: each cell's pressure is the Lame pressure of its own interference), so there is
-// no separate clearance spring and the force is continuous at first contact. With texture in
-// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
-// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h),
-// so contact starts smoothly before the nominal surfaces touch; in `sampled` mode the texture is
-// in V and the contact is sharp, max(0, -gap).
-//
-// Per tick: one pass over the pin's m x n cells, no allocation (bounded, about 3000 cells at the
-// auto resolution of a 40 mm pin).
+// Steps: half the finer of the two row pitches unless model.depth_step says otherwise (a pin row
+// meets a new hole row centre, or crosses an end of the hole, every half pitch), over [0, L_pin +
+// L_hole]; 33 samples of z per entry, filled on PrepareThreads() threads (bit for bit the same
+// for any count). The error against the scan is the z interpolation
+// (ColumnResponseTable::VolumeErrorBound) at the steps, plus the depth blend between them (its
+// curvature: a row's gap changes by the hole's form slope over a step); tested against the scan.
 class ConicalContactAnalyzer final : public ContactAnalyzer {
  public:
-  double hole_length() const { return hole_length_; }
+  static constexpr int kSamples = 33;
+
+  double hole_length() const { return scan_.hole_length(); }
+  const ConicalScanAnalyzer& scan() const { return scan_; }
+  const ColumnResponseTable& table() const { return table_; }
+  double depth_step() const { return step_; }
 
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
@@ -41,26 +42,11 @@ class ConicalContactAnalyzer final : public ContactAnalyzer {
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
 
  private:
-  // Calls visit(column j, contact area, delta, pin row i) for every overlapping pin cell.
-  template <class Visit>
-  void ForEachCell(const MatingPose& pose, Visit&& visit) const noexcept;
-
-  int pin_rows_ = 0;
-  int hole_rows_ = 0;
-  int columns_ = 0;
-  double pin_length_ = 0.0;
-  double hole_length_ = 0.0;
-  double pin_pitch_ = 0.0;   // axial height of a pin row, m
-  double hole_pitch_ = 0.0;  // axial height of a hole row, m
-  double tan_alpha_ = 0.0;
-  double taper_ = 0.0;
-  double hole_small_diameter_ = 0.0;
-  double area_factor_ = 0.0;           // pi / cos(alpha) / n
-  Eigen::VectorXd pin_row_;            // t of each pin row centre
-  Eigen::MatrixXd pin_v_;              // pin variation, rows x columns
-  Eigen::MatrixXd hole_v_;             // hole variation, rows x columns
-  Eigen::Matrix2Xd direction_;         // u_j = (cos beta_j, sin beta_j)
-  ExpectedInterferenceTable texture_;  // sharp unless texture is `expected`
+  ConicalScanAnalyzer scan_;
+  ColumnResponseTable table_;
+  double step_ = 0.0;
+  int last_step_ = 0;
+  Eigen::Matrix2Xd direction_;
 };
 
 }  // namespace fitfeel::conical

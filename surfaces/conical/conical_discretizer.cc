@@ -7,14 +7,18 @@
 
 namespace fitfeel::conical {
 
-SurfaceGrid ConicalDiscretizer::DoDiscretize(const PartSpec& part,
-                                             const Resolution& resolution) const {
+GridShape ConicalDiscretizer::DoShape(const PartSpec& part, const Resolution& resolution) const {
   const ConicalGeometry& geometry = GeometryOf(part);
   revolution::AutoResolution automatic;
   automatic.row_pitch = 2e-3;
   // An axis needs three sections to be anything but straight.
-  const revolution::GridShape shape =
-      revolution::CheckedGridShape(part, resolution, geometry.length(), automatic, "a cone", 3);
+  return revolution::CheckedGridShape(part, resolution, geometry.length(), automatic, "a cone", 3);
+}
+
+SurfaceGrid ConicalDiscretizer::DoDiscretize(const PartSpec& part,
+                                             const Resolution& resolution) const {
+  const ConicalGeometry& geometry = GeometryOf(part);
+  const GridShape shape = DoShape(part, resolution);
   const int rows = shape.rows, columns = shape.columns;
   SurfaceGrid grid = revolution::EmptyGrid(shape);
   const double h = geometry.length() / rows;

@@ -12,6 +12,7 @@ namespace fitfeel::conical {
 // wavelength gets >= 5 samples), at most 400.
 class ConicalDiscretizer final : public Discretizer {
  protected:
+  GridShape DoShape(const PartSpec& part, const Resolution& resolution) const override;
   SurfaceGrid DoDiscretize(const PartSpec& part, const Resolution& resolution) const override;
 };
 

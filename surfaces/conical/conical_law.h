@@ -10,12 +10,6 @@ namespace fitfeel::conical {
 //   p / delta = (2 / d) / ( (1 - nu1)/E1 + ((d2^2 + d^2)/(d2^2 - d^2) + nu2)/E2 ).
 double LamePressurePerInterference(double d, double d2, const Material& pin, const Material& hub);
 
-// Coulomb friction regularised as mu * N * tanh(|v| / v_s) along the sliding velocity, continuous
-// through zero velocity. v_s = 1 mm/s, the upper end of the Stribeck velocities of steel on steel
-// (0.1-1 mm/s, Armstrong-Helouvry, Dupont and Canudas de Wit, Automatica 30(7), 1994), the same
-// choice as the cylindrical plugin: below it a Coulomb law describes nothing real anyway.
-inline constexpr double kFrictionSmoothingVelocity = 1e-3;
-
 // Taper press fit (DIN 7190). Each cell's pressure is p = P * delta with P the Lame pressure per
 // unit interference at the hole's mean diameter dm (DIN 7190 evaluates the taper at dm; over a 1:50
 // taper of a 20 mm hub the local diameter varies by +-2.5 %, P by less), so the summed normal
@@ -27,6 +21,12 @@ inline constexpr double kFrictionSmoothingVelocity = 1e-3;
 // With a uniform interference over the hole's length L: N = p pi dm L / cos(alpha), so
 //   F_in  = N (sin a + mu cos a) = p pi dm L (mu + tan a)
 //   F_out = N (mu cos a - sin a) = p pi dm L (mu - tan a)      (DIN 7190, docs/oracles.md)
+// Friction is stick-slip (framework/model/friction.h) with the run's state, in the slip
+// coordinates (depth cos(alpha), angle * rm): a pin released in a taper with tan(alpha) < mu_s
+// stays in (the junctions carry the wedge force N sin(alpha) up to mu_s N cos(alpha)). Without
+// state (probes) it is the smoothed kinetic law along the sliding velocity.
+// Elastic limit (DIN 7190, framework/model/elastic_limit.h): the largest cell pressure P * delta
+// against the hub's bore limit at dm and the solid pin's, for parts with a yield strength.
 // The returned wrench acts on the pin (the inner part), in the hole's mating frame.
 class TaperPressFitLaw final : public ResistanceLaw {
  public:
@@ -39,9 +39,17 @@ class TaperPressFitLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                           LawState* state, Wrench* out) const noexcept override;
+  ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
 
  private:
-  double mu_ = 0.0;
+  // The normal (wedge) and radial parts of the wrench; returns the normal force N.
+  double Normal(const ContactState& contact, Wrench* out) const noexcept;
+
+  StickSlipFriction friction_;
+  double hub_yield_pressure_ = 0.0;  // 0: no yield strength given
+  double pin_yield_pressure_ = 0.0;
   double sin_alpha_ = 0.0;
   double cos_alpha_ = 0.0;
   double mean_radius_ = 0.0;

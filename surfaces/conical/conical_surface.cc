@@ -1,4 +1,5 @@
 #include "surfaces/conical/conical_surface.h"
+#include "surfaces/conical/conical_coarse_mesh.h"
 #include "surfaces/conical/number_text.h"
 
 #include <cmath>
@@ -64,6 +65,16 @@ std::unique_ptr<ResistanceLaw> ConicalSurface::DoMakeLaw(std::string_view name) 
 std::vector<CharacteristicCheck> ConicalSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
   return EvaluateConeCharacteristics(part, sms);
+}
+
+CoarseMeshes ConicalSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+  return MakeConicalCoarseMeshes(inner, outer);
+}
+
+// The pin's rows are measured from its small (leading) end back along the body, so the moving
+// frame mirrors them; the hole's rows start at its entrance, as the fixed frame does.
+RenderMesh ConicalSurface::DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {
+  return RevolutionRenderMesh(grid, part.role == Role::kInner ? -1.0 : 1.0, 0.0);
 }
 
 }  // namespace fitfeel::conical

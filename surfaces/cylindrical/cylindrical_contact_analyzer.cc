@@ -29,11 +29,6 @@ std::string Num(double v) {
   return buf;
 }
 
-// Largest table we build: beyond this the depth step is a user error (a step far finer than the
-// grid buys nothing, since the cells are piecewise constant).
-constexpr double kMaxDepthSteps = 2e6;
-// 1e8 vertices are 1.6 GB of tables: the most a scene may ask for.
-constexpr double kMaxTableVertices = 1e8;
 // An automatic step never makes more rows than this (a step of 3 um on a 60 mm stroke), however
 // fine the grid: a haptic hand does not resolve the difference, and the tables stay in memory.
 constexpr double kAutoDepthSteps = 20000;
@@ -161,7 +156,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
                                     : std::max(min_row, max_depth_ / kAutoDepthSteps);
   const double steps = std::ceil(max_depth_ / step_);
   // Each step stores up to n + 4 polygon vertices.
-  if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxTableVertices)) {
+  if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxDepthTableVertices)) {
     throw UserError("depth_step " + Num(step_) + " m gives " + Num(steps) +
                     " table rows of up to " + Num(n_ + 4) +
                     " vertices, more than the analyzer holds; use a coarser step");
@@ -492,6 +487,19 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose,
           solver.pressures()[s * ne + j / static_cast<std::size_t>(block_)];
     }
   }
+  return true;
+}
+
+// The tabulated polygon of the nearer depth step: what the tick interpolates between.
+bool CylinderContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                              std::vector<Eigen::Vector2d>* polygon) const {
+  std::size_t k = 0;
+  double t = 0.0;
+  if (!Locate(pose.depth, &k, &t)) return true;
+  if (t >= 0.5) ++k;
+  if (unconstrained_[k] || empty_[k]) return true;
+  const auto begin = vertices_.begin() + vertex_begin_[k];
+  polygon->assign(begin, begin + vertex_count_[k]);
   return true;
 }
 

@@ -29,8 +29,8 @@ Resolution CylindricalDiscretizer::AutoResolution(const CylindricalGeometry& geo
   return r;
 }
 
-SurfaceGrid CylindricalDiscretizer::DoDiscretize(const PartSpec& part,
-                                                 const Resolution& resolution) const {
+GridShape CylindricalDiscretizer::DoShape(const PartSpec& part,
+                                         const Resolution& resolution) const {
   const CylindricalGeometry& geometry = AsCylinder(part);
   const Resolution r = resolution.is_auto() ? AutoResolution(geometry) : resolution;
   if (r.rows < 1 || r.columns < 4 || r.columns % 2 != 0) {
@@ -45,6 +45,13 @@ SurfaceGrid CylindricalDiscretizer::DoDiscretize(const PartSpec& part,
     throw UserError("part '" + part.name + "': a " + std::to_string(r.rows) + " x " +
                     std::to_string(r.columns) + " grid exceeds the limit of 2e7 cells");
   }
+  return GridShape{r.rows, r.columns};
+}
+
+SurfaceGrid CylindricalDiscretizer::DoDiscretize(const PartSpec& part,
+                                                 const Resolution& resolution) const {
+  const CylindricalGeometry& geometry = AsCylinder(part);
+  const GridShape r = DoShape(part, resolution);
   SurfaceGrid g;
   g.rows = r.rows;
   g.columns = r.columns;

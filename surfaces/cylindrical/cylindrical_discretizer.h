@@ -33,6 +33,7 @@ class CylindricalDiscretizer final : public Discretizer {
   static Resolution AutoResolution(const CylindricalGeometry& geometry);
 
  protected:
+  GridShape DoShape(const PartSpec& part, const Resolution& resolution) const override;
   SurfaceGrid DoDiscretize(const PartSpec& part, const Resolution& resolution) const override;
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/model/elastic_limit.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 
 namespace fitfeel::cylindrical {
@@ -30,7 +31,7 @@ const CylindricalGeometry& Cylinder(const PartSpec& part) {
 
 void CheckMaterial(const PartSpec& part) {
   const Material& m = part.material;
-  if (!(m.youngs_modulus > 0.0) || !(m.poisson >= 0.0 && m.poisson < 0.5)) {
+  if (!(m.youngs_modulus > 0.0) || !PoissonInRange(m.poisson)) {
     throw UserError("part '" + part.name +
                     "': the press-fit law needs a Young's modulus > 0 and 0 <= Poisson < 0.5");
   }
@@ -38,10 +39,6 @@ void CheckMaterial(const PartSpec& part) {
 
 double Stiffness(double fixed, double pressure_per_interference, double d1, double length) {
   return fixed > 0.0 ? fixed : LameRadialStiffness(pressure_per_interference, d1, length);
-}
-
-double Friction(double mu, double normal, double velocity) {
-  return -mu * normal * std::tanh(velocity / kFrictionSmoothingVelocity);
 }
 
 }  // namespace
@@ -75,21 +72,51 @@ void GpsLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   CheckMaterial(inner);
   CheckMaterial(outer);
   const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
-  mu_ = settings.friction;
+  friction_ = StickSlipFriction(FrictionOf(settings));
   stiffness_ = settings.contact_stiffness;
   d1_ = d.d1;
   pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
+  const double hub_re = outer.material.yield_strength, shaft_re = inner.material.yield_strength;
+  hub_yield_pressure_ = hub_re > 0.0 ? HubYieldPressure(d.d1, d.d2, hub_re) : 0.0;
+  shaft_yield_pressure_ = shaft_re > 0.0 ? ShaftYieldPressure(d.d1, d.di, shaft_re) : 0.0;
+}
+
+double GpsLaw::Normal(const ContactState& contact, Wrench* out) const noexcept {
+  out->SetZero();
+  if (!contact.engaged) return 0.0;
+  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
+  const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
+  out->force.x() = radial.x();
+  out->force.z() = radial.y();
+  const double pressure_sum = pressure_per_interference_ * contact.interference_volume;  // eq. 11
+  return radial.norm() + pressure_sum;                                                   // eq. 12
 }
 
 void GpsLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                         Wrench* out) const noexcept {
-  out->SetZero();
-  if (!contact.engaged) return;
-  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
-  const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
-  const double pressure_sum = pressure_per_interference_ * contact.interference_volume;  // eq. 11
-  const double normal = radial.norm() + pressure_sum;                                    // eq. 12
-  out->force = Eigen::Vector3d(radial.x(), Friction(mu_, normal, motion.velocity.y()), radial.y());
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
+}
+
+void GpsLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                 LawState* state, Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
+}
+
+ElasticLimitCheck GpsLaw::DoCheckElasticLimit(const ContactState& contact) const noexcept {
+  ElasticLimitCheck check;
+  const double peak = pressure_per_interference_ * contact.max_interference;
+  if (!(peak > 0.0)) return check;
+  if (hub_yield_pressure_ > 0.0) {
+    check.utilisation = peak / hub_yield_pressure_;
+    check.part = 1;
+  }
+  if (shaft_yield_pressure_ > 0.0 && peak / shaft_yield_pressure_ > check.utilisation) {
+    check.utilisation = peak / shaft_yield_pressure_;
+    check.part = 2;
+  }
+  return check;
 }
 
 void ElasticLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
@@ -97,20 +124,32 @@ void ElasticLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   CheckMaterial(inner);
   CheckMaterial(outer);
   const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
-  mu_ = settings.friction;
+  friction_ = StickSlipFriction(FrictionOf(settings));
   stiffness_ = settings.contact_stiffness;
   d1_ = d.d1;
   pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
 }
 
-void ElasticLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
-                            Wrench* out) const noexcept {
+double ElasticLaw::Normal(const ContactState& contact, Wrench* out) const noexcept {
   out->SetZero();
-  if (!contact.engaged) return;
+  if (!contact.engaged) return 0.0;
   const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
   const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
-  const double normal = std::max(contact.normal_force, radial.norm());
-  out->force = Eigen::Vector3d(radial.x(), Friction(mu_, normal, motion.velocity.y()), radial.y());
+  out->force.x() = radial.x();
+  out->force.z() = radial.y();
+  return std::max(contact.normal_force, radial.norm());
+}
+
+void ElasticLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                            Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
+}
+
+void ElasticLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                     LawState* state, Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
 }
 
 void Ve1Law::DoPrepare(const PartSpec& inner, const PartSpec& outer,
@@ -118,7 +157,7 @@ void Ve1Law::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   CheckMaterial(inner);
   CheckMaterial(outer);
   const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
-  mu_ = settings.friction;
+  friction_ = StickSlipFriction(FrictionOf(settings));
   stiffness_ = settings.contact_stiffness;
   d1_ = d.d1;
   pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
@@ -126,17 +165,29 @@ void Ve1Law::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   if (clearance_ < 0.0) clearance_ = 0.0;  // ideal geometry never interferes in VE1
 }
 
-void Ve1Law::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
-                        Wrench* out) const noexcept {
+double Ve1Law::Normal(const ContactState& contact, Wrench* out) const noexcept {
   out->SetZero();
-  if (!contact.engaged) return;
+  if (!contact.engaged) return 0.0;
   const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
   const double penetration = std::max(0.0, contact.offset_distance - clearance_);
   const Eigen::Vector2d radial =
       -k * penetration *
       Eigen::Vector2d(std::cos(contact.offset_angle), std::sin(contact.offset_angle));
-  out->force =
-      Eigen::Vector3d(radial.x(), Friction(mu_, radial.norm(), motion.velocity.y()), radial.y());
+  out->force.x() = radial.x();
+  out->force.z() = radial.y();
+  return radial.norm();
+}
+
+void Ve1Law::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                        Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
+}
+
+void Ve1Law::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                 LawState* state, Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
 }
 
 }  // namespace fitfeel::cylindrical

@@ -76,4 +76,12 @@ void CylindricalSurface::DoCheckPair(const PartSpec& inner, const PartSpec& oute
   CheckCylindricalPair(inner, outer, pair_node);
 }
 
+// Rows run from y = 0 at equal pitch; the shaft's leading end is its last row's far edge (the
+// analyzer's convention), which the moving frame puts at the origin.
+RenderMesh CylindricalSurface::DoMakeRenderMesh(const PartSpec& part,
+                                                const SurfaceGrid& grid) const {
+  const double length = grid.row_position[0] + grid.row_position[grid.rows - 1];
+  return RevolutionRenderMesh(grid, 1.0, part.role == Role::kInner ? -length : 0.0);
+}
+
 }  // namespace fitfeel::cylindrical

@@ -24,6 +24,7 @@ class CylindricalSurface final : public SurfaceType {
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                    const ConfigNode& pair_node) const override;
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
+  RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const override;
   // model.options: the generator's keys (size_draw, size_limit), checked by configuring one.
   void DoCheckOptions(const ConfigNode& options) const override;
   // framework/metrology's evaluation (EvaluateCylindricalSms): two-point sizes as

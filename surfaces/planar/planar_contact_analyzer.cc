@@ -12,8 +12,6 @@ namespace fitfeel::planar {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// A finer depth table than this buys nothing (cells are piecewise constant) and costs memory.
-constexpr double kMaxDepthSteps = 2e6;
 
 void CheckShape(const PartSpec& part, const SkinModelShape& sms) {
   const SurfaceGrid& g = sms.grid;

@@ -59,8 +59,7 @@ FaceLayout LayoutOf(const SurfaceGrid& grid) {
   return layout;
 }
 
-SurfaceGrid PlanarDiscretizer::DoDiscretize(const PartSpec& part,
-                                            const Resolution& resolution) const {
+GridShape PlanarDiscretizer::DoShape(const PartSpec& part, const Resolution& resolution) const {
   const PlanarGeometry& g = PlanarGeometryOf(part);
   const int faces = g.faces();
   int rows = 0;
@@ -81,10 +80,18 @@ SurfaceGrid PlanarDiscretizer::DoDiscretize(const PartSpec& part,
     }
     strips = resolution.columns / faces;
   }
+  return GridShape{rows, faces * strips};
+}
 
+SurfaceGrid PlanarDiscretizer::DoDiscretize(const PartSpec& part,
+                                            const Resolution& resolution) const {
+  const PlanarGeometry& g = PlanarGeometryOf(part);
+  const GridShape shape = DoShape(part, resolution);
+  const int rows = shape.rows;
+  const int strips = shape.columns / g.faces();
   SurfaceGrid grid;
   grid.rows = rows;
-  grid.columns = faces * strips;
+  grid.columns = shape.columns;
   const int cells = grid.size();
   const double dy = g.length() / rows;
   const double dz = g.height() / strips;

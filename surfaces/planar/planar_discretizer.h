@@ -30,6 +30,7 @@ double FaceAngle(int face);
 
 class PlanarDiscretizer final : public Discretizer {
  protected:
+  GridShape DoShape(const PartSpec& part, const Resolution& resolution) const override;
   SurfaceGrid DoDiscretize(const PartSpec& part, const Resolution& resolution) const override;
 };
 

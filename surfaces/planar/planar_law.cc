@@ -37,13 +37,12 @@ void PlanarGpsLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
                              const ModelSettings& settings) {
   const PlanarGeometry& g = PlanarGeometryOf(inner);
   for (const PartSpec* p : {&inner, &outer}) {
-    if (!(p->material.youngs_modulus > 0.0) || !(p->material.poisson > -1.0) ||
-        !(p->material.poisson < 0.5)) {
+    if (!(p->material.youngs_modulus > 0.0) || !PoissonInRange(p->material.poisson)) {
       throw UserError("part '" + p->name + "': the planar law needs a Young's modulus and a " +
-                      "Poisson's ratio in (-1, 0.5)");
+                      "Poisson's ratio in [0, 0.5)");
     }
   }
-  mu_ = settings.friction;
+  friction_ = StickSlipFriction(FrictionOf(settings));
   stiffness_ = settings.contact_stiffness;
   c_key_ = BlockCompliance(g.width(), inner.material.youngs_modulus, inner.material.poisson);
   height_ = g.height();
@@ -57,26 +56,49 @@ double PlanarGpsLaw::DoPressurePerInterference() const {
   return PressurePerInterferenceAt(full_length_);
 }
 
+double PlanarGpsLaw::WallCompliance(double engaged_length) const noexcept {
+  if (!(engaged_length > 0.0)) return 0.0;
+  return wall_factor_ * RectangleSelfPotential(height_, engaged_length) /
+         (height_ * engaged_length);
+}
+
 double PlanarGpsLaw::PressurePerInterferenceAt(double engaged_length) const noexcept {
-  double c_wall = 0.0;
-  if (engaged_length > 0.0) {
-    c_wall =
-        wall_factor_ * RectangleSelfPotential(height_, engaged_length) / (height_ * engaged_length);
-  }
-  return 2.0 / (c_key_ + 2.0 * c_wall);
+  return 2.0 / (c_key_ + 2.0 * WallCompliance(engaged_length));
+}
+
+double PlanarGpsLaw::LateralStiffness(double engaged_length, double face_area,
+                                      int faces_pressed) const noexcept {
+  const double c_wall = WallCompliance(engaged_length);
+  return c_wall > 0.0 ? faces_pressed * face_area / c_wall : 0.0;
+}
+
+double PlanarGpsLaw::Normal(const ContactState& contact, Wrench* out) const noexcept {
+  out->SetZero();
+  if (!contact.engaged) return 0.0;
+  const double pressure = PressurePerInterferenceAt(contact.engaged_length);
+  const double k =
+      stiffness_ > 0.0 ? stiffness_
+                       : LateralStiffness(contact.engaged_length, contact.engaged_area / faces_,
+                                          contact.interference ? 2 : 1);
+  const double lateral = k * contact.penetration;
+  out->force.x() = -lateral * contact.penetration_direction.x();
+  out->force.z() = -lateral * contact.penetration_direction.y();
+  // In clearance V holds only texture tabulated at the interval's middle, a contact apart from
+  // the flank the part rests on.
+  const double pressed = pressure * contact.interference_volume;
+  return contact.interference ? pressed : lateral + pressed;
 }
 
 void PlanarGpsLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                               Wrench* out) const noexcept {
-  out->SetZero();
-  if (!contact.engaged) return;
-  const double pressure = PressurePerInterferenceAt(contact.engaged_length);
-  const double k = stiffness_ > 0.0 ? stiffness_ : pressure * contact.engaged_area / faces_;
-  const double lateral = k * contact.penetration;
-  out->force.x() = -lateral * contact.penetration_direction.x();
-  out->force.z() = -lateral * contact.penetration_direction.y();
-  const double normal = lateral + pressure * contact.interference_volume;
-  out->force.y() = -mu_ * normal * std::tanh(motion.velocity.y() / kFrictionSmoothingVelocity);
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
+}
+
+void PlanarGpsLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                       LawState* state, Wrench* out) const noexcept {
+  const double normal = Normal(contact, out);
+  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
 }
 
 }  // namespace fitfeel::planar

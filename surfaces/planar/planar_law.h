@@ -28,24 +28,31 @@ double HalfSpaceStripCompliance(double height, double length, double youngs_modu
 double PressurePerInterference(double width, double height, double length, double e_key,
                                double nu_key, double e_wall, double nu_wall);
 
-// Coulomb friction regularised as mu N tanh(v / v_s), v_s = 1 mm/s: continuous through zero
-// velocity; the same choice and reason as the cylindrical law (Stribeck velocities of steel on
-// steel are 0.1-1 mm/s, where a Coulomb law does not apply anyway).
-inline constexpr double kFrictionSmoothingVelocity = 1e-3;
-
 // The planar law (paper eqs. 9-12 with the elastic model above):
 //  - lateral: a spring k on the distance of the part from its anchor (the assembly space's
 //    nearest point, or the balance position under interference), along minus the analyzer's
-//    penetration_direction (eq. 9 in one or two axes);
-//  - axial: F_y = -mu (|F_lateral| + P(L) * V) tanh(v_y / v_s), V the analyzer's interference
-//    volume sum(delta * area) and P(L) the pressure per interference at the engaged length L:
-//    sum p ds = P * V (eq. 11).
-// k is the scene's contact_stiffness, or with 0 (auto) the elastic stiffness of one face pushed by
-// the offset: P(L) * (engaged area / faces), the same elastic model as the interference term.
+//    penetration_direction (eq. 9 in one or two axes). With k = 0 (`contact_stiffness: auto`)
+//    it is the walls' stiffness: a key moved sideways by e translates as a whole (its own width
+//    is not compressed further), so each wall it presses on resists with area / c_wall(L):
+//    k = 2 A / c_wall with both flanks pressed (under interference), A / c_wall with one
+//    (resting on a flank in clearance), A the area of one face. Against the series value
+//    P(L) A = 2 A / (c_key + 2 c_wall) of one face, the pair is 2 + c_key / c_wall times stiffer
+//    (3.2 for the 8 x 7 key: the paper's reading of k_p as one face's stiffness is that low).
+//  - normal force on the faces, once: under interference the flanks carry sum p ds = P(L) * V
+//    (V the analyzer's interference volume, eq. 11); a lateral offset from the balance position
+//    loads one flank and unloads the other by the same amount, so the sum does not change while
+//    both are pressed. In clearance the part rests on a flank with the lateral force (plus the
+//    texture's expected interference, tabulated apart). (The paper's eq. 12 adds the lateral
+//    force under interference too, counting the walls twice.)
+//  - axial friction: stick-slip on the depth with the run's state (framework/model/friction.h);
+//    without state the smoothed kinetic law mu_k N tanh(v_y / v_s).
 // Each term vanishes where the other case of the paper applies; the force is continuous.
 class PlanarGpsLaw final : public ResistanceLaw {
  public:
   double PressurePerInterferenceAt(double engaged_length) const noexcept;
+  // Lateral stiffness of the pair with `faces_pressed` (1 or 2) walls pressed, at the engaged
+  // length and the area of one face, N/m (the auto contact stiffness).
+  double LateralStiffness(double engaged_length, double face_area, int faces_pressed) const noexcept;
 
  protected:
   // P at full engagement (the shorter part's length engaged): the model's pressure per
@@ -58,9 +65,15 @@ class PlanarGpsLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                           LawState* state, Wrench* out) const noexcept override;
 
  private:
-  double mu_ = 0.0;
+  // Lateral force into `out`; returns the normal force on the faces.
+  double Normal(const ContactState& contact, Wrench* out) const noexcept;
+  double WallCompliance(double engaged_length) const noexcept;
+
+  StickSlipFriction friction_;
   double stiffness_ = 0.0;
   double c_key_ = 0.0;
   double height_ = 0.0;

@@ -1,4 +1,5 @@
 #include "surfaces/planar/planar_surface.h"
+#include "surfaces/planar/planar_coarse_mesh.h"
 
 #include <cmath>
 
@@ -66,6 +67,18 @@ std::unique_ptr<ResistanceLaw> PlanarSurface::DoMakeLaw(std::string_view name) c
 std::vector<CharacteristicCheck> PlanarSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
   return EvaluatePlanarCharacteristics(part, sms);
+}
+
+CoarseMeshes PlanarSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+  return MakePlanarCoarseMeshes(inner, outer);
+}
+
+// Strips of one face are height / columns-per-face wide; the inner part's leading end is its last
+// row's far edge (the analyzer's shift depth - inner length), put at the origin.
+RenderMesh PlanarSurface::DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {
+  const double width = PlanarGeometryOf(part).height() / LayoutOf(grid).columns_per_face;
+  const double length = grid.row_position[0] + grid.row_position[grid.rows - 1];
+  return FlatCellRenderMesh(grid, width, 1.0, part.role == Role::kInner ? -length : 0.0);
 }
 
 }  // namespace fitfeel::planar

@@ -19,6 +19,7 @@ class PlanarSurface final : public SurfaceType {
   std::unique_ptr<Discretizer> MakeDiscretizer() const override;
   std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
   std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
+  CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const override;
 
  protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
@@ -26,6 +27,7 @@ class PlanarSurface final : public SurfaceType {
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                    const ConfigNode& pair_node) const override;
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
+  RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const override;
   std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const override;
 };

@@ -1,43 +1,43 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
 
+#include "framework/model/column_response_table.h"
 #include "framework/model/contact_analyzer.h"
-#include "framework/model/texture_contact.h"
+#include "surfaces/spherical/spherical_scan_analyzer.h"
 
 namespace fitfeel::spherical {
 
-// Contact of a ball (inner ring, inner) in a socket (outer ring, outer) of a spherical plain
-// bearing. The ball is captive: it cannot leave the socket along the axis, so the pose's depth is
-// not a degree of freedom here (it is ignored, and the parts are always engaged). The pose's angle
-// is the ball's rotation about the bearing axis y, its offset (x, z) the radial displacement e of
-// the ball's centre from the socket's.
+// The knuckle bearing's contact (the model of SphericalScanAnalyzer, spherical_scan_analyzer.h)
+// tabulated in prepare by what a tick's result depends on, so that a tick costs O(n) instead of
+// O(m n).
 //
-// Per socket cell k (row i at height y, column j at beta_j, unit normal n_k from the centre):
-//   gap = V_socket(k) - V_ball(y, beta_j - angle) - e . n_k,     delta = max(0, -gap)
-// with the ball's variation interpolated bilinearly (in y between its rows, in beta periodically
-// between its columns) at the material point that the rotation has brought under the cell, so the
-// contact is continuous in the angle. The socket's band is the contact band (the ball's is wider,
-// CheckPair requires it). Every contact is elastic (Winkler bed of thick-shell pressures), so there
-// is no separate clearance spring and the force is continuous at first contact. With texture in
-// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
-// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h);
-// in `sampled` mode the texture is in V and the contact is sharp, max(0, -gap).
+// With the ball turned by theta and its centre offset by e, socket cell (i, j) has the gap
+// g_ij(theta) - cos(lat_i) e . u_j: the offset enters each column through one scalar, x = e . u_j,
+// and theta through the ball's variation under the column. So per rotation step theta_q and socket
+// column j the table holds the column's interference volume, resultant (weighted by cos(lat)) and
+// largest interference as functions of x (ColumnResponseTable: sampled where they are not simply
+// zero or linear, exact beyond). A tick evaluates, per column, the two neighbouring rotation steps
+// at x and blends them linearly in theta (periodically): continuous in rotation and offset,
+// nondecreasing in the offset towards the socket.
 //
-// Sums reported: interference_volume = sum delta * ds, pressure_resultant = sum delta * ds *
-// (n_x, n_z) (the axial component of the resultant is not reported: ContactState has no field
-// for it, and it vanishes for a band symmetric about the equator unless the form is asymmetric).
-//
-// Per tick: one pass over the socket's m x n cells, no allocation.
-//
-// The interference map (for pictures, not the tick) is over the ball's cells, as the interface
-// asks: the ball's material cell (row r, column c) lies, after the rotation, at beta_c + angle
-// under the socket, whose variation is interpolated there (in y between its row centres, clamped to
-// the end rows; in beta periodically). Ball cells whose centre lies outside the socket's band touch
-// nothing and are zero.
+// Steps: two per column pitch over the full turn, 33 samples of x per entry; the entries are
+// filled on PrepareThreads() threads, bit for bit the same for any count. Between two steps each
+// cell's gap is linear in theta (the ball's variation is interpolated linearly between its
+// columns), so the blend's error is second order in the ball's change over half a pitch; one step
+// per pitch would miss how partial contact changes half a pitch off the columns, where a lobed
+// ball's lobes sit between the socket's cells. The error against the scan is the x interpolation
+// (ColumnResponseTable::VolumeErrorBound) at the steps, plus that blend between them; tested
+// against the scan.
 class SphericalContactAnalyzer final : public ContactAnalyzer {
+ public:
+  static constexpr int kSamples = 33;
+  static constexpr int kStepsPerColumn = 2;
+
+  const SphericalScanAnalyzer& scan() const { return scan_; }
+  const ColumnResponseTable& table() const { return table_; }
+  double angle_step() const { return step_; }
+
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
@@ -45,27 +45,11 @@ class SphericalContactAnalyzer final : public ContactAnalyzer {
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
 
  private:
-  template <class Visit>
-  void ForEachCell(const MatingPose& pose, Visit&& visit) const noexcept;
-
-  int rows_ = 0;     // socket rows
-  int columns_ = 0;  // shared column count
-  double width_ = 0.0;
-  double cell_area_ = 0.0;
-  Eigen::MatrixXd socket_v_;  // rows x columns
-  Eigen::MatrixXd ball_v_;    // ball rows x columns
-  // Ball rows bracketing each socket row, and the weight of the upper one (prepare-time).
-  std::vector<int> ball_row_;
-  std::vector<double> ball_row_weight_;
-  Eigen::Matrix3Xd normal_;  // socket cell normals
-  // For the ball-cell interference map (prepare-time): per ball row, whether its centre lies in
-  // the socket's band, the socket rows bracketing it and the upper one's weight; the ball's
-  // normals.
-  std::vector<char> ball_row_in_band_;
-  std::vector<int> socket_row_;
-  std::vector<double> socket_row_weight_;
-  Eigen::Matrix3Xd ball_normal_;
-  ExpectedInterferenceTable texture_;  // sharp unless texture is `expected`
+  SphericalScanAnalyzer scan_;
+  ColumnResponseTable table_;
+  double step_ = 0.0;
+  int steps_ = 0;
+  Eigen::Matrix2Xd direction_;
 };
 
 }  // namespace fitfeel::spherical

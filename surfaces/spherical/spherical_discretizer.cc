@@ -7,14 +7,19 @@
 
 namespace fitfeel::spherical {
 
-SurfaceGrid SphericalDiscretizer::DoDiscretize(const PartSpec& part,
-                                               const Resolution& resolution) const {
+GridShape SphericalDiscretizer::DoShape(const PartSpec& part,
+                                        const Resolution& resolution) const {
   const SphericalGeometry& geometry = GeometryOf(part);
   revolution::AutoResolution automatic;
   automatic.row_pitch = 1e-3;
   // Two-point sizes pair antipodal cells (row m-1-i, column j+n/2).
-  const revolution::GridShape shape =
-      revolution::CheckedGridShape(part, resolution, geometry.width(), automatic, "a sphere", 2);
+  return revolution::CheckedGridShape(part, resolution, geometry.width(), automatic, "a sphere", 2);
+}
+
+SurfaceGrid SphericalDiscretizer::DoDiscretize(const PartSpec& part,
+                                               const Resolution& resolution) const {
+  const SphericalGeometry& geometry = GeometryOf(part);
+  const GridShape shape = DoShape(part, resolution);
   const int rows = shape.rows, columns = shape.columns;
   SurfaceGrid grid = revolution::EmptyGrid(shape);
   const double a = geometry.radius();

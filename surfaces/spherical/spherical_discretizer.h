@@ -11,6 +11,7 @@ namespace fitfeel::spherical {
 // Auto resolution: 72 columns (5 deg) and one row per mm of band width, at least 8, at most 400.
 class SphericalDiscretizer final : public Discretizer {
  protected:
+  GridShape DoShape(const PartSpec& part, const Resolution& resolution) const override;
   SurfaceGrid DoDiscretize(const PartSpec& part, const Resolution& resolution) const override;
 };
 

@@ -2,7 +2,11 @@
 
 #include <cmath>
 
+#include <algorithm>
+#include <numbers>
+
 #include "framework/core/error.h"
+#include "framework/model/elastic_limit.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
 namespace fitfeel::spherical {
@@ -20,25 +24,131 @@ double ThickShellPressurePerInterference(double a, double b, const Material& bal
   return 1.0 / (a * (ball_term + shell_term));
 }
 
+double RingPressurePerInterference(double dk, double outer_diameter, const Material& ball,
+                                   const Material& ring) {
+  if (!(dk > 0.0) || !(outer_diameter > dk)) throw UserError("ring pressure needs 0 < dk < D");
+  if (!(ball.youngs_modulus > 0.0) || !(ring.youngs_modulus > 0.0)) {
+    throw UserError("ring pressure needs positive Young's moduli");
+  }
+  const double d2 = outer_diameter * outer_diameter, d1 = dk * dk;
+  const double ring_term = ((d2 + d1) / (d2 - d1) + ring.poisson) / ring.youngs_modulus;
+  const double ball_term = (1.0 - ball.poisson) / ball.youngs_modulus;
+  return (2.0 / dk) / (ball_term + ring_term);
+}
+
+double ContactModulus(const Material& a, const Material& b) {
+  return 1.0 / ((1.0 - a.poisson * a.poisson) / a.youngs_modulus +
+                (1.0 - b.poisson * b.poisson) / b.youngs_modulus);
+}
+
+HertzContact ConformalHertz(double ball_radius, double clearance, double approach,
+                            double contact_modulus) {
+  HertzContact h;
+  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
+  const double r = ball_radius * (ball_radius + clearance) / clearance;
+  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach);
+  h.radius = std::sqrt(r * approach);
+  h.peak_pressure = 1.5 * h.load / (std::numbers::pi * h.radius * h.radius);
+  return h;
+}
+
 void KnuckleBearingLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
                                   const ModelSettings& settings) {
   GeometryOf(inner);
   const SphericalGeometry& socket = GeometryOf(outer);
-  mu_ = settings.friction;
+  friction_ = StickSlipFriction(FrictionOf(settings));
   arm_ = socket.mean_axis_distance();
-  pressure_per_interference_ = ThickShellPressurePerInterference(
-      socket.radius(), 0.5 * socket.outer_diameter(), inner.material, outer.material);
+  radius_ = socket.radius();
+  const double dk = 2.0 * socket.radius();
+  pressure_per_interference_ =
+      RingPressurePerInterference(dk, socket.outer_diameter(), inner.material, outer.material);
+  contact_modulus_ = ContactModulus(inner.material, outer.material);
+  const double ring_re = outer.material.yield_strength, ball_re = inner.material.yield_strength;
+  ring_yield_pressure_ = ring_re > 0.0 ? HubYieldPressure(dk, socket.outer_diameter(), ring_re)
+                                       : 0.0;
+  ball_yield_pressure_ = ball_re > 0.0 ? ShaftYieldPressure(dk, 0.0, ball_re) : 0.0;
+  const double weaker = ring_re > 0.0 && ball_re > 0.0 ? std::min(ring_re, ball_re)
+                                                       : std::max(ring_re, ball_re);
+  hertz_yield_pressure_ = weaker > 0.0 ? HertzYieldPeakPressure(weaker) : 0.0;
+  hertz_yield_part_ = weaker == ring_re ? 1 : 2;
+}
+
+HertzContact LocalContact(double ball_radius, double clearance, double approach,
+                          double contact_modulus) {
+  HertzContact h;
+  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
+  // Hertz's R = R1 R2 / c, held to the radius that keeps a = sqrt(R delta) at 0.3 R1.
+  const double r = std::min(ball_radius * (ball_radius + clearance) / clearance,
+                            kHertzMaxSpread * kHertzMaxSpread * ball_radius * ball_radius /
+                                approach);
+  h.radius = std::sqrt(r * approach);
+  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach) *
+           std::min(1.0, clearance / approach);
+  h.peak_pressure = 1.5 * h.load / (std::numbers::pi * h.radius * h.radius);
+  return h;
+}
+
+double KnuckleBearingLaw::Normal(const ContactState& contact, Wrench* out,
+                                 HertzContact* hertz) const noexcept {
+  out->SetZero();
+  *hertz = HertzContact{};
+  if (!(contact.interference_volume > 0.0)) return 0.0;
+  const Eigen::Vector2d bed = -pressure_per_interference_ * contact.pressure_resultant;
+  const double bed_load = bed.norm();
+  const double clearance = contact.offset_distance - contact.max_interference;
+  const HertzContact local =
+      LocalContact(radius_, clearance, contact.max_interference, contact_modulus_);
+  if (local.load > bed_load && bed_load > 0.0) {
+    *hertz = local;
+    const Eigen::Vector2d f = (local.load / bed_load) * bed;
+    out->force.x() = f.x();
+    out->force.z() = f.y();
+    return local.load;
+  }
+  out->force.x() = bed.x();
+  out->force.z() = bed.y();
+  return pressure_per_interference_ * contact.interference_volume;
 }
 
 void KnuckleBearingLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                                    Wrench* out) const noexcept {
-  out->SetZero();
-  if (!(contact.interference_volume > 0.0)) return;
-  const double normal = pressure_per_interference_ * contact.interference_volume;
-  out->force.x() = -pressure_per_interference_ * contact.pressure_resultant.x();
-  out->force.z() = -pressure_per_interference_ * contact.pressure_resultant.y();
-  const double slip = motion.angular_velocity.y() * arm_;
-  out->torque.y() = -mu_ * normal * arm_ * std::tanh(slip / kFrictionSmoothingVelocity);
+  HertzContact hertz;
+  const double normal = Normal(contact, out, &hertz);
+  out->torque.y() =
+      friction_.Smoothed({motion.angular_velocity.y() * arm_, 0.0}, normal).x() * arm_;
+}
+
+void KnuckleBearingLaw::DoEvaluateWithState(const ContactState& contact,
+                                            const MatingMotion& motion, LawState* state,
+                                            Wrench* out) const noexcept {
+  HertzContact hertz;
+  const double normal = Normal(contact, out, &hertz);
+  out->torque.y() = friction_.Step({motion.angle * arm_, 0.0}, normal, &state->friction).x() * arm_;
+}
+
+ElasticLimitCheck KnuckleBearingLaw::DoCheckElasticLimit(
+    const ContactState& contact) const noexcept {
+  ElasticLimitCheck check;
+  Wrench unused;
+  HertzContact hertz;
+  if (!(Normal(contact, &unused, &hertz) > 0.0)) return check;
+  if (hertz.load > 0.0) {
+    if (hertz_yield_pressure_ > 0.0) {
+      check.utilisation = hertz.peak_pressure / hertz_yield_pressure_;
+      check.part = hertz_yield_part_;
+    }
+    return check;
+  }
+  const double peak = pressure_per_interference_ * contact.max_interference;
+  if (ring_yield_pressure_ > 0.0) {
+    check.utilisation = peak / ring_yield_pressure_;
+    check.part = 1;
+  }
+  if (ball_yield_pressure_ > 0.0 && peak / ball_yield_pressure_ > check.utilisation) {
+    check.utilisation = peak / ball_yield_pressure_;
+    check.part = 2;
+  }
+  return check;
 }
 
 }  // namespace fitfeel::spherical

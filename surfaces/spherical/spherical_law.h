@@ -15,22 +15,59 @@ namespace fitfeel::spherical {
 double ThickShellPressurePerInterference(double a, double b, const Material& ball,
                                          const Material& shell);
 
-// Friction regularised as mu * N * tanh(|v| / v_s), v_s = 1 mm/s (the cylindrical and conical
-// plugins' choice: the upper end of steel-on-steel Stribeck velocities, Armstrong-Helouvry et al.,
-// Automatica 1994).
-inline constexpr double kFrictionSmoothingVelocity = 1e-3;
+// The outer ring of a spherical plain bearing is a ring of width C, not a shell around the whole
+// ball: under a uniform interference its band expands like a thick-walled cylinder of bore dk and
+// outer diameter D (Lame, plane stress), with the ball's compliance (1 - nu1)/E1 of a solid
+// cylinder under the band's pressure. Pa/m:
+//   P_ring = (2 / dk) / ( (1 - nu1)/E1 + ((D^2 + dk^2)/(D^2 - dk^2) + nu2)/E2 )
+// For GE 20 E (dk 29 mm, D 35 mm, steel) 2.27 MPa/um, 2.62 times softer than the thick shell of
+// radii 14.5 and 17.5 mm (5.95 MPa/um), which assumes material all round the ball.
+double RingPressurePerInterference(double dk, double outer_diameter, const Material& ball,
+                                   const Material& ring);
 
-// Knuckle (spherical plain) bearing. Each socket cell's pressure is p = P * delta (P above), so
-// sum p ds = P * interference_volume. On the ball:
-//   radial force   F_(x,z) = -P * sum(delta * ds * n_(x,z))    (pushes the centre back)
-//   friction torque about the bearing axis, for the rotation omega_y:
-//                  T_y = -mu * P * interference_volume * rho * tanh(|omega_y| rho / v_s)
-//                  sign(omega_y)
-// with rho the band's mean distance from the axis, (1/B) * integral of sqrt(a^2 - y^2) dy. For a
-// uniform pressure this is exactly mu * integral of p * (distance from the axis) ds; a cell's arm
-// is a cos(latitude), not a, so mu * sum p ds * a overstates the torque (by 3 % for GE 20 E's
-// outer ring). Under a radial load the pressure concentrates in azimuth, not in latitude, so rho
-// stays a close arm (the law sees only the analyzer's sums, not each cell).
+// A loaded plain bearing with radial clearance c = R2 - R1 touches over a small patch: a
+// conformal Hertz contact of the two spheres (Johnson, Contact Mechanics, 1985, section 4.2),
+// effective radius R = R1 R2 / (R2 - R1), contact modulus E* = 1 / ((1 - nu1^2)/E1 +
+// (1 - nu2^2)/E2): load W = (4/3) E* sqrt(R) delta^(3/2) at the approach delta, contact radius
+// a = sqrt(R delta), peak pressure p0 = 3 W / (2 pi a^2).
+struct HertzContact {
+  double load = 0.0;           // W, N
+  double radius = 0.0;         // a, m
+  double peak_pressure = 0.0;  // p0, Pa
+};
+HertzContact ConformalHertz(double ball_radius, double clearance, double approach,
+                            double contact_modulus);
+// Hertz needs a patch small against the ball; a / R1 = 0.3 is taken as the end of its validity.
+inline constexpr double kHertzMaxSpread = 0.3;
+// The local contact the law uses: Hertz while a <= 0.3 R1; beyond, R is held at the value that
+// keeps a = 0.3 R1 (a load linear in delta), and once the approach exceeds the clearance (the
+// patch wraps round the ball) the load is scaled by c / delta, so that it fades into the ring's
+// bed as c -> 0. Non-decreasing in delta at a given clearance, continuous everywhere.
+HertzContact LocalContact(double ball_radius, double clearance, double approach,
+                          double contact_modulus);
+double ContactModulus(const Material& a, const Material& b);  // E*, Pa
+
+// Knuckle (spherical plain) bearing. Two contact regimes, each carried by the closed form that
+// holds there:
+//  - interference all round (ball larger than the socket) or a contact wrapped round the ball:
+//    each socket cell's pressure is p = P_ring * delta (the ring above), so
+//    sum p ds = P_ring * interference_volume and the radial force is -P_ring * sum(delta ds n);
+//  - the ball pushed across the clearance onto one side (a loaded plain bearing): the local
+//    (conformal Hertz) load W of the approach delta = the largest interference, with the
+//    clearance there c = e - delta (e the centre's offset), along minus the resultant's
+//    direction; normal force W. A local patch is carried by the material under it, not by the
+//    ring's breathing: Hertz is stiffer than the per-cell bed there (GE 20 E at 1 um of
+//    approach: 288 N against 96 N).
+// The larger of the two loads is taken: both grow with the offset, so the support stays monotone
+// (the settling search needs that) and continuous; as c -> 0 the local load fades (LocalContact)
+// and the bed remains.
+// Friction torque about the bearing axis: stick-slip on the arc angle * rho with the run's state
+// (framework/model/friction.h; without state the smoothed kinetic law), rho the band's mean
+// distance from the axis, (1/B) * integral of sqrt(a^2 - y^2) dy: for a uniform pressure exactly
+// mu * integral of p * (distance from the axis) ds (a cell's arm is a cos(latitude), not a, so
+// mu * sum p ds * a would overstate the torque by 3 % for GE 20 E's outer ring).
+// Elastic limit: per cell P_ring * delta against the ring's bore (DIN 7190 hub form with
+// Q = dk / D) and the ball's; a Hertz contact's p0 against 1.61 R_e (elastic_limit.h).
 // Tilting (omega_x, omega_z) and the axial force are not modelled: the bearing's mating motion is
 // the rotation about its axis, and the ball is captive along it.
 class KnuckleBearingLaw final : public ResistanceLaw {
@@ -39,15 +76,28 @@ class KnuckleBearingLaw final : public ResistanceLaw {
   double friction_arm() const { return arm_; }
 
  protected:
-  // The thick-shell coefficient every socket cell's pressure uses.
+  // The ring coefficient every socket cell's pressure uses under all-round interference.
   double DoPressurePerInterference() const override { return pressure_per_interference_; }
   void DoPrepare(const PartSpec& inner, const PartSpec& outer,
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                           LawState* state, Wrench* out) const noexcept override;
+  ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
 
  private:
-  double mu_ = 0.0;
+  // Radial force into `out`; returns the normal force and, when the Hertz regime carries the
+  // load, its contact in `hertz` (load 0 otherwise).
+  double Normal(const ContactState& contact, Wrench* out, HertzContact* hertz) const noexcept;
+
+  StickSlipFriction friction_;
+  double radius_ = 0.0;
+  double contact_modulus_ = 0.0;
+  double ring_yield_pressure_ = 0.0;   // 0: no yield strength given
+  double ball_yield_pressure_ = 0.0;
+  double hertz_yield_pressure_ = 0.0;
+  int hertz_yield_part_ = 1;  // the part of the lower yield strength (ElasticLimitCheck::part)
   double arm_ = 0.0;
   double pressure_per_interference_ = 0.0;
 };

@@ -63,4 +63,9 @@ std::vector<CharacteristicCheck> SphericalSurface::DoEvaluateCharacteristics(
   return EvaluateSphereCharacteristics(part, sms);
 }
 
+// Both grids are centred on the sphere's centre, the centre of the rotation.
+RenderMesh SphericalSurface::DoMakeRenderMesh(const PartSpec&, const SurfaceGrid& grid) const {
+  return RevolutionRenderMesh(grid, 1.0, 0.0);
+}
+
 }  // namespace fitfeel::spherical

@@ -24,8 +24,8 @@ double FlankSign(int column, int columns) { return column < columns / 2 ? 1.0 : 
 
 }  // namespace
 
-SurfaceGrid HelicoidDiscretizer::DoDiscretize(const PartSpec& part,
-                                              const Resolution& resolution) const {
+GridShape HelicoidDiscretizer::DoShape(const PartSpec& part,
+                                       const Resolution& resolution) const {
   const HelicoidGeometry& g = HelicoidGeometryOf(part);
   int rows = 0, strips = 0;
   if (resolution.is_auto()) {
@@ -39,9 +39,18 @@ SurfaceGrid HelicoidDiscretizer::DoDiscretize(const PartSpec& part,
     rows = resolution.rows;
     strips = resolution.columns / 2;
   }
+  return GridShape{rows, 2 * strips};
+}
+
+SurfaceGrid HelicoidDiscretizer::DoDiscretize(const PartSpec& part,
+                                              const Resolution& resolution) const {
+  const HelicoidGeometry& g = HelicoidGeometryOf(part);
+  const GridShape shape = DoShape(part, resolution);
+  const int rows = shape.rows;
+  const int strips = shape.columns / 2;
   SurfaceGrid grid;
   grid.rows = rows;
-  grid.columns = 2 * strips;
+  grid.columns = shape.columns;
   const int cells = grid.size();
   const double total = 2.0 * kPi * g.turns();
   const double dtheta = total / rows;

@@ -24,6 +24,7 @@ class HelicoidDiscretizer final : public Discretizer {
   static constexpr int kAutoStripsPerFlank = 4;
 
  protected:
+  GridShape DoShape(const PartSpec& part, const Resolution& resolution) const override;
   SurfaceGrid DoDiscretize(const PartSpec& part, const Resolution& resolution) const override;
 };
 

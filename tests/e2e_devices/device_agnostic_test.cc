@@ -57,6 +57,7 @@ class ProbeDevice final : public Device {
     inner_->RunServoLoop(duration, tick);
   }
   bool active() const override { return inner_->active(); }
+  nlohmann::json report() const override { return inner_->report(); }
 
   const std::vector<RecordedSample>& samples() const { return samples_; }
   std::size_t reads() const { return reads_; }
@@ -420,6 +421,60 @@ INSTANTIATE_TEST_SUITE_P(
                                  nullptr},
                       DeviceCase{"phantom", 1.0, PhantomScene, CheckFakeHd}),
     [](const ::testing::TestParamInfo<DeviceCase>& param) { return param.param.name; });
+
+// The Phantom end to end: the fake HD's stylus pushes the shaft straight into the bushing. The
+// run must reach the constrained stage while the fake injects what real hardware does: a
+// calibration that needs an update, a force error, a velocity error and warm motors; each must be
+// survived and reported in summary.json.
+TEST(PhantomE2e, ReachesTheConstrainedStageThroughInjectedFaults) {
+  const fs::path dir = WorkDir();
+  ::setenv("FITFEEL_HD_LIBRARY", (kBuild / "tests/fakehd/libHD.so").c_str(), 1);
+  // The stylus starts 20 mm before the entrance (the default frame) and pushes in at 20 mm/s, 0.1
+  // mm off the axis: at the entrance after 1000 frames, 10 mm in after 1500, where it stays. The
+  // faults come early enough that a servo thread slowed by a busy machine still reaches them.
+  ::setenv("FAKEHD_PATH", "insert", 1);
+  ::setenv("FAKEHD_CALIBRATION", "update", 1);
+  ::setenv("FAKEHD_FORCE_ERROR_FRAME", "1050", 1);
+  ::setenv("FAKEHD_VELOCITY_ERROR_FRAME", "1200", 1);
+  ::setenv("FAKEHD_WARM_FRAME", "1350", 1);
+  PluginRegistry registry;
+  registry.LoadAll();
+  Scene scene = LoadScene(
+      SceneWithDevice(dir, "phantom-insert",
+                      "device:\n  plugin: fitfeel.device.phantom\n  model: PHANTOM Desktop\n"),
+      registry);
+  scene.run.duration = 2.5;
+  RunOptions options;
+  options.out_dir = dir / "out";
+  const RunResult result = RunScene(std::move(scene), options);
+
+  std::ifstream summary_file(result.paths.summary);
+  const nlohmann::json summary = nlohmann::json::parse(summary_file);
+  const nlohmann::json& device = summary.at("device_report");
+  std::printf("%s\n", device.dump(2).c_str());
+  std::printf("ticks %llu, constrained %llu\n",
+              static_cast<unsigned long long>(summary.at("ticks").get<std::uint64_t>()),
+              static_cast<unsigned long long>(summary.at("constrained_ticks").get<std::uint64_t>()));
+  // The run went on to its end and most of its second half was constrained.
+  EXPECT_FALSE(device.at("stopped_on_faults").get<bool>());
+  EXPECT_GT(summary.at("ticks").get<double>(), 1800.0);
+  EXPECT_GT(summary.at("constrained_ticks").get<double>(), 0.35 * summary.at("ticks").get<double>());
+  // Each fault is reported.
+  EXPECT_EQ(device.at("calibration"), "updated (auto)");
+  EXPECT_EQ(device.at("calibration_updates"), 1);
+  EXPECT_GE(device.at("force_errors").get<int>(), 1);
+  EXPECT_EQ(device.at("velocity_errors"), 1);
+  EXPECT_GE(device.at("warm_motor_errors").get<int>(), 1);
+  EXPECT_GT(device.at("zeroed_ticks").get<int>(), 0);
+  EXPECT_GT(device.at("ramped_ticks").get<int>(), 0);
+  EXPECT_EQ(device.at("update_rate_Hz"), 1000.0);
+  // Within the driver's peak.
+  EXPECT_LE(device.at("max_force_sent_N").get<double>(), 7.9);
+  for (const char* name : {"FAKEHD_PATH", "FAKEHD_CALIBRATION", "FAKEHD_FORCE_ERROR_FRAME",
+                           "FAKEHD_VELOCITY_ERROR_FRAME", "FAKEHD_WARM_FRAME"}) {
+    ::unsetenv(name);
+  }
+}
 
 }  // namespace
 }  // namespace fitfeel

@@ -1,18 +1,24 @@
 // A fake OpenHaptics HD library (libHD.so) for the tests: same entry points and constants as the
-// real one (devices/phantom/phantom_hd_api.h), a scripted device, a servo thread at 1 kHz.
+// real one (devices/phantom/phantom_hd_api.h), a scripted device, a servo thread at HD_UPDATE_RATE.
+// What it imitates of the real driver is listed in fake_hd.h.
 
 #include "tests/fakehd/fake_hd.h"
 
 #include <time.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "devices/phantom/phantom_hd_api.h"
 
@@ -21,19 +27,26 @@
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Motor temperature, normalized as HD_MOTOR_TEMPERATURE: above it the motors count as hot
+// (HD_WARM_MOTORS on any force).
+constexpr double kHotTemperature = 0.9;
 
 struct Scheduled {
   HDSchedulerHandle handle;
   HDSchedulerCallback callback;
   void* data;
+  bool synchronous;
+  bool* finished;  // synchronous: set under the mutex when the callback returned DONE
 };
 
 struct State {
   std::mutex mutex;  // guards errors and scheduled (touched from both threads)
+  std::condition_variable finished;
   std::vector<HDErrorInfo> errors;
   std::vector<Scheduled> scheduled;
   HDSchedulerHandle next_handle = 1;
   std::thread servo;
+  std::thread::id servo_id;
   std::atomic<bool> stop{false};
   bool running = false;
 
@@ -41,14 +54,31 @@ struct State {
   bool force_output = false;
   bool in_frame = false;
   HDenum calibration = HD_CALIBRATION_OK;
+  double manual_seconds = -1.0;  // < 0: the user never calibrates by hand
+  timespec init_time{};
   HDint calibration_styles = HD_CALIBRATION_AUTO | HD_CALIBRATION_INKWELL;
   std::uint64_t force_error_frame = 0;
+  std::uint64_t velocity_error_frame = 0;
+  std::uint64_t warm_frame = 0;
+  double cool_seconds = 0.2;
+  double watchdog = 0.05;  // s
+  int rate = 1000;
+  bool insert_path = false;
+  double insert_speed = 20.0, insert_offset = 0.1, insert_depth = 30.0;  // mm/s, mm, mm
+  double velocity_noise = 2.0;                                           // mm/s
+  std::mt19937_64 noise{12345};
   std::string model = "PHANTOM Desktop";
   double max_force = 7.9;
   double max_continuous = 1.75;
+  double max_stiffness = 1.0;  // N/mm
 
+  double ambient = 0.2;  // the motors' temperature at rest
+  double temperature = 0.2;
+  bool frame_forced = false;  // a force was set in the current frame
+  timespec last_end{};
+  bool has_last_end = false;
   FakeHdStats stats{};
-  double force[3] = {0, 0, 0};
+  double force[3] = {0, 0, 0};  // what the motors hold
 };
 
 State& S() {
@@ -66,30 +96,75 @@ double EnvDouble(const char* name, double fallback) {
   return v ? std::strtod(v, nullptr) : fallback;
 }
 
-// Device time: frames at the nominal 1 kHz, so the path is the same however late the thread runs.
-double DeviceTime() { return static_cast<double>(S().stats.frames) * 1e-3; }
+double Seconds(const timespec& a, const timespec& b) {
+  return static_cast<double>(b.tv_sec - a.tv_sec) + static_cast<double>(b.tv_nsec - a.tv_nsec) * 1e-9;
+}
 
-// The stylus path, in millimetres: a 0.5 Hz circle in x-y of radius 20 mm, z fixed at 15 mm,
-// rotating about y by 0.2 sin(t) rad; button 1 pressed during odd seconds.
+timespec Monotonic() {
+  timespec now;
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  return now;
+}
+
+bool OnServoThread() { return S().running && std::this_thread::get_id() == S().servo_id; }
+
+// Device time: frames at the nominal rate, so the path is the same however late the thread runs.
+double DeviceTime() { return static_cast<double>(S().stats.frames) / S().rate; }
+
+// The stylus's rotation: small turns about x, y and z at incommensurate frequencies.
+Eigen::Matrix3d StylusRotation(double t, double amplitude) {
+  return (Eigen::AngleAxisd(amplitude * std::sin(1.3 * t), Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(amplitude * std::sin(0.7 * t + 0.5), Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(amplitude * std::sin(t), Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
+// The stylus, in millimetres.
+//  circle: a 0.5 Hz circle in x-y of radius 20 mm, z fixed at 15 mm, turning up to 0.2 rad about
+//          every axis; button 1 pressed during odd seconds.
+//  insert: from the workspace's centre straight into the screen (-z) at insert_speed, offset
+//          insert_offset along x, stopping insert_depth further; the stylus points into the
+//          screen, turning up to 2 mrad about every axis; no button.
 void Path(double t, double* position, double* velocity, double* transform, double* angular,
           HDint* buttons) {
-  const double w = 2.0 * kPi * 0.5;
-  position[0] = 20.0 * std::sin(w * t);
-  position[1] = 20.0 * std::cos(w * t);
-  position[2] = 15.0;
-  velocity[0] = 20.0 * w * std::cos(w * t);
-  velocity[1] = -20.0 * w * std::sin(w * t);
-  velocity[2] = 0.0;
-  const double a = 0.2 * std::sin(t);
-  const double c = std::cos(a), s = std::sin(a);
-  // Column-major rotation about y, then the translation.
-  const double m[16] = {c, 0, -s, 0, 0,           1,           0,           0,
-                        s, 0, c,  0, position[0], position[1], position[2], 1};
-  std::memcpy(transform, m, sizeof(m));
-  angular[0] = 0.0;
-  angular[1] = 0.2 * std::cos(t);
-  angular[2] = 0.0;
-  *buttons = (static_cast<long>(t) % 2 == 1) ? 1 : 0;
+  const State& st = S();
+  double amplitude = 0.2;
+  if (st.insert_path) {
+    amplitude = 0.002;
+    const double travel = std::min(st.insert_speed * t, st.insert_depth);
+    position[0] = st.insert_offset;
+    position[1] = 0.0;
+    position[2] = -travel;
+    velocity[0] = velocity[1] = 0.0;
+    velocity[2] = st.insert_speed * t < st.insert_depth ? -st.insert_speed : 0.0;
+    *buttons = 0;
+  } else {
+    const double w = 2.0 * kPi * 0.5;
+    position[0] = 20.0 * std::sin(w * t);
+    position[1] = 20.0 * std::cos(w * t);
+    position[2] = 15.0;
+    velocity[0] = 20.0 * w * std::cos(w * t);
+    velocity[1] = -20.0 * w * std::sin(w * t);
+    velocity[2] = 0.0;
+    *buttons = (static_cast<long>(t) % 2 == 1) ? 1 : 0;
+  }
+  const Eigen::Matrix3d r = StylusRotation(t, amplitude);
+  // Angular velocity from the rotation's central difference: skew(w) = dR/dt R^T.
+  const double h = 1e-5;
+  const Eigen::Matrix3d w =
+      (StylusRotation(t + h, amplitude) - StylusRotation(t - h, amplitude)) / (2.0 * h) *
+      r.transpose();
+  angular[0] = 0.5 * (w(2, 1) - w(1, 2));
+  angular[1] = 0.5 * (w(0, 2) - w(2, 0));
+  angular[2] = 0.5 * (w(1, 0) - w(0, 1));
+  for (int c = 0; c < 3; ++c) {
+    for (int row = 0; row < 3; ++row) transform[4 * c + row] = r(row, c);  // column-major
+    transform[4 * c + 3] = 0.0;
+  }
+  transform[12] = position[0];
+  transform[13] = position[1];
+  transform[14] = position[2];
+  transform[15] = 1.0;
 }
 
 }  // namespace
@@ -102,6 +177,10 @@ FAKEHD_EXPORT HHD hdInitDevice(HDstring) {
   }
   st.stats = FakeHdStats{};
   st.force[0] = st.force[1] = st.force[2] = 0.0;
+  st.ambient = EnvDouble("FAKEHD_TEMPERATURE", 0.2);
+  st.temperature = st.ambient;
+  st.has_last_end = false;
+  st.noise.seed(12345);
   const char* fail = std::getenv("FAKEHD_INIT_FAIL");
   if (fail && std::strcmp(fail, "1") == 0) {
     Push(HD_COMM_ERROR, 5);
@@ -111,19 +190,35 @@ FAKEHD_EXPORT HHD hdInitDevice(HDstring) {
   st.calibration = HD_CALIBRATION_OK;
   if (cal && std::strcmp(cal, "update") == 0) st.calibration = HD_CALIBRATION_NEEDS_UPDATE;
   if (cal && std::strcmp(cal, "manual") == 0) st.calibration = HD_CALIBRATION_NEEDS_MANUAL_INPUT;
+  st.manual_seconds = EnvDouble("FAKEHD_MANUAL_SECONDS", -1.0);
+  st.init_time = Monotonic();
   st.calibration_styles = static_cast<HDint>(
       EnvDouble("FAKEHD_CALIBRATION_STYLES", HD_CALIBRATION_AUTO | HD_CALIBRATION_INKWELL));
   st.force_error_frame = static_cast<std::uint64_t>(EnvDouble("FAKEHD_FORCE_ERROR_FRAME", 0));
+  st.velocity_error_frame =
+      static_cast<std::uint64_t>(EnvDouble("FAKEHD_VELOCITY_ERROR_FRAME", 0));
+  st.warm_frame = static_cast<std::uint64_t>(EnvDouble("FAKEHD_WARM_FRAME", 0));
+  st.cool_seconds = EnvDouble("FAKEHD_COOL_SECONDS", 0.2);
+  st.watchdog = EnvDouble("FAKEHD_WATCHDOG_MS", 50.0) * 1e-3;
+  st.rate = static_cast<int>(EnvDouble("FAKEHD_RATE", 1000.0));
+  const char* path = std::getenv("FAKEHD_PATH");
+  st.insert_path = path != nullptr && std::strcmp(path, "insert") == 0;
+  st.insert_speed = EnvDouble("FAKEHD_INSERT_SPEED", 20.0);
+  st.insert_offset = EnvDouble("FAKEHD_INSERT_OFFSET", 0.1);
+  st.insert_depth = EnvDouble("FAKEHD_INSERT_DEPTH", 30.0);
+  st.velocity_noise = EnvDouble("FAKEHD_VELOCITY_NOISE", 2.0);
   const char* model = std::getenv("FAKEHD_MODEL");
   st.model = model ? model : "PHANTOM Desktop";
   st.max_force = EnvDouble("FAKEHD_MAX_FORCE", 7.9);
   st.max_continuous = EnvDouble("FAKEHD_MAX_CONTINUOUS_FORCE", 1.75);
+  st.max_stiffness = EnvDouble("FAKEHD_MAX_STIFFNESS", 1.0);
   st.initialized = true;
   st.stats.initialized = 1;
   return 1;
 }
 
 FAKEHD_EXPORT void hdDisableDevice(HHD) {
+  if (S().running) Push(HD_INVALID_OPERATION);  // the SDK wants the scheduler stopped first
   S().initialized = false;
   S().force_output = false;
   S().stats.initialized = 0;
@@ -148,6 +243,12 @@ FAKEHD_EXPORT HDstring hdGetErrorString(HDerror code) {
       return "Communication error (fake)";
     case HD_EXCEEDED_MAX_FORCE:
       return "Exceeded max force (fake)";
+    case HD_WARM_MOTORS:
+      return "Motors are warm (fake)";
+    case HD_EXCEEDED_MAX_VELOCITY:
+      return "Exceeded max velocity (fake)";
+    case HD_FORCE_ERROR:
+      return "Force error: servo watchdog (fake)";
     default:
       return "fake HD error";
   }
@@ -166,15 +267,33 @@ FAKEHD_EXPORT void hdEnable(HDenum capability) {
   }
 }
 
-FAKEHD_EXPORT HDenum hdCheckCalibration() { return S().calibration; }
+FAKEHD_EXPORT HDenum hdCheckCalibration() {
+  State& st = S();
+  if (!OnServoThread()) {
+    ++st.stats.calibration_outside_scheduler;
+    Push(HD_INVALID_OPERATION);
+    return HD_CALIBRATION_NEEDS_UPDATE;
+  }
+  if (st.calibration == HD_CALIBRATION_NEEDS_MANUAL_INPUT && st.manual_seconds >= 0.0 &&
+      Seconds(st.init_time, Monotonic()) >= st.manual_seconds) {
+    st.calibration = HD_CALIBRATION_OK;
+  }
+  return st.calibration;
+}
 
 FAKEHD_EXPORT void hdUpdateCalibration(HDenum style) {
-  if (!(style & static_cast<HDenum>(S().calibration_styles))) {
+  State& st = S();
+  if (!OnServoThread()) {
+    ++st.stats.calibration_outside_scheduler;
+    Push(HD_INVALID_OPERATION);
+    return;
+  }
+  if (!(style & static_cast<HDenum>(st.calibration_styles))) {
     Push(HD_INVALID_VALUE);
     return;
   }
-  ++S().stats.calibration_updates;
-  if (S().calibration == HD_CALIBRATION_NEEDS_UPDATE) S().calibration = HD_CALIBRATION_OK;
+  ++st.stats.calibration_updates;
+  if (st.calibration == HD_CALIBRATION_NEEDS_UPDATE) st.calibration = HD_CALIBRATION_OK;
 }
 
 FAKEHD_EXPORT void hdGetDoublev(HDenum what, HDdouble* out) {
@@ -189,8 +308,8 @@ FAKEHD_EXPORT void hdGetDoublev(HDenum what, HDdouble* out) {
       out[0] = st.max_continuous;
       return;
     case HD_NOMINAL_MAX_STIFFNESS:
-      out[0] = 1.0;
-      return;  // N/mm
+      out[0] = st.max_stiffness;
+      return;
     case HD_NOMINAL_MAX_DAMPING:
       out[0] = 0.005;
       return;  // N*s/mm
@@ -199,6 +318,9 @@ FAKEHD_EXPORT void hdGetDoublev(HDenum what, HDdouble* out) {
       std::memcpy(out, box, sizeof(box));
       return;
     }
+    case HD_MOTOR_TEMPERATURE:
+      for (int i = 0; i < 3; ++i) out[i] = st.temperature;
+      return;
     default:
       break;
   }
@@ -211,9 +333,11 @@ FAKEHD_EXPORT void hdGetDoublev(HDenum what, HDdouble* out) {
     case HD_CURRENT_POSITION:
       std::memcpy(out, position, sizeof(position));
       return;
-    case HD_CURRENT_VELOCITY:
-      std::memcpy(out, velocity, sizeof(velocity));
+    case HD_CURRENT_VELOCITY: {
+      std::normal_distribution<double> noise(0.0, st.velocity_noise);
+      for (int i = 0; i < 3; ++i) out[i] = velocity[i] + (st.velocity_noise > 0 ? noise(st.noise) : 0);
       return;
+    }
     case HD_CURRENT_TRANSFORM:
       std::memcpy(out, transform, sizeof(transform));
       return;
@@ -229,6 +353,10 @@ FAKEHD_EXPORT void hdGetIntegerv(HDenum what, HDint* out) {
   State& st = S();
   if (what == HD_CALIBRATION_STYLE) {
     *out = st.calibration_styles;
+    return;
+  }
+  if (what == HD_UPDATE_RATE) {
+    *out = st.rate;
     return;
   }
   if (what == HD_CURRENT_BUTTONS) {
@@ -261,6 +389,7 @@ FAKEHD_EXPORT void hdSetDoublev(HDenum what, const HDdouble* value) {
     return;
   }
   std::memcpy(st.force, value, sizeof(st.force));
+  st.frame_forced = true;
 }
 
 FAKEHD_EXPORT void hdBeginFrame(HHD) {
@@ -270,6 +399,15 @@ FAKEHD_EXPORT void hdBeginFrame(HHD) {
     Push(HD_ILLEGAL_BEGIN);
   }
   st.in_frame = true;
+  st.frame_forced = false;
+  const timespec now = Monotonic();
+  const bool holding = st.force[0] != 0.0 || st.force[1] != 0.0 || st.force[2] != 0.0;
+  if (st.has_last_end && holding && Seconds(st.last_end, now) > st.watchdog) {
+    // The host stopped updating the force: the device's watchdog cuts the motors.
+    st.force[0] = st.force[1] = st.force[2] = 0.0;
+    ++st.stats.watchdog_faults;
+    Push(HD_FORCE_ERROR, 2);
+  }
 }
 
 FAKEHD_EXPORT void hdEndFrame(HHD) {
@@ -280,9 +418,23 @@ FAKEHD_EXPORT void hdEndFrame(HHD) {
     return;
   }
   st.in_frame = false;
+  st.last_end = Monotonic();
+  st.has_last_end = true;
   ++st.stats.frames;
   const double norm =
       std::sqrt(st.force[0] * st.force[0] + st.force[1] * st.force[1] + st.force[2] * st.force[2]);
+  // Motors: hot from the scenario's frame on; cool towards ambient while holding no force.
+  if (st.warm_frame > 0 && st.stats.frames == st.warm_frame) st.temperature = 1.0;
+  if (norm == 0.0 && st.cool_seconds > 0.0) {
+    st.temperature =
+        st.ambient + (st.temperature - st.ambient) * std::exp(-1.0 / (st.rate * st.cool_seconds));
+  }
+  if (st.temperature >= kHotTemperature && norm > 0.0) {
+    ++st.stats.hot_forced_frames;
+    ++st.stats.warm_errors;
+    st.force[0] = st.force[1] = st.force[2] = 0.0;  // the driver will not drive hot motors
+    Push(HD_WARM_MOTORS);
+  }
   st.stats.max_force = std::max(st.stats.max_force, norm);
   std::memcpy(st.stats.last_force, st.force, sizeof(st.force));
   if (st.stats.error_frame > 0 && st.stats.frames > st.stats.error_frame &&
@@ -295,14 +447,18 @@ FAKEHD_EXPORT void hdEndFrame(HHD) {
     if (st.stats.error_frame == 0) st.stats.error_frame = st.stats.frames;
     Push(HD_EXCEEDED_MAX_FORCE, 1);
   }
-  st.force[0] = st.force[1] = st.force[2] = 0.0;  // a frame that sets no force renders none
+  if (st.stats.frames == st.velocity_error_frame) {
+    st.stats.velocity_error_frame = st.stats.frames;
+    st.force[0] = st.force[1] = st.force[2] = 0.0;  // the driver cuts the force itself
+    Push(HD_EXCEEDED_MAX_VELOCITY, 3);
+  }
 }
 
 FAKEHD_EXPORT HDSchedulerHandle hdScheduleAsynchronous(HDSchedulerCallback callback, void* data,
                                                        HDushort) {
   std::lock_guard<std::mutex> lock(S().mutex);
   const HDSchedulerHandle handle = S().next_handle++;
-  S().scheduled.push_back(Scheduled{handle, callback, data});
+  S().scheduled.push_back(Scheduled{handle, callback, data, false, nullptr});
   return handle;
 }
 
@@ -317,6 +473,19 @@ FAKEHD_EXPORT void hdUnschedule(HDSchedulerHandle handle) {
   }
 }
 
+// Runs `callback` on the servo thread until it returns DONE, and waits for that.
+FAKEHD_EXPORT void hdScheduleSynchronous(HDSchedulerCallback callback, void* data, HDushort) {
+  State& st = S();
+  if (!st.running) {
+    Push(HD_INVALID_OPERATION);  // nothing would ever run it
+    return;
+  }
+  bool finished = false;
+  std::unique_lock<std::mutex> lock(st.mutex);
+  st.scheduled.push_back(Scheduled{st.next_handle++, callback, data, true, &finished});
+  st.finished.wait(lock, [&] { return finished; });
+}
+
 FAKEHD_EXPORT void hdStartScheduler() {
   State& st = S();
   if (st.running) {
@@ -326,9 +495,9 @@ FAKEHD_EXPORT void hdStartScheduler() {
   st.stop.store(false);
   st.running = true;
   st.servo = std::thread([&st] {
-    timespec start;
-    clock_gettime(CLOCK_MONOTONIC, &start);
+    const timespec start = Monotonic();
     timespec next = start;
+    const long period_ns = 1000000000L / std::max(1, st.rate);
     std::vector<Scheduled> batch;
     while (!st.stop.load()) {
       {
@@ -336,26 +505,36 @@ FAKEHD_EXPORT void hdStartScheduler() {
         batch = st.scheduled;
       }
       for (const Scheduled& s : batch) {
-        if (s.callback(s.data) == HD_CALLBACK_DONE) hdUnschedule(s.handle);
+        if (s.callback(s.data) != HD_CALLBACK_DONE) continue;
+        std::lock_guard<std::mutex> lock(st.mutex);
+        auto& list = st.scheduled;
+        for (auto it = list.begin(); it != list.end(); ++it) {
+          if (it->handle == s.handle) {
+            list.erase(it);
+            break;
+          }
+        }
+        if (s.synchronous) {
+          *s.finished = true;
+          st.finished.notify_all();
+        }
       }
-      next.tv_nsec += 1000000;
+      next.tv_nsec += period_ns;
       if (next.tv_nsec >= 1000000000) {
         next.tv_nsec -= 1000000000;
         ++next.tv_sec;
       }
-      timespec now;
-      clock_gettime(CLOCK_MONOTONIC, &now);
-      const double late = (now.tv_sec - next.tv_sec) + (now.tv_nsec - next.tv_nsec) * 1e-9;
-      if (late > 1e-3) {
+      const timespec now = Monotonic();
+      if (Seconds(next, now) > period_ns * 1e-9) {
+        ++st.stats.late_frames;
         next = now;  // a servo loop that fell behind skips ticks rather than bursting
       } else {
         clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr);
       }
     }
-    timespec end;
-    clock_gettime(CLOCK_MONOTONIC, &end);
-    st.stats.servo_seconds = (end.tv_sec - start.tv_sec) + (end.tv_nsec - start.tv_nsec) * 1e-9;
+    st.stats.servo_seconds = Seconds(start, Monotonic());
   });
+  st.servo_id = st.servo.get_id();
 }
 
 FAKEHD_EXPORT void hdStopScheduler() {
@@ -364,6 +543,13 @@ FAKEHD_EXPORT void hdStopScheduler() {
   st.stop.store(true);
   st.servo.join();
   st.running = false;
+  // Synchronous calls still waiting would never run.
+  std::lock_guard<std::mutex> lock(st.mutex);
+  for (const Scheduled& s : st.scheduled) {
+    if (s.synchronous) *s.finished = true;
+  }
+  st.scheduled.clear();
+  st.finished.notify_all();
 }
 
 FAKEHD_EXPORT void fakehd_stats(FakeHdStats* out) { *out = S().stats; }

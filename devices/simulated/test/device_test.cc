@@ -1,5 +1,6 @@
 #include "devices/simulated/simulated_device.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/core/error.h"
@@ -57,6 +58,27 @@ TEST(SimulatedRobotTest, AxialPositionAfterNTicksIsExact) {
     return w;
   });
   EXPECT_EQ(pushed.position, Eigen::Vector3d(0.0, -2e-3 + 10e-3 * 0.4, 0.0));
+}
+
+// A force-driven press: the ram advances until the resistance reaches stop_force, then holds.
+TEST(SimulatedRobotTest, ForceDrivenPressStopsWhereTheResistanceReachesItsForce) {
+  Settings settings = Robot(0.0);
+  settings.stop_force = 99.5;
+  SimulatedDevice device;
+  device.Configure(settings);
+  device.Start(kPeriod);
+  // A wall 1 mm past the start resisting 1 N per um: 100 N at 100 um into it.
+  auto wall = [](const DeviceState& s) {
+    Wrench w;
+    w.force.y() = -std::max(0.0, s.position.y() + 1e-3) * 1e6;
+    return w;
+  };
+  const DeviceState held = Drive(device, 400, wall);
+  EXPECT_NEAR(held.position.y(), -1e-3 + 100e-6, 1e-12);  // the first tick at 99.5 N or more
+  EXPECT_EQ(held.velocity.y(), 0.0);
+  EXPECT_EQ(Drive(device, 10, wall).position.y(), held.position.y());
+  settings.stop_force = -1.0;
+  EXPECT_THROW(device.Configure(settings), UserError);
 }
 
 TEST(SimulatedRobotTest, QuasiStaticRobotAsksToSettleItsWeightInsideAndMovesNoRadialMass) {

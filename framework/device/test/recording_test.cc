@@ -189,16 +189,26 @@ TEST_F(RecordingTest, RefusesMalformedFilesWithLineAndReason) {
   ExpectRefused(Write("m.rec", good[0] + "\n"), 1, "truncated: no column header");
   ExpectRefused(Write("n.rec", ""), 1, "empty file");
   ExpectRefused(Write("o.rec", Join(good) + "0 0\n"), 7, "after the end line");
-  std::string bad_quaternion = good[3];
-  {
+  // The first sample with field `index` replaced.
+  auto with_field = [&](int index, const std::string& value) {
     std::vector<std::string> f;
-    std::stringstream s(bad_quaternion);
+    std::stringstream s(good[3]);
     for (std::string w; s >> w;) f.push_back(w);
-    f[4] = "2";
-    bad_quaternion.clear();
-    for (const std::string& w : f) bad_quaternion += (bad_quaternion.empty() ? "" : " ") + w;
+    f[index] = value;
+    std::string line;
+    for (const std::string& w : f) line += (line.empty() ? "" : " ") + w;
+    return line;
+  };
+  ExpectRefused(Write("p.rec", with(3, with_field(4, "2"))), 4, "unit length");
+  // Finite but absurd: a position of 1e308 m once reached trace.csv as inf.
+  ExpectRefused(Write("q.rec", with(3, with_field(1, "1e308"))), 4, "outside physical sense");
+  ExpectRefused(Write("s.rec", with(3, with_field(9, "-1e3"))), 4, "outside physical sense");
+  // Lone CR line endings read as lines.
+  std::string cr = Join(good);
+  for (char& c : cr) {
+    if (c == '\n') c = '\r';
   }
-  ExpectRefused(Write("p.rec", with(3, bad_quaternion)), 4, "unit length");
+  EXPECT_EQ(ReadRecording(Write("r.rec", cr)).samples.size(), 2u);
   try {
     ReadRecording(dir_ / "missing.rec");
     ADD_FAILURE();

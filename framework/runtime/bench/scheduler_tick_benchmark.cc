@@ -3,8 +3,12 @@
 // record into the pre-allocated buffer, two monotonic clock reads), i.e. what is left of the 1 ms
 // for the contact model. Three variants: the pass-through chain of a device without limits (the
 // simulated robot), and a PHANTOM Desktop's chain rendering directly and through the virtual
-// coupling, against a stiff wall the handle presses into.
+// coupling, against a stiff wall the handle presses into. A fourth runs the pass-through tick
+// with the live viewer's publisher attached and a reader popping it at 60 Hz (fitfeel view).
+#include <atomic>
+#include <chrono>
 #include <limits>
+#include <thread>
 
 #include <benchmark/benchmark.h>
 
@@ -12,6 +16,7 @@
 #include "framework/device/device_specs.h"
 #include "framework/device/stage.h"
 #include "framework/runtime/scheduler.h"
+#include "framework/view/tick_publisher.h"
 
 namespace fitfeel {
 namespace {
@@ -66,7 +71,8 @@ DeviceSpec Unlimited() {
   return spec;
 }
 
-void TickLoop(benchmark::State& state, const DeviceSpec& spec, const SafetySettings& safety) {
+void TickLoop(benchmark::State& state, const DeviceSpec& spec, const SafetySettings& safety,
+              TickObserver* observer = nullptr) {
   StillDevice device(spec);
   device.Start(1e-3);
   const WallStage positioning(StageId::kPositioning);
@@ -74,6 +80,7 @@ void TickLoop(benchmark::State& state, const DeviceSpec& spec, const SafetySetti
   SchedulerSettings settings{1000.0, 10.0, ClockMode::kVirtual};
   settings.safety = safety;
   Scheduler scheduler(device, positioning, constrained, settings);
+  scheduler.set_observer(observer);
   double time = 0.0;
   for (auto _ : state) {
     if (!scheduler.Tick(time)) {
@@ -90,6 +97,24 @@ void BM_SchedulerTickPassThrough(benchmark::State& state) {
   TickLoop(state, Unlimited(), RuntimeSafetySettings(std::nullopt, Unlimited()));
 }
 BENCHMARK(BM_SchedulerTickPassThrough);
+
+void BM_SchedulerTickPassThroughPublished(benchmark::State& state) {
+  view::TickPublisher publisher;
+  std::atomic<bool> done{false};
+  std::thread reader([&] {
+    view::ViewSample sample;
+    while (!done.load(std::memory_order_relaxed)) {
+      publisher.PopLatest(&sample);
+      benchmark::DoNotOptimize(sample);
+      std::this_thread::sleep_for(std::chrono::microseconds(16667));
+    }
+  });
+  TickLoop(state, Unlimited(), RuntimeSafetySettings(std::nullopt, Unlimited()), &publisher);
+  done = true;
+  reader.join();
+  state.counters["dropped"] = static_cast<double>(publisher.dropped());
+}
+BENCHMARK(BM_SchedulerTickPassThroughPublished);
 
 void BM_SchedulerTickDirect(benchmark::State& state) {
   SafetySettings safety;

@@ -94,7 +94,7 @@ TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
   const auto lines = Lines(dir / "trace.csv");
   const std::string tail =
       ",guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,offset_x_um,"
-      "offset_z_um";
+      "offset_z_um,elastic_utilisation,yielding";
   ASSERT_GE(lines[0].size(), tail.size());
   EXPECT_EQ(lines[0].substr(lines[0].size() - tail.size()), tail);
   const auto columns = std::count(lines[0].begin(), lines[0].end(), ',');
@@ -191,6 +191,34 @@ TEST(OutputsTest, SummaryStatisticsAreOverTheConstrainedStage) {
   const auto none = MakeSummary(RunInfo{}, std::vector<TickRecord>(2), RunStats{});
   EXPECT_TRUE(none["axial_resistance_N"]["mean"].is_null());
   EXPECT_FALSE(none.contains("torque_Nm"));
+}
+
+TEST(OutputsTest, TraceFlagsYieldingAndTheSummarySaysWhereAndByHowMuch) {
+  std::vector<TickRecord> trace(4);
+  for (auto& r : trace) r.stage = StageId::kConstrained;
+  trace[0].stage = StageId::kPositioning;
+  trace[0].elastic = {5.0, 1};  // not constrained: ignored
+  trace[1].elastic = {0.5, 1};
+  trace[2].elastic = {1.25, 2};
+  trace[2].pose.depth = 3e-3;
+  trace[2].time = 0.002;
+  trace[3].elastic = {1.1, 1};
+  const auto j = MakeSummary(RunInfo{}, trace, RunStats{});
+  const auto& e = j["elastic_limit"];
+  EXPECT_EQ(e["yielding_ticks"], 2);
+  EXPECT_DOUBLE_EQ(e["max_utilisation"].get<double>(), 1.25);
+  EXPECT_EQ(e["part"], "inner");
+  EXPECT_DOUBLE_EQ(e["at_depth_mm"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(e["at_t_s"].get<double>(), 0.002);
+  EXPECT_NEAR(e["excess_percent"].get<double>(), 25.0, 1e-12);
+  const std::string row = TraceRow(trace[2]);
+  EXPECT_EQ(row.substr(row.size() - 7), ",1.25,1");
+  const std::string elastic = TraceRow(trace[1]);
+  EXPECT_EQ(elastic.substr(elastic.size() - 6), ",0.5,0");
+  // Nothing checked (no yield strength, or a law without a check): null, not zero.
+  EXPECT_TRUE(MakeSummary(RunInfo{}, std::vector<TickRecord>(2), RunStats{})["elastic_limit"]
+                  ["max_utilisation"]
+                      .is_null());
 }
 
 }  // namespace

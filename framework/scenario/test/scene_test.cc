@@ -192,9 +192,35 @@ INSTANTIATE_TEST_SUITE_P(
                 "nominal: 20 mm",
                 "nominal: 0 mm"},
         Variant{{"poisson_above_half", 20, 50, "parts.bushing.material.poisson",
-                 "a dimensionless number in (-1, 0.5]", "'0.7'"},
+                 "a Poisson's ratio in [0, 0.5)", "'0.7'"},
                 "poisson: 0.34",
                 "poisson: 0.7"},
+        // The laws' range: -0.5 passed the parser once and was refused by the cylinder law.
+        Variant{{"poisson_negative", 20, 50, "parts.bushing.material.poisson",
+                 "a Poisson's ratio in [0, 0.5)", "'-0.5'"},
+                "poisson: 0.34",
+                "poisson: -0.5"},
+        Variant{{"poisson_half", 20, 50, "parts.bushing.material.poisson",
+                 "a Poisson's ratio in [0, 0.5)", "'0.5'"},
+                "poisson: 0.34",
+                "poisson: 0.5"},
+        // What the scheduler and the analyzers would refuse, refused by the loader at its key.
+        Variant{{"shorter_than_a_tick", 37, 13, "run.duration", "a run of at least one tick",
+                 "'0.1 ms' at 2e+03 Hz"},
+                "duration: 5 s",
+                "duration: 0.1 ms"},
+        Variant{{"trace_over_its_cap", 37, 13, "run.duration", "2 GiB of trace and recording",
+                 "'3600 s'"},
+                "duration: 5 s",
+                "duration: 3600 s"},
+        Variant{{"depth_table_over_its_cap", 28, 15, "model.depth_step",
+                 "fewer than 2e+06 depth-table rows", "'1 nm'"},
+                "depth_step: 0.5 mm",
+                "depth_step: 1 nm"},
+        Variant{{"large_grid_without_allow_large", 26, 15, "model.resolution",
+                 "or --allow-large to run it anyway", "cells"},
+                "resolution: {rows: 40, columns: 72}",
+                "resolution: {rows: 2000, columns: 2000}"},
         Variant{{"modulus_too_small", 20, 32, "parts.bushing.material.youngs_modulus",
                  "a pressure in [1 MPa, 1200 GPa]", "'5 kPa'"},
                 "youngs_modulus: 110 GPa",
@@ -257,6 +283,18 @@ INSTANTIATE_TEST_SUITE_P(
                  "'trace' a second time"},
                 "[trace, summary, recording]",
                 "[trace, trace]"},
+        Variant{{"static_below_kinetic", 25, 20, "model.static_friction",
+                 "a static coefficient at least the sliding one (friction: 0.15)", "0.1"},
+                "friction: 0.15\n",
+                "friction: 0.15\n  static_friction: 0.1\n"},
+        Variant{{"unknown_lubrication", 24, 16, "model.lubrication", "dry",
+                 "'oily'"},
+                "friction: 0.15",
+                "lubrication: oily"},
+        Variant{{"yield_above_range", 20, 72, "parts.bushing.material.yield_strength",
+                 "a pressure in [1 MPa, 5 GPa]", "'9 GPa'"},
+                "poisson: 0.34",
+                "poisson: 0.34, yield_strength: 9 GPa"},
         Variant{{"zero_stiffness", 25, 22, "model.contact_stiffness", "a stiffness > 0 N/m",
                  "'0 N/um'"},
                 "contact_stiffness: 2 N/um",
@@ -348,6 +386,35 @@ INSTANTIATE_TEST_SUITE_P(
                 "role: outer",
                 "role: outter"}),
     [](const ::testing::TestParamInfo<Variant>& p) { return p.param.expect.name; });
+
+TEST_F(SceneTest, LargeGridIsAcceptedWhenAllowedWithItsCost) {
+  LoadOptions options;
+  options.allow_large = true;
+  const Scene scene = LoadScene(WriteVariant("large_allowed", "resolution: {rows: 40, columns: 72}",
+                                             "resolution: {rows: 2000, columns: 2000}"),
+                                registry_, options);
+  EXPECT_EQ(scene.cost.inner_cells, 4'000'000);
+  EXPECT_GT(scene.cost.prepare_bytes, kLargeSceneBytes);
+}
+
+TEST_F(SceneTest, CarriageReturnOnlyLineEndingsReadAsLines) {
+  std::string text = ReadFile(kTestDir / "good" / "full.yaml");
+  for (char& c : text) {
+    if (c == '\n') c = '\r';
+  }
+  const fs::path file = fs::path(::testing::TempDir()) / "fitfeel_scene_cr.yaml";
+  std::ofstream(file, std::ios::binary) << text;
+  const Scene scene = LoadScene(file, registry_);
+  EXPECT_EQ(scene.run.duration, 5.0);
+  // Line numbers stay those an editor shows.
+  const fs::path bad = WriteVariant("cr_bad", "duration: 5 s", "duration: 5");
+  std::string bad_text = ReadFile(bad);
+  for (char& c : bad_text) {
+    if (c == '\n') c = '\r';
+  }
+  std::ofstream(bad, std::ios::binary) << bad_text;
+  ExpectRefused(bad, {"cr_bad", 37, 13, "run.duration", "a time", "'5'"}, registry_);
+}
 
 TEST_F(SceneTest, FileLevelProblemsAreScenarioErrors) {
   const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_scene_files";
@@ -473,6 +540,39 @@ TEST_F(SceneTest, MinimalScenarioTakesTheDocumentedDefaults) {
   EXPECT_FALSE(scene.run.write_recording);
 }
 
+// docs/friction.md: one coefficient names mu_k = mu_s; none takes the handbook pair of the
+// lubrication (Marks': hard steel, dry 0.78 / 0.42, greasy middles 0.17 / 0.075).
+TEST_F(SceneTest, FrictionKeysTakeTheDocumentedDefaults) {
+  const Scene one = LoadScene(kTestDir / "good" / "minimal.yaml", registry_);
+  EXPECT_EQ(one.model.friction, 0.1);
+  EXPECT_EQ(one.model.static_friction, 0.1);
+  EXPECT_EQ(one.model.breakaway_displacement, 2e-6);
+  const Scene dry = LoadScene(
+      WriteVariant("dry", "  friction: 0.1\n", "  lubrication: dry\n", "minimal.yaml"), registry_);
+  EXPECT_EQ(dry.model.friction, 0.42);
+  EXPECT_EQ(dry.model.static_friction, 0.78);
+  const Scene lubricated =
+      LoadScene(WriteVariant("lubricated", "  friction: 0.1\n", "", "minimal.yaml"), registry_);
+  EXPECT_EQ(lubricated.model.friction, 0.075);
+  EXPECT_EQ(lubricated.model.static_friction, 0.17);
+  const Scene both = LoadScene(
+      WriteVariant("both", "  friction: 0.1\n",
+                   "  friction: 0.1\n  static_friction: 0.2\n  breakaway_displacement: 5 um\n",
+                   "minimal.yaml"),
+      registry_);
+  EXPECT_EQ(both.model.static_friction, 0.2);
+  EXPECT_NEAR(both.model.breakaway_displacement, 5e-6, 1e-18);
+  const Scene auto_k = LoadScene(
+      WriteVariant("auto_k", "contact_stiffness: 500 N/mm", "contact_stiffness: auto",
+                   "minimal.yaml"),
+      registry_);
+  EXPECT_EQ(auto_k.model.contact_stiffness, 0.0);
+  const Scene yield = LoadScene(
+      WriteVariant("yield", "poisson: 0.34", "poisson: 0.34, yield_strength: 430 MPa"), registry_);
+  EXPECT_EQ(yield.outer.material.yield_strength, 430e6);
+  EXPECT_EQ(one.outer.material.yield_strength, 0.0);
+}
+
 TEST_F(SceneTest, NonRenderingSurfaceOnlyWhenAllowed) {
   const fs::path file = WriteVariant("thread", "surface: test.surface.cylinder",
                                      "surface: test.surface.thread", "minimal.yaml");
@@ -517,8 +617,9 @@ TEST_F(SceneTest, SummaryNamesPartsLimitsModelDeviceAndRun) {
   EXPECT_THAT(summary, HasSubstr("texture waviness 3.2 um, Ra 0.4 um, Rz 1.6 um\n"));
   EXPECT_THAT(summary, HasSubstr("material C45E4, E 210 GPa, nu 0.3\n"));
   EXPECT_THAT(summary, HasSubstr("geometry cylinder d=20 mm l=60 mm\n"));
-  EXPECT_THAT(summary, HasSubstr("law ve1, friction 0.15, contact stiffness 2 N/um, resolution "
-                                 "40 x 72, texture sampled, depth step 500 um\n"));
+  EXPECT_THAT(summary, HasSubstr("law ve1, friction 0.15 (static 0.15, breakaway 2 um), contact "
+                                 "stiffness 2 N/um, resolution 40 x 72, texture sampled, depth "
+                                 "step 500 um\n"));
   EXPECT_THAT(summary, HasSubstr("texture none given (smooth)\n"));
   EXPECT_THAT(summary, HasSubstr("device       test.device.fake\n"));
   EXPECT_THAT(summary, HasSubstr("run          2 kHz for 5 s (10000 ticks), seed 42, clock "

@@ -248,6 +248,7 @@ TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
       generator.Generate(hole, discretizer.Discretize(hole, r), TextureMode::kExpected, rng);
   ConicalContactAnalyzer analyzer;
   analyzer.Prepare(pin, pin_sms, hole, hole_sms, settings);
+  const ConicalScanAnalyzer& scan = analyzer.scan();
   const double area = M_PI * 8.2e-3 * 20e-3 / std::cos(std::atan(0.01));
   // docs/oracles.md table: g = -1, 0, 1, 2 sigma -> E[(X - g)+] = 1.080451, 0.395578, 0.080451,
   // 0.006777.
@@ -256,7 +257,7 @@ TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
     MatingPose pose;
     pose.depth = 20e-3 - g * 1e-6 / 0.01;  // gap g um
     ContactState contact;
-    analyzer.Evaluate(pose, &contact);
+    scan.Evaluate(pose, &contact);
     // Per unit of the overlapped area (for g > 0 the pin's tip stops short of the hole's small
     // end by g / tan(alpha)); the table's 1e-6 sigma interpolation error and 6 printed digits.
     const double overlap = area *
@@ -265,6 +266,19 @@ TEST(ConicalTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
                            (20e-3 * 8.2e-3);
     EXPECT_NEAR(contact.engaged_area, overlap, 1e-12 * area) << g;
     EXPECT_NEAR(contact.interference_volume / contact.engaged_area, expected * 1e-6, 2e-12) << g;
+    // The tabulated analyzer within its stated interpolation bound: every cell has the same gap at
+    // every depth step here (no form), so the depth blend adds nothing.
+    ContactState tabulated;
+    analyzer.Evaluate(pose, &tabulated);
+    const int k = static_cast<int>(pose.depth / analyzer.depth_step());
+    double bound = 0.0;
+    for (int j = 0; j < analyzer.table().columns(); ++j) {
+      bound += std::max(analyzer.table().VolumeErrorBound(k, j),
+                        analyzer.table().VolumeErrorBound(k + 1, j));
+    }
+    EXPECT_NEAR(tabulated.engaged_area, contact.engaged_area, 1e-12 * area) << g;
+    EXPECT_NEAR(tabulated.interference_volume, contact.interference_volume, bound) << g;
+    EXPECT_LT(bound, 0.05 * 1e-6 * contact.engaged_area) << g;
   }
 }
 

@@ -94,12 +94,13 @@ TEST(PlanarLawTest, ClearanceSpringWithCoulombFrictionIsEquationNineInOneAxis) {
   EXPECT_NEAR(w.force.x(), 6.0, 1e-9);  // pushed back towards +x by k e
   EXPECT_NEAR(w.force.z(), 0.0, 1e-9);
   EXPECT_NEAR(w.force.y(), -0.2 * 6.0 * std::tanh(10.0), 1e-9);
-  // Auto stiffness: the elastic model's stiffness of one flank, P(L) * h * L.
+  // Auto stiffness in clearance: the key rests on one wall and translates into it, h L / c_wall
+  // (c_wall = 3.15167e-14 m/Pa above): 3.8075e9 N/m.
   settings.contact_stiffness = 0.0;
   law.Prepare(key, slot, settings);
   law.Evaluate(state, motion, &w);
-  const double k =
-      PressurePerInterference(8e-3, 3e-3, 40e-3, 210e9, 0.3, 210e9, 0.3) * 3e-3 * 40e-3;
+  const double k = 3e-3 * 40e-3 / HalfSpaceStripCompliance(3e-3, 40e-3, 210e9, 0.3);
+  EXPECT_NEAR(k, 3.8075e9, 0.0001e9);
   EXPECT_NEAR(w.force.x(), k * 3e-6, 1e-6 * k * 3e-6);
 }
 
@@ -191,6 +192,50 @@ TEST(PlanarLawTest, NoForceWhenNotEngagedOrAtRest) {
   state.engaged_length = 10e-3;
   law.Evaluate(state, MatingMotion{}, &w);
   EXPECT_EQ(w.force.y(), 0.0);  // at rest the regularised friction is zero
+}
+
+}  // namespace
+}  // namespace fitfeel::planar
+
+namespace fitfeel::planar {
+namespace {
+
+// Issue 9 item 7: a key pressed between both walls and pushed sideways by e translates as a whole;
+// one wall is compressed by e more, the other by e less, so the pair resists with
+// 2 A / c_wall (A = h L one flank's area), not one flank's series value P A:
+//   c_wall = 3.15167e-14 m/Pa (h = 3 mm, L = 40 mm, hand value above), A = 1.2e-4 m^2
+//   k = 2 * 1.2e-4 / 3.15167e-14 = 7.6151e9 N/m, against P A = 20.4708e12 * 1.2e-4 = 2.4565e9.
+// The normal force on the flanks does not change (one gains what the other loses), so the
+// friction stays mu * 2 p h L.
+TEST(PlanarLawTest, LateralStiffnessComesFromBothWalls) {
+  PartSpec key = testing::MakePart("key", Role::kInner, 8e-3, -36e-6, 0.0, 40e-3, 3e-3);
+  PartSpec slot = testing::MakePart("slot", Role::kOuter, 8e-3, -18e-6, 18e-6, 60e-3, 3e-3);
+  SkinModelShape k, s;
+  k.grid = PlanarDiscretizer().Discretize(key, Resolution{});
+  s.grid = PlanarDiscretizer().Discretize(slot, Resolution{});
+  k.variation = Eigen::VectorXd::Constant(k.grid.size(), 1e-6);
+  s.variation = Eigen::VectorXd::Zero(s.grid.size());
+  ModelSettings settings;
+  settings.friction = 0.15;
+  settings.contact_stiffness = 0.0;  // auto: the law's own elastic model
+  PlanarContactAnalyzer analyzer;
+  analyzer.Prepare(key, k, slot, s, settings);
+  PlanarGpsLaw law;
+  law.Prepare(key, slot, settings);
+  EXPECT_NEAR(law.LateralStiffness(40e-3, 1.2e-4, 2), 7.6151e9, 0.0001e9);
+  EXPECT_NEAR(law.LateralStiffness(40e-3, 1.2e-4, 2) / (law.PressurePerInterferenceAt(40e-3) * 1.2e-4),
+              3.10, 0.01);
+  MatingPose pose;
+  pose.depth = 50e-3;
+  pose.offset = Eigen::Vector2d(0.2e-6, 0.0);  // within the 1 um interference: both walls pressed
+  ContactState contact;
+  analyzer.Evaluate(pose, &contact);
+  MatingMotion motion;
+  motion.velocity.y() = 0.01;
+  Wrench w;
+  law.Evaluate(contact, motion, &w);
+  EXPECT_NEAR(w.force.x(), -7.6151e9 * 0.2e-6, 0.0001e9 * 0.2e-6);
+  EXPECT_NEAR(w.force.y(), -736.95, 0.01);  // no double count of the lateral force
 }
 
 }  // namespace

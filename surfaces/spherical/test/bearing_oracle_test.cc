@@ -79,23 +79,24 @@ TEST(KnuckleBearing, UniformInterferenceGivesTheShellPressureOverTheBand) {
   EXPECT_NEAR(contact.interference_volume, 1e-6 * band, 1e-12 * band * 1e-6);
   EXPECT_NEAR(contact.max_interference, 1e-6, 1e-18);
   // Sum p ds = p * 2 pi a B; symmetric: no radial force, and no torque at rest.
+  // The ring of bore 20 mm and outer diameter 30 mm around a solid ball's band: Lame's
+  // cylinder, the oracle's 5.8333 MPa per um (d1 = 20 mm, d2 = 30 mm, steel).
   const double p = model.law.pressure_per_interference() * 1e-6;
-  EXPECT_NEAR(p * 1e-6, 14.07, 0.005);
+  EXPECT_NEAR(p * 1e-6, 5.8333, 0.0005);
   EXPECT_NEAR(w.force.norm(), 0.0, 1e-9 * p * band);
   EXPECT_EQ(w.torque.y(), 0.0);
 }
 
-TEST(KnuckleBearing, ReportsTheThickShellCoefficientOfItsForcesForPressureMaps) {
+TEST(KnuckleBearing, ReportsTheRingCoefficientOfItsForcesForPressureMaps) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
-  // Closed form (docs/oracles.md), a = 10 mm, b = 15 mm, steel: 14.07 MPa per um.
-  const double a = kA, b = 15e-3, E = 210e9, nu = 0.3;
+  // Closed form: Lame's thick-walled cylinder d1 = 2a = 20 mm, d2 = 30 mm with a solid inner
+  // part, the oracle's 5.8333 MPa per um; the thick shell of radii 10 and 15 mm would give 14.07.
+  const double d1 = 2.0 * kA, d2 = 30e-3, E = 210e9, nu = 0.3;
   const double expected =
-      1.0 /
-      (a * ((1.0 - 2.0 * nu) / E + ((1.0 - 2.0 * nu) * a * a * a + (1.0 + nu) * b * b * b / 2.0) /
-                                       (E * (b * b * b - a * a * a))));
+      (2.0 / d1) / ((1.0 - nu) / E + ((d2 * d2 + d1 * d1) / (d2 * d2 - d1 * d1) + nu) / E);
   EXPECT_NEAR(model.law.PressurePerInterference(), expected, 1e-9 * expected);
-  EXPECT_NEAR(model.law.PressurePerInterference() * 1e-12, 14.07, 0.005);
+  EXPECT_NEAR(model.law.PressurePerInterference() * 1e-12, 5.8333, 0.0005);
   // The coefficient is the one behind the forces: the ball offset by e in the uniform 1 um
   // interference is pushed back by P * sum(delta ds n), the analyzer's resultant.
   ContactState contact;
@@ -109,7 +110,7 @@ TEST(KnuckleBearing, FrictionTorqueIsMuTimesThePressureMoment) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
   const double p =
-      ThickShellPressurePerInterference(kA, 15e-3, test::Steel(), test::Steel()) * 1e-6;
+      RingPressurePerInterference(2.0 * kA, 30e-3, test::Steel(), test::Steel()) * 1e-6;
   // mu * integral over the band of p * (distance from the axis) dA, dA = 2 pi a dy, numerically.
   double moment = 0.0;
   const int steps = 200000;
@@ -219,8 +220,17 @@ TEST(KnuckleTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
     SphericalContactAnalyzer analyzer;
     analyzer.Prepare(ball, ball_sms, socket, socket_sms, settings);
     ContactState contact;
-    analyzer.Evaluate(MatingPose{}, &contact);
+    analyzer.scan().Evaluate(MatingPose{}, &contact);
     EXPECT_NEAR(contact.interference_volume / (2.0 * M_PI * kA * kB), expected * 1e-6, 2e-12) << g;
+    // The tabulated analyzer at a rotation step, within its stated interpolation bound.
+    ContactState tabulated;
+    analyzer.Evaluate(MatingPose{}, &tabulated);
+    double bound = 0.0;
+    for (int j = 0; j < analyzer.table().columns(); ++j) {
+      bound += analyzer.table().VolumeErrorBound(0, j);
+    }
+    EXPECT_NEAR(tabulated.interference_volume, contact.interference_volume, bound) << g;
+    EXPECT_LT(bound, 0.05 * 1e-6 * 2.0 * M_PI * kA * kB) << g;
   }
 }
 
@@ -308,6 +318,81 @@ TEST(KnuckleBearing, RadialSupportGrowsMonotonicallyWithOffsetForAnyForm) {
     }
   }
   EXPECT_GT(rising, 500);
+}
+
+// Issue 9 item 7: the GE 20 E outer ring (dk 29 mm, D 35 mm) is a ring, not a shell: Lame's
+// cylinder gives 2.270 MPa/um, the thick shell (a 14.5 mm, b 17.5 mm) 5.947, 2.62 times stiffer.
+TEST(KnuckleBearing, RingOfTheBearingIsSofterThanTheShell) {
+  const Material steel = test::Steel();
+  const double ring = RingPressurePerInterference(29e-3, 35e-3, steel, steel);
+  const double shell = ThickShellPressurePerInterference(14.5e-3, 17.5e-3, steel, steel);
+  EXPECT_NEAR(ring * 1e-12, 2.2700, 0.0005);
+  EXPECT_NEAR(shell * 1e-12, 5.9470, 0.0005);
+  EXPECT_NEAR(shell / ring, 2.620, 0.001);
+}
+
+// Conformal Hertz (Johnson 1985, 4.2) with independent numbers: R1 = 10 mm, c = 30 um, so
+// R = 10 * 10.03 / 0.03 mm = 3.3433 m; E* = E / (2 (1 - nu^2)) = 115.38 GPa; at delta = 1 um:
+// W = 4/3 E* sqrt(R) delta^1.5 = 281.3 N, a = sqrt(R delta) = 1.828 mm, p0 = 3W/(2 pi a^2)
+// = 40.2 MPa.
+TEST(KnuckleBearing, ConformalHertzClosedForm) {
+  const Material steel = test::Steel();
+  const double e_star = ContactModulus(steel, steel);
+  EXPECT_NEAR(e_star * 1e-9, 115.38, 0.01);
+  const HertzContact h = ConformalHertz(10e-3, 30e-6, 1e-6, e_star);
+  EXPECT_NEAR(h.load, 281.3, 0.1);
+  EXPECT_NEAR(h.radius * 1e3, 1.8285, 0.0005);
+  EXPECT_NEAR(h.peak_pressure * 1e-6, 40.17, 0.02);
+  EXPECT_EQ(ConformalHertz(10e-3, 0.0, 1e-6, e_star).load, 0.0);  // no clearance: not local
+  // W grows as delta^1.5.
+  EXPECT_NEAR(ConformalHertz(10e-3, 30e-6, 4e-6, e_star).load / h.load, 8.0, 1e-12);
+}
+
+// The law on a loaded bearing: 30 um radial play, the ball pushed 31 um off centre, so its
+// approach is 1 um over a patch of a / R1 = 0.18: Hertz alone carries it, 281.3 N back along the
+// offset, and the friction torque is mu W rho while turning.
+TEST(KnuckleBearing, LoadedPlainBearingIsAConformalHertzContact) {
+  Model model;
+  Prepare(&model, test::Ball(), test::Socket(), Resolution{40, 360}, -30e-6);
+  ContactState contact;
+  const Wrench w = Evaluate(model, 0.0, 10.0, Eigen::Vector2d(0.0, -31e-6), &contact);
+  // Cell centres sit half a column (0.5 deg) and half a row off the load line: delta = 0.999 um.
+  EXPECT_NEAR(contact.max_interference, 1e-6, 3e-9);
+  const double load = ConformalHertz(10e-3, 31e-6 - contact.max_interference,
+                                     contact.max_interference,
+                                     ContactModulus(test::Steel(), test::Steel()))
+                          .load;
+  EXPECT_NEAR(load, 281.3, 1.5);
+  EXPECT_NEAR(w.force.norm(), load, 1e-9 * load);
+  EXPECT_NEAR(w.force.z(), load, 1e-3 * load);  // along the offset, back
+  EXPECT_NEAR(w.torque.y(), -kMu * load * model.law.friction_arm(), 1e-9 * load);
+  // The per-cell ring bed would carry it far softer (the ring's breathing is not a local patch).
+  EXPECT_LT(model.law.pressure_per_interference() * contact.pressure_resultant.norm(), 0.8 * 281.3);
+}
+
+// Stick-slip torque: a ball held still under load does not turn below mu_s N rho, and turns at
+// mu_k N rho (the run's state, framework/model/friction.h).
+TEST(KnuckleBearing, StickSlipTorqueWithTheRunsState) {
+  Model model;
+  Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
+  MatingPose pose;
+  ContactState contact;
+  model.analyzer.Evaluate(pose, &contact);
+  const double normal = model.law.pressure_per_interference() * contact.interference_volume;
+  const double rho = model.law.friction_arm();
+  LawState state;
+  MatingMotion motion;
+  Wrench w;
+  for (double angle = 0.0; angle < 1e-3; angle += 1e-4) {  // turning: 1.4 um of arc per step
+    motion.angle = angle;
+    model.law.Evaluate(contact, motion, &state, &w);
+  }
+  EXPECT_NEAR(w.torque.y(), -kMu * normal * rho, 1e-9 * normal * rho);
+  // Held: a tiny turn back unloads the junctions, the ball sticks (no slip).
+  motion.angle -= 0.2e-4;
+  model.law.Evaluate(contact, motion, &state, &w);
+  EXPECT_FALSE(state.friction.sliding);
+  EXPECT_GT(w.torque.y(), -kMu * normal * rho);
 }
 
 }  // namespace

@@ -77,8 +77,9 @@ TEST(SphericalInterferenceMap, AgreesWithTheTickOnAlignedCellsForManySeeds) {
       MatingPose pose;
       pose.angle = turn * pitch;
       pose.offset = Eigen::Vector2d(offset(pose_rng), offset(pose_rng));
+      // The map is the scan's; the tabulated tick is tested against the scan in table_test.cc.
       ContactState state;
-      p.analyzer.Evaluate(pose, &state);
+      p.analyzer.scan().Evaluate(pose, &state);
       Eigen::VectorXd delta;
       p.analyzer.InterferenceMap(pose, &delta);
       const double area = p.ball.grid.area(0);  // equal to the socket's: same pitch and radius

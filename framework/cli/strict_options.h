@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "framework/core/quantity.h"
+
+namespace fitfeel::cli {
+
+// Numeric command-line options read as text and parsed with the scenario keys' rules
+// (ParseInteger, ParseQuantity), so that `--seed -1`, `--seed ''` and a seed past 2^63 - 1 are
+// refused as run.seed is, never clamped or ignored. A refusal throws UserError naming the option:
+// "--seed: expected an integer in [0, 9223372036854775807], found '-1'" (exit code 2).
+CLI::Option* AddIntegerOption(CLI::App* cmd, const std::string& name, long min, long max,
+                              std::function<void(long)> set, const std::string& help);
+// A quantity of `dimension` (a dimensionless one is a bare number) in [min, max].
+CLI::Option* AddQuantityOption(CLI::App* cmd, const std::string& name, Dimension dimension,
+                               double min, double max, std::function<void(double)> set,
+                               const std::string& help);
+
+// Output paths: an existing path must be a regular file (`file`) or a folder (`folder`); a device,
+// FIFO or socket is refused (`-o /dev/null` would otherwise write /dev/null.png beside it), as is
+// a path whose parent exists but is not a folder. Throws UserError naming the option.
+void CheckOutputFile(const std::string& option, const std::filesystem::path& file);
+void CheckOutputFolder(const std::string& option, const std::filesystem::path& folder);
+
+}  // namespace fitfeel::cli

@@ -1,0 +1,193 @@
+// fitfeel view [FILE] [--port N] [--host H] [--trace DIR] [--realtime|--virtual] [--seed N]
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "framework/cli/commands.h"
+#include "framework/core/error.h"
+#include "framework/plot/run_record.h"
+#include "framework/plugin/registry.h"
+#include "framework/runtime/run.h"
+#include "framework/scenario/scene.h"
+#include "framework/view/server.h"
+#include "framework/view/tick_publisher.h"
+#include "framework/view/view_model.h"
+
+namespace fitfeel::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ViewArgs {
+  std::string file;
+  std::string trace;
+  std::string out;
+  std::string host = "127.0.0.1";
+  unsigned port = 8000;
+  std::optional<std::uint64_t> seed;
+  bool realtime = false;
+  bool virtual_clock = false;
+  double frame_rate = 60.0;
+  double exit_after = -1.0;
+  bool wait = false;
+};
+
+// The constrained rows of a finished run as viewer samples (the trace keeps no torque there).
+std::vector<view::ViewSample> HistoryOf(const plot::ConstrainedTrace& t,
+                                        const view::ViewModel& model) {
+  std::vector<view::ViewSample> rows(t.t_s.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    view::ViewSample& s = rows[k];
+    s.time = t.t_s[k];
+    s.tick = k;
+    s.depth = t.depth_mm[k] * 1e-3;
+    if (!t.offset_x_um.empty()) {
+      s.offset_x = t.offset_x_um[k] * 1e-6;
+      s.offset_z = t.offset_z_um[k] * 1e-6;
+    } else if (!t.x_mm.empty()) {
+      s.offset_x = t.x_mm[k] * 1e-3;
+      s.offset_z = t.z_mm[k] * 1e-3;
+    }
+    if (!t.angle_rad.empty()) s.angle = t.angle_rad[k];
+    s.force[0] = t.fx_N[k];
+    s.force[1] = t.fy_N[k];
+    s.force[2] = t.fz_N[k];
+    s.stage = 1;
+    model.FillContact(&s);
+  }
+  return rows;
+}
+
+void Serve(view::Server& server, const ViewArgs& args) {
+  if (args.exit_after >= 0.0) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(args.exit_after));
+    std::printf("  served %llu state frames\n",
+                static_cast<unsigned long long>(server.frames_sent()));
+    std::fflush(stdout);
+    server.Stop();
+    return;
+  }
+  // Until the user interrupts (Ctrl-C): nothing is left to write, so the default action is right.
+  for (;;) pause();
+}
+
+void View(const ViewArgs& args) {
+  if (!args.trace.empty() && !args.file.empty()) {
+    throw UserError("view: give a scenario FILE to run or --trace DIR of a finished run, not both");
+  }
+  if (args.port > 65535) throw UserError("view: --port must be in 0..65535");
+  PluginRegistry registry;
+  registry.LoadAll();
+  view::ServerOptions options;
+  options.host = args.host;
+  options.port = static_cast<unsigned short>(args.port);
+  options.frame_rate = args.frame_rate;
+
+  if (!args.trace.empty()) {
+    const plot::RunRecord run = plot::LoadRun(args.trace);
+    if (!run.summary.scenario_file) {
+      throw UserError("view: '" + (fs::path(args.trace) / "summary.json").string() +
+                      "' names no scenario_file, so the parts cannot be drawn again");
+    }
+    const Scene scene = LoadScene(*run.summary.scenario_file, registry);
+    const std::uint64_t seed = args.seed.value_or(run.summary.seed.value_or(scene.run.seed));
+    const view::ViewModel model(scene, seed);
+    view::Server server(model, nullptr, HistoryOf(run.trace, model), options);
+    server.Start();
+    std::printf("fitfeel view: %s (finished run %s, seed %llu)\n  http://%s:%u/\n",
+                scene.name.c_str(), args.trace.c_str(), static_cast<unsigned long long>(seed),
+                args.host.c_str(), server.port());
+    std::fflush(stdout);
+    Serve(server, args);
+    return;
+  }
+
+  const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
+  Scene scene = LoadScene(file, registry);
+  const std::uint64_t seed = args.seed.value_or(scene.run.seed);
+  const view::ViewModel model(scene, seed);
+  view::TickPublisher publisher;
+  view::Server server(model, &publisher, {}, options);
+  server.Start();
+  std::printf("fitfeel view: %s (%s, seed %llu)\n  http://%s:%u/\n", scene.name.c_str(),
+              file.string().c_str(), static_cast<unsigned long long>(seed), args.host.c_str(),
+              server.port());
+  std::fflush(stdout);
+  if (!model.renders_forces()) {
+    std::printf("  not running: %s\n", model.status().c_str());
+    std::fflush(stdout);
+    Serve(server, args);
+    return;
+  }
+
+  if (args.wait) {
+    std::printf("  waiting for a browser to connect before running\n");
+    std::fflush(stdout);
+    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  RunOptions run;
+  run.out_dir = args.out;
+  run.seed = seed;
+  // A live view is watched at the device's pace unless asked otherwise.
+  run.clock = args.virtual_clock ? ClockMode::kVirtual : ClockMode::kRealTime;
+  run.observer = &publisher;
+  const RunResult result = RunScene(std::move(scene), run);
+  const RunStats& s = result.stats;
+  std::printf("  %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max %.2f us; "
+              "%d viewer client(s), %llu samples dropped\n",
+              static_cast<unsigned long long>(s.ticks), s.compute_us.p50, s.compute_us.p99,
+              s.compute_us.max, server.clients(),
+              static_cast<unsigned long long>(publisher.dropped()));
+  for (const auto& note : result.notes) std::printf("  %s\n", note.c_str());
+  if (!result.paths.trace.empty()) std::printf("  trace   %s\n", result.paths.trace.c_str());
+  std::printf("  run finished: the page scrubs it (Ctrl-C to stop)\n");
+  std::fflush(stdout);
+  Serve(server, args);
+}
+
+}  // namespace
+
+void AddViewCommand(CLI::App& app) {
+  auto args = std::make_shared<ViewArgs>();
+  auto* cmd = app.add_subcommand(
+      "view",
+      "Serve a live 3D viewer in the browser: runs the scenario (or opens a finished run with "
+      "--trace) and shows the parts, contact pressure, resistances, assembly space and force "
+      "trace at http://HOST:PORT/");
+  cmd->add_option("file", args->file,
+                  std::string("scenario file to run (default: ") + kDefaultScenario + ")");
+  cmd->add_option("--trace", args->trace,
+                  "a finished run's folder (trace.csv, summary.json) to scrub instead of running");
+  cmd->add_option("--port", args->port, "TCP port (0: any free port; the URL is printed)")
+      ->capture_default_str();
+  cmd->add_option("--host", args->host,
+                  "address to bind (default 127.0.0.1: this machine only; another address "
+                  "exposes the viewer to that network)")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "seed (overrides run.seed, or the finished run's)");
+  cmd->add_option("--out", args->out, "also write the run's outputs to this folder");
+  cmd->add_option("--frame-rate", args->frame_rate, "state frames per second, 1..240")
+      ->capture_default_str();
+  cmd->add_option("--exit-after", args->exit_after,
+                  "stop serving this many seconds after the run ends (default: serve until "
+                  "interrupted)");
+  cmd->add_flag("--wait", args->wait,
+                "start the run only once a browser has connected (watch it from the first tick)");
+  auto* realtime = cmd->add_flag("--realtime", args->realtime,
+                                 "real-time clock (the default for view: watch it at 1 kHz)");
+  auto* virtual_clock = cmd->add_flag(
+      "--virtual", args->virtual_clock,
+      "virtual clock: the run finishes at once and the page scrubs it");
+  realtime->excludes(virtual_clock);
+  cmd->callback([args] { View(*args); });
+}
+
+}  // namespace fitfeel::cli

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <functional>
+
+#include "framework/core/export.h"
+
+namespace fitfeel {
+
+// Threads that prepare-time loops split their work over: FITFEEL_PREPARE_THREADS if set to a
+// positive integer, else the hardware's concurrency (at least 1). Never used in the tick.
+FITFEEL_API int PrepareThreads();
+
+// Calls body(begin, end) on `threads` contiguous, disjoint chunks of [0, count) (the calling
+// thread takes the first), and returns when all are done; rethrows the first chunk's exception.
+// The split never changes what a chunk computes, so work whose items are independent gives the
+// same result bit for bit whatever the thread count.
+FITFEEL_API void ParallelFor(int count, const std::function<void(int begin, int end)>& body,
+                             int threads = PrepareThreads());
+
+}  // namespace fitfeel

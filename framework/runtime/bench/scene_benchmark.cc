@@ -1,0 +1,228 @@
+// Every shipped scenario as a whole scene in virtual time: what `fitfeel run` does (prepare, both
+// stages, the simulated device, the scheduler with its safety chain and record), timed in CPU
+// time because the development machine is shared: a tick's wall time there includes other jobs'
+// time slices, its thread CPU time does not.
+//
+// One benchmark iteration is one whole run of a scenario (a fresh scene, prepare, every tick).
+// Counters: prepare_ms, CPU time of the process during Prepare (all threads: a parallel prepare
+// counts both cores' work); tick_p50_us, tick_p99_us, tick_max_us, thread CPU time of each
+// Scheduler::Tick, less the clock's own cost (measured once, the median of back-to-back reads).
+// Repetitions give the median of each counter. Scenes whose surface keeps its per-tick scan
+// (conical, spherical) run again with the scan analyzer in place of the tables ("/scan"), for
+// the ratio.
+//
+// After Google Benchmark's own output, a Markdown table of the medians, one row per scenario, with
+// the scan's p50 / p99 and the ratio where a scan exists: the README's scene table is this table.
+//
+// Scenarios come from $FITFEEL_SOURCE_DIR/scenarios, else ./scenarios (`make bench` runs from the
+// repository's root). Run: build/bench/scene_benchmark [--benchmark_filter=taper]
+#include <time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "framework/core/error.h"
+#include "framework/plugin/registry.h"
+#include "framework/runtime/constrained_stage.h"
+#include "framework/runtime/positioning_stage.h"
+#include "framework/runtime/prepare.h"
+#include "framework/runtime/scheduler.h"
+#include "framework/scenario/scene.h"
+#include "surfaces/conical/conical_scan_analyzer.h"
+#include "surfaces/spherical/spherical_scan_analyzer.h"
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+double CpuSeconds(clockid_t clock) {
+  timespec ts{};
+  clock_gettime(clock, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Median cost of reading the thread CPU clock, s (a system call on most kernels).
+double ClockCost() {
+  std::vector<double> d(2001);
+  for (double& x : d) {
+    const double a = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+    const double b = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+    x = b - a;
+  }
+  std::nth_element(d.begin(), d.begin() + 1000, d.end());
+  return d[1000];
+}
+
+fs::path ScenarioDir() {
+  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR")) return fs::path(source) / "scenarios";
+  return fs::path("scenarios");
+}
+
+const PluginRegistry& Registry() {
+  static PluginRegistry* registry = [] {
+    auto* r = new PluginRegistry();
+    r->LoadAll();
+    return r;
+  }();
+  return *registry;
+}
+
+// The surface plugin's per-tick scan, prepared on the scene's shapes; null where none exists.
+std::unique_ptr<ContactAnalyzer> ScanAnalyzer(const Scene& scene, const PreparedScene& prepared) {
+  std::unique_ptr<ContactAnalyzer> scan;
+  if (scene.surface_id == "fitfeel.surface.conical") {
+    scan = std::make_unique<conical::ConicalScanAnalyzer>();
+  } else if (scene.surface_id == "fitfeel.surface.spherical") {
+    scan = std::make_unique<spherical::SphericalScanAnalyzer>();
+  } else {
+    return nullptr;
+  }
+  scan->Prepare(scene.inner, *prepared.inner_sms, scene.outer, *prepared.outer_sms, scene.model);
+  return scan;
+}
+
+bool HasScan(const std::string& surface_id) {
+  return surface_id == "fitfeel.surface.conical" || surface_id == "fitfeel.surface.spherical";
+}
+
+double Percentile(std::vector<double>* v, double q) {
+  if (v->empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(v->size() - 1));
+  std::nth_element(v->begin(), v->begin() + static_cast<std::ptrdiff_t>(k), v->end());
+  return (*v)[k];
+}
+
+void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
+  static const double clock_cost = ClockCost();
+  std::vector<double> ticks;
+  for (auto _ : state) {
+    Scene scene = LoadScene(file, Registry());
+    const double cpu0 = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
+    PreparedScene prepared = Prepare(scene);
+    const double prepare = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
+    if (scan) prepared.analyzer = ScanAnalyzer(scene, prepared);
+    PositioningStage::Options free_motion;
+    free_motion.free_stiffness =
+        FreeMotionStiffness(scene.model.contact_stiffness, scene.device->spec().max_stiffness);
+    const PositioningStage positioning(
+        free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving);
+    const ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
+    SchedulerSettings settings;
+    settings.rate = scene.run.rate;
+    settings.duration = scene.run.duration;
+    settings.clock = ClockMode::kVirtual;
+    scene.device->Start(1.0 / settings.rate);
+    settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
+    Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    ticks.assign(scheduler.planned_ticks(), 0.0);
+    std::size_t done = 0;
+    for (; done < ticks.size(); ++done) {
+      const double t0 = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+      const bool more = scheduler.Tick(static_cast<double>(done) / settings.rate);
+      const double t1 = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+      ticks[done] = std::max(0.0, t1 - t0 - clock_cost) * 1e6;
+      if (!more) break;
+    }
+    scene.device->Stop();
+    ticks.resize(std::min(done + 1, ticks.size()));
+    state.counters["prepare_ms"] = prepare * 1e3;
+    state.counters["tick_max_us"] = *std::max_element(ticks.begin(), ticks.end());
+    state.counters["tick_p99_us"] = Percentile(&ticks, 0.99);
+    state.counters["tick_p50_us"] = Percentile(&ticks, 0.50);
+    state.counters["ticks"] = static_cast<double>(ticks.size());
+  }
+}
+
+// Google Benchmark's console output, then the medians as one Markdown table.
+class TableReporter final : public benchmark::ConsoleReporter {
+ public:
+  TableReporter() : ConsoleReporter(OO_Tabular) {}
+
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.aggregate_name != "median") continue;
+      std::string name = run.run_name.function_name;  // scene/<name>[/scan]
+      name = name.substr(name.find('/') + 1);
+      const bool scan = name.size() > 5 && name.substr(name.size() - 5) == "/scan";
+      if (scan) name.resize(name.size() - 5);
+      Row& row = rows_[name];
+      Medians& m = scan ? row.scan : row.table;
+      m.present = true;
+      m.prepare_ms = Counter(run, "prepare_ms");
+      m.p50 = Counter(run, "tick_p50_us");
+      m.p99 = Counter(run, "tick_p99_us");
+      m.max = Counter(run, "tick_max_us");
+    }
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    std::printf(
+        "\n| scenario | prepare (ms CPU) | tick p50 / p99 / max (us CPU) | per-tick scan p50 / p99 "
+        "(us CPU) | scan / table p99 |\n|---|---|---|---|---|\n");
+    for (const auto& [name, row] : rows_) {
+      std::printf("| `%s` | %.1f | %.2f / %.2f / %.0f |", name.c_str(), row.table.prepare_ms,
+                  row.table.p50, row.table.p99, row.table.max);
+      if (row.scan.present) {
+        std::printf(" %.1f / %.0f | %.0f |\n", row.scan.p50, row.scan.p99,
+                    row.scan.p99 / row.table.p99);
+      } else {
+        std::printf(" - | - |\n");
+      }
+    }
+    std::fflush(stdout);
+  }
+
+ private:
+  struct Medians {
+    bool present = false;
+    double prepare_ms = 0.0, p50 = 0.0, p99 = 0.0, max = 0.0;
+  };
+  struct Row {
+    Medians table, scan;
+  };
+  static double Counter(const Run& run, const std::string& name) {
+    const auto it = run.counters.find(name);
+    return it == run.counters.end() ? 0.0 : static_cast<double>(it->second);
+  }
+  std::map<std::string, Row> rows_;
+};
+
+}  // namespace
+}  // namespace fitfeel
+
+int main(int argc, char** argv) {
+  using namespace fitfeel;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(ScenarioDir())) {
+    if (entry.path().extension() == ".yaml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& file : files) {
+    const std::string name = file.stem().string();
+    for (bool scan : {false, true}) {
+      if (scan && !HasScan(LoadScene(file, Registry()).surface_id)) continue;
+      benchmark::RegisterBenchmark(("scene/" + name + (scan ? "/scan" : "")).c_str(),
+                                   [file, scan](benchmark::State& s) { BM_Scene(s, file, scan); })
+          ->Iterations(1)
+          ->Repetitions(5)
+          ->ReportAggregatesOnly(true)
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  TableReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}

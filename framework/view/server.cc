@@ -1,0 +1,389 @@
+#include "framework/view/server.h"
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <tuple>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/http.hpp>
+#include <boost/beast/websocket.hpp>
+
+#include "framework/core/error.h"
+#include "framework/view/assets.h"
+
+namespace fitfeel::view {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace http = beast::http;
+namespace websocket = beast::websocket;
+using tcp = asio::ip::tcp;
+using Frame = std::shared_ptr<const std::string>;
+
+// Every row when the run is short, else evenly spaced rows with the last one kept.
+std::vector<ViewSample> Decimate(std::vector<ViewSample> rows, std::size_t max_rows) {
+  if (rows.size() <= max_rows || max_rows < 2) return rows;
+  std::vector<ViewSample> out;
+  out.reserve(max_rows);
+  for (std::size_t i = 0; i < max_rows; ++i) {
+    out.push_back(rows[i * (rows.size() - 1) / (max_rows - 1)]);
+  }
+  return out;
+}
+
+}  // namespace
+
+struct Server::Impl {
+  struct Session;
+
+  Impl(const ViewModel& m, TickPublisher* p, std::vector<ViewSample> h, const ServerOptions& o)
+      : model(m), publisher(p), options(o), acceptor(io), timer(io) {
+    if (!h.empty()) SetHistory(std::move(h));
+  }
+
+  void SetHistory(std::vector<ViewSample> rows) {
+    history = Decimate(std::move(rows), kMaxHistoryRows);
+    history_frame = std::make_shared<const std::string>(EncodeHistoryFrame(history));
+    finished = true;
+    if (!have_latest && !history.empty()) {
+      latest = history.back();
+      have_latest = true;
+    }
+  }
+
+  Frame StateFrame(const ViewSample& sample) {
+    StateExtras extras = model.Extras(sample);
+    extras.run_finished = finished;
+    extras.dropped = publisher ? publisher->dropped() : 0;
+    return std::make_shared<const std::string>(EncodeStateFrame(sample, extras));
+  }
+
+  bool OriginAllowed(std::string_view origin) const {
+    if (origin.empty()) return true;  // not a browser: no cross-site page behind it
+    const std::string port_text = ":" + std::to_string(bound_port);
+    for (const std::string& host : {std::string("127.0.0.1"), std::string("localhost"),
+                                    std::string("[::1]"), options.host}) {
+      if (origin == "http://" + host + port_text) return true;
+    }
+    return false;
+  }
+
+  void Accept();
+  void Pulse();
+  void Broadcast(const Frame& frame);
+
+  const ViewModel& model;
+  TickPublisher* publisher;
+  ServerOptions options;
+  // Before io: sessions that io's destructor destroys still count themselves out.
+  std::atomic<std::uint64_t> frames_sent{0};
+  std::atomic<int> clients{0};
+  asio::io_context io;
+  tcp::acceptor acceptor;
+  asio::steady_timer timer;
+  std::thread thread;
+  unsigned short bound_port = 0;
+  std::vector<std::weak_ptr<Session>> sessions;
+  std::vector<ViewSample> history;
+  Frame history_frame;
+  bool finished = false;
+  ViewSample latest;
+  bool have_latest = false;
+  Frame latest_frame;
+};
+
+// One WebSocket client. Frames the client must get (scene, meshes, history) queue in order; state
+// frames share one slot that always holds the newest, so a slow client bounds its own memory.
+struct Server::Impl::Session : std::enable_shared_from_this<Session> {
+  Session(Impl& s, tcp::socket socket) : server(s), ws(std::move(socket)) {}
+  ~Session() { server.clients.fetch_sub(1, std::memory_order_relaxed); }
+
+  void Start(http::request<http::empty_body> request) {
+    server.clients.fetch_add(1, std::memory_order_relaxed);
+    ws.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
+    ws.read_message_max(kMaxClientMessage);
+    ws.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
+      if (ec) return;
+      self->Queue(std::make_shared<const std::string>(self->server.model.scene_message()), true);
+      for (int part : {0, 1}) {
+        self->Queue(std::make_shared<const std::string>(self->server.model.mesh_frame(part)),
+                    false);
+      }
+      if (self->server.history_frame) self->Queue(self->server.history_frame, false);
+      if (self->server.latest_frame) self->Offer(self->server.latest_frame);
+      self->Read();
+    });
+  }
+
+  void Queue(Frame frame, bool text) {
+    queue.emplace_back(std::move(frame), text);
+    Write();
+  }
+
+  void Offer(Frame state) {
+    pending_state = std::move(state);
+    Write();
+  }
+
+  void Write() {
+    if (writing || closed) return;
+    Frame frame;
+    bool text = false;
+    if (!queue.empty()) {
+      std::tie(frame, text) = std::move(queue.front());
+      queue.pop_front();
+    } else if (pending_state) {
+      frame = std::move(pending_state);
+      pending_state.reset();
+      server.frames_sent.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      return;
+    }
+    writing = true;
+    ws.text(text);
+    ws.binary(!text);
+    ws.async_write(asio::buffer(*frame),
+                   [self = shared_from_this(), frame](beast::error_code ec, std::size_t) {
+                     self->writing = false;
+                     if (ec) {
+                       self->closed = true;  // gone: the weak pointer expires with it
+                       return;
+                     }
+                     self->Write();
+                   });
+  }
+
+  void Read() {
+    ws.async_read(buffer, [self = shared_from_this()](beast::error_code ec, std::size_t) {
+      if (ec) {
+        self->closed = true;
+        return;
+      }
+      const std::string message = beast::buffers_to_string(self->buffer.data());
+      self->buffer.consume(self->buffer.size());
+      self->Handle(message);
+      self->Read();
+    });
+  }
+
+  // "seek N": the state of row N of the finished run's history. Anything else is ignored.
+  void Handle(const std::string& message) {
+    if (message.rfind("seek ", 0) != 0 || server.history.empty()) return;
+    std::size_t row = 0;
+    try {
+      row = std::stoul(message.substr(5));
+    } catch (const std::exception&) {
+      return;
+    }
+    if (row >= server.history.size()) return;
+    Offer(server.StateFrame(server.history[row]));
+  }
+
+  Impl& server;
+  websocket::stream<beast::tcp_stream> ws;
+  beast::flat_buffer buffer;
+  std::deque<std::pair<Frame, bool>> queue;
+  Frame pending_state;
+  bool writing = false;
+  bool closed = false;
+};
+
+namespace {
+
+// One HTTP request per connection: the page's assets, or the upgrade to the WebSocket.
+struct HttpSession : std::enable_shared_from_this<HttpSession> {
+  using Upgrade = std::function<void(tcp::socket, http::request<http::empty_body>)>;
+  HttpSession(tcp::socket socket, std::function<bool(std::string_view)> origin_ok, Upgrade up)
+      : stream(std::move(socket)), origin_allowed(std::move(origin_ok)), upgrade(std::move(up)) {
+    parser.header_limit(Server::kMaxRequestHeader);
+    parser.body_limit(0);
+  }
+
+  void Start() {
+    stream.expires_after(std::chrono::seconds(10));
+    http::async_read(stream, buffer, parser,
+                     [self = shared_from_this()](beast::error_code ec, std::size_t) {
+                       if (ec) {
+                         // Oversized or malformed: say so once, then close.
+                         if (ec != http::error::end_of_stream) self->Reply(400, "bad request\n");
+                         return;
+                       }
+                       self->Handle();
+                     });
+  }
+
+  void Handle() {
+    auto request = parser.release();
+    std::string_view target(request.target().data(), request.target().size());
+    target = target.substr(0, target.find('?'));
+    if (websocket::is_upgrade(request)) {
+      if (target != "/ws") return Reply(404, "not found\n");
+      const auto origin = request[http::field::origin];
+      if (!origin_allowed(std::string_view(origin.data(), origin.size()))) {
+        return Reply(403, "origin not allowed\n");
+      }
+      stream.expires_never();
+      return upgrade(stream.release_socket(), std::move(request));
+    }
+    if (request.method() != http::verb::get && request.method() != http::verb::head) {
+      return Reply(405, "method not allowed\n");
+    }
+    const Asset* asset = FindAsset(target == "/" ? "/index.html" : target);
+    if (asset == nullptr) return Reply(404, "not found\n");
+    auto response = std::make_shared<http::response<http::string_body>>(http::status::ok, 11);
+    response->set(http::field::content_type,
+                  beast::string_view(asset->content_type.data(), asset->content_type.size()));
+    response->set(http::field::cache_control, "no-store");
+    response->set("X-Content-Type-Options", "nosniff");
+    response->set("Content-Security-Policy",
+                  "default-src 'self'; style-src 'self' 'unsafe-inline'; connect-src 'self'");
+    if (request.method() == http::verb::get) response->body() = std::string(asset->body);
+    response->content_length(asset->body.size());
+    response->keep_alive(false);
+    Send(response);
+  }
+
+  void Reply(unsigned status, const char* text) {
+    auto response = std::make_shared<http::response<http::string_body>>(
+        static_cast<http::status>(status), 11);
+    response->set(http::field::content_type, "text/plain; charset=utf-8");
+    response->body() = text;
+    response->prepare_payload();
+    response->keep_alive(false);
+    Send(response);
+  }
+
+  void Send(const std::shared_ptr<http::response<http::string_body>>& response) {
+    http::async_write(stream, *response,
+                      [self = shared_from_this(), response](beast::error_code, std::size_t) {
+                        beast::error_code ignored;
+                        self->stream.socket().shutdown(tcp::socket::shutdown_send, ignored);
+                      });
+  }
+
+  beast::tcp_stream stream;
+  beast::flat_buffer buffer;
+  http::request_parser<http::empty_body> parser;
+  std::function<bool(std::string_view)> origin_allowed;
+  Upgrade upgrade;
+};
+
+}  // namespace
+
+void Server::Impl::Accept() {
+  acceptor.async_accept(io, [this](beast::error_code ec, tcp::socket socket) {
+    if (ec == asio::error::operation_aborted) return;
+    if (!ec) {
+      auto session = std::make_shared<HttpSession>(
+          std::move(socket), [this](std::string_view origin) { return OriginAllowed(origin); },
+          [this](tcp::socket s, http::request<http::empty_body> request) {
+            auto ws = std::make_shared<Session>(*this, std::move(s));
+            sessions.push_back(ws);
+            ws->Start(std::move(request));
+          });
+      session->Start();
+    }
+    Accept();
+  });
+}
+
+void Server::Impl::Broadcast(const Frame& frame) {
+  sessions.erase(std::remove_if(sessions.begin(), sessions.end(),
+                                [](const std::weak_ptr<Session>& s) { return s.expired(); }),
+                 sessions.end());
+  for (auto& weak : sessions) {
+    if (auto s = weak.lock()) s->Offer(frame);
+  }
+}
+
+// Display rate: the newest sample becomes one state frame for every client.
+void Server::Impl::Pulse() {
+  bool fresh = false;
+  if (publisher != nullptr) {
+    ViewSample sample;
+    if (publisher->PopLatest(&sample)) {
+      latest = sample;
+      have_latest = fresh = true;
+    }
+    if (auto rows = publisher->TakeHistory()) {
+      SetHistory(std::move(*rows));
+      for (auto& weak : sessions) {
+        if (auto s = weak.lock()) s->Queue(history_frame, false);
+      }
+      fresh = have_latest;
+    }
+  }
+  if (fresh || (have_latest && !latest_frame)) {
+    latest_frame = StateFrame(latest);
+    Broadcast(latest_frame);
+  }
+  const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double>(1.0 / options.frame_rate));
+  timer.expires_after(period);
+  timer.async_wait([this](beast::error_code ec) {
+    if (!ec) Pulse();
+  });
+}
+
+Server::Server(const ViewModel& model, TickPublisher* publisher, std::vector<ViewSample> history,
+               const ServerOptions& options) {
+  if (!(options.frame_rate >= 1.0 && options.frame_rate <= 240.0)) {
+    throw UserError("viewer frame rate must be in [1, 240] Hz");
+  }
+  impl_ = std::make_unique<Impl>(model, publisher, std::move(history), options);
+}
+
+Server::~Server() { Stop(); }
+
+void Server::Start() {
+  Impl& s = *impl_;
+  beast::error_code ec;
+  const auto address = asio::ip::make_address(s.options.host, ec);
+  if (ec) {
+    throw UserError("viewer: '" + s.options.host + "' is not an IP address (" + ec.message() +
+                    ")");
+  }
+  const tcp::endpoint endpoint(address, s.options.port);
+  s.acceptor.open(endpoint.protocol(), ec);
+  if (!ec) s.acceptor.set_option(asio::socket_base::reuse_address(true), ec);
+  if (!ec) s.acceptor.bind(endpoint, ec);
+  if (!ec) s.acceptor.listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) {
+    throw UserError("viewer: cannot listen on " + s.options.host + ":" +
+                    std::to_string(s.options.port) + ": " + ec.message());
+  }
+  s.bound_port = s.acceptor.local_endpoint().port();
+  s.Accept();
+  asio::post(s.io, [&s] { s.Pulse(); });
+  s.thread = std::thread([&s] { s.io.run(); });
+}
+
+void Server::Stop() {
+  if (!impl_ || !impl_->thread.joinable()) return;
+  asio::post(impl_->io, [this] {
+    beast::error_code ignored;
+    impl_->acceptor.close(ignored);
+    impl_->timer.cancel();
+    impl_->io.stop();
+  });
+  impl_->thread.join();
+}
+
+unsigned short Server::port() const { return impl_->bound_port; }
+std::uint64_t Server::frames_sent() const {
+  return impl_->frames_sent.load(std::memory_order_relaxed);
+}
+int Server::clients() const { return impl_->clients.load(std::memory_order_relaxed); }
+
+}  // namespace fitfeel::view

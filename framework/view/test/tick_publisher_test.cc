@@ -1,0 +1,88 @@
+#include "framework/view/tick_publisher.h"
+
+#include <atomic>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "framework/testing/allocation_counter.h"
+
+FITFEEL_COUNT_ALLOCATIONS();
+
+namespace fitfeel::view {
+namespace {
+
+TickRecord Record(double depth) {
+  TickRecord r;
+  r.time = depth;
+  r.pose.depth = depth;
+  r.wrench.force = Eigen::Vector3d(1.0, -depth, 2.0);
+  r.stage = StageId::kConstrained;
+  r.contact.interference = true;
+  return r;
+}
+
+TEST(TickPublisher, ReaderGetsTheNewestSample) {
+  TickPublisher publisher(8);
+  ViewSample s;
+  EXPECT_FALSE(publisher.PopLatest(&s));
+  for (int k = 0; k < 5; ++k) publisher.OnTick(Record(k));
+  ASSERT_TRUE(publisher.PopLatest(&s));
+  EXPECT_EQ(s.tick, 4u);
+  EXPECT_EQ(s.depth, 4.0);
+  EXPECT_EQ(s.force[1], -4.0);
+  EXPECT_EQ(s.stage, 1);
+  EXPECT_TRUE(s.interference);
+  EXPECT_FALSE(publisher.PopLatest(&s));
+  EXPECT_EQ(publisher.dropped(), 0u);
+}
+
+TEST(TickPublisher, AFullRingDropsAndCountsWithoutAllocating) {
+  TickPublisher publisher(4);
+  const TickRecord r = Record(1.0);
+  test_support::ScopedAllocationCounter counter;
+  for (int k = 0; k < 10; ++k) publisher.OnTick(r);  // nobody reads: 6 have no room
+  counter.Stop();
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_EQ(publisher.dropped(), 6u);
+  ViewSample s;
+  ASSERT_TRUE(publisher.PopLatest(&s));
+  EXPECT_EQ(s.tick, 3u);  // the ring kept the first four; later ones were dropped
+}
+
+TEST(TickPublisher, AConcurrentReaderSeesIncreasingTicks) {
+  TickPublisher publisher(16);
+  std::atomic<bool> done{false};
+  std::uint64_t last = 0, seen = 0;
+  bool ordered = true;
+  std::thread reader([&] {
+    ViewSample s;
+    while (!done.load()) {
+      if (publisher.PopLatest(&s)) {
+        ordered = ordered && (seen == 0 || s.tick > last);
+        last = s.tick;
+        ++seen;
+      }
+    }
+  });
+  for (int k = 0; k < 200000; ++k) publisher.OnTick(Record(k));
+  done = true;
+  reader.join();
+  EXPECT_TRUE(ordered);
+  EXPECT_GT(seen, 0u);
+}
+
+TEST(TickPublisher, HistoryIsHandedOverOnce) {
+  TickPublisher publisher;
+  EXPECT_FALSE(publisher.TakeHistory().has_value());
+  publisher.OnRunEnd({Record(1.0), Record(2.0)});
+  auto history = publisher.TakeHistory();
+  ASSERT_TRUE(history.has_value());
+  ASSERT_EQ(history->size(), 2u);
+  EXPECT_EQ((*history)[1].tick, 1u);
+  EXPECT_EQ((*history)[1].depth, 2.0);
+  EXPECT_FALSE(publisher.TakeHistory().has_value());
+}
+
+}  // namespace
+}  // namespace fitfeel::view

@@ -1,0 +1,31 @@
+#include "framework/view/tick_publisher.h"
+
+namespace fitfeel::view {
+
+TickPublisher::TickPublisher(std::size_t capacity) : ring_(capacity) {}
+
+void TickPublisher::OnTick(const TickRecord& record) noexcept {
+  if (!ring_.TryPush(MakeViewSample(record, ticks_))) {
+    dropped_.fetch_add(1, std::memory_order_relaxed);
+  }
+  ++ticks_;
+}
+
+void TickPublisher::OnRunEnd(const std::vector<TickRecord>& trace) {
+  std::vector<ViewSample> history;
+  history.reserve(trace.size());
+  for (std::size_t k = 0; k < trace.size(); ++k) history.push_back(MakeViewSample(trace[k], k));
+  std::lock_guard<std::mutex> lock(history_mutex_);
+  history_ = std::move(history);
+}
+
+bool TickPublisher::PopLatest(ViewSample* sample) noexcept { return ring_.PopLatest(sample); }
+
+std::optional<std::vector<ViewSample>> TickPublisher::TakeHistory() {
+  std::lock_guard<std::mutex> lock(history_mutex_);
+  std::optional<std::vector<ViewSample>> out = std::move(history_);
+  history_.reset();
+  return out;
+}
+
+}  // namespace fitfeel::view

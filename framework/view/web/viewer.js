@@ -1,0 +1,402 @@
+// fitfeel view: draws the parts, the contact pressure, the resistances, the assembly space and
+// the force trace from the frames the server streams over /ws (frames.js reads them).
+import * as THREE from '/three/build/three.module.js';
+import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
+import * as F from '/frames.js';
+
+const $ = (id) => document.getElementById(id);
+const MM = 1000;  // frames are in m; the scene is drawn in mm
+
+// Perceptually uniform palette (viridis anchors), t in [0, 1].
+const VIRIDIS = [[68, 1, 84], [72, 40, 120], [62, 74, 137], [49, 104, 142], [38, 130, 142],
+  [31, 158, 137], [53, 183, 121], [110, 206, 88], [181, 222, 43], [253, 231, 37]];
+function viridis(t) {
+  const x = Math.min(Math.max(t, 0), 1) * (VIRIDIS.length - 1);
+  const i = Math.min(Math.floor(x), VIRIDIS.length - 2), u = x - i;
+  return VIRIDIS[i].map((a, k) => (a + u * (VIRIDIS[i + 1][k] - a)) / 255);
+}
+
+const view = {
+  scene: null, meshes: [null, null], geometry: [null, null], factor: 100, state: null,
+  trace: [], history: null, frames: 0, finished: false,
+};
+
+// --- three.js scene -------------------------------------------------------------------------
+const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+renderer.setPixelRatio(window.devicePixelRatio || 1);
+renderer.setClearColor(0xf4f4f2);
+$('scene').appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 10000);
+camera.up.set(0, 0, 1);  // the scene's z is up (gravity along -z); the mating axis y lies across
+const controls = new OrbitControls(camera, renderer.domElement);
+// Drawn on demand (a new frame, a control moved): a software renderer is not kept busy by an
+// unchanging picture.
+let renderPending = false;
+function requestRender() {
+  if (renderPending) return;
+  renderPending = true;
+  requestAnimationFrame(() => {
+    renderPending = false;
+    renderer.render(scene, camera);
+  });
+}
+controls.addEventListener('change', requestRender);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x888880, 0.85));
+const sun = new THREE.DirectionalLight(0xffffff, 0.55);
+sun.position.set(1, 2, 3);
+scene.add(sun);
+const moving = new THREE.Group();   // the inner part, placed at the pose
+const fixed = new THREE.Group();    // the outer part
+scene.add(moving, fixed);
+const axialArrow = new THREE.ArrowHelper(new THREE.Vector3(0, -1, 0), new THREE.Vector3(), 1,
+  0xc0392b);
+const radialArrow = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 1,
+  0x1f5fbf);
+// The resistances act at the leading end, inside the other part: drawn over the surfaces.
+for (const arrow of [axialArrow, radialArrow]) {
+  for (const part of [arrow.line, arrow.cone]) {
+    part.material.depthTest = false;
+    part.renderOrder = 10;
+  }
+}
+scene.add(axialArrow, radialArrow);
+
+function resize() {
+  const el = $('scene');
+  renderer.setSize(el.clientWidth, el.clientHeight);
+  camera.aspect = el.clientWidth / Math.max(el.clientHeight, 1);
+  camera.updateProjectionMatrix();
+  requestRender();
+}
+window.addEventListener('resize', resize);
+resize();
+
+// One quad per cell, corners displaced along the cell's direction by factor * V.
+function buildGeometry(mesh) {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(mesh.cells * 12), 3));
+  const colors = new Float32Array(mesh.cells * 12).fill(0.75);
+  g.setAttribute('color', new THREE.BufferAttribute(colors, 3));
+  const index = new Uint32Array(mesh.cells * 6);
+  for (let c = 0; c < mesh.cells; ++c) {
+    index.set([4 * c, 4 * c + 1, 4 * c + 2, 4 * c, 4 * c + 2, 4 * c + 3], 6 * c);
+  }
+  g.setIndex(new THREE.BufferAttribute(index, 1));
+  return g;
+}
+
+function displace(part) {
+  const mesh = view.meshes[part], g = view.geometry[part];
+  if (!mesh || !g) return;
+  const p = g.attributes.position.array, s = view.factor;
+  for (let c = 0; c < mesh.cells; ++c) {
+    const dv = s * mesh.variation[c];
+    for (let k = 0; k < 4; ++k) {
+      for (let a = 0; a < 3; ++a) {
+        p[12 * c + 3 * k + a] = MM * (mesh.corners[12 * c + 3 * k + a] + dv * mesh.directions[3 * c + a]);
+      }
+    }
+  }
+  g.attributes.position.needsUpdate = true;
+  g.computeVertexNormals();
+  g.computeBoundingSphere();
+}
+
+function addPart(mesh) {
+  const group = mesh.part === 0 ? moving : fixed;
+  group.clear ? group.clear() : group.children.slice().forEach((c) => group.remove(c));
+  view.meshes[mesh.part] = mesh;
+  if (mesh.placeholder) {
+    // No render mesh: a labelled box stands in, so the page is never blank.
+    const size = 10, box = new THREE.BoxGeometry(size, size, size);
+    const material = new THREE.MeshLambertMaterial({ color: mesh.part === 0 ? 0xd9b100 : 0x999999,
+      transparent: true, opacity: mesh.part === 0 ? 0.9 : 0.3 });
+    const m = new THREE.Mesh(box, material);
+    m.position.y = mesh.part === 0 ? -size / 2 : size / 2;
+    group.add(m, new THREE.LineSegments(new THREE.EdgesGeometry(box),
+      new THREE.LineBasicMaterial({ color: 0x333333 })));
+    group.children[1].position.copy(m.position);
+    view.geometry[mesh.part] = null;
+    if (view.meshes[0] && view.meshes[1]) frameCamera();
+    requestRender();
+    return;
+  }
+  const g = buildGeometry(mesh);
+  view.geometry[mesh.part] = g;
+  displace(mesh.part);
+  const material = mesh.part === 0
+    ? new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide })
+    : new THREE.MeshLambertMaterial({ color: 0x8a9bb0, side: THREE.DoubleSide, transparent: true,
+      opacity: 0.35, depthWrite: false });
+  group.add(new THREE.Mesh(g, material));
+  if (view.meshes[0] && view.meshes[1]) frameCamera();
+  requestRender();
+}
+
+// Both parts as they stand before insertion (the moving one's leading end at the entrance), seen
+// from the side, slightly from above and in front.
+function frameCamera() {
+  const saved = moving.position.clone();
+  moving.position.set(0, 0, 0);
+  moving.updateMatrixWorld(true);
+  const box = new THREE.Box3();
+  for (const group of [moving, fixed]) box.expandByObject(group);
+  moving.position.copy(saved);
+  moving.updateMatrixWorld(true);
+  if (box.isEmpty()) return;
+  const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3());
+  const r = Math.max(size.x, size.y, size.z);
+  camera.position.set(centre.x + 1.9 * r, centre.y - 0.45 * r, centre.z + 0.75 * r);
+  camera.near = r / 100;
+  camera.far = r * 100;
+  camera.updateProjectionMatrix();
+  controls.target.copy(centre);
+  controls.update();
+  view.size = r;
+  requestRender();
+}
+
+// --- state ---------------------------------------------------------------------------------
+function colourPressure(state) {
+  const g = view.geometry[0];
+  if (!g) return;
+  const c = g.attributes.color.array, cells = view.meshes[0].cells;
+  const has = state.pressure.length === cells && state.pressureMax > 0;
+  for (let k = 0; k < cells; ++k) {
+    const q = has ? state.pressure[k] : 0;
+    const rgb = q > 0 ? viridis(q / 255) : [0.78, 0.78, 0.76];
+    for (let v = 0; v < 4; ++v) c.set(rgb, 12 * k + 3 * v);
+  }
+  g.attributes.color.needsUpdate = true;
+}
+
+// Arrow length grows with the logarithm of the force: newtons to kilonewtons stay readable.
+function arrowLength(force) {
+  return (view.size || 20) * 0.12 * Math.log10(1 + Math.abs(force) / 0.1);
+}
+
+function place(state) {
+  const s = view.factor;
+  const rotational = view.scene && view.scene.rotational;
+  moving.position.set(MM * s * state.offsetX, rotational ? 0 : MM * state.depth,
+    MM * s * state.offsetZ);
+  moving.rotation.set(0, -state.angle, 0);
+  const tip = new THREE.Vector3(moving.position.x, moving.position.y, moving.position.z);
+  const [fx, fy, fz] = state.force, radial = Math.hypot(fx, fz);
+  axialArrow.position.copy(tip);
+  axialArrow.setDirection(new THREE.Vector3(0, fy >= 0 ? 1 : -1, 0));
+  const la = arrowLength(fy);
+  axialArrow.visible = la > 1e-6;
+  if (axialArrow.visible) axialArrow.setLength(la, 0.25 * la, 0.12 * la);
+  radialArrow.position.copy(tip);
+  const lr = arrowLength(radial);
+  radialArrow.visible = lr > 1e-6;
+  if (radialArrow.visible) {
+    radialArrow.setDirection(new THREE.Vector3(fx / radial, 0, fz / radial));
+    radialArrow.setLength(lr, 0.25 * lr, 0.12 * lr);
+  }
+}
+
+const fmt = (x, d = 3) => (Math.abs(x) >= 1e4 || (Math.abs(x) < 1e-3 && x !== 0))
+  ? x.toExponential(2) : x.toPrecision(d);
+
+function showState(state) {
+  view.state = state;
+  colourPressure(state);
+  place(state);
+  const [fx, fy, fz] = state.force;
+  const stage = state.stage === 1 ? 'constrained' : 'positioning';
+  const finished = (state.flags & F.FLAG_FINISHED) !== 0;
+  $('status').textContent = `${finished ? 'finished run' : 'live'} · t ${state.time.toFixed(3)} s · ` +
+    `depth ${(MM * state.depth).toFixed(3)} mm · ${stage}` +
+    ((state.flags & F.FLAG_INTERFERENCE) ? ' · interference' : '') +
+    (state.dropped ? ` · ${state.dropped} samples skipped (the run outpaced the display)` : '');
+  $('forces').innerHTML =
+    `<span class="axial">axial resistance ${fmt(Math.abs(fy))} N</span><br>` +
+    `<span class="radial">radial resistance ${fmt(Math.hypot(fx, fz))} N</span>` +
+    (view.scene && view.scene.rotational ? `<br>torque ${fmt(Math.hypot(...state.torque))} N·m` : '');
+  drawLegend(state);
+  drawSpace(state);
+  if (!finished && state.stage === 1) {
+    view.trace.push([abscissa(state), Math.abs(fy), Math.hypot(fx, fz)]);
+    if (view.trace.length > 600) view.trace.shift();  // scrolls: the newest 10 s at 60 Hz
+  }
+  drawTrace();
+  requestRender();
+}
+
+function drawLegend(state) {
+  const cv = $('legend'), g = cv.getContext('2d');
+  g.clearRect(0, 0, cv.width, cv.height);
+  const w = cv.width - 20;
+  for (let x = 0; x < w; ++x) {
+    const [r, gg, b] = viridis(x / (w - 1));
+    g.fillStyle = `rgb(${255 * r},${255 * gg},${255 * b})`;
+    g.fillRect(10 + x, 4, 1, 16);
+  }
+  g.fillStyle = '#222';
+  g.font = '11px system-ui';
+  const max = state.pressureMax / 1e6;
+  g.fillText('0', 10, 34);
+  const label = view.scene && !view.scene.pressure ? 'no pressure map for this law'
+    : `${fmt(max)} MPa`;
+  g.textAlign = 'right';
+  g.fillText(label, cv.width - 10, 34);
+  g.textAlign = 'left';
+}
+
+function drawSpace(state) {
+  const cv = $('space'), g = cv.getContext('2d');
+  g.clearRect(0, 0, cv.width, cv.height);
+  const known = (state.flags & F.FLAG_SPACE_KNOWN) !== 0;
+  const note = $('space-note');
+  if (!known) {
+    note.textContent = 'this surface type does not describe its assembly space';
+    return;
+  }
+  const pts = state.space;
+  const off = [state.offsetX, state.offsetZ];
+  let r = Math.hypot(...off);
+  for (const p of pts) r = Math.max(r, Math.hypot(p[0], p[1]));
+  r = r > 0 ? 1.15 * r : 1e-6;
+  const cx = cv.width / 2, cy = cv.height / 2, k = (Math.min(cx, cy) - 6) / r;
+  g.strokeStyle = '#bbb';
+  g.beginPath(); g.moveTo(0, cy); g.lineTo(cv.width, cy); g.moveTo(cx, 0); g.lineTo(cx, cv.height);
+  g.stroke();
+  if (pts.length > 2) {
+    g.fillStyle = 'rgba(31,158,137,0.25)';
+    g.strokeStyle = '#1f9e89';
+    g.beginPath();
+    pts.forEach((p, i) => (i ? g.lineTo : g.moveTo).call(g, cx + k * p[0], cy - k * p[1]));
+    g.closePath(); g.fill(); g.stroke();
+  }
+  g.fillStyle = '#c0392b';
+  g.beginPath(); g.arc(cx + k * off[0], cy - k * off[1], 3.5, 0, 2 * Math.PI); g.fill();
+  note.textContent = pts.length > 2
+    ? `x right, z up; half-width ${fmt(1e6 * r)} µm; dot: the moving axis`
+    : ((state.flags & F.FLAG_INTERFERENCE) ? 'empty: the parts interfere'
+      : 'no section engaged');
+}
+
+// The trace runs over depth, or over the angle for a pair that mates by rotation.
+const rotationalPair = () => Boolean(view.scene && view.scene.rotational);
+const abscissa = (s) => (rotationalPair() ? s.angle * 180 / Math.PI : MM * s.depth);
+
+function drawTrace() {
+  const cv = $('trace'), g = cv.getContext('2d');
+  g.clearRect(0, 0, cv.width, cv.height);
+  const rows = view.history
+    ? view.history.filter((h) => h.stage === 1).map((h) => [abscissa(h), Math.abs(h.force[1]),
+      Math.hypot(h.force[0], h.force[2])])
+    : view.trace;
+  g.font = '11px system-ui';
+  g.fillStyle = '#222';
+  if (rows.length < 2) { g.fillText('waiting for the constrained stage', 8, 16); return; }
+  let x0 = Infinity, x1 = -Infinity, y1 = 0;
+  for (const [d, a, r] of rows) { x0 = Math.min(x0, d); x1 = Math.max(x1, d); y1 = Math.max(y1, a, r); }
+  if (x1 <= x0) x1 = x0 + 1e-3;
+  y1 = y1 > 0 ? 1.1 * y1 : 1;
+  const L = 34, B = cv.height - 18, W = cv.width - L - 6, H = B - 6;
+  const X = (d) => L + W * (d - x0) / (x1 - x0), Y = (f) => B - H * f / y1;
+  g.strokeStyle = '#999'; g.strokeRect(L, 6, W, H);
+  for (const [k, colour] of [[1, '#c0392b'], [2, '#1f5fbf']]) {
+    g.strokeStyle = colour; g.beginPath();
+    rows.forEach((row, i) => (i ? g.lineTo : g.moveTo).call(g, X(row[0]), Y(row[k])));
+    g.stroke();
+  }
+  g.fillText(`${fmt(y1, 2)} N`, 2, 14);
+  g.fillText('0', 24, B);
+  g.fillText(`${x0.toFixed(1)}`, L, cv.height - 4);
+  g.textAlign = 'right'; g.fillText(`${x1.toFixed(1)} ${rotationalPair() ? '° angle' : 'mm depth'}`, cv.width - 6, cv.height - 4);
+  g.textAlign = 'left';
+  if (view.state) {
+    g.strokeStyle = '#000'; g.setLineDash([3, 3]); g.beginPath();
+    g.moveTo(X(abscissa(view.state)), 6); g.lineTo(X(abscissa(view.state)), B); g.stroke();
+    g.setLineDash([]);
+  }
+}
+
+// --- controls ------------------------------------------------------------------------------
+function setFactor(exponent) {
+  view.factor = Math.pow(10, exponent);
+  $('factor-value').textContent = view.factor >= 10 ? Math.round(view.factor) : view.factor.toFixed(1);
+  displace(0); displace(1);
+  if (view.state) place(view.state);
+  requestRender();
+}
+$('factor').addEventListener('input', (e) => setFactor(parseFloat(e.target.value)));
+
+let socket = null;
+$('time').addEventListener('input', (e) => {
+  const i = parseInt(e.target.value, 10);
+  if (view.history && view.history[i]) $('time-value').textContent = `${view.history[i].time.toFixed(3)} s`;
+  if (socket && socket.readyState === 1) socket.send(`seek ${i}`);
+});
+
+// Default exaggeration: the largest deviation drawn as 4 % of the part's radius.
+function defaultFactor(info) {
+  const v = Math.max(Math.abs(info.inner.variation_min_um), Math.abs(info.inner.variation_max_um),
+    Math.abs(info.outer.variation_min_um), Math.abs(info.outer.variation_max_um)) * 1e-3;  // mm
+  const radius = Math.max(info.inner.nominal_size_mm, 1) / 2;
+  if (!(v > 0)) return 1;
+  return Math.min(Math.max(0.04 * radius / v, 1), 10000);
+}
+
+function onScene(info) {
+  view.scene = info;
+  $('title').textContent = info.scenario;
+  $('subtitle').textContent = `${info.surface} · law ${info.law || '–'} · seed ${info.seed} · ` +
+    `${info.inner.name} (${info.inner.rows}×${info.inner.columns}) in ${info.outer.name} ` +
+    `(${info.outer.rows}×${info.outer.columns})`;
+  const notes = [info.status, info.placeholder_note].filter((s) => s);
+  $('note').hidden = notes.length === 0;
+  $('note').textContent = notes.join('; ');
+  if (info.placeholder_note) {
+    const div = document.createElement('div');
+    div.id = 'placeholder';
+    div.textContent = info.placeholder_note;
+    document.body.appendChild(div);
+  }
+  const e = Math.log10(defaultFactor(info));
+  $('factor').value = e;
+  setFactor(e);
+}
+
+function onHistory(rows) {
+  view.history = rows;
+  view.finished = true;
+  $('scrub').hidden = false;
+  const t = $('time');
+  t.max = Math.max(rows.length - 1, 0);
+  t.value = t.max;
+  if (rows.length) $('time-value').textContent = `${rows[rows.length - 1].time.toFixed(3)} s`;
+  drawTrace();
+}
+
+function connect() {
+  socket = new WebSocket(`ws://${location.host}/ws`);
+  socket.binaryType = 'arraybuffer';
+  socket.onmessage = (event) => {
+    if (typeof event.data === 'string') {
+      const msg = JSON.parse(event.data);
+      if (msg.type === 'scene') onScene(msg);
+      return;
+    }
+    const kind = F.frameKind(event.data);
+    if (kind === F.KIND_MESH) addPart(F.readMesh(event.data));
+    else if (kind === F.KIND_HISTORY) onHistory(F.readHistory(event.data));
+    else if (kind === F.KIND_STATE) {
+      showState(F.readState(event.data));
+      view.frames += 1;
+      document.body.dataset.frames = view.frames;
+      document.body.dataset.state = 'streaming';
+    }
+  };
+  socket.onclose = () => {
+    document.body.dataset.state = 'closed';
+    $('status').textContent = 'disconnected: is fitfeel view still running?';
+  };
+}
+
+connect();

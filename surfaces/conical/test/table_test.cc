@@ -1,0 +1,131 @@
+// The tabulated analyzer against the per-tick scan it replaces (the scan is the model; the table
+// only changes how fast it is evaluated): at the depth steps within the table's stated
+// interpolation bound, between them within 2 % of the scan's interference volume, and bit for bit
+// the same tables whatever the number of prepare threads.
+#include <cstdlib>
+#include <random>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "surfaces/conical/conical_contact_analyzer.h"
+#include "surfaces/conical/conical_discretizer.h"
+#include "surfaces/conical/conical_generator.h"
+#include "surfaces/conical/test/test_parts.h"
+
+namespace fitfeel::conical {
+namespace {
+
+// The taper-pin scenario's parts (h10 / H10, ground pin, reamed hole), one seed.
+void Prepare(ConicalContactAnalyzer* analyzer, std::uint64_t seed, Resolution r = {20, 72}) {
+  PartSpec pin = test::Pin();
+  PartSpec hole = test::Hole();
+  pin.size.lower_deviation = -58e-6;
+  hole.size.upper_deviation = 58e-6;
+  pin.form.tolerance[FormCharacteristic::kRoundness] = 6e-6;
+  pin.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 9e-6;
+  hole.form.tolerance[FormCharacteristic::kRoundness] = 9e-6;
+  hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 15e-6;
+  pin.texture = {0.0, 0.8e-6, 3.2e-6};
+  hole.texture = {0.0, 1.6e-6, 6.4e-6};
+  ModelSettings settings;
+  settings.friction = 0.15;
+  settings.contact_stiffness = 1e6;
+  settings.texture = TextureMode::kExpected;
+  Rng rng(seed);
+  const SkinModelShape pin_sms = ConicalVariationGenerator().Generate(
+      pin, ConicalDiscretizer().Discretize(pin, r), TextureMode::kExpected, rng);
+  const SkinModelShape hole_sms = ConicalVariationGenerator().Generate(
+      hole, ConicalDiscretizer().Discretize(hole, r), TextureMode::kExpected, rng);
+  analyzer->Prepare(pin, pin_sms, hole, hole_sms, settings);
+}
+
+// Offsets that put the pin anywhere from clear of the hole to tens of um into it at depth s.
+MatingPose RandomPose(std::mt19937_64& rng, double depth, double clearance) {
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), reach(0.0, 1.0);
+  const double e = std::max(clearance, 0.0) + 30e-6 * reach(rng) - 10e-6;
+  const double a = angle(rng);
+  MatingPose pose;
+  pose.depth = depth;
+  pose.offset = std::max(e, 0.0) * Eigen::Vector2d(std::cos(a), std::sin(a));
+  return pose;
+}
+
+TEST(ConicalTable, EqualsTheScanAtTheDepthStepsWithinItsBound) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    ConicalContactAnalyzer analyzer;
+    Prepare(&analyzer, seed);
+    std::mt19937_64 rng(100 + seed);
+    const double step = analyzer.depth_step();
+    for (int k = 1; k < analyzer.table().steps() - 1; k += 3) {
+      const double depth = k * step;
+      double bound = 0.0;
+      for (int j = 0; j < analyzer.table().columns(); ++j) {
+        bound += analyzer.table().VolumeErrorBound(k, j);
+      }
+      for (int trial = 0; trial < 20; ++trial) {
+        const MatingPose pose = RandomPose(rng, depth, analyzer.scan().Clearance(depth));
+        ContactState table, scan;
+        analyzer.Evaluate(pose, &table);
+        analyzer.scan().Evaluate(pose, &scan);
+        ASSERT_EQ(table.engaged, scan.engaged);
+        EXPECT_NEAR(table.engaged_area, scan.engaged_area, 1e-12 * scan.engaged_area);
+        // Rounding of the shifted offset (z = e . u - clearance) adds 1e-15 of the sums.
+        EXPECT_NEAR(table.interference_volume, scan.interference_volume,
+                    bound + 1e-12 * scan.interference_volume)
+            << "seed " << seed << " depth " << depth;
+        EXPECT_LE((table.pressure_resultant - scan.pressure_resultant).norm(),
+                  bound + 1e-12 * scan.interference_volume);
+      }
+    }
+  }
+}
+
+TEST(ConicalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
+  double worst = 0.0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    ConicalContactAnalyzer analyzer;
+    Prepare(&analyzer, seed);
+    std::mt19937_64 rng(200 + seed);
+    std::uniform_real_distribution<double> depth(0.0, 60e-3);
+    for (int trial = 0; trial < 400; ++trial) {
+      const double s = depth(rng);
+      const MatingPose pose = RandomPose(rng, s, analyzer.scan().Clearance(s));
+      ContactState table, scan;
+      analyzer.Evaluate(pose, &table);
+      analyzer.scan().Evaluate(pose, &scan);
+      // Relative to a volume of at least 0.1 um over the engaged area: below it the force is a
+      // few newtons of a joint whose press force reaches kilonewtons.
+      const double scale = std::max(scan.interference_volume, 1e-7 * scan.engaged_area);
+      if (!(scale > 0.0)) continue;
+      const double error = std::abs(table.interference_volume - scan.interference_volume) / scale;
+      worst = std::max(worst, error);
+      EXPECT_LT(error, 0.02) << "seed " << seed << " depth " << s;
+    }
+  }
+  RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+TEST(ConicalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
+  ConicalContactAnalyzer one, two;
+  setenv("FITFEEL_PREPARE_THREADS", "1", 1);
+  Prepare(&one, 3);
+  setenv("FITFEEL_PREPARE_THREADS", "2", 1);
+  Prepare(&two, 3);
+  unsetenv("FITFEEL_PREPARE_THREADS");
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> depth(0.0, 60e-3);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double s = depth(rng);
+    const MatingPose pose = RandomPose(rng, s, one.scan().Clearance(s));
+    ContactState a, b;
+    one.Evaluate(pose, &a);
+    two.Evaluate(pose, &b);
+    ASSERT_EQ(a.interference_volume, b.interference_volume);
+    ASSERT_EQ(a.pressure_resultant, b.pressure_resultant);
+    ASSERT_EQ(a.max_interference, b.max_interference);
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::conical
