@@ -85,14 +85,18 @@ TEST(PaperHeadline, TransitionFitIsHeavierAndClearanceFitStaysNearVe1) {
     js6_sum += MeanAxial(js6);
     g6_sum += MeanAxial(g6);
     ve1_sum += MeanAxial(ve1);
-    for (const Tick& t : ve1) {
-      ASSERT_NEAR(t.axial, kWeightFriction, 1e-6 * kWeightFriction)
+    // The stick-slip junctions start unloaded at first contact and break away within their
+    // presliding displacement (2 um), less than one tick's advance at 10 mm/s (10 um): from the
+    // second constrained tick on, the part slides.
+    ASSERT_EQ(ve1.front().axial, 0.0) << "the first contact starts from unloaded junctions";
+    for (std::size_t k = 1; k < ve1.size(); ++k) {
+      ASSERT_NEAR(ve1[k].axial, kWeightFriction, 1e-6 * kWeightFriction)
           << "VE1 renders the weight's friction whatever the parts (seed " << seed << ")";
     }
     // The weight always presses the shaft on the bore: its friction is a floor for both fits.
     for (const auto* ticks : {&g6, &js6}) {
-      for (const Tick& t : *ticks) {
-        ASSERT_GE(t.axial, kWeightFriction * (1.0 - kSettling)) << "seed " << seed;
+      for (std::size_t k = 1; k < ticks->size(); ++k) {
+        ASSERT_GE((*ticks)[k].axial, kWeightFriction * (1.0 - kSettling)) << "seed " << seed;
       }
     }
   }
