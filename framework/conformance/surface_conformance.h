@@ -220,10 +220,47 @@ TYPED_TEST_P(SurfaceConformance, EvaluateNeverAllocates) {
   EXPECT_TRUE(wrench.AllFinite());
 }
 
+// The assembly space (paper 3.1) bounds where the moving axis may go without contact: a point
+// just beyond any vertex of the polygon touches. (That points inside touch nothing is each
+// plugin's own test, at depths where its tables are exact.) A surface type that does not describe
+// its assembly space skips, saying so.
+TYPED_TEST_P(SurfaceConformance, ContactBeyondTheAssemblySpace) {
+  if (!this->scene_.surface->renders_forces()) {
+    GTEST_SKIP() << "no resistance law: " << this->scene_.surface->limitation();
+  }
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+  this->PrepareModel(3, &analyzer, &law);
+  const double length = this->scene_.inner.geometry->mating_length();
+  int polygons = 0;
+  for (const double fraction : {0.3, 0.6, 0.9}) {
+    MatingPose pose;
+    pose.depth = fraction * length;
+    std::vector<Eigen::Vector2d> polygon;
+    if (!analyzer->AssemblySpace(pose, &polygon)) {
+      GTEST_SKIP() << "this surface type does not describe its assembly space";
+    }
+    if (polygon.empty()) continue;
+    ++polygons;
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto& v : polygon) centre += v / static_cast<double>(polygon.size());
+    for (const auto& v : polygon) {
+      MatingPose beyond = pose;
+      beyond.offset = centre + 1.1 * (v - centre);
+      ContactState contact;
+      analyzer->Evaluate(beyond, &contact);
+      EXPECT_TRUE(contact.penetration > 0.0 || contact.interference_volume > 0.0)
+          << "depth " << pose.depth << ", beyond " << v.transpose();
+    }
+  }
+  EXPECT_GT(polygons, 0) << "no depth with a non-empty assembly space: nothing was checked";
+}
+
 REGISTER_TYPED_TEST_SUITE_P(SurfaceConformance, CellAreasSumToTheNominalArea,
                             ZeroTolerancesGiveZeroVariation,
                             EverySkinModelShapeMeetsItsTolerances, SameSeedGivesTheSameShape,
-                            ForceIsContinuousAcrossContactOnset, EvaluateNeverAllocates);
+                            ForceIsContinuousAcrossContactOnset, EvaluateNeverAllocates,
+                            ContactBeyondTheAssemblySpace);
 
 }  // namespace fitfeel::conformance
 

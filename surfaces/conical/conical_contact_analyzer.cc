@@ -61,4 +61,9 @@ void ConicalContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   scan_.InterferenceMap(pose, delta);
 }
 
+bool ConicalContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                             std::vector<Eigen::Vector2d>* polygon) const {
+  return scan_.AssemblySpace(pose, polygon);
+}
+
 }  // namespace fitfeel::conical

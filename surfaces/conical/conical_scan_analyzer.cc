@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/model/convex_polygon.h"
 #include "surfaces/conical/conical_geometry.h"
 
 namespace fitfeel::conical {
@@ -126,6 +128,30 @@ void ConicalScanAnalyzer::DoInterferenceMap(const MatingPose& pose,
                                                Eigen::VectorXd* delta) const {
   delta->setZero(pin_rows_ * columns_);
   ForEachCell(pose, [&](int j, double, double d, int i) { (*delta)(i * columns_ + j) = d; });
+}
+
+bool ConicalScanAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                          std::vector<Eigen::Vector2d>* polygon) const {
+  polygon->clear();
+  if (!std::isfinite(pose.depth)) return true;
+  std::vector<double> h(columns_, std::numeric_limits<double>::infinity());
+  bool engaged = false;
+  ForEachRow(pose.depth, [&](int i, double, int k, int k1, double f) {
+    engaged = true;
+    for (int j = 0; j < columns_; ++j) {
+      const double hole_v = (1.0 - f) * hole_v_(k, j) + f * hole_v_(k1, j);
+      h[j] = std::min(h[j], hole_v - pin_v_(i, j));
+    }
+  });
+  if (!engaged) return true;
+  std::vector<double> angle(columns_);
+  for (int j = 0; j < columns_; ++j) {
+    angle[j] = std::atan2(direction_(1, j), direction_(0, j));
+    h[j] += Clearance(pose.depth);
+  }
+  // Columns all round the axis close the polygon; the bound only guards degenerate grids.
+  if (!IntersectHalfPlanes(angle, h, hole_small_diameter_, polygon)) polygon->clear();
+  return true;
 }
 
 }  // namespace fitfeel::conical

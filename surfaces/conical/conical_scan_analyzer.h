@@ -59,6 +59,11 @@ class ConicalScanAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  // The offsets e with every overlapping cell's sharp gap >= 0: per column, e . u_j <=
+  // Clearance(s) + min over the overlapping rows of (V_hole - V_pin). The texture's expected
+  // interference is left out: the polygon is where the form lets the pin's axis go.
+  bool DoAssemblySpace(const MatingPose& pose,
+                       std::vector<Eigen::Vector2d>* polygon) const override;
 
  private:
   // Calls visit(column j, contact area, delta, pin row i) for every overlapping pin cell.

@@ -14,7 +14,7 @@
 #include "framework/core/error.h"
 #include "framework/model/grid_rows.h"
 #include "framework/model/section_contact.h"
-#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
+#include "framework/model/convex_polygon.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/elastic_options.h"
 

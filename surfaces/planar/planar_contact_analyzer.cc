@@ -287,4 +287,28 @@ void PlanarContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
+bool PlanarContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                           std::vector<Eigen::Vector2d>* polygon) const {
+  polygon->clear();
+  std::size_t k = 0;
+  double t = 0.0;
+  if (!std::isfinite(pose.depth) || !Locate(pose.depth, &k, &t)) return true;
+  if (t >= 0.5) k = std::min(k + 1, depth_.size() - 1);
+  if (!engaged_[k]) return true;
+  double lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0};
+  for (int axis = 0; axis < axes_; ++axis) {
+    const std::size_t a = Index(static_cast<int>(k), axis);
+    if (empty_[a]) return true;
+    lo[axis] = lower_[a];
+    hi[axis] = upper_[a];
+  }
+  for (int axis = axes_; axis < 2; ++axis) {
+    const double half = 0.5 * (hi[0] - lo[0]);
+    lo[axis] = -half;
+    hi[axis] = half;
+  }
+  *polygon = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}};
+  return true;
+}
+
 }  // namespace fitfeel::planar

@@ -59,6 +59,10 @@ class PlanarContactAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  // The rectangle of the nearer depth step (empty under interference or before engagement). A
+  // key's z is free: the rectangle is drawn as high as its x interval is wide around z = 0.
+  bool DoAssemblySpace(const MatingPose& pose,
+                       std::vector<Eigen::Vector2d>* polygon) const override;
 
  private:
   struct Slice {

@@ -44,4 +44,9 @@ void SphericalContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   scan_.InterferenceMap(pose, delta);
 }
 
+bool SphericalContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                               std::vector<Eigen::Vector2d>* polygon) const {
+  return scan_.AssemblySpace(pose, polygon);
+}
+
 }  // namespace fitfeel::spherical

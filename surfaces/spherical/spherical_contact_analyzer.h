@@ -43,6 +43,8 @@ class SphericalContactAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  bool DoAssemblySpace(const MatingPose& pose,
+                       std::vector<Eigen::Vector2d>* polygon) const override;
 
  private:
   SphericalScanAnalyzer scan_;

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/model/convex_polygon.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
 namespace fitfeel::spherical {
@@ -168,6 +170,26 @@ void SphericalScanAnalyzer::DoInterferenceMap(const MatingPose& pose,
       (*delta)(k) = texture_(gap);
     }
   }
+}
+
+bool SphericalScanAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                            std::vector<Eigen::Vector2d>* polygon) const {
+  polygon->clear();
+  if (!std::isfinite(pose.angle)) return true;
+  std::vector<double> angle(columns_), h(columns_, std::numeric_limits<double>::infinity());
+  for (int j = 0; j < columns_; ++j) {
+    const Eigen::Vector2d u = direction(j);
+    angle[j] = std::atan2(u.y(), u.x());
+    for (int i = 0; i < rows_; ++i) {
+      const int k = i * columns_ + j;
+      const double cosine = std::hypot(normal_(0, k), normal_(2, k));
+      const double gap = socket_v_(i, j) - BallVariationUnder(i, j, pose.angle);
+      h[j] = std::min(h[j], gap / cosine);
+    }
+  }
+  // Columns all round the axis close the polygon; the bound only guards degenerate grids.
+  if (!IntersectHalfPlanes(angle, h, width_, polygon)) polygon->clear();
+  return true;
 }
 
 }  // namespace fitfeel::spherical

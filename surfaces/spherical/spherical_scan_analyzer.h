@@ -60,6 +60,11 @@ class SphericalScanAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  // The centre offsets e with every socket cell's sharp gap >= 0 at the pose's angle: per column,
+  // e . u_j <= min over rows of gap / cos(latitude). The texture's expected interference is left
+  // out: the polygon is where the form lets the ball's centre go.
+  bool DoAssemblySpace(const MatingPose& pose,
+                       std::vector<Eigen::Vector2d>* polygon) const override;
 
  private:
   template <class Visit>

@@ -5,8 +5,11 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "framework/testing/assembly_space_check.h"
 
 #include "surfaces/conical/conical_contact_analyzer.h"
 #include "surfaces/conical/conical_discretizer.h"
@@ -17,7 +20,8 @@ namespace fitfeel::conical {
 namespace {
 
 // The taper-pin scenario's parts (h10 / H10, ground pin, reamed hole), one seed.
-void Prepare(ConicalContactAnalyzer* analyzer, std::uint64_t seed, Resolution r = {20, 72}) {
+void Prepare(ConicalContactAnalyzer* analyzer, std::uint64_t seed, Resolution r = {20, 72},
+             TextureMode texture = TextureMode::kExpected) {
   PartSpec pin = test::Pin();
   PartSpec hole = test::Hole();
   pin.size.lower_deviation = -58e-6;
@@ -31,12 +35,12 @@ void Prepare(ConicalContactAnalyzer* analyzer, std::uint64_t seed, Resolution r 
   ModelSettings settings;
   settings.friction = 0.15;
   settings.contact_stiffness = 1e6;
-  settings.texture = TextureMode::kExpected;
+  settings.texture = texture;
   Rng rng(seed);
   const SkinModelShape pin_sms = ConicalVariationGenerator().Generate(
-      pin, ConicalDiscretizer().Discretize(pin, r), TextureMode::kExpected, rng);
+      pin, ConicalDiscretizer().Discretize(pin, r), texture, rng);
   const SkinModelShape hole_sms = ConicalVariationGenerator().Generate(
-      hole, ConicalDiscretizer().Discretize(hole, r), TextureMode::kExpected, rng);
+      hole, ConicalDiscretizer().Discretize(hole, r), texture, rng);
   analyzer->Prepare(pin, pin_sms, hole, hole_sms, settings);
 }
 
@@ -125,6 +129,36 @@ TEST(ConicalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
     ASSERT_EQ(a.pressure_resultant, b.pressure_resultant);
     ASSERT_EQ(a.max_interference, b.max_interference);
   }
+}
+
+// The assembly space (what the viewer draws) is exactly the pin's contact-free offsets: with sharp
+// contact, the scan touches nothing just inside the polygon and something just beyond each vertex.
+TEST(ConicalAssemblySpace, HoldsExactlyTheContactFreeOffsets) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    ConicalContactAnalyzer analyzer;
+    Prepare(&analyzer, seed, {20, 72}, TextureMode::kSampled);
+    for (const double depth : {2e-3, 9e-3, 17e-3}) {
+      MatingPose pose;
+      pose.depth = depth;
+      std::vector<Eigen::Vector2d> polygon;
+      ASSERT_TRUE(analyzer.AssemblySpace(pose, &polygon));
+      ASSERT_GE(polygon.size(), 3u) << "seed " << seed << " depth " << depth;
+      test_support::ExpectPolygonIsTheContactFreeSpace(
+          analyzer.scan(), pose, polygon,
+          "seed " + std::to_string(seed) + " depth " + std::to_string(depth));
+    }
+  }
+}
+
+// Before the pin's small end reaches the hole nothing is engaged: an empty polygon, described.
+TEST(ConicalAssemblySpace, IsEmptyBeforeEngagement) {
+  ConicalContactAnalyzer analyzer;
+  Prepare(&analyzer, 1);
+  MatingPose pose;
+  pose.depth = -1e-3;
+  std::vector<Eigen::Vector2d> polygon = {{1.0, 1.0}};
+  EXPECT_TRUE(analyzer.AssemblySpace(pose, &polygon));
+  EXPECT_TRUE(polygon.empty());
 }
 
 }  // namespace

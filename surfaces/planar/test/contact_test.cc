@@ -1,6 +1,7 @@
 // Planar contact analysis on synthetic skin model shapes with known tolerance spaces.
 #include <cmath>
 #include <functional>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -144,6 +145,52 @@ TEST(PlanarContactTest, SquareShaftHasARectangleAndInterferesPerAxis) {
   EXPECT_TRUE(s.interference);
   EXPECT_NEAR(s.interference_volume, 2 * 1e-6 * 18e-3 * 30e-3, 1e-20);
   EXPECT_NEAR(s.penetration, std::hypot(2e-6, 0.5e-6), 1e-17);
+}
+
+// What the viewer draws: the rectangle of free offsets, empty where an axis interferes.
+TEST(PlanarContactTest, AssemblySpaceIsTheRectangleOfFreeOffsets) {
+  PartSpec shaft = MakePart("shaft", Role::kInner, 20e-3, -21e-6, 0.0, 30e-3, 18e-3, 4);
+  PartSpec hole = MakePart("hole", Role::kOuter, 20e-3, 0.0, 21e-6, 30e-3, 18e-3, 4);
+  const auto s_out = Shape(hole, Resolution{12, 8}, [](int) { return 0.0; });
+  MatingPose pose;
+  pose.depth = 30e-3;
+  std::vector<Eigen::Vector2d> polygon;
+  {
+    // x faces clear by 3 um each side, z faces by 2 um.
+    const auto s_in = Shape(shaft, Resolution{12, 8}, [](int f) { return f < 2 ? -3e-6 : -2e-6; });
+    PlanarContactAnalyzer a;
+    a.Prepare(shaft, s_in, hole, s_out, ModelSettings{});
+    ASSERT_TRUE(a.AssemblySpace(pose, &polygon));
+    ASSERT_EQ(polygon.size(), 4u);
+    const Eigen::Vector2d corner[] = {{-3e-6, -2e-6}, {3e-6, -2e-6}, {3e-6, 2e-6}, {-3e-6, 2e-6}};
+    for (int i = 0; i < 4; ++i) EXPECT_LT((polygon[i] - corner[i]).norm(), 1e-18) << i;
+    pose.depth = -1e-3;
+    ASSERT_TRUE(a.AssemblySpace(pose, &polygon));
+    EXPECT_TRUE(polygon.empty()) << "not engaged yet";
+  }
+  {
+    // z faces interfere by 1 um: no free offset at all.
+    const auto s_in = Shape(shaft, Resolution{12, 8}, [](int f) { return f < 2 ? -3e-6 : 1e-6; });
+    PlanarContactAnalyzer a;
+    a.Prepare(shaft, s_in, hole, s_out, ModelSettings{});
+    pose.depth = 30e-3;
+    ASSERT_TRUE(a.AssemblySpace(pose, &polygon));
+    EXPECT_TRUE(polygon.empty());
+  }
+  {
+    // A key: its z is free, drawn as high as the x interval is wide.
+    Pair p;
+    const auto key = Shape(p.key, Resolution{10, 4}, [](int) { return -2e-6; });
+    const auto slot = Shape(p.slot, Resolution{10, 4}, [](int) { return 1e-6; });
+    PlanarContactAnalyzer a;
+    a.Prepare(p.key, key, p.slot, slot, ModelSettings{});
+    pose.depth = 40e-3;
+    ASSERT_TRUE(a.AssemblySpace(pose, &polygon));
+    ASSERT_EQ(polygon.size(), 4u);
+    EXPECT_NEAR(polygon[0].x(), -3e-6, 1e-18);
+    EXPECT_NEAR(polygon[2].x(), 3e-6, 1e-18);
+    EXPECT_NEAR(polygon[2].y() - polygon[0].y(), 6e-6, 1e-18);
+  }
 }
 
 TEST(PlanarContactTest, RefusesMismatchedStrips) {

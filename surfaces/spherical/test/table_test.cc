@@ -5,8 +5,11 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "framework/testing/assembly_space_check.h"
 
 #include "surfaces/spherical/spherical_contact_analyzer.h"
 #include "surfaces/spherical/spherical_discretizer.h"
@@ -119,6 +122,34 @@ TEST(SphericalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
     ASSERT_EQ(a.pressure_resultant, b.pressure_resultant);
     ASSERT_EQ(a.max_interference, b.max_interference);
   }
+}
+
+// The assembly space (what the viewer draws) is exactly the ball centre's contact-free offsets:
+// with sharp contact, the scan touches nothing just inside the polygon and something just beyond
+// each vertex; seeds whose ball interferes have an empty polygon and touch at the centre.
+TEST(SphericalAssemblySpace, HoldsExactlyTheContactFreeOffsets) {
+  int polygons = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    SphericalContactAnalyzer analyzer;
+    Prepare(&analyzer, seed, TextureMode::kSampled);
+    for (const double angle : {0.0, 0.3}) {
+      MatingPose pose;
+      pose.angle = angle;
+      std::vector<Eigen::Vector2d> polygon;
+      ASSERT_TRUE(analyzer.AssemblySpace(pose, &polygon));
+      ContactState contact;
+      if (polygon.empty()) {
+        analyzer.scan().Evaluate(pose, &contact);
+        EXPECT_GT(contact.interference_volume, 0.0) << "seed " << seed;
+        continue;
+      }
+      ++polygons;
+      test_support::ExpectPolygonIsTheContactFreeSpace(
+          analyzer.scan(), pose, polygon,
+          "seed " + std::to_string(seed) + " angle " + std::to_string(angle));
+    }
+  }
+  EXPECT_GT(polygons, 0) << "every seed interfered: the polygon was never checked";
 }
 
 }  // namespace

@@ -4,12 +4,12 @@
 #include <random>
 #include <vector>
 
-#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
+#include "framework/model/convex_polygon.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
 #include <gtest/gtest.h>
 
-namespace fitfeel::cylindrical {
+namespace fitfeel {
 namespace {
 
 using Poly = std::vector<Eigen::Vector2d>;
@@ -156,4 +156,4 @@ TEST(AssemblyPolygon, OppositeConstraintsThatCrossAreEmpty) {
 }
 
 }  // namespace
-}  // namespace fitfeel::cylindrical
+}  // namespace fitfeel

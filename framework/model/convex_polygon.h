@@ -4,7 +4,9 @@
 
 #include <Eigen/Core>
 
-namespace fitfeel::cylindrical {
+#include "framework/core/export.h"
+
+namespace fitfeel {
 
 // The assembly space of one insertion depth (paper section 3.1): all overlapping cross-sections
 // share the n direction angles beta_j, so the positions the moving axis may take form the convex
@@ -16,21 +18,21 @@ namespace fitfeel::cylindrical {
 // bounded when the normals do not surround the origin. Returns false when the intersection is
 // empty (interference); otherwise `vertices` holds it counter-clockwise (a single point may come
 // back as several coincident vertices).
-bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<double>& h,
+FITFEEL_API bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<double>& h,
                          double bound, std::vector<Eigen::Vector2d>* vertices);
 
 // Nearest point of the polygon to x (x itself when inside). O(vertices), no allocation.
-Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* vertices, int count,
+FITFEEL_API Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* vertices, int count,
                                    const Eigen::Vector2d& x) noexcept;
 
 // S_A(gamma): distance from the origin to the polygon's boundary along direction `direction`
 // (unit). Zero when the origin is not inside the polygon. O(vertices), no allocation.
-double RayExtent(const Eigen::Vector2d* vertices, int count,
+FITFEEL_API double RayExtent(const Eigen::Vector2d* vertices, int count,
                  const Eigen::Vector2d& direction) noexcept;
 
 // Area centroid (vertex mean for a degenerate polygon): a point inside that tends to the single
 // remaining point as the polygon shrinks, which keeps forces continuous at the clearance /
 // interference boundary.
-Eigen::Vector2d PolygonCentroid(const Eigen::Vector2d* vertices, int count) noexcept;
+FITFEEL_API Eigen::Vector2d PolygonCentroid(const Eigen::Vector2d* vertices, int count) noexcept;
 
-}  // namespace fitfeel::cylindrical
+}  // namespace fitfeel

@@ -1,11 +1,11 @@
-#include "surfaces/cylindrical/cylindrical_assembly_polygon.h"
+#include "framework/model/convex_polygon.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 
-namespace fitfeel::cylindrical {
+namespace fitfeel {
 namespace {
 
 struct Line {
@@ -152,4 +152,4 @@ Eigen::Vector2d PolygonCentroid(const Eigen::Vector2d* v, int count) noexcept {
   return mean + sum / (3.0 * area2);
 }
 
-}  // namespace fitfeel::cylindrical
+}  // namespace fitfeel
