@@ -6,6 +6,8 @@
 #include <system_error>
 #include <utility>
 
+#include <yaml-cpp/yaml.h>
+
 #include "framework/core/quantity_parse.h"
 
 namespace fitfeel {
@@ -40,20 +42,53 @@ std::string RangeText(Dimension dimension, double min, double max, bool min_incl
 
 }  // namespace
 
-ConfigNode::ConfigNode(YAML::Node node, std::string file, std::string path)
-    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+ConfigNode::ConfigNode(const YAML::Node& node, std::string file, std::string path)
+    : node_(std::make_shared<const YAML::Node>(node)),
+      file_(std::move(file)),
+      path_(std::move(path)) {}
 
-SourceLocation ConfigNode::location() const { return LocationOf(node_.Mark(), file_); }
+ConfigNode ConfigNode::Parse(std::string_view text, std::string file, std::string path) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(std::string(text));
+  } catch (const YAML::Exception& e) {
+    // yaml-cpp's own wording of the syntax error (e.g. "end of map not found") is what was found.
+    throw ScenarioError(LocationOf(e.mark, file), path, "valid YAML", e.msg);
+  }
+  if (documents.size() > 1) {
+    throw ScenarioError(LocationOf(documents[1].Mark(), file), path,
+                        "one scene per file (a single YAML document)", "a second document");
+  }
+  return ConfigNode(documents.empty() ? YAML::Node() : documents.front(), std::move(file),
+                    std::move(path));
+}
 
-bool ConfigNode::is_map() const { return node_.IsDefined() && node_.IsMap(); }
-bool ConfigNode::is_sequence() const { return node_.IsDefined() && node_.IsSequence(); }
-bool ConfigNode::is_scalar() const { return node_.IsDefined() && node_.IsScalar(); }
+const YAML::Node& ConfigNode::node() const { return *node_; }
+
+bool ConfigNode::is_null() const { return !node().IsDefined() || node().IsNull(); }
+
+SourceLocation ConfigNode::KeyLocation(std::string_view key) const {
+  if (is_map()) {
+    for (const auto& item : node()) {
+      if (item.first.IsScalar() && item.first.Scalar() == key) {
+        return LocationOf(item.first.Mark(), file_);
+      }
+    }
+  }
+  return location();
+}
+
+SourceLocation ConfigNode::location() const { return LocationOf(node().Mark(), file_); }
+
+bool ConfigNode::is_map() const { return node().IsDefined() && node().IsMap(); }
+bool ConfigNode::is_sequence() const { return node().IsDefined() && node().IsSequence(); }
+bool ConfigNode::is_scalar() const { return node().IsDefined() && node().IsScalar(); }
 
 std::string ConfigNode::Describe() const {
-  if (!node_.IsDefined() || node_.IsNull()) return "nothing";
-  if (node_.IsMap()) return "a map";
-  if (node_.IsSequence()) return "a list";
-  return "'" + node_.Scalar() + "'";
+  if (!node().IsDefined() || node().IsNull()) return "nothing";
+  if (node().IsMap()) return "a map";
+  if (node().IsSequence()) return "a list";
+  return "'" + node().Scalar() + "'";
 }
 
 void ConfigNode::Fail(const std::string& expected, const std::string& found) const {
@@ -64,7 +99,7 @@ std::vector<std::string> ConfigNode::Keys() const {
   if (!is_map()) Fail("a map", Describe());
   std::vector<std::string> keys;
   std::set<std::string> seen;
-  for (const auto& item : node_) {
+  for (const auto& item : node()) {
     const YAML::Node& key = item.first;
     if (!key.IsScalar()) {
       throw ScenarioError(LocationOf(key.Mark(), file_), path_, "a plain key (a name)",
@@ -83,7 +118,7 @@ std::vector<std::string> ConfigNode::Keys() const {
 
 bool ConfigNode::Has(std::string_view key) const {
   if (!is_map()) return false;
-  for (const auto& item : node_) {
+  for (const auto& item : node()) {
     if (item.first.IsScalar() && item.first.Scalar() == key) return true;
   }
   return false;
@@ -91,7 +126,7 @@ bool ConfigNode::Has(std::string_view key) const {
 
 void ConfigNode::ExpectOnlyKeys(const std::vector<std::string_view>& allowed) const {
   Keys();  // map, plain keys, no repeats
-  for (const auto& item : node_) {
+  for (const auto& item : node()) {
     const std::string& key = item.first.Scalar();
     bool known = false;
     for (std::string_view a : allowed) known = known || a == key;
@@ -105,7 +140,7 @@ void ConfigNode::ExpectOnlyKeys(const std::vector<std::string_view>& allowed) co
 
 std::optional<ConfigNode> ConfigNode::Find(std::string_view key) const {
   if (!is_map()) Fail("a map", Describe());
-  for (const auto& item : node_) {
+  for (const auto& item : node()) {
     if (item.first.IsScalar() && item.first.Scalar() == key) {
       return ConfigNode(item.second, file_, JoinPath(path_, key));
     }
@@ -118,7 +153,7 @@ ConfigNode ConfigNode::Child(std::string_view key) const {
   if (!child) {
     // Reported where the enclosing map starts: that is where the key has to be added.
     std::string present;
-    for (const auto& item : node_) {
+    for (const auto& item : node()) {
       if (item.first.IsScalar()) present += (present.empty() ? "" : ", ") + item.first.Scalar();
     }
     throw ScenarioError(location(), JoinPath(path_, key),
@@ -131,20 +166,20 @@ ConfigNode ConfigNode::Child(std::string_view key) const {
 std::vector<ConfigNode> ConfigNode::Items() const {
   if (!is_sequence()) Fail("a list", Describe());
   std::vector<ConfigNode> items;
-  for (std::size_t i = 0; i < node_.size(); ++i) {
-    items.emplace_back(node_[i], file_, path_ + "[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < node().size(); ++i) {
+    items.emplace_back(node()[i], file_, path_ + "[" + std::to_string(i) + "]");
   }
   return items;
 }
 
 std::string ConfigNode::AsString() const {
   if (!is_scalar()) Fail("a text value", Describe());
-  return node_.Scalar();
+  return node().Scalar();
 }
 
 double ConfigNode::AsQuantity(Dimension dimension) const {
   if (!is_scalar()) Fail(DescribeDimension(dimension), Describe());
-  internal::QuantityParse parsed = internal::TryParseQuantity(node_.Scalar(), dimension);
+  internal::QuantityParse parsed = internal::TryParseQuantity(node().Scalar(), dimension);
   if (!parsed.problem.empty()) Fail(DescribeDimension(dimension), parsed.problem);
   return parsed.value;
 }
@@ -163,7 +198,7 @@ double ConfigNode::AsQuantityIn(Dimension dimension, double min, double max,
 long ConfigNode::AsInteger(long min, long max) const {
   const std::string expected = DescribeIntegerRange(min, max);
   if (!is_scalar()) Fail(expected, Describe());
-  const std::string& text = node_.Scalar();
+  const std::string& text = node().Scalar();
   const std::optional<long> value = ParseInteger(text, min, max);
   if (!value) {
     long ignored = 0;
@@ -179,14 +214,14 @@ long ConfigNode::AsInteger(long min, long max) const {
 bool ConfigNode::AsBool() const {
   if (!is_scalar()) Fail("true or false", Describe());
   bool value = false;
-  if (!YAML::convert<bool>::decode(node_, value)) Fail("true or false", Describe());
+  if (!YAML::convert<bool>::decode(node(), value)) Fail("true or false", Describe());
   return value;
 }
 
 std::string ConfigNode::AsOneOf(const std::vector<std::string_view>& choices) const {
   const std::string expected = "one of " + Join(choices);
   if (!is_scalar()) Fail(expected, Describe());
-  const std::string& text = node_.Scalar();
+  const std::string& text = node().Scalar();
   for (std::string_view choice : choices) {
     if (choice == text) return text;
   }

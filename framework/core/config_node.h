@@ -7,11 +7,13 @@
 #include <string_view>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "framework/core/error.h"
 #include "framework/core/export.h"
 #include "framework/core/quantity.h"
+
+namespace YAML {
+class Node;
+}  // namespace YAML
 
 namespace fitfeel {
 
@@ -19,9 +21,15 @@ namespace fitfeel {
 // key path) so that every check a framework or plugin makes on it fails with the same precise
 // message: "file:line:column: key.path: expected ..., found ...". Plugins validate their own keys
 // through it, so adding a surface type needs no change to the scenario parser.
+//
+// yaml-cpp stays behind this class (only the scenario loader and this file include it), so the
+// model, plugin and installed headers that pass ConfigNode around do not depend on it.
 class FITFEEL_API ConfigNode {
  public:
-  ConfigNode(YAML::Node node, std::string file, std::string path);
+  ConfigNode(const YAML::Node& node, std::string file, std::string path);
+  // Parses one YAML document from `text` (a scene, or a fragment in a test): the root node, its
+  // positions reported in `file`. Syntax errors and a second document throw ScenarioError there.
+  static ConfigNode Parse(std::string_view text, std::string file, std::string path = "");
 
   const std::string& path() const { return path_; }
   const std::string& file() const { return file_; }
@@ -29,7 +37,9 @@ class FITFEEL_API ConfigNode {
   bool is_map() const;
   bool is_sequence() const;
   bool is_scalar() const;
-  const YAML::Node& yaml() const { return node_; }
+  bool is_null() const;  // absent or written as null / nothing
+  // Where `key` of this map is written (its key, not its value); this node's location if absent.
+  SourceLocation KeyLocation(std::string_view key) const;
 
   // Keys of a map in file order; fails unless this is a map.
   std::vector<std::string> Keys() const;
@@ -69,7 +79,9 @@ class FITFEEL_API ConfigNode {
   std::string Describe() const;
 
  private:
-  YAML::Node node_;
+  const YAML::Node& node() const;
+
+  std::shared_ptr<const YAML::Node> node_;
   std::string file_;
   std::string path_;
 };

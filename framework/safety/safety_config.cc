@@ -8,7 +8,7 @@ namespace fitfeel {
 SafetySettings ParseSafetySettings(const ConfigNode& node) {
   SafetySettings settings;
   if (!node.is_map()) {
-    if (node.yaml().IsNull()) return settings;
+    if (node.is_null()) return settings;
     node.Fail("a map of safety settings", node.Describe());
   }
   node.ExpectOnlyKeys({"force_scale", "physical_full_scale", "continuous_window", "coupling",

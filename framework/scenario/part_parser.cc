@@ -103,9 +103,7 @@ FormSpec ParseForm(const ConfigNode& node, const SurfaceType& surface,
   const std::string expected = "a form characteristic that " + surface_id + " models (" +
                                (names.empty() ? "none" : names) + ")";
   FormSpec form;
-  node.Keys();  // a map of plain keys, none repeated
-  for (const auto& item : node.yaml()) {
-    const std::string key = item.first.Scalar();
+  for (const std::string& key : node.Keys()) {  // a map of plain keys, none repeated
     const FormCharacteristic* match = nullptr;
     for (const FormCharacteristic& c : supported) {
       if (ToString(c) == key) match = &c;
@@ -116,15 +114,13 @@ FormSpec ParseForm(const ConfigNode& node, const SurfaceType& surface,
         known = known || ToString(static_cast<FormCharacteristic>(i)) == key;
       }
       // Reported at the key, like every other unknown key.
-      const YAML::Mark mark = item.first.Mark();
-      throw ScenarioError({node.file(), mark.line + 1, mark.column + 1}, node.path() + "." + key,
+      throw ScenarioError(node.KeyLocation(key), node.path() + "." + key,
                           expected,
                           known ? "'" + key + "', which this surface type does not model"
                                 : "unknown key '" + key + "'");
     }
     // A form deviation as large as the part itself describes no real part.
-    const ConfigNode value(item.second, node.file(), node.path() + "." + key);
-    form.tolerance[*match] = value.AsQuantityIn(Dimension::kLength, 0.0, nominal);
+    form.tolerance[*match] = node.Child(key).AsQuantityIn(Dimension::kLength, 0.0, nominal);
   }
   return form;
 }

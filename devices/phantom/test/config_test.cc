@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "devices/phantom/phantom_device.h"
 #include "framework/core/error.h"
@@ -8,7 +7,7 @@ namespace fitfeel::phantom {
 namespace {
 
 ConfigNode Node(const std::string& text) {
-  return ConfigNode(YAML::Load(text), "scene.yaml", "device");
+  return ConfigNode::Parse(text, "scene.yaml", "device");
 }
 
 TEST(PhantomConfig, ModelAndSpecOverrides) {

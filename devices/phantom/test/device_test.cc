@@ -216,7 +216,7 @@ TEST_F(PhantomTest, SpecComesFromTheDriverModelAndItsNominalLimits) {
 
 TEST_F(PhantomTest, AMeasuredDampingIsKept) {
   PhantomDevice device;
-  device.Configure(ConfigNode(YAML::Load("{model: Touch, spec: {damping: 0.6 N*s/m}}"),
+  device.Configure(ConfigNode::Parse("{model: Touch, spec: {damping: 0.6 N*s/m}}",
                               "scene.yaml", "device"));
   ASSERT_EQ(StartError(device), "");
   EXPECT_DOUBLE_EQ(device.spec().damping, 0.6);

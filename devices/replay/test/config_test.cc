@@ -1,7 +1,6 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "devices/replay/replay_device.h"
 #include "framework/core/error.h"
@@ -19,19 +18,19 @@ TEST(ReplayConfig, ParsesKeysAndResolvesTheFileBesideTheScenario) {
   WriteRecording(dir / "hand.rec", {"Touch"}, samples);
   const std::string scene = (dir / "scene.yaml").string();
   ReplayDevice device;
-  device.Configure(ConfigNode(
-      YAML::Load("{plugin: fitfeel.device.replay, file: hand.rec, speed: 0.5, start: 1 ms,"
-                 " loop: true, spec: {max_force: 2 N}}"),
-      scene, "device"));
+  device.Configure(
+      ConfigNode::Parse("{plugin: fitfeel.device.replay, file: hand.rec, speed: 0.5, start: 1 ms,"
+                        " loop: true, spec: {max_force: 2 N}}",
+                        scene, "device"));
   EXPECT_EQ(device.spec().model, "Touch");
   EXPECT_DOUBLE_EQ(device.spec().max_force, 2.0);
-  EXPECT_THROW(device.Configure(ConfigNode(YAML::Load("{file: nope.rec}"), scene, "device")),
+  EXPECT_THROW(device.Configure(ConfigNode::Parse("{file: nope.rec}", scene, "device")),
                ScenarioError);
   EXPECT_THROW(
-      device.Configure(ConfigNode(YAML::Load("{file: hand.rec, speed: -1}"), scene, "device")),
+      device.Configure(ConfigNode::Parse("{file: hand.rec, speed: -1}", scene, "device")),
       ScenarioError);
   EXPECT_THROW(
-      device.Configure(ConfigNode(YAML::Load("{file: hand.rec, colour: red}"), scene, "device")),
+      device.Configure(ConfigNode::Parse("{file: hand.rec, colour: red}", scene, "device")),
       ScenarioError);
   fs::remove_all(dir);
 }

@@ -1,7 +1,6 @@
 #include <cmath>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
 
 #include "devices/simulated/simulated_device.h"
 #include "framework/core/config_node.h"
@@ -13,7 +12,7 @@ namespace fitfeel::simulated {
 namespace {
 
 ConfigNode Node(const std::string& yaml) {
-  return ConfigNode(YAML::Load(yaml), "scene.yaml", "device");
+  return ConfigNode::Parse(yaml, "scene.yaml", "device");
 }
 
 std::string ErrorOf(const std::string& yaml) {

@@ -12,7 +12,7 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-ConfigNode Load(const std::string& text) { return ConfigNode(YAML::Load(text), "s.yaml", ""); }
+ConfigNode Load(const std::string& text) { return ConfigNode::Parse(text, "s.yaml", ""); }
 
 // Runs `body` and returns the ScenarioError it throws; fails the test if it does not throw one.
 template <typename Body>

@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
@@ -8,7 +7,7 @@ namespace fitfeel {
 namespace {
 
 ConfigNode Node(const std::string& text) {
-  return ConfigNode(YAML::Load(text), "scene.yaml", "device.spec");
+  return ConfigNode::Parse(text, "scene.yaml", "device.spec");
 }
 
 TEST(DeviceSpecConfig, OverridesAnyField) {

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstring>
 
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
@@ -24,7 +23,7 @@ bool SameBits(const Wrench& a, const Wrench& b) {
          std::memcmp(a.torque.data(), b.torque.data(), 3 * sizeof(double)) == 0;
 }
 
-ConfigNode Yaml(const std::string& text) { return ConfigNode(YAML::Load(text), "test", "safety"); }
+ConfigNode Yaml(const std::string& text) { return ConfigNode::Parse(text, "test", "safety"); }
 
 // The fake scene's part pressed radially past the clearance: a contact with force from entry on.
 struct PressedRun {

@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
@@ -9,7 +8,7 @@ namespace fitfeel {
 namespace {
 
 ConfigNode Node(const std::string& text) {
-  return ConfigNode(YAML::Load(text), "scene.yaml", "safety");
+  return ConfigNode::Parse(text, "scene.yaml", "safety");
 }
 
 TEST(SafetyConfig, ParsesEveryKey) {

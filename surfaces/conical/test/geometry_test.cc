@@ -2,7 +2,6 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "surfaces/conical/conical_discretizer.h"
@@ -14,7 +13,7 @@ namespace fitfeel::conical {
 namespace {
 
 ConfigNode Node(const std::string& text) {
-  return ConfigNode(YAML::Load(text), "test.yaml", "parts.p.geometry");
+  return ConfigNode::Parse(text, "test.yaml", "parts.p.geometry");
 }
 
 TEST(ConicalGeometry, FrustumAreaAndDiameters) {
@@ -87,9 +86,9 @@ namespace fitfeel::conical {
 namespace {
 
 TEST(ConicalSurface, CheckPairRefusesAnotherTaperOrSize) {
-  const ConfigNode parts(YAML::Load("{pin: {size: 8 mm h10, geometry: {length: 40 mm, taper: "
+  const ConfigNode parts = ConfigNode::Parse("{pin: {size: 8 mm h10, geometry: {length: 40 mm, taper: "
                                     "'1:50'}}, hole: {size: 10 mm H10, geometry: {length: 20 mm, "
-                                    "taper: '1:48', outer_diameter: 24 mm}}}"),
+                                    "taper: '1:48', outer_diameter: 24 mm}}}",
                          "test.yaml", "parts");
   const ConicalSurface surface;
   const PartSpec pin = test::Pin();

@@ -13,7 +13,7 @@ namespace fitfeel::cylindrical {
 namespace {
 
 ConfigNode Node(const std::string& yaml, const std::string& path = "parts.p.geometry") {
-  return ConfigNode(YAML::Load(yaml), "scene.yaml", path);
+  return ConfigNode::Parse(yaml, "scene.yaml", path);
 }
 
 PartSpec Spec(Role role, double d) {

@@ -138,7 +138,7 @@ TEST(ElasticLaw, TiltedBoreWithinTheClearanceCarriesNothing) {
       EXPECT_NEAR(p.analyzer.tilt(static_cast<int>(std::lround(30e-3 / p.analyzer.depth_step()))).x(), phi, 0.3 * phi);
       // Held straight, the same part is pressed at both ends of the bore.
       ModelSettings fixed = free;
-      fixed.extra = ConfigNode(YAML::Load("{tilt: fixed}"), "test", "model.options");
+      fixed.extra = ConfigNode::Parse("{tilt: fixed}", "test", "model.options");
       Pair held(shaft, bore, fixed);
       EXPECT_GT(At(held.analyzer, held.law, 30e-3, AnchorNear(held.analyzer, 30e-3)).state.normal_force,
                 10.0);

@@ -3,7 +3,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "surfaces/planar/planar_geometry.h"
@@ -16,7 +15,7 @@ namespace {
 using testing::MakePart;
 
 ConfigNode Node(const std::string& yaml, const std::string& path = "parts.key.geometry") {
-  return ConfigNode(YAML::Load(yaml), "key.yaml", path);
+  return ConfigNode::Parse(yaml, "key.yaml", path);
 }
 
 TEST(PlanarGeometryTest, ParsesAKeyAndASquare) {

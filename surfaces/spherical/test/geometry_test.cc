@@ -2,7 +2,6 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "surfaces/spherical/spherical_discretizer.h"
@@ -14,7 +13,7 @@ namespace fitfeel::spherical {
 namespace {
 
 ConfigNode Node(const std::string& text) {
-  return ConfigNode(YAML::Load(text), "test.yaml", "parts.p.geometry");
+  return ConfigNode::Parse(text, "test.yaml", "parts.p.geometry");
 }
 
 TEST(SphericalGeometry, BandAreaIsTwoPiAB) {
@@ -90,9 +89,9 @@ namespace fitfeel::spherical {
 namespace {
 
 TEST(SphericalSurface, CheckPairRefusesAnotherSphereOrANarrowBall) {
-  const ConfigNode parts(YAML::Load("{ball: {size: 20 mm h7, geometry: {width: 8 mm}}, socket: "
+  const ConfigNode parts = ConfigNode::Parse("{ball: {size: 20 mm h7, geometry: {width: 8 mm}}, socket: "
                                     "{size: 22 mm H7, geometry: {width: 10 mm, outer_diameter: "
-                                    "30 mm}}}"),
+                                    "30 mm}}}",
                          "test.yaml", "parts");
   const SphericalSurface surface;
   EXPECT_TRUE(surface.rotational());

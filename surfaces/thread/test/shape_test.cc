@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "surfaces/thread/thread_geometry.h"
@@ -71,7 +70,7 @@ TEST(HelicoidGeometryTest, NormalsAreUnitAndNormalToTheHelicoid) {
 }
 
 ConfigNode Node(const std::string& yaml) {
-  return ConfigNode(YAML::Load(yaml), "thread.yaml", "parts.bolt.geometry");
+  return ConfigNode::Parse(yaml, "thread.yaml", "parts.bolt.geometry");
 }
 
 TEST(HelicoidGeometryTest, ParsesUnitsAndRefusesWhatNoThreadIs) {

@@ -4,7 +4,6 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <yaml-cpp/yaml.h>
 
 #include "framework/core/error.h"
 #include "tests/example_slide/example_slide_contact_analyzer.h"
@@ -162,7 +161,7 @@ TEST(SlideSurface, GridCoversBothFlanks) {
 }
 
 ConfigNode Node(const std::string& text) {
-  return ConfigNode(YAML::Load(text), "test.yaml", "parts.p.geometry");
+  return ConfigNode::Parse(text, "test.yaml", "parts.p.geometry");
 }
 
 TEST(SlideSurface, GeometryErrorsPointAtTheirKey) {
