@@ -119,6 +119,7 @@ TYPED_TEST_P(SurfaceConformance, ZeroTolerancesGiveZeroVariation) {
     p.size.lower_deviation = 0.0;
     p.size.upper_deviation = 0.0;
     for (auto& [characteristic, tolerance] : p.form.tolerance) tolerance = 0.0;
+    for (auto& [name, tolerance] : p.form.declared) tolerance = 0.0;
     p.texture = TextureSpec{};
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       const SkinModelShape sms = this->Generate(p, seed);

@@ -40,9 +40,17 @@ FITFEEL_API std::string ToString(FormCharacteristic characteristic);
 // Tolerance zone widths in metres, one per characteristic given.
 struct FormSpec {
   std::map<FormCharacteristic, double> tolerance;
+  // Characteristics a surface type declares beyond ISO 1101's (SurfaceType::
+  // declared_characteristics, e.g. a thread's pitch deviation), by name, in SI units; zero when
+  // the scenario does not give them.
+  std::map<std::string, double> declared;
   double Get(FormCharacteristic c) const {
     auto it = tolerance.find(c);
     return it == tolerance.end() ? 0.0 : it->second;
+  }
+  double Declared(const std::string& name) const {
+    auto it = declared.find(name);
+    return it == declared.end() ? 0.0 : it->second;
   }
 };
 

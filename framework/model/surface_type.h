@@ -47,6 +47,16 @@ class FITFEEL_API SurfaceType {
 
   // Form characteristics this surface type models; others in a scenario are refused.
   virtual std::vector<FormCharacteristic> form_characteristics() const = 0;
+  // Tolerance characteristics of its own that the surface type reads from a part's `form:` map
+  // beside the ISO 1101 ones (into FormSpec::declared): a zone limit in [0, max] with its
+  // dimension. Limits that depend on the geometry are the surface type's to check in
+  // ParseGeometry.
+  struct DeclaredCharacteristic {
+    std::string name;
+    Dimension dimension;
+    double max;
+  };
+  virtual std::vector<DeclaredCharacteristic> declared_characteristics() const { return {}; }
   // Law names this surface offers; the first is the default.
   virtual std::vector<std::string> law_names() const = 0;
   // False for a surface type that can be discretised but has no resistance law yet (thread stub);

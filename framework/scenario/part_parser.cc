@@ -98,8 +98,11 @@ SizeSpec ParseExplicitSize(const ConfigNode& node) {
 FormSpec ParseForm(const ConfigNode& node, const SurfaceType& surface,
                    const std::string& surface_id, double nominal) {
   const std::vector<FormCharacteristic> supported = surface.form_characteristics();
+  const std::vector<SurfaceType::DeclaredCharacteristic> declared =
+      surface.declared_characteristics();
   std::string names;
   for (FormCharacteristic c : supported) names += (names.empty() ? "" : ", ") + ToString(c);
+  for (const auto& d : declared) names += (names.empty() ? "" : ", ") + d.name;
   const std::string expected = "a form characteristic that " + surface_id + " models (" +
                                (names.empty() ? "none" : names) + ")";
   FormSpec form;
@@ -107,6 +110,14 @@ FormSpec ParseForm(const ConfigNode& node, const SurfaceType& surface,
     const FormCharacteristic* match = nullptr;
     for (const FormCharacteristic& c : supported) {
       if (ToString(c) == key) match = &c;
+    }
+    const SurfaceType::DeclaredCharacteristic* own = nullptr;
+    for (const auto& d : declared) {
+      if (d.name == key) own = &d;
+    }
+    if (own != nullptr) {
+      form.declared[key] = node.Child(key).AsQuantityIn(own->dimension, 0.0, own->max);
+      continue;
     }
     if (match == nullptr) {
       bool known = false;

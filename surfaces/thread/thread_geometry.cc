@@ -9,14 +9,12 @@
 namespace fitfeel::thread {
 
 HelicoidGeometry::HelicoidGeometry(Role role, double diameter, double pitch, double flank_angle,
-                                   double length, double pitch_error, double flank_angle_error)
+                                   double length)
     : role_(role),
       diameter_(diameter),
       pitch_(pitch),
       flank_angle_(flank_angle),
-      length_(length),
-      pitch_error_(pitch_error),
-      flank_angle_error_(flank_angle_error) {}
+      length_(length) {}
 
 double HelicoidGeometry::triangle_height() const { return pitch_ / (2.0 * std::tan(half_angle())); }
 double HelicoidGeometry::inner_radius() const {
@@ -48,11 +46,9 @@ std::string HelicoidGeometry::Describe() const {
 std::shared_ptr<const HelicoidGeometry> ParseHelicoidGeometry(const PartSpec& part,
                                                               const ConfigNode& node) {
   if (!node.is_map()) {
-    node.Fail("a map {pitch, flank_angle, length, pitch_error, flank_angle_error}",
-              node.Describe());
+    node.Fail("a map {pitch, flank_angle, length}", node.Describe());
   }
-  node.ExpectOnlyKeys(
-      {"nominal_diameter", "pitch", "flank_angle", "length", "pitch_error", "flank_angle_error"});
+  node.ExpectOnlyKeys({"nominal_diameter", "pitch", "flank_angle", "length"});
   const double d = part.size.nominal;
   if (std::optional<ConfigNode> nominal = node.Find("nominal_diameter")) {
     const double given = nominal->AsQuantity(Dimension::kLength);
@@ -70,13 +66,15 @@ std::shared_ptr<const HelicoidGeometry> ParseHelicoidGeometry(const PartSpec& pa
       node.Child("flank_angle").AsQuantityIn(Dimension::kAngle, 20.0 * kDeg, 120.0 * kDeg);
   // At least one turn; beyond 100 diameters no thread is engaged at once.
   const double length = node.QuantityIn("length", Dimension::kLength, pitch, 100.0 * d);
-  // A pitch deviation above a tenth of the pitch, or a half-angle deviation above 5 deg, is a
-  // different thread, not a deviation of this one.
-  const double pitch_error = node.QuantityIn("pitch_error", Dimension::kLength, 0.0, 0.1 * pitch);
-  const double angle_error =
-      node.Child("flank_angle_error").AsQuantityIn(Dimension::kAngle, 0.0, 5.0 * kDeg);
-  return std::make_shared<HelicoidGeometry>(part.role, d, pitch, angle, length, pitch_error,
-                                            angle_error);
+  // The deviation limits are the part's `form:` (ThreadSurface::declared_characteristics). A
+  // pitch deviation above a tenth of the pitch is a different thread, not a deviation of this one.
+  const double pitch_error = part.form.Declared("pitch_error");
+  if (pitch_error > 0.1 * pitch) {
+    node.Child("pitch").Fail("a pitch at least 10 times the form's pitch_error (" +
+                                 FormatQuantity(pitch_error, Dimension::kLength) + ")",
+                             node.Child("pitch").Describe());
+  }
+  return std::make_shared<HelicoidGeometry>(part.role, d, pitch, angle, length);
 }
 
 const HelicoidGeometry& HelicoidGeometryOf(const PartSpec& part) {

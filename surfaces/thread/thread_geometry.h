@@ -24,16 +24,13 @@ namespace fitfeel::thread {
 // a = sqrt(1 + k^2); the two flanks together have twice that.
 class HelicoidGeometry final : public Geometry {
  public:
-  HelicoidGeometry(Role role, double diameter, double pitch, double flank_angle, double length,
-                   double pitch_error, double flank_angle_error);
+  HelicoidGeometry(Role role, double diameter, double pitch, double flank_angle, double length);
 
   Role role() const { return role_; }
   double diameter() const { return diameter_; }
   double pitch() const { return pitch_; }
   double flank_angle() const { return flank_angle_; }
   double length() const { return length_; }
-  double pitch_error() const { return pitch_error_; }              // limit of |delta P|, m
-  double flank_angle_error() const { return flank_angle_error_; }  // limit of |delta half-angle|
   double turns() const { return length_ / pitch_; }
   double half_angle() const { return 0.5 * flank_angle_; }
   double triangle_height() const;  // H
@@ -50,11 +47,12 @@ class HelicoidGeometry final : public Geometry {
 
  private:
   Role role_;
-  double diameter_, pitch_, flank_angle_, length_, pitch_error_, flank_angle_error_;
+  double diameter_, pitch_, flank_angle_, length_;
 };
 
-// Parses {pitch, flank_angle, length, pitch_error, flank_angle_error, nominal_diameter
-// (optional; must equal the part's nominal size)}; every value carries its unit.
+// Parses {pitch, flank_angle, length, nominal_diameter (optional; must equal the part's nominal
+// size)}; every value carries its unit. The deviation limits are the part's form (pitch_error,
+// flank_angle_error); the pitch must be at least ten times pitch_error.
 std::shared_ptr<const HelicoidGeometry> ParseHelicoidGeometry(const PartSpec& part,
                                                               const ConfigNode& node);
 

@@ -97,9 +97,11 @@ SkinModelShape HelicoidVariationGenerator::DoGenerate(const PartSpec& part, cons
   };
   const double beta = g.half_angle();
   const double d2_deviation = uniform(part.size.lower_deviation, part.size.upper_deviation);
-  const double pitch_deviation = uniform(-g.pitch_error(), g.pitch_error());
-  const double flank_a = uniform(-g.flank_angle_error(), g.flank_angle_error());
-  const double flank_b = uniform(-g.flank_angle_error(), g.flank_angle_error());
+  const double pitch_error = part.form.Declared("pitch_error");
+  const double angle_error = part.form.Declared("flank_angle_error");
+  const double pitch_deviation = uniform(-pitch_error, pitch_error);
+  const double flank_a = uniform(-angle_error, angle_error);
+  const double flank_b = uniform(-angle_error, angle_error);
   const double c = g.pitch() / (2.0 * kPi);
   const double rp = g.pitch_radius();
 
@@ -166,10 +168,11 @@ std::vector<CharacteristicCheck> EvaluateHelicoidCharacteristics(const PartSpec&
   auto across_flank = [&](double turn) {
     return -(std::tan(beta + turn) - std::tan(beta)) * std::cos(beta) * height;
   };
-  const double e = g.flank_angle_error();
+  const double e = part.form.Declared("flank_angle_error");
+  const double pitch_error = part.form.Declared("pitch_error");
   return {
       {"pitch_diameter", d2_actual, d2 + part.size.lower_deviation, d2 + part.size.upper_deviation},
-      {"pitch_deviation", pitch_deviation, -g.pitch_error(), g.pitch_error()},
+      {"pitch_deviation", pitch_deviation, -pitch_error, pitch_error},
       {"flank_angle_deviation_a", slope_r[0] * height, across_flank(e), across_flank(-e)},
       {"flank_angle_deviation_b", slope_r[1] * height, across_flank(e), across_flank(-e)},
   };

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <limits>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +23,13 @@ inline constexpr const char* kLimitation =
 class ThreadSurface final : public SurfaceType {
  public:
   std::vector<FormCharacteristic> form_characteristics() const override { return {}; }
+  // The limits of the pitch deviation and of each flank's half-angle deviation; a half-angle
+  // deviation above 5 deg is another thread, not a deviation of this one (the pitch deviation's
+  // limit, P/10, depends on the geometry and is checked there).
+  std::vector<DeclaredCharacteristic> declared_characteristics() const override {
+    return {{"pitch_error", Dimension::kLength, std::numeric_limits<double>::infinity()},
+            {"flank_angle_error", Dimension::kAngle, 5.0 * std::numbers::pi / 180.0}};
+  }
   std::vector<std::string> law_names() const override { return {}; }
   bool renders_forces() const override { return false; }
   std::string limitation() const override { return kLimitation; }

@@ -53,7 +53,8 @@ TEST(TickPublisher, AFullRingDropsAndCountsWithoutAllocating) {
 TEST(TickPublisher, AConcurrentReaderSeesIncreasingTicks) {
   TickPublisher publisher(16);
   std::atomic<bool> done{false};
-  std::uint64_t last = 0, seen = 0;
+  std::uint64_t last = 0;
+  std::atomic<std::uint64_t> seen{0};
   bool ordered = true;
   std::thread reader([&] {
     ViewSample s;
@@ -65,7 +66,9 @@ TEST(TickPublisher, AConcurrentReaderSeesIncreasingTicks) {
       }
     }
   });
-  for (int k = 0; k < 200000; ++k) publisher.OnTick(Record(k));
+  // On a loaded machine the reader may not be scheduled before 200 000 ticks are published: the
+  // ticks go on (still increasing) until it has read a few.
+  for (int k = 0; k < 200000 || seen.load() < 10; ++k) publisher.OnTick(Record(k));
   done = true;
   reader.join();
   EXPECT_TRUE(ordered);

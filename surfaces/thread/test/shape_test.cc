@@ -24,8 +24,8 @@ PartSpec Bolt(double pitch_error = 0.0, double angle_error = 0.0) {
   p.role = Role::kInner;
   p.size = {10e-3, -144e-6, -32e-6, ""};
   p.material = {"steel", 210e9, 0.3};
-  p.geometry = std::make_shared<HelicoidGeometry>(Role::kInner, 10e-3, 1.5e-3, 60 * kDeg, 15e-3,
-                                                  pitch_error, angle_error);
+  p.form.declared = {{"pitch_error", pitch_error}, {"flank_angle_error", angle_error}};
+  p.geometry = std::make_shared<HelicoidGeometry>(Role::kInner, 10e-3, 1.5e-3, 60 * kDeg, 15e-3);
   return p;
 }
 
@@ -74,30 +74,32 @@ ConfigNode Node(const std::string& yaml) {
 }
 
 TEST(HelicoidGeometryTest, ParsesUnitsAndRefusesWhatNoThreadIs) {
-  const PartSpec bolt = Bolt();
+  const PartSpec bolt = Bolt(5e-6, 0.01);
   const auto g = ParseHelicoidGeometry(
-      bolt, Node("{nominal_diameter: 10 mm, pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, "
-                 "pitch_error: 5 um, flank_angle_error: 10 mrad}"));
+      bolt, Node("{nominal_diameter: 10 mm, pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm}"));
   EXPECT_DOUBLE_EQ(g->pitch(), 1.5e-3);
   EXPECT_DOUBLE_EQ(g->flank_angle(), 60 * kDeg);
-  EXPECT_DOUBLE_EQ(g->pitch_error(), 5e-6);
-  EXPECT_DOUBLE_EQ(g->flank_angle_error(), 0.01);
-  const std::string ok_rest = "length: 15 mm, pitch_error: 5 um, flank_angle_error: 0.5 deg}";
+  const std::string ok_rest = "length: 15 mm}";
   for (const std::string& bad : std::vector<std::string>{
            "{pitch: 1.5, flank_angle: 60 deg, " + ok_rest,      // no unit
            "{pitch: 4 mm, flank_angle: 60 deg, " + ok_rest,     // pitch above d/3
            "{pitch: 1.5 mm, flank_angle: 60, " + ok_rest,       // no unit on the angle
            "{pitch: 1.5 mm, flank_angle: 150 deg, " + ok_rest,  // no such thread
-           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 1 mm, pitch_error: 5 um, "
-           "flank_angle_error: 0.5 deg}",  // less than a turn
-           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, pitch_error: 0.2 mm, "
-           "flank_angle_error: 0.5 deg}",  // not a deviation
-           "{pitch: 1.5 mm, flank_angle: 60 deg, " + ok_rest.substr(0, ok_rest.size() - 1) +
-               ", lead: 3 mm}",  // unknown key
+           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 1 mm}",  // less than a turn
+           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, lead: 3 mm}",  // unknown key
+           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, pitch_error: 5 um}",  // form's
            "{nominal_diameter: 12 mm, pitch: 1.5 mm, flank_angle: 60 deg, " + ok_rest,
-           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm}",  // missing errors
+           "{pitch: 1.5 mm, flank_angle: 60 deg}",  // no length
        }) {
     EXPECT_THROW(ParseHelicoidGeometry(bolt, Node(bad)), ScenarioError) << bad;
+  }
+  // A pitch deviation above a tenth of the pitch is another thread: refused at the pitch.
+  try {
+    ParseHelicoidGeometry(Bolt(0.2e-3), Node("{pitch: 1.5 mm, flank_angle: 60 deg, " + ok_rest));
+    ADD_FAILURE() << "a 0.2 mm pitch deviation of a 1.5 mm pitch was accepted";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("parts.bolt.geometry.pitch"), std::string::npos)
+        << e.what();
   }
 }
 
