@@ -11,9 +11,8 @@ namespace fitfeel {
 namespace {
 
 // Two seconds on the real clock. Timing on a shared VM is reported, not asserted: the test checks
-// that every tick ran, that the statistics are filled in and consistent, and that the achieved
-// rate is within a loose bound of 1 kHz (absolute deadlines cannot drift, so a slow machine shows
-// up as lateness and misses, not as a lower rate over 2 s, except for a catch-up at the end).
+// that every tick ran, that the statistics are filled in and consistent, and what absolute
+// deadlines guarantee whatever the load (the run cannot be shorter than its schedule).
 TEST(RealTimeSchedulerTest, TwoSecondsAtOneKilohertz) {
   const PreparedScene prepared = Prepare(testing::MakeFakeScene(1));
   const PositioningStage positioning;
@@ -26,9 +25,10 @@ TEST(RealTimeSchedulerTest, TwoSecondsAtOneKilohertz) {
   EXPECT_TRUE(s.realtime);
   EXPECT_EQ(s.ticks, 2000u);
   EXPECT_FALSE(s.realtime_note.empty());
-  EXPECT_GT(s.achieved_rate, 500.0);
-  EXPECT_LT(s.achieved_rate, 1100.0);
-  EXPECT_GT(s.wall_seconds, 1.9);
+  // The rate a loaded machine achieves is reported below, not asserted; absolute deadlines
+  // cannot run ahead of the clock, so 2000 ticks take (nearly: the last starts at 1.999 s) 2 s.
+  EXPECT_GT(s.achieved_rate, 0.0);
+  EXPECT_GE(s.wall_seconds, 1.99);
   EXPECT_LE(s.jitter_us.p50, s.jitter_us.p99);
   EXPECT_LE(s.jitter_us.p99, s.jitter_us.max);
   EXPECT_LE(s.lateness_us.p50, s.lateness_us.max);
