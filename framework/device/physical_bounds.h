@@ -11,11 +11,11 @@ namespace fitfeel {
 // moves at a few m/s and turns at a few rad/s (100 m/s and 1000 rad/s are beyond any device's
 // encoders); no part pair presses harder than 10 MN (a 3 m shrink fit); a session is shorter than
 // a year. One set of numbers for the recording reader and the scheduler's live check.
-inline constexpr double kMaxDeviceTime = 3.2e7;          // s
-inline constexpr double kMaxDevicePosition = 10.0;       // m, each coordinate
-inline constexpr double kMaxDeviceSpeed = 100.0;         // m/s, each component
-inline constexpr double kMaxDeviceAngularSpeed = 1000.0; // rad/s, each component
-inline constexpr double kMaxDeviceForce = 1e7;           // N (torques: N*m), each component
+inline constexpr double kMaxDeviceTime = 3.2e7;           // s
+inline constexpr double kMaxDevicePosition = 10.0;        // m, each coordinate
+inline constexpr double kMaxDeviceSpeed = 100.0;          // m/s, each component
+inline constexpr double kMaxDeviceAngularSpeed = 1000.0;  // rad/s, each component
+inline constexpr double kMaxDeviceForce = 1e7;            // N (torques: N*m), each component
 // A quaternion from a rotation is unit to ~1e-16; anything off by more than this is not a pose.
 inline constexpr double kMaxQuaternionNormError = 1e-6;
 

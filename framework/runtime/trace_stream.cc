@@ -23,8 +23,7 @@ constexpr auto kIdleSleep = std::chrono::microseconds(200);
 
 }  // namespace
 
-TraceStream::TraceStream(const StreamOutputs& outputs, TickObserver* observer,
-                         std::size_t capacity)
+TraceStream::TraceStream(const StreamOutputs& outputs, TickObserver* observer, std::size_t capacity)
     : outputs_(outputs), observer_(observer), ring_(capacity) {
   const bool any_file =
       !outputs_.dir.empty() && (outputs_.trace || outputs_.summary || outputs_.recording);
@@ -56,8 +55,8 @@ TraceStream::TraceStream(const StreamOutputs& outputs, TickObserver* observer,
       if (outputs_.summary) summary_file_ = pending("summary.json");
       if (outputs_.recording) {
         recording_file_ = pending("recording.csv");
-        recording_ = std::make_unique<RecordingWriter>(recording_file_.temporary,
-                                                       *outputs_.recording);
+        recording_ =
+            std::make_unique<RecordingWriter>(recording_file_.temporary, *outputs_.recording);
       }
     } catch (...) {
       Discard();

@@ -39,7 +39,7 @@ struct SceneCost {
   double depth_steps = 0.0;     // rows of the contact analyzer's depth tables
   double prepare_bytes = 0.0;   // grids, skin model shapes, analyzer tables
   double prepare_seconds = 0.0; // on one core of the reference machine (docs/scenario-format.md)
-  double run_bytes = 0.0;       // trace (and recording) buffers
+  double run_bytes = 0.0;       // what the run keeps per tick (kStreamBytesPerTick each)
 };
 inline constexpr double kLargeSceneBytes = 1.0 * 1024 * 1024 * 1024;
 inline constexpr double kLargeSceneSeconds = 30.0;

@@ -106,9 +106,8 @@ TEST(LongRunMemoryTest, MemoryGrowsByAFewBytesPerTickAndAnHourStaysWithin512MB) 
                             << " MB at 300 s";
   const double hour = rss[1] + std::max(per_tick, 0.0) * (3600 - seconds[1]) * 1000.0;
   EXPECT_LT(hour, kBudgetBytes) << "an hour would peak at " << hour / 1e6 << " MB";
-  std::cout << "peak RSS: " << rss[0] / 1e6 << " MB (30 s), " << rss[1] / 1e6
-            << " MB (300 s), " << per_tick << " B per tick, an hour extrapolated "
-            << hour / 1e6 << " MB\n";
+  std::cout << "peak RSS: " << rss[0] / 1e6 << " MB (30 s), " << rss[1] / 1e6 << " MB (300 s), "
+            << per_tick << " B per tick, an hour extrapolated " << hour / 1e6 << " MB\n";
   fs::remove_all(dir);
 }
 

@@ -13,9 +13,9 @@ namespace fitfeel::testing {
 
 // <temp>/fitfeel-<group>-<name>-<pid>, removed if a previous run left it (not created).
 inline std::filesystem::path FreshDir(const std::string& group, const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("fitfeel-" + group + "-" + name + "-" +
-                                     std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      ("fitfeel-" + group + "-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   return dir;
 }
