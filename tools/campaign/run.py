@@ -133,7 +133,24 @@ def run(fitfeel, args, cwd):
     return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
 
 
-NON_FINITE = re.compile(r"(?i)(?<![a-z_])(nan|inf|infinity)(?![a-z_])")
+NON_FINITE_WORDS = {"nan", "-nan", "+nan", "inf", "-inf", "+inf", "infinity", "-infinity",
+                    "+infinity"}
+
+
+def non_finite_field(text, separator):
+    """Whether a data row of a CSV (trace: ',', recording: ' ') holds a non-finite number."""
+    for line in text.split("\n"):
+        for field in line.split(separator):
+            if field.strip().lower() in NON_FINITE_WORDS:
+                return True
+    return False
+
+
+def non_finite_json(text):
+    """Whether summary.json holds NaN or Infinity (never valid JSON; Python's parser admits it)."""
+    found = []
+    json.loads(text, parse_constant=lambda c: found.append(c))
+    return bool(found)
 
 
 def check_outputs(out_dir, ok, problems):
@@ -147,17 +164,22 @@ def check_outputs(out_dir, ok, problems):
             continue
         with open(path, encoding="utf-8", errors="replace") as f:
             text = f.read()
-        if name == "trace.csv":
-            text = text.split("\n", 1)[1] if "\n" in text else ""
-        elif name == "recording.csv":
-            text = "\n".join(l for l in text.split("\n") if not l.startswith("#") and not l.startswith("t_s"))
-        if NON_FINITE.search(text):
-            problems.append(name + " holds a non-finite number")
         if name == "summary.json":
             try:
-                json.loads(text)
+                if non_finite_json(text):
+                    problems.append("summary.json holds a non-finite number")
             except ValueError:
                 problems.append("summary.json does not parse")
+            continue
+        if name == "trace.csv":
+            rows = text.split("\n", 1)[1] if "\n" in text else ""
+            bad = non_finite_field(rows, ",")
+        else:
+            rows = "\n".join(l for l in text.split("\n")
+                             if not l.startswith("#") and not l.startswith("t_s"))
+            bad = non_finite_field(rows, " ")
+        if bad:
+            problems.append(name + " holds a non-finite number")
     for name in os.listdir(out_dir):
         if ".tmp-" in name or name.endswith(".partial"):
             problems.append("temporary left behind: " + name)
@@ -340,6 +362,9 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--fitfeel", default=os.path.join(ROOT, "build", "bin", "fitfeel"))
+    parser.add_argument("--only", default="",
+                        help="comma-separated case numbers to rerun (a case depends only on the "
+                             "seed and its number)")
     parser.add_argument("--keep", default=os.path.join(ROOT, "build", "campaign-failures"))
     args = parser.parse_args()
     fitfeel = os.path.abspath(args.fitfeel)
@@ -371,7 +396,8 @@ def main():
     counts = {}
     failures = []
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        for index, (family, outcome, problems) in enumerate(pool.map(one, range(args.cases))):
+        indices = [int(i) for i in args.only.split(",")] if args.only else range(args.cases)
+        for index, (family, outcome, problems) in zip(indices, pool.map(one, indices)):
             counts.setdefault(family, {"accepted": 0, "refused": 0, "failed": 0})
             counts[family][outcome] += 1
             if problems:
