@@ -7,23 +7,35 @@
 #   make clean  remove the build tree and the outputs
 #   make check-sanitizers  the whole suite under AddressSanitizer + UndefinedBehaviorSanitizer
 #               (preset asan, build-asan/) and the concurrency test under ThreadSanitizer (tsan)
+#   make fuzz   build the libFuzzer targets (preset fuzz: clang, ASan, UBSan; FUZZ_PACKAGES) and
+#               run each for FUZZ_SECONDS (default 60) from its seed corpus; fails on a finding
+#               (the input is kept in build-fuzz/artifacts/)
+#   make campaign  the generated-input campaign over scenarios, recordings and command lines
+#               (tools/campaign/run.py; CAMPAIGN_CASES, default 10000)
 #   make fem-check  rerun the CalculiX reference of the elastic contact model (tools/fem) and
 #               compare it with the committed data the tests use (minutes; needs no build)
 
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \
             libboost-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev \
-            libgmock-dev libbenchmark-dev gnuplot-nox libjs-three chromium nodejs
+            libgmock-dev libbenchmark-dev gnuplot-nox libjs-three chromium nodejs python3
 # Only for `make fem-check`: the tests use the committed FEM data and need no solver.
 FEM_PACKAGES := calculix-ccx python3-numpy
+# Only for `make fuzz`: clang and its libFuzzer runtime (Debian 12 ships it in libclang-rt-14-dev).
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+FUZZ_SECONDS ?= 60
+FUZZERS := quantity_fuzzer recording_fuzzer scenario_fuzzer cli_fuzzer
+CAMPAIGN_CASES ?= 10000
 JOBS ?= $(shell nproc)
 # Where `fitfeel run` puts the default scenario's outputs (out/<scenario name>).
 DEFAULT_RUN := out/paper-case1-h7js6
 
-.PHONY: run test bench clean deps fem-deps configure build fem-check check-sanitizers
+.PHONY: run test bench clean deps fem-deps fuzz-deps configure build fem-check check-sanitizers \
+        fuzz campaign
 
 # apt-get only for what dpkg does not already list as installed; update only then.
-deps fem-deps: PACKAGES_WANTED = $(if $(filter fem-deps,$@),$(FEM_PACKAGES),$(PACKAGES))
-deps fem-deps:
+deps fem-deps fuzz-deps: PACKAGES_WANTED = $(if $(filter fem-deps,$@),$(FEM_PACKAGES),\
+                                            $(if $(filter fuzz-deps,$@),$(FUZZ_PACKAGES),$(PACKAGES)))
+deps fem-deps fuzz-deps:
 	@missing=""; \
 	for p in $(PACKAGES_WANTED); do \
 	  dpkg-query -W -f='$${Status}' "$$p" 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
@@ -59,7 +71,7 @@ bench: deps
 	build/bench/scene_benchmark
 
 clean:
-	rm -rf build build-debug out
+	rm -rf build build-debug build-fuzz out
 
 fem-check: fem-deps
 	@tmp=$$(mktemp -d) && trap 'rm -rf "$$tmp"' EXIT && \
@@ -77,3 +89,26 @@ check-sanitizers: deps
 	cmake --preset tsan
 	cmake --build build-tsan --target concurrent_runs_test -j $(JOBS)
 	ctest --test-dir build-tsan -R concurrent_runs_test --output-on-failure
+
+# Each target from its corpus in the repository (framework/<module>/fuzz/corpus/<name>; the scenario
+# loader also from scenarios/) copied to build-fuzz/corpus/<name>, where what libFuzzer adds stays.
+# -timeout: an input that takes longer than 20 s is a finding (a hang).
+fuzz: deps fuzz-deps
+	cmake --preset fuzz
+	cmake --build build-fuzz -j $(JOBS) --target fitfeel_fuzzers
+	@mkdir -p build-fuzz/artifacts
+	@set -e; for f in $(FUZZERS); do \
+	  seeds=$$(find framework -path "*/fuzz/corpus/$$f" -type d); \
+	  extra=$$([ $$f = scenario_fuzzer ] && echo scenarios || true); \
+	  mkdir -p build-fuzz/corpus/$$f; \
+	  echo "fuzz: $$f for $(FUZZ_SECONDS) s"; \
+	  rc=0; ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  build-fuzz/fuzz/$$f build-fuzz/corpus/$$f $$seeds $$extra -max_total_time=$(FUZZ_SECONDS) \
+	    -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
+	    -artifact_prefix=build-fuzz/artifacts/$$f- > build-fuzz/$$f.log 2>&1 || rc=$$?; \
+	  tail -n 12 build-fuzz/$$f.log; \
+	  [ $$rc = 0 ] || { echo "fuzz: $$f found a problem (build-fuzz/$$f.log, artifacts/)"; exit 1; }; \
+	done; echo "fuzz: no finding in $(FUZZERS)"
+
+campaign: build
+	/usr/bin/python3 tools/campaign/run.py --cases $(CAMPAIGN_CASES)

@@ -119,3 +119,22 @@ function(fitfeel_add_plugin_folders)
     endif()
   endforeach()
 endfunction()
+
+# fitfeel_add_fuzzer(<name> SOURCES ... [LIBS ...] [NEEDS target...]) builds a libFuzzer target
+# (preset `fuzz`: clang, FITFEEL_BUILD_FUZZERS=ON) into build-fuzz/fuzz/. The sources define
+# LLVMFuzzerTestOneInput; the seed corpus is the folder `corpus/<name>` beside them, which
+# `make fuzz` copies before a run so that the repository's corpus only grows by hand.
+function(fitfeel_add_fuzzer name)
+  if(NOT FITFEEL_BUILD_FUZZERS)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;NEEDS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
+  target_link_options(${name} PRIVATE -fsanitize=fuzzer)
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz)
+  if(ARG_NEEDS)
+    add_dependencies(${name} ${ARG_NEEDS})
+  endif()
+  add_dependencies(fitfeel_fuzzers ${name})
+endfunction()

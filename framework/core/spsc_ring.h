@@ -17,11 +17,13 @@ namespace fitfeel {
 // never slow the tick. Capacity is fixed at construction (rounded up to a power of two).
 //
 // One thread may push and one other thread may pop at a time; the indices are monotonically
-// increasing counters, so full and empty are told apart without a spare slot. T must be trivially
-// copyable: a record is copied in and out, nothing is destroyed on the way.
+// increasing counters, so full and empty are told apart without a spare slot. T is a fixed-size
+// record copied in and out by assignment into slots built once at construction: its copy must not
+// allocate or throw (plain structs of numbers and fixed-size Eigen vectors, never a std::string).
 template <typename T>
 class SpscRing {
-  static_assert(std::is_trivially_copyable_v<T>, "SpscRing holds trivially copyable records");
+  static_assert(std::is_default_constructible_v<T> && std::is_copy_assignable_v<T>,
+                "SpscRing holds default-constructible, copy-assignable records");
 
  public:
   // Throws UserError for a capacity of 0 or above 2^30 records.
@@ -70,6 +72,14 @@ class SpscRing {
     bool any = false;
     while (TryPop(record)) any = true;
     return any;
+  }
+
+  // Producer side: whether a TryPush would find room now (only the consumer can make room, so a
+  // true answer stays true until the producer pushes).
+  bool HasRoom() noexcept {
+    const std::size_t head = head_.load(std::memory_order_relaxed);
+    if (head - tail_cache_ > mask_) tail_cache_ = tail_.load(std::memory_order_acquire);
+    return head - tail_cache_ <= mask_;
   }
 
   // Records waiting, as seen from either side (exact only when the other side is idle).

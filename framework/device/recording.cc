@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "framework/core/line_endings.h"
+#include "framework/device/physical_bounds.h"
 
 namespace fitfeel {
 namespace {
@@ -64,15 +65,12 @@ void Unflatten(const double* in, RecordedSample* s) {
   for (int k = 0; k < 2; ++k) s->settle_load[k] = in[i++];
 }
 
-// Physical bounds of a recorded sample: no haptic device's workspace reaches beyond a metre, so
-// 10 m is an order of magnitude past any; a hand moves at a few m/s and turns at a few rad/s
-// (100 m/s and 1000 rad/s are beyond any device's encoders); no part pair presses harder than
-// 10 MN (a 3 m shrink fit); a session is shorter than a year.
-constexpr double kMaxRecordedTime = 3.2e7;          // s
-constexpr double kMaxRecordedPosition = 10.0;       // m
-constexpr double kMaxRecordedSpeed = 100.0;         // m/s
-constexpr double kMaxRecordedAngularSpeed = 1000.0; // rad/s
-constexpr double kMaxRecordedForce = 1e7;           // N (torques: N*m)
+// A recorded sample obeys the live device state's bounds (physical_bounds.h).
+constexpr double kMaxRecordedTime = kMaxDeviceTime;
+constexpr double kMaxRecordedPosition = kMaxDevicePosition;
+constexpr double kMaxRecordedSpeed = kMaxDeviceSpeed;
+constexpr double kMaxRecordedAngularSpeed = kMaxDeviceAngularSpeed;
+constexpr double kMaxRecordedForce = kMaxDeviceForce;
 
 double ColumnBound(int column) {
   const std::string unit = kColumns[column].unit;
@@ -124,57 +122,78 @@ const std::vector<std::string>& RecordingColumns() {
   return columns;
 }
 
+RecordingWriter::RecordingWriter(std::filesystem::path file, const RecordingInfo& info)
+    : file_(std::move(file)) {
+  if (info.device_model.find('\n') != std::string::npos) {
+    throw UserError("recording " + file_.string() + ": device model contains a line break");
+  }
+  out_.open(file_, std::ios::binary | std::ios::trunc);
+  if (!out_) throw UserError("cannot write recording " + file_.string());
+  out_ << kFormatLine << ' ' << kRecordingFormatVersion << '\n';
+  if (!info.device_model.empty()) out_ << "# device: " << info.device_model << '\n';
+  for (int c = 0; c < kColumnCount; ++c) out_ << (c ? " " : "") << Expected(c);
+  out_ << '\n';
+}
+
+RecordingWriter::~RecordingWriter() = default;
+
+void RecordingWriter::Append(const RecordedSample& s) {
+  double fields[kColumnCount - 1];
+  Flatten(s, fields);
+  for (double v : fields) {
+    if (!std::isfinite(v)) {
+      throw UserError("recording " + file_.string() + ": sample " + std::to_string(count_) +
+                      " holds a non-finite value; nothing written");
+    }
+  }
+  if (count_ > 0 && !(s.time > last_time_)) {
+    throw UserError("recording " + file_.string() + ": sample " + std::to_string(count_) +
+                    " does not come after the previous one in time; nothing written");
+  }
+  char buffer[64];
+  int f = 0;
+  for (int c = 0; c < kColumnCount; ++c) {
+    if (c) line_ += ' ';
+    std::to_chars_result r;
+    if (c == kButtonsColumn) {
+      r = std::to_chars(buffer, buffer + sizeof(buffer), s.buttons);
+    } else {
+      r = std::to_chars(buffer, buffer + sizeof(buffer), fields[f++]);
+    }
+    line_.append(buffer, r.ptr);
+  }
+  line_ += '\n';
+  // Written in blocks of about 1 MiB: memory stays bounded however long the recording.
+  if (line_.size() > (std::size_t{1} << 20)) Flush();
+  last_time_ = s.time;
+  ++count_;
+}
+
+void RecordingWriter::Flush() {
+  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  line_.clear();
+  if (!out_) throw UserError("failed writing recording " + file_.string() + " (disk full?)");
+}
+
+void RecordingWriter::Finish() {
+  line_ += kEndPrefix + std::to_string(count_) + " samples\n";
+  Flush();
+  out_.close();
+  if (!out_) throw UserError("failed writing recording " + file_.string() + " (disk full?)");
+}
+
 void WriteRecording(const std::filesystem::path& file, const RecordingInfo& info,
                     std::span<const RecordedSample> samples) {
-  if (info.device_model.find('\n') != std::string::npos) {
-    throw UserError("recording " + file.string() + ": device model contains a line break");
-  }
-  double fields[kColumnCount - 1];
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    Flatten(samples[i], fields);
-    for (double v : fields) {
-      if (!std::isfinite(v)) {
-        throw UserError("recording " + file.string() + ": sample " + std::to_string(i) +
-                        " holds a non-finite value; nothing written");
-      }
-    }
-    if (i > 0 && !(samples[i].time > samples[i - 1].time)) {
-      throw UserError("recording " + file.string() + ": sample " + std::to_string(i) +
-                      " does not come after the previous one in time; nothing written");
-    }
-  }
   std::filesystem::path temporary = file;
   temporary += ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw UserError("cannot write recording " + temporary.string());
-    out << kFormatLine << ' ' << kRecordingFormatVersion << '\n';
-    if (!info.device_model.empty()) out << "# device: " << info.device_model << '\n';
-    for (int c = 0; c < kColumnCount; ++c) out << (c ? " " : "") << Expected(c);
-    out << '\n';
-    char buffer[64];
-    for (const RecordedSample& s : samples) {
-      Flatten(s, fields);
-      int f = 0;
-      for (int c = 0; c < kColumnCount; ++c) {
-        if (c) out << ' ';
-        std::to_chars_result r;
-        if (c == kButtonsColumn) {
-          r = std::to_chars(buffer, buffer + sizeof(buffer), s.buttons);
-        } else {
-          r = std::to_chars(buffer, buffer + sizeof(buffer), fields[f++]);
-        }
-        out.write(buffer, r.ptr - buffer);
-      }
-      out << '\n';
-    }
-    out << kEndPrefix << samples.size() << " samples\n";
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw UserError("failed writing recording " + temporary.string());
-    }
+  try {
+    RecordingWriter writer(temporary, info);
+    for (const RecordedSample& s : samples) writer.Append(s);
+    writer.Finish();
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
   }
   std::error_code ec;
   std::filesystem::rename(temporary, file, ec);

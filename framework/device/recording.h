@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <span>
 #include <string>
 #include <vector>
@@ -68,6 +69,33 @@ class FITFEEL_API RecordingError : public UserError {
 // run cannot be replayed. Version 1 files are refused with the version named.
 inline constexpr int kRecordingFormatVersion = 2;
 FITFEEL_API const std::vector<std::string>& RecordingColumns();
+
+// Writes a recording sample by sample as a run produces them (from a thread outside the tick),
+// holding at most about 1 MiB in memory: the file at `file` is created at construction and
+// complete only after Finish. Append checks each sample (finite values, strictly increasing time)
+// and throws UserError for a bad one; the caller removes the incomplete file.
+class FITFEEL_API RecordingWriter {
+ public:
+  // Throws UserError when the file cannot be created or the info cannot be written.
+  RecordingWriter(std::filesystem::path file, const RecordingInfo& info);
+  ~RecordingWriter();
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
+
+  void Append(const RecordedSample& sample);
+  // Writes the end line and closes the file; throws UserError on a write failure.
+  void Finish();
+  std::uint64_t count() const { return count_; }
+
+ private:
+  void Flush();
+
+  std::filesystem::path file_;
+  std::ofstream out_;
+  std::string line_;
+  std::uint64_t count_ = 0;
+  double last_time_ = 0.0;
+};
 
 // Writes after the run. Checks every sample first (finite values, strictly increasing time) and
 // writes to a temporary file renamed into place, so a failure never leaves a half-written file.

@@ -22,24 +22,6 @@ void AppendNumber(std::string* out, double value) {
   out->append(buffer, result.ptr);
 }
 
-// Running mean, minimum and maximum of a sample.
-struct Summary {
-  double sum = 0.0;
-  double min = std::numeric_limits<double>::infinity();
-  double max = -std::numeric_limits<double>::infinity();
-  std::uint64_t count = 0;
-  void Add(double v) {
-    sum += v;
-    min = std::min(min, v);
-    max = std::max(max, v);
-    ++count;
-  }
-  nlohmann::json ToJson() const {
-    if (count == 0) return {{"mean", nullptr}, {"min", nullptr}, {"max", nullptr}};
-    return {{"mean", sum / static_cast<double>(count)}, {"min", min}, {"max", max}};
-  }
-};
-
 nlohmann::json ToJson(const Percentiles& p) {
   return {{"p50", p.p50}, {"p99", p.p99}, {"max", p.max}};
 }
@@ -64,12 +46,21 @@ std::string TraceHeader() {
          "offset_x_um,offset_z_um,"
          // The largest equivalent stress over the yield strength (DIN 7190), and 1 where a part
          // yields (the ratio exceeds 1): the elastic model no longer holds there.
-         "elastic_utilisation,yielding";
+         "elastic_utilisation,yielding,"
+         // 1 where the device state was not finite or beyond physical bounds: the last sane state
+         // was held and zero force sent (summary.json: device_faults).
+         "device_fault";
 }
 
 std::string TraceRow(const TickRecord& r) {
   std::string row;
   row.reserve(256);
+  AppendTraceRow(&row, r);
+  return row;
+}
+
+void AppendTraceRow(std::string* out, const TickRecord& r) {
+  std::string& row = *out;
   auto add = [&row](double v) {
     row += ',';
     AppendNumber(&row, v);
@@ -104,29 +95,38 @@ std::string TraceRow(const TickRecord& r) {
   add(r.pose.offset.y() * 1e6);
   add(r.elastic.utilisation);
   row += r.elastic.utilisation > 1.0 ? ",1" : ",0";
-  return row;
+  row += r.device_fault ? ",1" : ",0";
+}
+
+void SummaryBuilder::Add(const TickRecord& r) {
+  if (r.stage != StageId::kConstrained) return;
+  if (r.elastic.utilisation > 1.0) ++yielding_ticks_;
+  if (r.elastic.utilisation > 0.0 &&
+      (!has_worst_ || r.elastic.utilisation > worst_.elastic.utilisation)) {
+    worst_ = r;
+    has_worst_ = true;
+  }
+  axial_.Add(std::abs(r.wrench.force.y()));
+  fy_.Add(r.wrench.force.y());
+  radial_.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
+  torque_.Add(r.wrench.torque.norm());
+  depth_.Add(r.pose.depth * 1e3);
+  if (r.contact.interference) ++interference_ticks_;
 }
 
 nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& trace,
                            const RunStats& stats) {
-  Summary axial, fy, radial, torque, depth;
-  std::uint64_t interference_ticks = 0;
-  std::uint64_t yielding_ticks = 0;
-  const TickRecord* worst = nullptr;  // the tick with the largest elastic-limit utilisation
-  for (const auto& r : trace) {
-    if (r.stage != StageId::kConstrained) continue;
-    if (r.elastic.utilisation > 1.0) ++yielding_ticks;
-    if (r.elastic.utilisation > 0.0 &&
-        (worst == nullptr || r.elastic.utilisation > worst->elastic.utilisation)) {
-      worst = &r;
-    }
-    axial.Add(std::abs(r.wrench.force.y()));
-    fy.Add(r.wrench.force.y());
-    radial.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
-    torque.Add(r.wrench.torque.norm());
-    depth.Add(r.pose.depth * 1e3);
-    if (r.contact.interference) ++interference_ticks;
-  }
+  SummaryBuilder builder;
+  for (const auto& r : trace) builder.Add(r);
+  return builder.Make(info, stats);
+}
+
+nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) const {
+  const RunningSummary &axial = axial_, &fy = fy_, &radial = radial_, &torque = torque_,
+                       &depth = depth_;
+  const std::uint64_t interference_ticks = interference_ticks_;
+  const std::uint64_t yielding_ticks = yielding_ticks_;
+  const TickRecord* worst = has_worst_ ? &worst_ : nullptr;
   nlohmann::json j;
   j["scenario"] = info.scenario;
   j["scenario_file"] = info.scenario_file.string();
@@ -145,6 +145,8 @@ nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& t
   j["interference_ticks"] = interference_ticks;
   j["deadline_misses"] = stats.deadline_misses;
   j["guard_faults"] = stats.guard_faults;
+  j["device_faults"] = stats.device_faults;
+  j["dropped_rows"] = stats.dropped_rows;
   j["tick_us"] = ToJson(stats.compute_us);
   if (stats.realtime) {
     j["period_jitter_us"] = ToJson(stats.jitter_us);

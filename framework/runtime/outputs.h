@@ -1,6 +1,8 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -56,6 +58,41 @@ struct RecordingOutput {
 FITFEEL_API std::string TraceHeader();
 // One row of trace.csv (no newline). Numbers in their shortest exact decimal form.
 FITFEEL_API std::string TraceRow(const TickRecord& record);
+// The same row appended to `out` (no newline): no allocation once `out` has room.
+FITFEEL_API void AppendTraceRow(std::string* out, const TickRecord& record);
+
+// Running mean, minimum and maximum of a sample.
+struct RunningSummary {
+  double sum = 0.0;
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+  std::uint64_t count = 0;
+  void Add(double v) {
+    sum += v;
+    min = std::min(min, v);
+    max = std::max(max, v);
+    ++count;
+  }
+  nlohmann::json ToJson() const {
+    if (count == 0) return {{"mean", nullptr}, {"min", nullptr}, {"max", nullptr}};
+    return {{"mean", sum / static_cast<double>(count)}, {"min", min}, {"max", max}};
+  }
+};
+
+// summary.json's statistics gathered one tick at a time, so that a streamed run never holds its
+// trace: Add every record in order, then Make.
+class FITFEEL_API SummaryBuilder {
+ public:
+  void Add(const TickRecord& record);
+  nlohmann::json Make(const RunInfo& info, const RunStats& stats) const;
+
+ private:
+  RunningSummary axial_, fy_, radial_, torque_, depth_;
+  std::uint64_t interference_ticks_ = 0;
+  std::uint64_t yielding_ticks_ = 0;
+  TickRecord worst_;  // the tick with the largest elastic-limit utilisation
+  bool has_worst_ = false;
+};
 
 // summary.json's content. Resistance statistics are taken over the ticks of the constrained stage:
 // axial_resistance_N over |fy|, radial_resistance_N over sqrt(fx^2 + fz^2) (the paper's F_r),

@@ -9,6 +9,7 @@
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/trace_stream.h"
 
 namespace fitfeel {
 namespace {
@@ -92,6 +93,15 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
                              " Hz) with direct rendering: expect chatter; the safety section's "
                              "coupling: spring_damper renders it through a virtual coupling");
     }
+    // The outputs stream to disk while the run goes (temporaries renamed at the end): memory
+    // does not grow with the duration, and a failed run leaves nothing.
+    StreamOutputs outputs;
+    outputs.dir = options.out_dir;
+    outputs.trace = scene.run.write_trace;
+    outputs.summary = scene.run.write_summary;
+    if (scene.run.write_recording) outputs.recording = RecordingInfo{spec.model};
+    TraceStream stream(outputs, options.observer);
+    settings.stream = &stream.ring();
     Scheduler scheduler(*scene.device, positioning, constrained, settings);
     scheduler.set_observer(options.observer);
     if (options.watch) options.watch(&scheduler);
@@ -102,7 +112,6 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       throw;
     }
     if (options.watch) options.watch(nullptr);
-    if (options.observer != nullptr) options.observer->OnRunEnd(scheduler.trace());
     result.stats = scheduler.stats();
     info.device_report = scene.device->report();
     if (info.device_report.is_object() && info.device_report.value("stopped_on_faults", false)) {
@@ -124,16 +133,19 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
                              std::to_string(safety.non_finite_faults) +
                              " ticks whose device state or wrench was not finite");
     }
-    result.summary = MakeSummary(info, scheduler.trace(), result.stats);
-    if (!options.out_dir.empty()) {
-      RecordingOutput recording;
-      if (scene.run.write_recording) {
-        recording.info.device_model = spec.model;
-        recording.samples = &scheduler.recording();
-      }
-      result.paths = WriteOutputs(options.out_dir, info, scheduler.trace(), result.stats,
-                                  scene.run.write_trace, scene.run.write_summary, recording);
+    if (result.stats.device_faults > 0) {
+      result.notes.push_back("warning: the device '" + scene.device_id + "' reported " +
+                             std::to_string(result.stats.device_faults) +
+                             " states that were not finite or beyond physical bounds; the last "
+                             "sane state was held and zero force sent (trace.csv: device_fault)");
     }
+    if (result.stats.dropped_rows > 0) {
+      result.notes.push_back("warning: the output writer fell behind the real-time loop and " +
+                             std::to_string(result.stats.dropped_rows) +
+                             " ticks are missing from the outputs (summary.json: dropped_rows)");
+    }
+    result.paths = stream.Finish(info, result.stats, &result.summary);
+    if (options.observer != nullptr) options.observer->OnRunEnd();
   }
   return result;
 }

@@ -11,9 +11,11 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <chrono>
 #include <thread>
 
 #include "framework/core/error.h"
+#include "framework/device/physical_bounds.h"
 
 namespace fitfeel {
 namespace {
@@ -31,9 +33,14 @@ timespec ToTimespec(std::int64_t ns) {
   return ts;
 }
 
-// The loader refuses a run whose buffers exceed kMaxRunBufferBytes by these per-tick sizes.
-static_assert(sizeof(TickRecord) + 3 * sizeof(double) <= kTraceBytesPerTick);
+// The loader refuses a run whose buffers exceed kMaxRunBufferBytes by these per-tick sizes: a
+// streamed run keeps the compute time and, in real time, three stamps; a kept trace its records.
+static_assert(4 * sizeof(double) <= kStreamBytesPerTick);
+static_assert(sizeof(TickRecord) + 4 * sizeof(double) <= kTraceBytesPerTick);
 static_assert(sizeof(RecordedSample) <= kRecordingBytesPerTick);
+
+// Under the virtual clock the loop waits this long at a time for the writer to make room.
+constexpr auto kRoomWait = std::chrono::microseconds(50);
 
 // Priority of the real-time loop under SCHED_FIFO: above ordinary real-time helpers (IRQ threads
 // run at 50 by default on PREEMPT_RT) and below the kernel's watchdogs at 99.
@@ -117,7 +124,10 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
   device_clock_ = device.clock_owner() == ClockOwner::kDevice;
   const double ticks = std::round(settings.duration * settings.rate);
   if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
-  const double per_tick = kTraceBytesPerTick + (settings.record ? kRecordingBytesPerTick : 0.0);
+  const double per_tick =
+      settings.stream != nullptr
+          ? kStreamBytesPerTick
+          : kTraceBytesPerTick + (settings.record ? kRecordingBytesPerTick : 0.0);
   if (ticks * per_tick > kMaxRunBufferBytes) {
     throw UserError("scheduler: a run of " + std::to_string(settings.duration) + " s at " +
                     std::to_string(settings.rate) +
@@ -127,18 +137,28 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
   run_.chain.Configure(settings.safety, device.spec(), period_);
   MakeStageStates();
   // Sized (and its pages touched) here, so that the loop never allocates or faults them in.
-  trace_.resize(planned_ticks_);
-  wake_ns_.assign(planned_ticks_, 0.0);
-  deadline_ns_.assign(planned_ticks_, 0.0);
-  end_ns_.assign(planned_ticks_, 0.0);
-  if (settings.record) recording_.resize(planned_ticks_);
+  compute_us_.assign(planned_ticks_, 0.0);
+  if (settings.stream == nullptr) {
+    trace_.resize(planned_ticks_);
+    if (settings.record) recording_.resize(planned_ticks_);
+  }
+  if (device_clock_ || settings.clock == ClockMode::kRealTime) {
+    wake_ns_.assign(planned_ticks_, 0.0);
+    deadline_ns_.assign(planned_ticks_, 0.0);
+    end_ns_.assign(planned_ticks_, 0.0);
+  }
 }
 
 void Scheduler::Rewind() noexcept {
-  trace_.resize(planned_ticks_);  // within capacity: no allocation
-  if (settings_.record) recording_.resize(planned_ticks_);
+  if (settings_.stream == nullptr) {
+    trace_.resize(planned_ticks_);  // within capacity: no allocation
+    if (settings_.record) recording_.resize(planned_ticks_);
+  }
   run_.chain_reset = true;
   run_.guard_faults = 0;
+  run_.device_faults = 0;
+  run_.dropped_rows = 0;
+  run_.last_sane_device = DeviceState{};
   ticks_done_.store(0, std::memory_order_relaxed);
   run_.current = StageId::kPositioning;
 }
@@ -149,10 +169,19 @@ void Scheduler::MakeStageStates() {
 
 bool Scheduler::Tick(double time) noexcept {
   const std::uint64_t k = ticks_done_.load(std::memory_order_relaxed);
-  if (k >= trace_.size() || !device_.active()) return false;
+  if (k >= planned_ticks_ || !device_.active()) return false;
   const std::int64_t start = NowNs();
   RunState& run = run_;
   device_.Read(time, &run.device);
+  // An absurd device state (a failing encoder, a driver bug) never reaches the law, the chain or
+  // the outputs: the last sane state stands in for it and the device gets zero force below.
+  const bool device_fault = !DeviceStateInBounds(run.device);
+  if (device_fault) {
+    run.device = run.last_sane_device;
+    ++run.device_faults;
+  } else {
+    run.last_sane_device = run.device;
+  }
   if (run.chain_reset) {
     run.chain.Reset(run.device);  // proxy at the handle, energy and counters at zero
     run.chain_reset = false;
@@ -171,7 +200,8 @@ bool Scheduler::Tick(double time) noexcept {
   double dt = period_;
   if (device_clock_ && k > 0 && time > run.last_time) dt = time - run.last_time;
   run.last_time = time;
-  const Wrench device_wrench = run.chain.Apply(output.wrench, run.device, dt);
+  Wrench device_wrench = run.chain.Apply(output.wrench, run.device, dt);
+  if (device_fault) device_wrench = Wrench{};
   const bool fault = !output.wrench.AllFinite();
   if (fault) {
     run.output.wrench.SetZero();
@@ -187,7 +217,8 @@ bool Scheduler::Tick(double time) noexcept {
   device_.Write(device_wrench);
   const std::int64_t end = NowNs();
 
-  TickRecord& record = trace_[k];
+  const bool streaming = settings_.stream != nullptr;
+  TickRecord& record = streaming ? run.row.tick : trace_[k];
   record.time = time;
   record.position = run.law_state.position;  // the simulated part: the proxy when coupled
   record.pose = output.pose;
@@ -199,8 +230,10 @@ bool Scheduler::Tick(double time) noexcept {
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;
   record.guard_fault = fault;
-  if (!recording_.empty()) {
-    RecordedSample& sample = recording_[k];
+  record.device_fault = device_fault;
+  compute_us_[k] = record.compute_us;
+  if (settings_.record) {
+    RecordedSample& sample = streaming ? run.row.sample : recording_[k];
     sample.time = time;
     sample.position = run.device.position;
     sample.orientation = run.device.orientation;
@@ -211,8 +244,17 @@ bool Scheduler::Tick(double time) noexcept {
     sample.delivered = run.device.delivered;
     sample.settle_load = run.device.settle_load;
   }
-  wake_ns_[k] = static_cast<double>(start);
-  end_ns_[k] = static_cast<double>(end);
+  if (!wake_ns_.empty()) {
+    wake_ns_[k] = static_cast<double>(start);
+    end_ns_[k] = static_cast<double>(end);
+  }
+  if (streaming) {
+    run.row.index = k;
+    run.row.has_sample = settings_.record;
+    // Never waits: under the virtual clock the loop made room before the tick; in real time a
+    // full ring costs this row, counted.
+    if (!settings_.stream->TryPush(run.row)) ++run.dropped_rows;
+  }
   if (observer_ != nullptr) observer_->OnTick(record);
   run.current = output.next;
   ticks_done_.store(k + 1, std::memory_order_relaxed);
@@ -237,7 +279,12 @@ void Scheduler::Run() {
 }
 
 void Scheduler::RunVirtual() {
+  SpscRing<StreamRow>* stream = settings_.stream;
   for (std::uint64_t k = 0; k < planned_ticks_; ++k) {
+    // Virtual time has no deadline: wait for the writer rather than lose a row.
+    if (stream != nullptr) {
+      while (!stream->HasRoom()) std::this_thread::sleep_for(kRoomWait);
+    }
     // k / rate rather than an accumulated sum: no drift, and the same double on every run.
     if (!Tick(static_cast<double>(k) / settings_.rate)) break;
   }
@@ -284,14 +331,17 @@ void Scheduler::RunDeviceClock() {
 
 void Scheduler::ComputeStats() {
   const std::uint64_t n = ticks_done_.load(std::memory_order_relaxed);
-  trace_.resize(n);  // shrinking never allocates
-  if (!recording_.empty()) recording_.resize(n);
+  if (settings_.stream == nullptr) {
+    trace_.resize(n);  // shrinking never allocates
+    if (!recording_.empty()) recording_.resize(n);
+  }
   stats_.safety = run_.chain.report();
   stats_.ticks = n;
   stats_.guard_faults = run_.guard_faults;
-  std::vector<double> compute(n);
-  for (std::uint64_t k = 0; k < n; ++k) compute[k] = trace_[k].compute_us;
-  stats_.compute_us = ComputePercentiles(std::move(compute));
+  stats_.device_faults = run_.device_faults;
+  stats_.dropped_rows = run_.dropped_rows;
+  stats_.compute_us = ComputePercentiles(
+      std::vector<double>(compute_us_.begin(), compute_us_.begin() + static_cast<std::ptrdiff_t>(n)));
   stats_.achieved_rate = stats_.wall_seconds > 0.0 ? n / stats_.wall_seconds : 0.0;
   if (!stats_.realtime) return;
 

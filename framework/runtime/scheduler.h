@@ -10,6 +10,8 @@
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
 #include "framework/device/stage.h"
+#include "framework/core/spsc_ring.h"
+#include "framework/runtime/stream_row.h"
 #include "framework/runtime/tick_observer.h"
 #include "framework/runtime/tick_record.h"
 #include "framework/safety/safety_chain.h"
@@ -23,8 +25,13 @@ struct SchedulerSettings {
   ClockMode clock = ClockMode::kVirtual;
   // The safety chain between the stage's physical wrench and the device (RuntimeSafetySettings).
   SafetySettings safety = PassThroughSafety();
-  // Fill a RecordedSample per tick into a buffer sized before the loop (run.outputs: recording).
+  // Fill a RecordedSample per tick into a buffer sized before the loop (run.outputs: recording),
+  // or, when streaming, into the tick's row.
   bool record = false;
+  // Borrowed. Set: every tick pushes its row here instead of keeping it (trace() and recording()
+  // stay empty), so memory does not grow with the run; TraceStream drains it and states the
+  // overrun policy. Null: the run's rows are kept in buffers sized before the loop.
+  SpscRing<StreamRow>* stream = nullptr;
 
   // Direct rendering at scale 1: with a device without limits (the simulated robot), the device
   // receives the stage's wrench bit for bit.
@@ -55,6 +62,10 @@ struct RunState {
   SafetyChain chain;
   bool chain_reset = true;  // reset the chain at the next tick's device state
   std::uint64_t guard_faults = 0;
+  std::uint64_t device_faults = 0;  // device states outside physical bounds (held, zero force)
+  std::uint64_t dropped_rows = 0;   // streamed rows the ring had no room for (real time)
+  DeviceState last_sane_device;     // the newest device state inside physical bounds
+  StreamRow row;                    // the tick's row when streaming
   double last_time = 0.0;  // the previous tick's time (a device's clock: measured)
 };
 
@@ -84,7 +95,9 @@ class FITFEEL_API Scheduler {
   void Run();
 
   // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
-  // Returns false once the buffer is full or the device is inactive. No allocation, lock or I/O.
+  // Returns false once every planned tick is done or the device is inactive. No allocation, lock or
+  // I/O. A device state that is not finite or lies outside physical bounds (physical_bounds.h)
+  // is not used: the last sane state is held, zero force is sent and the tick flagged.
   bool Tick(double time) noexcept;
   // An observer called at the end of every tick with its record (null: none). Borrowed; set it
   // before Run, not while the loop runs.
@@ -119,6 +132,8 @@ class FITFEEL_API Scheduler {
   RunState run_;
   std::vector<TickRecord> trace_;
   std::vector<RecordedSample> recording_;
+  std::vector<double> compute_us_;  // every tick's compute time, for the run's statistics
+  // Real time only (empty under the virtual clock, whose statistics need no stamps).
   std::vector<double> wake_ns_;  // real time: absolute wake-up of each tick, ns
   std::vector<double> deadline_ns_;
   std::vector<double> end_ns_;

@@ -25,6 +25,9 @@ struct TickRecord {
   double compute_us = 0.0;  // wall time from device read to device write, us (a measurement)
   StageId stage = StageId::kPositioning;
   bool guard_fault = false;  // the stage produced a non-finite wrench; zero was sent
+  // The device state was not finite or beyond physical bounds: the last sane one was held and
+  // zero force sent.
+  bool device_fault = false;
 };
 
 // Order statistics of a sample, in microseconds.
@@ -39,6 +42,12 @@ struct RunStats {
   std::uint64_t planned_ticks = 0;
   std::uint64_t deadline_misses = 0;  // real time: ticks that finished after the next deadline
   std::uint64_t guard_faults = 0;     // ticks whose wrench was not finite
+  // Ticks whose device state was not finite or outside physical bounds (physical_bounds.h): the
+  // last sane state was held and zero force sent.
+  std::uint64_t device_faults = 0;
+  // Streamed runs under a real-time clock: rows the writer had no room for (the tick never waits);
+  // they are missing from trace.csv, recording.csv and summary.json's statistics.
+  std::uint64_t dropped_rows = 0;
   Percentiles compute_us;             // per-tick compute time
   bool realtime = false;
   Percentiles jitter_us;       // real time: |actual period - nominal period|

@@ -25,7 +25,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // or OS timer keeps the period.
 constexpr double kMinRate = 100.0;
 constexpr double kMaxRate = 10e3;
-// A run is a session at a device or a batch computation; an hour bounds its pre-allocated trace.
+// A run is a session at a device or a batch computation; an hour bounds one session. The run
+// streams its trace to disk, so what it holds per tick stays within the buffer cap at any rate.
 constexpr double kMaxDuration = 3600.0;
 // Coulomb coefficients of dry or lubricated metal and polymer pairs stay below about 1.5.
 constexpr double kMaxFriction = 1.5;
@@ -293,14 +294,8 @@ RunSettings ParseRun(const ConfigNode& node) {
     duration.Fail("a run of at least one tick (1 / run.rate = " + Number(1.0 / run.rate) + " s)",
                   duration.Describe() + " at " + Number(run.rate) + " Hz");
   }
-  const double per_tick = kTraceBytesPerTick + (run.write_recording ? kRecordingBytesPerTick : 0);
-  if (ticks * per_tick > kMaxRunBufferBytes) {
-    duration.Fail("at most " + Number(std::floor(kMaxRunBufferBytes / per_tick / run.rate)) +
-                      " s at " + Number(run.rate) + " Hz (" +
-                      Number(kMaxRunBufferBytes / (1 << 30)) + " GiB of trace" +
-                      (run.write_recording ? " and recording" : "") + " buffers)",
-                  duration.Describe() + ", " + Number(ticks * per_tick / (1 << 30)) + " GiB");
-  }
+  static_assert(kMaxDuration * kMaxRate * kStreamBytesPerTick <= kMaxRunBufferBytes,
+                "the longest run at the highest rate fits the scheduler's buffer cap");
   return run;
 }
 
@@ -358,8 +353,7 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
   cost.prepare_bytes = cells * kBytesPerCell + cost.depth_steps * kBytesPerDepthStep +
                        vertices * kBytesPerTableVertex;
   cost.prepare_seconds = cells * kSecondsPerCell + vertices * kSecondsPerTableVertex;
-  cost.run_bytes = std::round(run.duration * run.rate) *
-                   (kTraceBytesPerTick + (run.write_recording ? kRecordingBytesPerTick : 0.0));
+  cost.run_bytes = std::round(run.duration * run.rate) * kStreamBytesPerTick;
   if (!options.allow_large &&
       (cost.prepare_bytes > kLargeSceneBytes || cost.prepare_seconds > kLargeSceneSeconds)) {
     // The table is the cost when the step is finer than the rows; otherwise the grid is.

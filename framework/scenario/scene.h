@@ -19,9 +19,13 @@ class PluginRegistry;
 
 enum class ClockMode { kVirtual, kRealTime };
 
-// What a run holds in memory per tick until its outputs are written: the trace record and its
-// three timing stamps, and the device sample when it records. The scheduler checks at compile
-// time that its records fit these, so the loader's refusal and the scheduler's agree.
+// What a run holds in memory per tick. A run streams its trace and recording to disk (RunScene,
+// TraceStream) and keeps per tick only its compute time and, in real time, three timing stamps:
+// kStreamBytesPerTick. A caller that keeps the trace in memory (Scheduler without a stream: tests,
+// benchmarks) holds the record and those stamps, and the device sample when it records. The
+// scheduler checks at compile time that its records fit these, so the loader's refusal and the
+// scheduler's agree.
+inline constexpr double kStreamBytesPerTick = 32.0;
 inline constexpr double kTraceBytesPerTick = 400.0;
 inline constexpr double kRecordingBytesPerTick = 240.0;
 // The buffers of one run: beyond this a scene is refused rather than swapped.
@@ -35,7 +39,7 @@ struct SceneCost {
   double depth_steps = 0.0;     // rows of the contact analyzer's depth tables
   double prepare_bytes = 0.0;   // grids, skin model shapes, analyzer tables
   double prepare_seconds = 0.0; // on one core of the reference machine (docs/scenario-format.md)
-  double run_bytes = 0.0;       // trace (and recording) buffers
+  double run_bytes = 0.0;       // what the run keeps per tick (kStreamBytesPerTick each)
 };
 inline constexpr double kLargeSceneBytes = 1.0 * 1024 * 1024 * 1024;
 inline constexpr double kLargeSceneSeconds = 30.0;

@@ -11,12 +11,14 @@ void TickPublisher::OnTick(const TickRecord& record) noexcept {
   ++ticks_;
 }
 
-void TickPublisher::OnRunEnd(const std::vector<TickRecord>& trace) {
-  std::vector<ViewSample> history;
-  history.reserve(trace.size());
-  for (std::size_t k = 0; k < trace.size(); ++k) history.push_back(MakeViewSample(trace[k], k));
+void TickPublisher::OnRecord(const TickRecord& record, std::uint64_t index) {
+  building_.push_back(MakeViewSample(record, index));
+}
+
+void TickPublisher::OnRunEnd() {
   std::lock_guard<std::mutex> lock(history_mutex_);
-  history_ = std::move(history);
+  history_ = std::move(building_);
+  building_ = {};
 }
 
 bool TickPublisher::PopLatest(ViewSample* sample) noexcept { return ring_.PopLatest(sample); }

@@ -15,8 +15,9 @@ namespace fitfeel::view {
 
 // Hands the tick's state to the viewer's server thread: OnTick (the tick thread) copies a
 // ViewSample into a lock-free ring and never waits; when the ring is full the sample is dropped
-// and counted. The server thread pops at display rate and keeps the newest. When the run ends,
-// the whole trace becomes the history a finished run is scrubbed through.
+// and counted. The server thread pops at display rate and keeps the newest. The records the run
+// streams (OnRecord, on the run's writer thread) become, when the run ends, the history a finished
+// run is scrubbed through.
 class FITFEEL_API TickPublisher final : public TickObserver {
  public:
   // `capacity` samples (rounded up to a power of two): at 1 kHz and a 60 Hz reader, 17 are
@@ -24,7 +25,8 @@ class FITFEEL_API TickPublisher final : public TickObserver {
   explicit TickPublisher(std::size_t capacity = 1024);
 
   void OnTick(const TickRecord& record) noexcept override;
-  void OnRunEnd(const std::vector<TickRecord>& trace) override;
+  void OnRecord(const TickRecord& record, std::uint64_t index) override;
+  void OnRunEnd() override;
 
   // Server side: the newest sample since the last call; false when none came.
   bool PopLatest(ViewSample* sample) noexcept;
@@ -39,6 +41,7 @@ class FITFEEL_API TickPublisher final : public TickObserver {
   std::atomic<std::uint64_t> dropped_{0};
   std::mutex history_mutex_;  // between the run's thread at its end and the server thread
   std::optional<std::vector<ViewSample>> history_;
+  std::vector<ViewSample> building_;  // the writer thread's, until OnRunEnd
 };
 
 }  // namespace fitfeel::view

@@ -8,6 +8,7 @@
 #include "framework/core/error.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/test/fake_scene.h"
+#include "framework/runtime/test/output_files.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
 
@@ -16,19 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path FreshDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("fitfeel-outputs-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::vector<std::string> Lines(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+fs::path FreshDir(const std::string& name) { return testing::FreshDir("outputs", name); }
+using testing::Lines;
 
 // Drops the tick_us column (7th), the only measured one.
 std::vector<std::string> WithoutTickTime(std::vector<std::string> lines) {
@@ -94,7 +84,7 @@ TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
   const auto lines = Lines(dir / "trace.csv");
   const std::string tail =
       ",guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,offset_x_um,"
-      "offset_z_um,elastic_utilisation,yielding";
+      "offset_z_um,elastic_utilisation,yielding,device_fault";
   ASSERT_GE(lines[0].size(), tail.size());
   EXPECT_EQ(lines[0].substr(lines[0].size() - tail.size()), tail);
   const auto columns = std::count(lines[0].begin(), lines[0].end(), ',');
@@ -212,9 +202,9 @@ TEST(OutputsTest, TraceFlagsYieldingAndTheSummarySaysWhereAndByHowMuch) {
   EXPECT_DOUBLE_EQ(e["at_t_s"].get<double>(), 0.002);
   EXPECT_NEAR(e["excess_percent"].get<double>(), 25.0, 1e-12);
   const std::string row = TraceRow(trace[2]);
-  EXPECT_EQ(row.substr(row.size() - 7), ",1.25,1");
+  EXPECT_EQ(row.substr(row.size() - 9), ",1.25,1,0");  // then device_fault
   const std::string elastic = TraceRow(trace[1]);
-  EXPECT_EQ(elastic.substr(elastic.size() - 6), ",0.5,0");
+  EXPECT_EQ(elastic.substr(elastic.size() - 8), ",0.5,0,0");
   // Nothing checked (no yield strength, or a law without a check): null, not zero.
   EXPECT_TRUE(MakeSummary(RunInfo{}, std::vector<TickRecord>(2), RunStats{})["elastic_limit"]
                   ["max_utilisation"]

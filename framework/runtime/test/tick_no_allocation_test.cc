@@ -86,5 +86,26 @@ TEST(SchedulerTickAllocation, TickWithTheSafetyChainAndRecordingDoesNotAllocate)
   }
 }
 
+// Streaming: the tick copies its row into the ring; when the ring is full (nobody drains it here)
+// it drops and counts the row. Neither allocates.
+TEST(SchedulerTickAllocation, AStreamingTickDoesNotAllocateWhetherTheRingHasRoomOrNot) {
+  PushingDevice device(LookupDeviceSpec("PHANTOM Desktop"));
+  device.Start(1e-3);
+  const WallStage positioning(StageId::kPositioning);
+  const WallStage constrained(StageId::kConstrained);
+  SpscRing<StreamRow> ring(512);
+  SchedulerSettings settings{1000.0, 2.0, ClockMode::kVirtual};
+  settings.record = true;
+  settings.stream = &ring;
+  Scheduler scheduler(device, positioning, constrained, settings);
+  test_support::ScopedAllocationCounter allocations;
+  int ticks = 0;
+  for (int k = 0; k < 2000; ++k) ticks += scheduler.Tick(k * 1e-3) ? 1 : 0;
+  allocations.Stop();
+  EXPECT_EQ(ticks, 2000);
+  EXPECT_EQ(allocations.count(), 0);
+  EXPECT_EQ(ring.size(), 512u);
+}
+
 }  // namespace
 }  // namespace fitfeel
