@@ -2,25 +2,26 @@
 
 # fitfeel_add_plugin(<name> SOURCES ... [LIBS ...] [OUTPUT_DIR dir] [EXPORT_ALL]) builds a
 # loadable module into the build tree's plugin folder. Only the registration hook is exported.
+# The same function an out-of-tree plugin calls through the installed package.
+include(${CMAKE_CURRENT_LIST_DIR}/fitfeelPlugin.cmake)
+
 function(fitfeel_add_plugin name)
   cmake_parse_arguments(ARG "EXPORT_ALL" "OUTPUT_DIR" "SOURCES;LIBS" ${ARGN})
-  add_library(${name} MODULE ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
   if(NOT ARG_OUTPUT_DIR)
     set(ARG_OUTPUT_DIR ${FITFEEL_BUILD_PLUGIN_DIR})
   endif()
-  set_target_properties(${name} PROPERTIES
-    PREFIX "lib"
-    LIBRARY_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
-  # Only the registration hook is exported, whatever the standard library instantiates.
-  # EXPORT_ALL is for test plugins that deliberately export something else.
-  if(NOT ARG_EXPORT_ALL)
-    target_link_options(${name} PRIVATE
-                        -Wl,--version-script=${PROJECT_SOURCE_DIR}/cmake/plugin_exports.map)
-    set_property(TARGET ${name} APPEND PROPERTY LINK_DEPENDS
-                 ${PROJECT_SOURCE_DIR}/cmake/plugin_exports.map)
+  if(ARG_EXPORT_ALL)
+    # Test plugins that deliberately export something else than the registration hook.
+    add_library(${name} MODULE ${ARG_SOURCES})
+    target_link_libraries(${name} PRIVATE fitfeel::fitfeel ${ARG_LIBS})
+    set_target_properties(${name} PROPERTIES PREFIX "lib")
+  else()
+    fitfeel_add_plugin_module(${name} SOURCES ${ARG_SOURCES} LIBS ${ARG_LIBS})
   endif()
+  set_target_properties(${name} PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${ARG_OUTPUT_DIR})
   if(ARG_OUTPUT_DIR STREQUAL FITFEEL_BUILD_PLUGIN_DIR)
+    # Installed in lib/fitfeel/plugins, two folders below the framework library.
+    set_target_properties(${name} PROPERTIES INSTALL_RPATH "$ORIGIN/../..")
     install(TARGETS ${name} LIBRARY DESTINATION lib/fitfeel/plugins)
     add_dependencies(fitfeel_plugins ${name})
   endif()

@@ -9,6 +9,15 @@ namespace fitfeel {
 // other translation unit compiles to the same object in any checkout (a shared compiler cache
 // then serves every work tree).
 FITFEEL_API const char* BuildPluginDir();
+// The installed plugin folder: lib/fitfeel/plugins beside the installed framework library, found
+// from where the library was loaded (an install prefix moved or chosen at `cmake --install
+// --prefix` still finds its plugins); the configured prefix's folder when that does not exist
+// (the build tree).
 FITFEEL_API const char* InstallPluginDir();
+// True when this framework library is an installed one (lib/fitfeel/plugins beside it): the
+// build tree's plugins are then not searched, whatever tree the library was built in.
+FITFEEL_API bool RunningFromInstall();
+// CMAKE_INSTALL_PREFIX/lib/fitfeel/plugins as configured (generated).
+const char* ConfiguredInstallPluginDir();
 
 }  // namespace fitfeel

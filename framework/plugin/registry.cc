@@ -286,7 +286,7 @@ struct PluginRegistry::Impl {
 
 std::vector<std::filesystem::path> PluginRegistry::DefaultSearchPath() {
   std::vector<fs::path> candidates = EnvironmentPath();
-  candidates.emplace_back(BuildPluginDir());
+  if (!RunningFromInstall()) candidates.emplace_back(BuildPluginDir());
   candidates.emplace_back(InstallPluginDir());
   std::vector<fs::path> out;
   for (const fs::path& folder : candidates) {

@@ -1,0 +1,53 @@
+#!/bin/bash
+# The installed package as a third party uses it: installs the build tree to a temporary prefix,
+# builds examples/ against it with find_package(fitfeel) (an out-of-tree surface plugin and a host
+# program), then checks that the installed `fitfeel plugins` finds its own plugins and, through
+# FITFEEL_PLUGIN_PATH, the out-of-tree one, and that the host runs a scene with it.
+#
+# install_test.sh BUILD_DIR SOURCE_DIR
+set -euo pipefail
+build=$1 source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+
+# The README's snippets are copied from the example files this test builds and runs: every line
+# of its cmake and cpp blocks in "Using fitfeel from other programs" is a line of those files.
+for kind in cmake cpp; do
+  awk -v k="$kind" '/^## Using fitfeel from other programs/{s=1} /^## Layout/{s=0}
+    s && $0 == "```" k {b=1; next} b && /^```/ {b=0} b' "$source/README.md" | while IFS= read -r line; do
+    grep -qxF -- "$line" <(sed 's/^ *//' "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc") ||
+      grep -qxF -- "$line" "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc" ||
+      { echo "README line not in examples/: $line"; exit 1; }
+  done
+done
+
+cmake --install "$build" --prefix "$prefix" >/dev/null
+test -f "$prefix/lib/cmake/fitfeel/fitfeelConfig.cmake" || { echo "no package config installed"; exit 1; }
+test -f "$prefix/include/fitfeel/framework/model/surface_type.h" || { echo "no headers installed"; exit 1; }
+
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$source/examples" -B "$work/examples" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}" >/dev/null
+cmake --build "$work/examples" >/dev/null
+
+# The installed CLI finds the installed plugins (relative to its library, wherever the prefix is)
+# and the out-of-tree plugin through FITFEEL_PLUGIN_PATH. Run from an empty folder, so nothing of
+# the source tree is found by accident.
+cd "$work"
+listing=$(FITFEEL_PLUGIN_PATH="$work/examples" "$prefix/bin/fitfeel" plugins)
+echo "$listing"
+for id in fitfeel.surface.cylindrical fitfeel.device.simulated fitfeel.surface.example_slide; do
+  grep -q "$id" <<<"$listing" || { echo "installed fitfeel plugins does not list $id"; exit 1; }
+done
+# Every plugin but the example from the prefix: the build tree is not searched by an install.
+grep -q "library: $prefix/lib/fitfeel/plugins/libfitfeel_surface_cylindrical.so" <<<"$listing" ||
+  { echo "the installed plugins were not loaded from the prefix"; exit 1; }
+if grep -q "(build tree)" <<<"$listing"; then echo "an install searched the build tree"; exit 1; fi
+
+FITFEEL_PLUGIN_PATH="$work/examples" "$work/examples/fitfeel_example_host" \
+  "$source/tests/example_slide/test/conformance.yaml" "$work/out"
+test -s "$work/out/trace.csv" && test -s "$work/out/summary.json" ||
+  { echo "the host's run wrote no outputs"; exit 1; }
+echo "install test: ok"
