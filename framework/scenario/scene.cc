@@ -14,6 +14,7 @@
 #include "framework/core/quantity.h"
 #include "framework/plugin/registry.h"
 #include "framework/scenario/part_parser.h"
+#include "framework/core/line_endings.h"
 #include "framework/scenario/yaml_file.h"
 
 namespace fitfeel {
@@ -371,9 +372,32 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
 
 }  // namespace
 
+namespace {
+
+Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
+                    const PluginRegistry& registry, const LoadOptions& options);
+
+}  // namespace
+
 Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
                 const LoadOptions& options) {
-  const ConfigNode root = scenario::LoadYamlFile(file);
+  return LoadSceneFrom(scenario::LoadYamlFile(file), file, registry, options);
+}
+
+Scene LoadSceneFromYaml(std::string_view text, const std::filesystem::path& name,
+                        const PluginRegistry& registry, const LoadOptions& options) {
+  const ConfigNode root = ConfigNode::Parse(NormalizeLineEndings(std::string(text)), name.string());
+  if (!root.is_map()) {
+    root.Fail("a map of scenario keys (scenario, surface, parts, moving, model, device, run)",
+              root.is_null() ? "an empty text" : root.Describe());
+  }
+  return LoadSceneFrom(root, name, registry, options);
+}
+
+namespace {
+
+Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
+                    const PluginRegistry& registry, const LoadOptions& options) {
   root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "model", "device",
                        "safety", "run"});
   // Every required section is present before any is interpreted, so a missing one is reported
@@ -426,5 +450,7 @@ Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registr
                             scene.model, scene.run, options);
   return scene;
 }
+
+}  // namespace
 
 }  // namespace fitfeel

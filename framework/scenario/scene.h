@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
@@ -91,5 +92,10 @@ struct LoadOptions {
 // here, located at the key that causes it.
 FITFEEL_API Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
                             const LoadOptions& options = {});
+// The same from YAML text (an engine's own scene, the C API); `name` stands for the file in
+// messages and relative paths (a replay's recording) resolve from the working folder.
+FITFEEL_API Scene LoadSceneFromYaml(std::string_view text, const std::filesystem::path& name,
+                                    const PluginRegistry& registry,
+                                    const LoadOptions& options = {});
 
 }  // namespace fitfeel
