@@ -12,11 +12,12 @@ trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
 
 # The README's snippets are copied from the example files this test builds and runs: every line
-# of its cmake and cpp blocks in "Using fitfeel from other programs" is a line of those files.
-for kind in cmake cpp; do
+# of its cmake, cpp and c blocks in "Using fitfeel from other programs" is a line of those files.
+for kind in cmake cpp c; do
   awk -v k="$kind" '/^## Using fitfeel from other programs/{s=1} /^## Layout/{s=0}
     s && $0 == "```" k {b=1; next} b && /^```/ {b=0} b' "$source/README.md" | while IFS= read -r line; do
-    grep -qxF -- "$line" <(sed 's/^ *//' "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc") ||
+    grep -qxF -- "$line" <(sed 's/^ *//' "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc" \
+                                 "$source/examples/c_host/c_host.c") ||
       grep -qxF -- "$line" "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc" ||
       { echo "README line not in examples/: $line"; exit 1; }
   done
@@ -50,4 +51,9 @@ FITFEEL_PLUGIN_PATH="$work/examples" "$work/examples/fitfeel_example_host" \
   "$source/tests/example_slide/test/conformance.yaml" "$work/out"
 test -s "$work/out/trace.csv" && test -s "$work/out/summary.json" ||
   { echo "the host's run wrote no outputs"; exit 1; }
+
+# The C host: half a second of its own 1 kHz loop on the paper's case, through libfitfeel_c.
+c_out=$("$work/examples/fitfeel_example_c_host" "$source/scenarios/paper-case1-h7js6.yaml" 500)
+echo "$c_out"
+grep -q "^500 ticks at 1 kHz" <<<"$c_out" || { echo "the C host did not run 500 ticks"; exit 1; }
 echo "install test: ok"
