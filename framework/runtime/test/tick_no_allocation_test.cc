@@ -55,6 +55,7 @@ class WallStage final : public Stage {
 };
 
 TEST(SchedulerTickAllocation, CounterSeesAllocations) {
+  FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
   test_support::ScopedAllocationCounter allocations;
   auto probe = std::make_unique<double>(1.0);
   allocations.Stop();
@@ -73,6 +74,7 @@ TEST(SchedulerTickAllocation, TickWithTheSafetyChainAndRecordingDoesNotAllocate)
     settings.safety.passivity_controller = true;
     settings.record = true;
     Scheduler scheduler(device, positioning, constrained, settings);
+    FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
     test_support::ScopedAllocationCounter allocations;
     int ticks = 0;
     for (int k = 0; k < 2000; ++k) ticks += scheduler.Tick(k * 1e-3) ? 1 : 0;
@@ -98,6 +100,7 @@ TEST(SchedulerTickAllocation, AStreamingTickDoesNotAllocateWhetherTheRingHasRoom
   settings.record = true;
   settings.stream = &ring;
   Scheduler scheduler(device, positioning, constrained, settings);
+  FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
   test_support::ScopedAllocationCounter allocations;
   int ticks = 0;
   for (int k = 0; k < 2000; ++k) ticks += scheduler.Tick(k * 1e-3) ? 1 : 0;
