@@ -43,10 +43,28 @@ CirculantContact::CirculantContact(const std::vector<double>& compliance, int n)
     u(j, 1) = sin_[static_cast<std::size_t>(j)];
   }
   g_inv_ = g_.llt().solve(Eigen::MatrixXd::Identity(n, n));
-  full_stiffness_ = u.transpose() * g_inv_ * u;
+  g_inv_u_ = g_inv_ * u;
+  full_stiffness_ = u.transpose() * g_inv_u_;
 }
 
-int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active) {
+void CirculantContact::InverseTimes(const double* x, double* out) const {
+  Eigen::Map<Eigen::VectorXd>(out, n_).noalias() =
+      g_inv_ * Eigen::Map<const Eigen::VectorXd>(x, n_);
+}
+
+bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
+                                 std::vector<char>* active) {
+  for (int j = 0; j < n_; ++j) {
+    p[j] = g_inv_u_(j, 0) * e.x() + g_inv_u_(j, 1) * e.y() - inverse_gap[j];
+    if (p[j] < 0.0) return false;
+  }
+  active->assign(static_cast<std::size_t>(n_), 1);
+  last_full_ = true;
+  return true;
+}
+
+int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active,
+                            bool try_full) {
   const int n = n_;
   std::vector<char>& f = *active;
   if (static_cast<int>(f.size()) != n) f.assign(static_cast<std::size_t>(n), 0);
@@ -59,7 +77,7 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   int best = n + 1, chances = 3, steps = 0;
   Eigen::VectorXd w(n);
   last_full_ = false;
-  {
+  if (try_full) {
     const Eigen::VectorXd full = g_inv_ * Eigen::Map<const Eigen::VectorXd>(delta, n);
     if (full.minCoeff() >= 0.0) {
       for (int j = 0; j < n; ++j) p[j] = full[j];
@@ -183,7 +201,9 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
       std::fill(p, p + n, 0.0);
       continue;
     }
-    contact_.Solve(delta_.data(), p, &active_[s]);
+    if (!contact_.SolveFull(e, InverseGap(sec, s), p, &active_[s])) {
+      contact_.Solve(delta_.data(), p, &active_[s], /*try_full=*/false);
+    }
     double energy = 0.0;
     Eigen::Vector2d f(0.0, 0.0);
     for (std::size_t j = 0; j < nn; ++j) {
@@ -216,6 +236,16 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
   return phi;
 }
 
+const double* RigidSectionContact::InverseGap(const ContactSection& section, std::size_t index) {
+  const auto n = static_cast<std::size_t>(columns());
+  double* out = inverse_gap_.data() + index * n;
+  if (!inverse_gap_ready_[index]) {
+    contact_.InverseTimes(section.gap, out);
+    inverse_gap_ready_[index] = 1;
+  }
+  return out;
+}
+
 double RigidSectionContact::DistanceToContact(std::span<const ContactSection> sections,
                                               const RigidFreedom& freedom,
                                               const Eigen::Vector4d& q,
@@ -239,6 +269,8 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
                                               const RigidFreedom& freedom,
                                               const Eigen::Vector4d& warm) {
   active_.assign(sections.size(), std::vector<char>(static_cast<std::size_t>(columns()), 0));
+  inverse_gap_.resize(sections.size() * static_cast<std::size_t>(columns()));
+  inverse_gap_ready_.assign(sections.size(), 0);
   double length = 0.0;
   for (const ContactSection& s : sections) length = std::max(length, std::abs(s.y));
   length = std::max(length, 1e-6);

@@ -51,6 +51,8 @@ PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int ind
   // A scene of its own per pair: its own device and plugin objects, nothing shared between pairs
   // but the registry's read-only tables.
   Scene scene = LoadScene(file, registry);
+  const bool checked =
+      scene.inner.material.yield_strength > 0.0 || scene.outer.material.yield_strength > 0.0;
   scene.run.write_trace = false;
   scene.run.write_summary = false;
   scene.run.write_recording = false;
@@ -73,6 +75,15 @@ PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int ind
   pair.axial_mean_N = Stat(s, "axial_resistance_N", "mean");
   pair.axial_max_N = Stat(s, "axial_resistance_N", "max");
   pair.radial_max_N = Stat(s, "radial_resistance_N", "max");
+  if (const auto elastic = s.find("elastic_limit"); elastic != s.end()) {
+    const auto u = elastic->find("max_utilisation");
+    if (u != elastic->end() && !u->is_null()) {
+      pair.elastic_utilisation_max = u->get<double>();
+    } else if (checked) {
+      pair.elastic_utilisation_max = 0.0;  // checked, but no tick ever pressed the parts
+    }
+    pair.plastic = elastic->value("yielding_ticks", 0) > 0;
+  }
   pair.prepare_s = run.info.prepare_seconds;
   return pair;
 }
@@ -177,14 +188,17 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
 std::string PairsCsv(const StudyResult& result) {
   std::string text =
       "pair,seed,shaft_size_um,hole_size_um,min_clearance_um,interfering,axial_mean_N,"
-      "axial_max_N,radial_max_N,constrained_ticks,rejections\n";
+      "axial_max_N,radial_max_N,constrained_ticks,plastic,elastic_utilisation_max,rejections\n";
   for (const PairResult& p : result.pairs) {
     text += std::to_string(p.pair) + ',' + std::to_string(p.seed) + ',' +
             Number(p.shaft_size_um) + ',' + Number(p.hole_size_um) + ',' +
             (p.min_clearance_um ? Number(*p.min_clearance_um) : std::string()) + ',' +
             (p.interfering ? "1" : "0") + ',' + Number(p.axial_mean_N) + ',' +
             Number(p.axial_max_N) + ',' + Number(p.radial_max_N) + ',' +
-            std::to_string(p.constrained_ticks) + ',' + std::to_string(p.rejections) + '\n';
+            std::to_string(p.constrained_ticks) + ',' +
+            (p.elastic_utilisation_max ? (p.plastic ? "1" : "0") : "") + ',' +
+            (p.elastic_utilisation_max ? Number(*p.elastic_utilisation_max) : std::string()) +
+            ',' + std::to_string(p.rejections) + '\n';
   }
   return text;
 }
@@ -192,8 +206,12 @@ std::string PairsCsv(const StudyResult& result) {
 std::string StudyJson(const StudyResult& result) {
   std::vector<double> mean, max;
   int interfering = 0;
+  int checked = 0;
+  int plastic = 0;
   long rejections = 0;
   for (const PairResult& p : result.pairs) {
+    if (p.elastic_utilisation_max) ++checked;
+    if (p.elastic_utilisation_max && p.plastic) ++plastic;
     mean.push_back(p.axial_mean_N);
     max.push_back(p.axial_max_N);
     if (p.interfering) ++interfering;
@@ -209,6 +227,9 @@ std::string StudyJson(const StudyResult& result) {
   j["seed"] = result.seed;
   j["threads"] = result.threads;
   j["probability_of_interference"] = n > 0 ? interfering / n : 0.0;
+  // Among the pairs whose stresses were checked against a yield strength; null when none was.
+  j["probability_of_yield"] =
+      checked > 0 ? nlohmann::json(static_cast<double>(plastic) / checked) : nlohmann::json();
   j["axial_mean_N"] = DistributionJson(Describe(mean));
   j["axial_max_N"] = DistributionJson(Describe(max));
   // Scrapped parts over all parts made (two kept per pair).

@@ -47,6 +47,11 @@ struct PairResult {
   double axial_max_N = 0.0;
   double radial_max_N = 0.0;
   int constrained_ticks = 0;
+  // Largest equivalent stress over the yield strength over the run (summary.json's
+  // elastic_limit), 0 when no tick pressed the parts; absent when neither part has a yield
+  // strength.
+  std::optional<double> elastic_utilisation_max;
+  bool plastic = false;  // some tick yielded (utilisation > 1): the elastic model no longer holds
   int rejections = 0;  // parts a statistical process scrapped before this pair's two parts
   double prepare_s = 0.0;
   double wall_s = 0.0;

@@ -207,7 +207,7 @@ TEST(LoadStudy, ReadsWhatWriteStudyWroteAndLocatesBrokenLines) {
   EXPECT_EQ(chart.panels[0].series[0].y, (std::vector<double>{0.3, 120.0}));
   EXPECT_EQ(chart.panels[0].series[1].label, "VE1");
 
-  std::ofstream(dir / "pairs.csv", std::ios::app) << "2,1,0,0,,0,abc,1,1,3899,0\n";
+  std::ofstream(dir / "pairs.csv", std::ios::app) << "2,1,0,0,,0,abc,1,1,3899,,,0\n";
   try {
     LoadStudy(dir);
     FAIL() << "a broken line was accepted";
