@@ -10,6 +10,8 @@
 
 namespace fitfeel {
 
+struct MeasuredSurface;
+
 // Which side of the mating pair a part is. The tolerance space is S_T = V_outer - V_inner.
 enum class Role { kInner, kOuter };  // shaft / key / pin / ball ; bushing / keyway / hole / socket
 
@@ -101,6 +103,8 @@ struct PartSpec {
   Material material;
   std::shared_ptr<const Geometry> geometry;
   ProcessSpec process;  // how the part's size and form are spread (paper: uniform)
+  // A part measured instead of drawn (docs/measured-parts.md); null: generated.
+  std::shared_ptr<const MeasuredSurface> measured;
 };
 
 }  // namespace fitfeel

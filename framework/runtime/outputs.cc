@@ -198,6 +198,7 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
                  {"energy_created_J", safety.energy_created},
                  {"controller_energy_J", safety.controller_energy}};
   if (!info.device_report.is_null()) j["device_report"] = info.device_report;
+  if (!info.measured_parts.is_null()) j["measured_parts"] = info.measured_parts;
   j["prepare_s"] = {{"discretize", info.discretize_seconds},
                     {"generate", info.generate_seconds},
                     {"analyze", info.analyze_seconds},

@@ -37,6 +37,8 @@ struct RunInfo {
   int inner_rows = 0, inner_columns = 0, outer_rows = 0, outer_columns = 0;
   // What the device reported after the run (Device::report); null: nothing.
   nlohmann::json device_report;
+  // Measured parts: file, kind, whether each meets its drawing; null: none measured.
+  nlohmann::json measured_parts;
 };
 
 struct OutputPaths {

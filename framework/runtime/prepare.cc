@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "framework/core/error.h"
+#include "framework/model/measured_surface.h"
 
 namespace fitfeel {
 namespace {
@@ -40,8 +41,15 @@ SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng) {
   const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
   shapes.discretize_seconds = SecondsSince(t);
   t = Clock::now();
-  shapes.inner = generator->Generate(scene.inner, inner_grid, scene.model.texture, rng);
-  shapes.outer = generator->Generate(scene.outer, outer_grid, scene.model.texture, rng);
+  // A measured part takes no draw: the other part's draws are those it gets with the same seed
+  // when it comes first, not otherwise (docs/measured-parts.md).
+  auto shape = [&](const PartSpec& part, const SurfaceGrid& grid) {
+    return part.measured
+               ? MeasuredSkinModelShape(*part.measured, grid, part.size.nominal / 2.0)
+               : generator->Generate(part, grid, scene.model.texture, rng);
+  };
+  shapes.inner = shape(scene.inner, inner_grid);
+  shapes.outer = shape(scene.outer, outer_grid);
   shapes.generate_seconds = SecondsSince(t);
   return shapes;
 }

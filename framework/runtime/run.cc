@@ -1,11 +1,14 @@
 #include "framework/runtime/run.h"
 
+#include "framework/model/measured_surface.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
+#include "framework/model/measured_surface.h"
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
@@ -27,6 +30,37 @@ std::string FormatStiffness(double n_per_m) {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.3g N/mm", n_per_m * 1e-3);
   return buffer;
+}
+
+// For each measured part: its file and whether it meets its drawing, by the surface type's own
+// metrology (the one that checks generated parts). Null when no part is measured.
+nlohmann::json MeasuredPartsReport(const Scene& scene, const PreparedScene& prepared) {
+  nlohmann::json report;
+  for (const auto& [part, sms] : {std::pair{&scene.inner, prepared.inner_sms.get()},
+                                  std::pair{&scene.outer, prepared.outer_sms.get()}}) {
+    if (!part->measured) continue;
+    nlohmann::json entry = {{"file", part->measured->file.string()},
+                            {"kind", MeasurementKindName(part->measured->kind)}};
+    try {
+      nlohmann::json checks = nlohmann::json::array();
+      bool meets = true;
+      for (const CharacteristicCheck& c : scene.surface->EvaluateCharacteristics(*part, *sms)) {
+        // The conformance suite's allowance: 0.1 nm of evaluation rounding.
+        const bool pass = c.value >= c.lower - 1e-10 && c.value <= c.upper + 1e-10;
+        meets = meets && pass;
+        checks.push_back({{"name", c.name}, {"value_um", c.value * 1e6},
+                          {"lower_um", c.lower * 1e6}, {"upper_um", c.upper * 1e6},
+                          {"pass", pass}});
+      }
+      entry["meets_drawing"] = meets;
+      entry["characteristics"] = checks;
+    } catch (const UnsupportedError& e) {
+      entry["meets_drawing"] = nullptr;
+      entry["not_evaluated"] = e.what();
+    }
+    report[part->name] = entry;
+  }
+  return report;
 }
 
 }  // namespace
@@ -64,6 +98,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   info.inner_columns = prepared.inner_sms->grid.columns;
   info.outer_rows = prepared.outer_sms->grid.rows;
   info.outer_columns = prepared.outer_sms->grid.columns;
+  info.measured_parts = MeasuredPartsReport(scene, prepared);
 
   SchedulerSettings settings;
   settings.rate = scene.run.rate;

@@ -11,6 +11,8 @@
 #include "framework/core/quantity.h"
 #include "framework/core/quantity_parse.h"
 #include "framework/iso286/iso286.h"
+#include "framework/model/measured_surface.h"
+#include "framework/scenario/measurement_file.h"
 
 namespace fitfeel::scenario {
 namespace {
@@ -219,6 +221,25 @@ ProcessSpec ParseProcess(const ConfigNode& node) {
   return process;
 }
 
+// `measured: {roundness: FILE}` (or straightness, or points): FILE relative to the scenario's
+// folder.
+std::shared_ptr<const MeasuredSurface> ParseMeasured(const ConfigNode& node,
+                                                     double nominal_radius) {
+  node.ExpectOnlyKeys({"roundness", "straightness", "points"});
+  const std::vector<std::string> keys = node.Keys();
+  if (keys.size() != 1) {
+    node.Fail("one measurement: roundness, straightness or points (a file each)",
+              std::to_string(keys.size()) + " keys");
+  }
+  const MeasurementKind kind = keys[0] == "roundness"      ? MeasurementKind::kRoundness
+                               : keys[0] == "straightness" ? MeasurementKind::kStraightness
+                                                           : MeasurementKind::kPoints;
+  const ConfigNode file = node.Child(keys[0]);
+  std::filesystem::path path = file.AsString();
+  if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
+  return std::make_shared<const MeasuredSurface>(ReadMeasurement(path, kind, nominal_radius, file));
+}
+
 }  // namespace
 
 SizeSpec ParseSize(const ConfigNode& node, Role role) {
@@ -229,7 +250,8 @@ SizeSpec ParseSize(const ConfigNode& node, Role role) {
 
 PartSpec ParsePart(const std::string& name, const ConfigNode& node, const SurfaceType& surface,
                    const std::string& surface_id) {
-  node.ExpectOnlyKeys({"role", "size", "geometry", "form", "texture", "material", "process"});
+  node.ExpectOnlyKeys(
+      {"role", "size", "geometry", "form", "texture", "material", "process", "measured"});
   PartSpec part;
   part.name = name;
   part.role =
@@ -244,6 +266,13 @@ PartSpec ParsePart(const std::string& name, const ConfigNode& node, const Surfac
   part.material = ParseMaterial(node.Child("material"));
   if (std::optional<ConfigNode> process = node.Find("process")) {
     part.process = ParseProcess(*process);
+  }
+  if (std::optional<ConfigNode> measured = node.Find("measured")) {
+    if (node.Has("process")) {
+      node.Child("process").Fail("no process for a measured part (it is not drawn)",
+                                 "both `process` and `measured`");
+    }
+    part.measured = ParseMeasured(*measured, part.size.nominal / 2.0);
   }
   return part;
 }

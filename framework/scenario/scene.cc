@@ -12,6 +12,7 @@
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
+#include "framework/model/measured_surface.h"
 #include "framework/plugin/registry.h"
 #include "framework/scenario/part_parser.h"
 #include "framework/core/line_endings.h"
@@ -328,6 +329,19 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
                     ? GridShape{model.resolution.rows, model.resolution.columns}
                     : Located(grid_key, "a resolution the surface type can discretize",
                               [&] { return discretizer->Shape(*parts[k], model.resolution); });
+  }
+  // A measured part is resampled onto a cylinder's grid only: refused now, at its key, for a
+  // surface whose grid is another (the grid is small next to the cost admitted above).
+  for (int k = 0; k < 2; ++k) {
+    const MeasuredSurface* m = parts[k]->measured.get();
+    if (m == nullptr || discretizer == nullptr) continue;
+    const SurfaceGrid grid = discretizer->Discretize(*parts[k], model.resolution);
+    if (!IsCylinderGrid(grid, parts[k]->size.nominal / 2.0)) {
+      throw ScenarioError(m->key_location, m->key_path,
+                          "a part of a cylindrical mating surface (measurements are resampled "
+                          "onto a cylinder's grid)",
+                          "a measured part of a surface whose grid is not a cylinder's");
+    }
   }
   SceneCost cost;
   cost.inner_cells = shapes[0].cells();

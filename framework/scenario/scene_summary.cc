@@ -1,5 +1,7 @@
 #include "framework/scenario/scene_summary.h"
 
+#include "framework/model/measured_surface.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -48,6 +50,13 @@ std::string DescribePart(const PartSpec& part, bool moving) {
   out += indent + "material " + (material.name.empty() ? "" : material.name + ", ") + "E " +
          FormatQuantity(material.youngs_modulus, Dimension::kPressure) + ", nu " +
          Number(material.poisson) + "\n";
+  if (part.measured) {
+    const MeasuredSurface& m = *part.measured;
+    out += indent + "measured " + MeasurementKindName(m.kind) + " " + m.file.string() + ": " +
+           std::to_string(m.value.size()) + " samples" +
+           (m.traces > 0 ? " in " + std::to_string(m.traces) + " traces" : std::string()) +
+           " (drawn parts' size and form are the drawing it is checked against)\n";
+  }
   return out;
 }
 

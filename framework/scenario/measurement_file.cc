@@ -1,0 +1,283 @@
+#include "framework/scenario/measurement_file.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "framework/core/error.h"
+#include "framework/core/line_endings.h"
+#include "framework/core/quantity.h"
+
+namespace fitfeel::scenario {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Column {
+  std::string name;
+  double scale = 1.0;  // file unit -> SI
+  int index = 0;       // which cell of a line
+};
+
+struct Cell {
+  std::string text;
+  int position = 0;
+};
+
+std::string Trim(const std::string& s) {
+  const auto begin = s.find_first_not_of(" \t\r");
+  if (begin == std::string::npos) return "";
+  return s.substr(begin, s.find_last_not_of(" \t\r") - begin + 1);
+}
+
+std::vector<Cell> SplitCells(const std::string& line) {
+  std::vector<Cell> cells;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = std::min(line.find(',', start), line.size());
+    const std::string raw = line.substr(start, end - start);
+    const std::size_t lead = raw.find_first_not_of(" \t\r");
+    cells.push_back({Trim(raw), static_cast<int>(start + (lead == std::string::npos ? 0 : lead)) + 1});
+    if (end == line.size()) break;
+    start = end + 1;
+  }
+  return cells;
+}
+
+class Reader {
+ public:
+  Reader(fs::path file, const ConfigNode& key) : file_(std::move(file)), key_(key) {}
+
+  [[noreturn]] void Fail(int line, int column, const std::string& expected,
+                         const std::string& found) const {
+    throw ScenarioError({file_.string(), line, column}, key_.path(), expected, found);
+  }
+
+  const fs::path& file() const { return file_; }
+
+ private:
+  fs::path file_;
+  const ConfigNode& key_;
+};
+
+// The columns each kind reads, with their dimension; radius and deviation are alternatives.
+const std::map<std::string, Dimension>& KnownColumns(MeasurementKind kind) {
+  static const std::map<std::string, Dimension> traces = {{"height", Dimension::kLength},
+                                                          {"angle", Dimension::kAngle},
+                                                          {"radius", Dimension::kLength},
+                                                          {"deviation", Dimension::kLength}};
+  static const std::map<std::string, Dimension> points = {
+      {"x", Dimension::kLength}, {"y", Dimension::kLength}, {"z", Dimension::kLength}};
+  return kind == MeasurementKind::kPoints ? points : traces;
+}
+
+std::string Expected(MeasurementKind kind) {
+  return kind == MeasurementKind::kPoints
+             ? "a header of the columns x, y, z, each as 'name [unit]' (e.g. 'x [mm]')"
+             : "a header of the columns height, angle and radius or deviation, each as "
+               "'name [unit]' (e.g. 'angle [deg]')";
+}
+
+std::map<std::string, Column> ParseHeader(const std::string& line, int number,
+                                          MeasurementKind kind, const Reader& reader) {
+  const auto& known = KnownColumns(kind);
+  std::map<std::string, Column> columns;
+  const std::vector<Cell> cells = SplitCells(line);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const Cell& cell = cells[k];
+    const std::size_t open = cell.text.find('[');
+    const std::size_t close = cell.text.rfind(']');
+    if (open == std::string::npos || close != cell.text.size() - 1 || close < open) {
+      reader.Fail(number, cell.position, Expected(kind), "'" + cell.text + "'");
+    }
+    const std::string name = Trim(cell.text.substr(0, open));
+    const std::string unit = Trim(cell.text.substr(open + 1, close - open - 1));
+    const auto it = known.find(name);
+    if (it == known.end()) {
+      reader.Fail(number, cell.position, Expected(kind), "a column '" + name + "'");
+    }
+    if (columns.count(name) != 0) {
+      reader.Fail(number, cell.position, "each column once", "'" + name + "' again");
+    }
+    double scale = 0.0;
+    try {
+      scale = ParseQuantity("1 " + unit, it->second);
+    } catch (const std::invalid_argument&) {
+      reader.Fail(number, cell.position,
+                  "a unit of " + DescribeDimension(it->second) + " for '" + name + "'",
+                  "'" + unit + "'");
+    }
+    columns[name] = {name, scale, static_cast<int>(k)};
+  }
+  auto need = [&](const char* name) {
+    if (columns.count(name) == 0) {
+      reader.Fail(number, 1, Expected(kind), std::string("no column '") + name + "'");
+    }
+  };
+  if (kind == MeasurementKind::kPoints) {
+    need("x");
+    need("y");
+    need("z");
+  } else {
+    need("height");
+    need("angle");
+    const bool radius = columns.count("radius") != 0, deviation = columns.count("deviation") != 0;
+    if (radius == deviation) {
+      reader.Fail(number, 1, "one of the columns radius or deviation",
+                  radius ? "both" : "neither");
+    }
+  }
+  return columns;
+}
+
+double Normalised(double angle) {
+  const double two_pi = 2.0 * std::numbers::pi;
+  double a = std::fmod(angle, two_pi);
+  if (a < 0.0) a += two_pi;
+  return a >= two_pi ? 0.0 : a;
+}
+
+}  // namespace
+
+MeasuredSurface ReadMeasurement(const fs::path& file, MeasurementKind kind, double nominal_radius,
+                                const ConfigNode& key) {
+  std::ifstream in(file, std::ios::binary);
+  std::error_code ec;
+  if (!in || fs::is_directory(file, ec)) {
+    key.Fail("a readable " + std::string(MeasurementKindName(kind)) + " measurement file (CSV)",
+             "'" + file.string() + "', which cannot be read");
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const Reader reader(file, key);
+  MeasuredSurface m;
+  m.kind = kind;
+  m.file = file;
+  m.key_location = key.location();
+  m.key_path = key.path();
+  std::istringstream lines(NormalizeLineEndings(buffer.str()));
+  std::string line;
+  std::optional<std::map<std::string, Column>> header;
+  std::vector<int> line_of;  // per sample, for the errors found after reading
+  int number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    const std::string trimmed = Trim(line);
+    if (trimmed.empty() || trimmed.front() == '#') continue;
+    if (!header) {
+      header = ParseHeader(line, number, kind, reader);
+      continue;
+    }
+    const std::vector<Cell> cells = SplitCells(line);
+    if (cells.size() != header->size()) {
+      reader.Fail(number, 1, std::to_string(header->size()) + " cells, as the header",
+                  std::to_string(cells.size()));
+    }
+    auto value = [&](const char* name) {
+      const Column& c = header->at(name);
+      const Cell& cell = cells[static_cast<std::size_t>(c.index)];
+      double x = 0.0;
+      const auto r = std::from_chars(cell.text.data(), cell.text.data() + cell.text.size(), x);
+      if (cell.text.empty() || r.ec != std::errc() ||
+          r.ptr != cell.text.data() + cell.text.size() || !std::isfinite(x)) {
+        reader.Fail(number, cell.position, std::string("a finite number in column '") + name + "'",
+                    "'" + cell.text + "'");
+      }
+      return std::pair<double, int>(x * c.scale, cell.position);
+    };
+    auto bounded = [&](const char* name, double bound, const std::string& what) {
+      const auto [x, position] = value(name);
+      if (!(std::abs(x) <= bound)) {
+        reader.Fail(number, position, what, FormatQuantity(x, Dimension::kLength));
+      }
+      return x;
+    };
+    const std::string coordinate = "a coordinate within 10 m";
+    const std::string near_nominal = "a radius within 1 mm of the nominal " +
+                                     FormatQuantity(nominal_radius, Dimension::kLength) +
+                                     " (a wrong unit or frame?)";
+    if (kind == MeasurementKind::kPoints) {
+      const double x = bounded("x", kMaxMeasuredCoordinate, coordinate);
+      const double y = bounded("y", kMaxMeasuredCoordinate, coordinate);
+      const double z = bounded("z", kMaxMeasuredCoordinate, coordinate);
+      const double r = std::hypot(x, z);
+      if (!(std::abs(r - nominal_radius) <= kMaxMeasuredDeviation)) {
+        reader.Fail(number, cells[static_cast<std::size_t>(header->at("x").index)].position,
+                    near_nominal,
+                    "a point at radius " + FormatQuantity(r, Dimension::kLength));
+      }
+      m.height.push_back(y);
+      m.angle.push_back(Normalised(std::atan2(z, x)));
+      m.value.push_back(r);
+      m.absolute = true;
+    } else {
+      m.height.push_back(bounded("height", kMaxMeasuredCoordinate, coordinate));
+      const auto [angle, angle_at] = value("angle");
+      if (!(std::abs(angle) <= 1000.0)) {
+        reader.Fail(number, angle_at, "an angle within 1000 rad", std::to_string(angle) + " rad");
+      }
+      m.angle.push_back(Normalised(angle));
+      if (header->count("radius") != 0) {
+        const auto [r, at] = value("radius");
+        if (!(std::abs(r - nominal_radius) <= kMaxMeasuredDeviation)) {
+          reader.Fail(number, at, near_nominal, FormatQuantity(r, Dimension::kLength));
+        }
+        m.value.push_back(r);
+        m.absolute = true;
+      } else {
+        m.value.push_back(bounded("deviation", kMaxMeasuredDeviation,
+                                  "a deviation within 1 mm (a wrong unit?)"));
+      }
+    }
+    line_of.push_back(number);
+  }
+  if (!header) reader.Fail(number, 1, Expected(kind), "no header");
+  if (m.value.empty()) reader.Fail(number, 1, "at least one sample after the header", "none");
+
+  // Traces: group, check distinct samples and enough of them.
+  if (kind != MeasurementKind::kPoints) {
+    const bool roundness = kind == MeasurementKind::kRoundness;
+    const std::vector<double>& key_of = roundness ? m.height : m.angle;
+    const std::vector<double>& along = roundness ? m.angle : m.height;
+    std::vector<std::size_t> order(m.value.size());
+    for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return key_of[a] != key_of[b] ? key_of[a] < key_of[b] : along[a] < along[b];
+    });
+    const std::size_t least = roundness ? 3 : 2;
+    std::size_t first = 0;
+    for (std::size_t k = 0; k <= order.size(); ++k) {
+      const bool ends = k == order.size() || key_of[order[k]] != key_of[order[first]];
+      if (ends) {
+        ++m.traces;
+        if (k - first < least) {
+          reader.Fail(line_of[order[first]], 1,
+                      std::string("at least ") + std::to_string(least) + " samples in each " +
+                          (roundness ? "roundness trace (one height)"
+                                     : "straightness trace (one angle)"),
+                      std::to_string(k - first));
+        }
+        first = k;
+        continue;
+      }
+      if (k > first && along[order[k]] == along[order[k - 1]]) {
+        const std::size_t later = std::max(order[k], order[k - 1]);
+        reader.Fail(line_of[later], 1, "each sample of a trace once",
+                    std::string("a repeated ") + (roundness ? "angle" : "height") + " (line " +
+                        std::to_string(line_of[std::min(order[k], order[k - 1])]) + ")");
+      }
+    }
+  } else if (m.value.size() < 3) {
+    reader.Fail(number, 1, "at least 3 points", std::to_string(m.value.size()));
+  }
+  return m;
+}
+
+}  // namespace fitfeel::scenario

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "framework/core/config_node.h"
+#include "framework/model/measured_surface.h"
+
+namespace fitfeel::scenario {
+
+// Physical bounds of a measurement's samples (docs/measured-parts.md): coordinates within 10 m
+// (the bounds of a recording), and a radius within 1 mm of the nominal one: a fit's size and
+// form deviations are micrometres, so a larger one is a wrong unit or frame, not a part.
+inline constexpr double kMaxMeasuredCoordinate = 10.0;
+inline constexpr double kMaxMeasuredDeviation = 1e-3;
+
+// Reads the CSV measurement `file` of the kind named by the scenario key `key`
+// (parts.<part>.measured.<kind>): '#' comment lines, a header of `name [unit]` cells, then one
+// sample per line. Roundness and straightness files have the columns height, angle and radius or
+// deviation (any order); point clouds x, y, z (y along the mating axis, the part's mating frame).
+// Throws ScenarioError at the key when the file cannot be read, and at file:line:column with the
+// key path for a bad header, a cell that is not a finite number, a value outside physical sense
+// (`nominal_radius` bounds the radius), a repeated sample, too few samples in a trace.
+FITFEEL_API MeasuredSurface ReadMeasurement(const std::filesystem::path& file,
+                                            MeasurementKind kind, double nominal_radius,
+                                            const ConfigNode& key);
+
+}  // namespace fitfeel::scenario

@@ -1,0 +1,133 @@
+// Measurement files: what they read in SI, and every refusal located at file:line:column with the
+// scenario key that named the file.
+#include "framework/scenario/measurement_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "framework/core/error.h"
+
+namespace fitfeel::scenario {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeasurementFileTest : public ::testing::Test {
+ protected:
+  MeasurementFileTest()
+      : dir_(fs::temp_directory_path() /
+             (std::string("fitfeel_measurement_file_") +
+              ::testing::UnitTest::GetInstance()->current_test_info()->name())),
+        scene_(ConfigNode::Parse("measured:\n  roundness: part.csv\n", "scene.yaml")),
+        key_(scene_.Child("measured").Child("roundness")) {
+    fs::create_directories(dir_);
+  }
+  ~MeasurementFileTest() override { fs::remove_all(dir_); }
+
+  fs::path Write(const std::string& text) const {
+    const fs::path file = dir_ / "part.csv";
+    std::ofstream(file, std::ios::binary) << text;
+    return file;
+  }
+  MeasuredSurface Read(const std::string& text,
+                       MeasurementKind kind = MeasurementKind::kRoundness) const {
+    return ReadMeasurement(Write(text), kind, 0.01, key_);
+  }
+  // The refusal of `text`: its line, column and what it says.
+  ScenarioError Refusal(const std::string& text,
+                        MeasurementKind kind = MeasurementKind::kRoundness) const {
+    try {
+      Read(text, kind);
+    } catch (const ScenarioError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "accepted:\n" << text;
+    return ScenarioError({}, "", "", "");
+  }
+
+  fs::path dir_;
+  ConfigNode scene_;
+  ConfigNode key_;
+};
+
+TEST_F(MeasurementFileTest, ReadsTracesInTheirUnits) {
+  const MeasuredSurface m = Read(
+      "# a roundness tester's export\n"
+      "angle [deg], height [mm], radius [mm]\n"
+      "0, 1, 10.001\n90, 1, 10.002\n-90, 1, 10.003\n\n"
+      "0, 2, 10.0\r\n90, 2, 10.0\r45,2,10.0\n");
+  ASSERT_EQ(m.value.size(), 6u);
+  EXPECT_TRUE(m.absolute);
+  EXPECT_EQ(m.traces, 2);
+  EXPECT_DOUBLE_EQ(m.height[0], 1e-3);
+  EXPECT_DOUBLE_EQ(m.angle[1], std::numbers::pi / 2);
+  EXPECT_DOUBLE_EQ(m.angle[2], 1.5 * std::numbers::pi);  // -90 degrees, in [0, 2 pi)
+  EXPECT_NEAR(m.value[2], 0.010003, 1e-15);
+}
+
+TEST_F(MeasurementFileTest, ReadsPointCloudsAsRadiusAngleHeight) {
+  const MeasuredSurface m = Read("x [mm],y [mm],z [mm]\n10,0,0\n0,5,10.002\n-10,1,0\n",
+                                 MeasurementKind::kPoints);
+  ASSERT_EQ(m.value.size(), 3u);
+  EXPECT_DOUBLE_EQ(m.value[1], 0.010002);
+  EXPECT_DOUBLE_EQ(m.angle[1], std::numbers::pi / 2);
+  EXPECT_DOUBLE_EQ(m.height[1], 0.005);
+  EXPECT_DOUBLE_EQ(m.angle[2], std::numbers::pi);
+}
+
+TEST_F(MeasurementFileTest, RefusalsNameFileLineColumnAndKey) {
+  struct Case {
+    std::string text;
+    int line, column;
+    std::string says;
+  };
+  const std::string head = "height [um],angle [rad],deviation [um]\n";
+  const Case cases[] = {
+      {"", 0, 1, "no header"},
+      {"height [um],angle [rad]\n", 1, 1, "neither"},
+      {"angle [rad],deviation [um]\n", 1, 1, "no column 'height'"},
+      {"height [um],angle [rad],deviation [um],radius [mm]\n", 1, 1, "both"},
+      {"height [um],angle,deviation [um]\n", 1, 13, "'angle'"},
+      {"height [um],angle [rad],deviation [N]\n", 1, 25, "a unit of a length"},
+      {"height [um],angle [rad],colour [um]\n", 1, 25, "a column 'colour'"},
+      {head + "0,0,1\n0,1,abc\n", 3, 5, "'abc'"},
+      {head + "0,0,1\n0,1\n", 3, 1, "3 cells"},
+      {head + "0,0,nan\n", 2, 5, "'nan'"},
+      {head + "0,0,2000\n", 2, 5, "a deviation within 1 mm"},
+      {head + "0,0,1\n0,1,1\n0,2,1\n0,1,1\n", 5, 1, "a repeated angle (line 3)"},
+      {head + "0,0,1\n0,1,1\n0,2,1\n5,1,1\n", 5, 1, "at least 3 samples"},
+      {head, 1, 1, "at least one sample"},
+      {"height [mm],angle [deg],radius [um]\n1,0,10\n", 2, 5, "a radius within 1 mm"},
+  };
+  for (const Case& c : cases) {
+    const ScenarioError e = Refusal(c.text);
+    EXPECT_EQ(e.where().file, (dir_ / "part.csv").string()) << c.text;
+    EXPECT_EQ(e.where().line, c.line) << c.text << "\n" << e.what();
+    EXPECT_EQ(e.where().column, c.column) << c.text << "\n" << e.what();
+    EXPECT_EQ(e.key_path(), "measured.roundness") << e.what();
+    EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+  }
+  const ScenarioError far =
+      Refusal("x [m],y [m],z [m]\n0.01,0,0\n0.02,0,0\n", MeasurementKind::kPoints);
+  EXPECT_EQ(far.where().line, 3);
+  EXPECT_NE(far.found().find("20 mm"), std::string::npos) << far.what();
+}
+
+TEST_F(MeasurementFileTest, AMissingFileIsRefusedAtItsKey) {
+  try {
+    ReadMeasurement(dir_ / "absent.csv", MeasurementKind::kRoundness, 0.01, key_);
+    FAIL() << "accepted a missing file";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.where().file, "scene.yaml");
+    EXPECT_EQ(e.where().line, 2);
+    EXPECT_NE(e.found().find("absent.csv"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::scenario
