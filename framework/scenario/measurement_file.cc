@@ -148,12 +148,20 @@ double Normalised(double angle) {
 
 MeasuredSurface ReadMeasurement(const fs::path& file, MeasurementKind kind, double nominal_radius,
                                 const ConfigNode& key) {
-  std::ifstream in(file, std::ios::binary);
+  const std::string wanted =
+      "a readable " + std::string(MeasurementKindName(kind)) + " measurement file (CSV)";
   std::error_code ec;
-  if (!in || fs::is_directory(file, ec)) {
-    key.Fail("a readable " + std::string(MeasurementKindName(kind)) + " measurement file (CSV)",
-             "'" + file.string() + "', which cannot be read");
+  // A device or a pipe (/dev/zero) would never end; a regular file has a size to bound.
+  if (!fs::is_regular_file(file, ec)) {
+    key.Fail(wanted, "'" + file.string() + "', " +
+                         (fs::exists(file, ec) ? "which is not a regular file" : "which does not exist"));
   }
+  if (fs::file_size(file, ec) > kMaxMeasurementBytes) {
+    key.Fail(wanted + " of at most " + std::to_string(kMaxMeasurementBytes >> 20) + " MiB",
+             "'" + file.string() + "' of " + std::to_string(fs::file_size(file, ec) >> 20) + " MiB");
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) key.Fail(wanted, "'" + file.string() + "', which cannot be read");
   std::stringstream buffer;
   buffer << in.rdbuf();
   const Reader reader(file, key);

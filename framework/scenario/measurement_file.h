@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -13,6 +14,9 @@ namespace fitfeel::scenario {
 // form deviations are micrometres, so a larger one is a wrong unit or frame, not a part.
 inline constexpr double kMaxMeasuredCoordinate = 10.0;
 inline constexpr double kMaxMeasuredDeviation = 1e-3;
+// A dense CMM scan of a fit's surface is millions of points, tens of MB; a larger file is not a
+// measurement of one part (and would be read whole into memory).
+inline constexpr std::uintmax_t kMaxMeasurementBytes = std::uintmax_t{512} << 20;
 
 // Reads the CSV measurement `file` of the kind named by the scenario key `key`
 // (parts.<part>.measured.<kind>): '#' comment lines, a header of `name [unit]` cells, then one

@@ -127,6 +127,9 @@ TEST_F(MeasurementFileTest, AMissingFileIsRefusedAtItsKey) {
     EXPECT_EQ(e.where().line, 2);
     EXPECT_NE(e.found().find("absent.csv"), std::string::npos) << e.what();
   }
+  // A device never ends: refused before reading.
+  EXPECT_THROW(ReadMeasurement("/dev/zero", MeasurementKind::kPoints, 0.01, key_), ScenarioError);
+  EXPECT_THROW(ReadMeasurement(dir_, MeasurementKind::kPoints, 0.01, key_), ScenarioError);
 }
 
 }  // namespace
