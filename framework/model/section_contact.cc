@@ -54,17 +54,19 @@ void CirculantContact::InverseTimes(const double* x, double* out) const {
 
 bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
                                  std::vector<char>* active) {
+  bool feasible = true;
   for (int j = 0; j < n_; ++j) {
     p[j] = g_inv_u_(j, 0) * e.x() + g_inv_u_(j, 1) * e.y() - inverse_gap[j];
-    if (p[j] < 0.0) return false;
+    feasible = feasible && p[j] >= 0.0;
   }
+  if (!feasible) return false;
   active->assign(static_cast<std::size_t>(n_), 1);
   last_full_ = true;
   return true;
 }
 
 int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active,
-                            bool try_full) {
+                            const double* full) {
   const int n = n_;
   std::vector<char>& f = *active;
   if (static_cast<int>(f.size()) != n) f.assign(static_cast<std::size_t>(n), 0);
@@ -77,14 +79,17 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   int best = n + 1, chances = 3, steps = 0;
   Eigen::VectorXd w(n);
   last_full_ = false;
-  if (try_full) {
-    const Eigen::VectorXd full = g_inv_ * Eigen::Map<const Eigen::VectorXd>(delta, n);
-    if (full.minCoeff() >= 0.0) {
-      for (int j = 0; j < n; ++j) p[j] = full[j];
+  // y = G^-1 delta: the pressures of full contact, and the right-hand side of the dual step.
+  if (full == nullptr) {
+    full_.noalias() = g_inv_ * Eigen::Map<const Eigen::VectorXd>(delta, n);
+    if (full_.minCoeff() >= 0.0) {
+      for (int j = 0; j < n; ++j) p[j] = full_[j];
       f.assign(static_cast<std::size_t>(n), 1);
       last_full_ = true;
       return 1;
     }
+  } else {
+    full_ = Eigen::Map<const Eigen::VectorXd>(full, n);
   }
   while (true) {
     ++steps;
@@ -93,36 +98,56 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
                       " steps); the compliance is not positive definite?");
     }
     index_.clear();
-    for (int j = 0; j < n; ++j) {
-      if (f[static_cast<std::size_t>(j)]) index_.push_back(j);
-    }
+    gaps_.clear();
+    for (int j = 0; j < n; ++j) (f[static_cast<std::size_t>(j)] ? index_ : gaps_).push_back(j);
     const int m = static_cast<int>(index_.size());
+    const int k = n - m;
     std::fill(p, p + n, 0.0);
-    if (m > 0) {
-      gff_.resize(m, m);
-      Eigen::VectorXd rhs(m);
-      for (int a = 0; a < m; ++a) {
-        rhs[a] = delta[index_[static_cast<std::size_t>(a)]];
-        for (int b = 0; b < m; ++b) {
-          gff_(a, b) = g_(index_[static_cast<std::size_t>(a)], index_[static_cast<std::size_t>(b)]);
+    // Pressures on the contact set F and closures on the gaps N = the rest, by whichever system is
+    // smaller: G_FF p_F = delta_F (m^3) or, with H = G^-1 and y = H delta, the dual
+    // H_NN z = y_N, p_F = y_F - H_FN z, closure minus interference w_N = -z (k^3): the
+    // same solution (block inverse of G), found at a cost set by the fewer of contacts and gaps.
+    dual_ = k < m;
+    if (dual_) {
+      hnn_.resize(k, k);
+      Eigen::VectorXd rhs(k);
+      for (int a = 0; a < k; ++a) {
+        rhs[a] = full_[gaps_[static_cast<std::size_t>(a)]];
+        for (int b = 0; b < k; ++b) {
+          hnn_(a, b) = g_inv_(gaps_[static_cast<std::size_t>(a)], gaps_[static_cast<std::size_t>(b)]);
         }
       }
-      llt_.compute(gff_);
-      const Eigen::VectorXd pf = llt_.solve(rhs);
-      for (int a = 0; a < m; ++a) p[index_[static_cast<std::size_t>(a)]] = pf[a];
-    }
-    // Closure minus interference where there is no pressure.
-    int infeasible = 0, last = -1;
-    for (int j = 0; j < n; ++j) {
-      bool bad;
-      if (f[static_cast<std::size_t>(j)]) {
-        bad = p[j] < -tol_p;
-      } else {
+      llt_dual_.compute(hnn_);
+      const Eigen::VectorXd z = llt_dual_.solve(rhs);
+      for (int c : index_) {
+        double s = full_[c];
+        for (int a = 0; a < k; ++a) s -= g_inv_(c, gaps_[static_cast<std::size_t>(a)]) * z[a];
+        p[c] = s;
+      }
+      for (int a = 0; a < k; ++a) w[gaps_[static_cast<std::size_t>(a)]] = -z[a];
+    } else {
+      if (m > 0) {
+        gff_.resize(m, m);
+        Eigen::VectorXd rhs(m);
+        for (int a = 0; a < m; ++a) {
+          rhs[a] = delta[index_[static_cast<std::size_t>(a)]];
+          for (int b = 0; b < m; ++b) {
+            gff_(a, b) = g_(index_[static_cast<std::size_t>(a)], index_[static_cast<std::size_t>(b)]);
+          }
+        }
+        llt_.compute(gff_);
+        const Eigen::VectorXd pf = llt_.solve(rhs);
+        for (int a = 0; a < m; ++a) p[index_[static_cast<std::size_t>(a)]] = pf[a];
+      }
+      for (int j : gaps_) {
         double closure = 0.0;
         for (int a : index_) closure += g_(j, a) * p[a];
         w[j] = closure - delta[j];
-        bad = w[j] < -tol_w;
       }
+    }
+    int infeasible = 0, last = -1;
+    for (int j = 0; j < n; ++j) {
+      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w[j] < -tol_w;
       if (bad) {
         ++infeasible;
         last = j;
@@ -150,6 +175,13 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
 
 Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
   if (last_full_) return full_stiffness_;
+  if (dual_) {
+    // U_F^T G_FF^-1 U_F = U^T H U - A_N^T H_NN^-1 A_N with A = H U (the block inverse again).
+    const int k = static_cast<int>(gaps_.size());
+    Eigen::MatrixX2d a(k, 2);
+    for (int r = 0; r < k; ++r) a.row(r) = g_inv_u_.row(gaps_[static_cast<std::size_t>(r)]);
+    return full_stiffness_ - a.transpose() * llt_dual_.solve(a);
+  }
   const int m = static_cast<int>(index_.size());
   if (m == 0) return Eigen::Matrix2d::Zero();
   Eigen::MatrixXd u(m, 2);
@@ -178,6 +210,7 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
   const int n = contact_.columns();
   const auto nn = static_cast<std::size_t>(n);
   delta_.resize(nn);
+  full_.resize(nn);
   pressure_.resize(sections.size() * nn);
   if (active_.size() != sections.size()) active_.assign(sections.size(), std::vector<char>(nn, 0));
   const Eigen::Vector2d e0 = q.head<2>(), t = q.tail<2>();
@@ -201,8 +234,10 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
       std::fill(p, p + n, 0.0);
       continue;
     }
-    if (!contact_.SolveFull(e, InverseGap(sec, s), p, &active_[s])) {
-      contact_.Solve(delta_.data(), p, &active_[s], /*try_full=*/false);
+    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s])) {
+      contact_.Solve(delta_.data(), p, &active_[s], full_.data());
+    } else {
+      std::copy(full_.begin(), full_.end(), p);
     }
     double energy = 0.0;
     Eigen::Vector2d f(0.0, 0.0);

@@ -29,12 +29,15 @@ class FITFEEL_API CirculantContact {
   const Eigen::MatrixXd& matrix() const { return g_; }
   // Solves the LCP for delta (n values). `active` (n flags) is the warm start on entry and the
   // contact set on exit. Returns the number of pivoting steps; throws if it fails to terminate.
-  // `try_full` false skips the closed form (the caller has tried SolveFull).
-  int Solve(const double* delta, double* p, std::vector<char>* active, bool try_full = true);
+  // `full`, when given, is G^-1 delta (every pressure of full contact, some negative: the caller
+  // has tried SolveFull); otherwise Solve computes it and returns at once if it is feasible.
+  int Solve(const double* delta, double* p, std::vector<char>* active,
+            const double* full = nullptr);
   // The closed form of full contact for delta = U e - gap (U the columns' unit vectors) from
   // inverse_gap = G^-1 gap (InverseTimes): p = (G^-1 U) e - G^-1 gap, O(n) instead of O(n^2), so a
-  // Newton search that moves e over fixed gaps pays the n^2 product once. Returns false when a
-  // pressure would be negative (p is then scratch); on success `active` is all set, as after Solve.
+  // Newton search that moves e over fixed gaps pays the n^2 product once. p receives G^-1 delta
+  // in every case; returns false when a pressure is negative (Solve takes it from there), and on
+  // success sets every flag of `active`, as Solve does.
   bool SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
                  std::vector<char>* active);
   // out = G^-1 x (n values each).
@@ -53,10 +56,13 @@ class FITFEEL_API CirculantContact {
   Eigen::MatrixX2d g_inv_u_;  // G^-1 U
   Eigen::Matrix2d full_stiffness_;
   bool last_full_ = false;
-  // Workspace of the last solve.
-  std::vector<int> index_;
-  Eigen::MatrixXd gff_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  // Workspace of the last solve: the contact set F (index_) and the gaps N (gaps_); whether it
+  // solved the primal system on F (llt_ of G_FF) or the dual on N (llt_dual_ of (G^-1)_NN).
+  std::vector<int> index_, gaps_;
+  bool dual_ = false;
+  Eigen::VectorXd full_;
+  Eigen::MatrixXd gff_, hnn_;
+  Eigen::LLT<Eigen::MatrixXd> llt_, llt_dual_;
 };
 
 // One cross-section (slice) of the engaged length for the rigid-body problem.
@@ -115,7 +121,7 @@ class FITFEEL_API RigidSectionContact {
   const double* InverseGap(const ContactSection& section, std::size_t index);
 
   CirculantContact contact_;
-  std::vector<double> cos_, sin_, delta_, pressure_, inverse_gap_;
+  std::vector<double> cos_, sin_, delta_, full_, pressure_, inverse_gap_;
   std::vector<char> inverse_gap_ready_;
   std::vector<std::vector<char>> active_;
 };
