@@ -53,7 +53,7 @@ void CirculantContact::InverseTimes(const double* x, double* out) const {
 }
 
 bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
-                                 std::vector<char>* active) {
+                                 std::vector<char>* active, Factorization* workspace) {
   bool feasible = true;
   for (int j = 0; j < n_; ++j) {
     p[j] = g_inv_u_(j, 0) * e.x() + g_inv_u_(j, 1) * e.y() - inverse_gap[j];
@@ -61,12 +61,15 @@ bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse
   }
   if (!feasible) return false;
   active->assign(static_cast<std::size_t>(n_), 1);
-  last_full_ = true;
+  last_ = workspace;
+  (workspace != nullptr ? *workspace : own_).last_full = true;
   return true;
 }
 
 int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active,
-                            const double* full) {
+                            const double* full, Factorization* workspace) {
+  Factorization& ws = workspace != nullptr ? *workspace : own_;
+  last_ = workspace;
   const int n = n_;
   std::vector<char>& f = *active;
   if (static_cast<int>(f.size()) != n) f.assign(static_cast<std::size_t>(n), 0);
@@ -78,14 +81,14 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   const double tol_p = tol_w / g_(0, 0);
   int best = n + 1, chances = 3, steps = 0;
   Eigen::VectorXd w(n);
-  last_full_ = false;
+  ws.last_full = false;
   // y = G^-1 delta: the pressures of full contact, and the right-hand side of the dual step.
   if (full == nullptr) {
     full_.noalias() = g_inv_ * Eigen::Map<const Eigen::VectorXd>(delta, n);
     if (full_.minCoeff() >= 0.0) {
       for (int j = 0; j < n; ++j) p[j] = full_[j];
       f.assign(static_cast<std::size_t>(n), 1);
-      last_full_ = true;
+      ws.last_full = true;
       return 1;
     }
   } else {
@@ -97,51 +100,60 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       throw UserError("section contact: pivoting did not terminate (" + std::to_string(steps) +
                       " steps); the compliance is not positive definite?");
     }
-    index_.clear();
-    gaps_.clear();
-    for (int j = 0; j < n; ++j) (f[static_cast<std::size_t>(j)] ? index_ : gaps_).push_back(j);
-    const int m = static_cast<int>(index_.size());
+    ws.index.clear();
+    ws.gaps.clear();
+    for (int j = 0; j < n; ++j) (f[static_cast<std::size_t>(j)] ? ws.index : ws.gaps).push_back(j);
+    const int m = static_cast<int>(ws.index.size());
     const int k = n - m;
     std::fill(p, p + n, 0.0);
     // Pressures on the contact set F and closures on the gaps N = the rest, by whichever system is
     // smaller: G_FF p_F = delta_F (m^3) or, with H = G^-1 and y = H delta, the dual
     // H_NN z = y_N, p_F = y_F - H_FN z, closure minus interference w_N = -z (k^3): the
     // same solution (block inverse of G), found at a cost set by the fewer of contacts and gaps.
-    dual_ = k < m;
-    if (dual_) {
-      hnn_.resize(k, k);
+    ws.dual = k < m;
+    if (ws.dual) {
       Eigen::VectorXd rhs(k);
-      for (int a = 0; a < k; ++a) {
-        rhs[a] = full_[gaps_[static_cast<std::size_t>(a)]];
-        for (int b = 0; b < k; ++b) {
-          hnn_(a, b) = g_inv_(gaps_[static_cast<std::size_t>(a)], gaps_[static_cast<std::size_t>(b)]);
-        }
-      }
-      llt_dual_.compute(hnn_);
-      const Eigen::VectorXd z = llt_dual_.solve(rhs);
-      for (int c : index_) {
-        double s = full_[c];
-        for (int a = 0; a < k; ++a) s -= g_inv_(c, gaps_[static_cast<std::size_t>(a)]) * z[a];
-        p[c] = s;
-      }
-      for (int a = 0; a < k; ++a) w[gaps_[static_cast<std::size_t>(a)]] = -z[a];
-    } else {
-      if (m > 0) {
-        gff_.resize(m, m);
-        Eigen::VectorXd rhs(m);
-        for (int a = 0; a < m; ++a) {
-          rhs[a] = delta[index_[static_cast<std::size_t>(a)]];
-          for (int b = 0; b < m; ++b) {
-            gff_(a, b) = g_(index_[static_cast<std::size_t>(a)], index_[static_cast<std::size_t>(b)]);
+      for (int a = 0; a < k; ++a) rhs[a] = full_[ws.gaps[static_cast<std::size_t>(a)]];
+      if (!ws.Holds(f, true)) {
+        ws.hnn.resize(k, k);
+        for (int a = 0; a < k; ++a) {
+          for (int b = 0; b < k; ++b) {
+            ws.hnn(a, b) =
+                g_inv_(ws.gaps[static_cast<std::size_t>(a)], ws.gaps[static_cast<std::size_t>(b)]);
           }
         }
-        llt_.compute(gff_);
-        const Eigen::VectorXd pf = llt_.solve(rhs);
-        for (int a = 0; a < m; ++a) p[index_[static_cast<std::size_t>(a)]] = pf[a];
+        ws.llt_dual.compute(ws.hnn);
+        ws.Remember(f, true);
       }
-      for (int j : gaps_) {
+      const Eigen::VectorXd z = ws.llt_dual.solve(rhs);
+      for (int c : ws.index) {
+        double s = full_[c];
+        // G^-1 is symmetric: read column c (contiguous) instead of row c.
+        for (int a = 0; a < k; ++a) s -= g_inv_(ws.gaps[static_cast<std::size_t>(a)], c) * z[a];
+        p[c] = s;
+      }
+      for (int a = 0; a < k; ++a) w[ws.gaps[static_cast<std::size_t>(a)]] = -z[a];
+    } else {
+      if (m > 0) {
+        Eigen::VectorXd rhs(m);
+        for (int a = 0; a < m; ++a) rhs[a] = delta[ws.index[static_cast<std::size_t>(a)]];
+        if (!ws.Holds(f, false)) {
+          ws.gff.resize(m, m);
+          for (int a = 0; a < m; ++a) {
+            for (int b = 0; b < m; ++b) {
+              ws.gff(a, b) =
+                  g_(ws.index[static_cast<std::size_t>(a)], ws.index[static_cast<std::size_t>(b)]);
+            }
+          }
+          ws.llt.compute(ws.gff);
+          ws.Remember(f, false);
+        }
+        const Eigen::VectorXd pf = ws.llt.solve(rhs);
+        for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
+      }
+      for (int j : ws.gaps) {
         double closure = 0.0;
-        for (int a : index_) closure += g_(j, a) * p[a];
+        for (int a : ws.index) closure += g_(a, j) * p[a];  // symmetric: column j, contiguous
         w[j] = closure - delta[j];
       }
     }
@@ -174,22 +186,23 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
 }
 
 Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
-  if (last_full_) return full_stiffness_;
-  if (dual_) {
+  const Factorization& ws = last_ != nullptr ? *last_ : own_;
+  if (ws.last_full) return full_stiffness_;
+  if (ws.dual) {
     // U_F^T G_FF^-1 U_F = U^T H U - A_N^T H_NN^-1 A_N with A = H U (the block inverse again).
-    const int k = static_cast<int>(gaps_.size());
+    const int k = static_cast<int>(ws.gaps.size());
     Eigen::MatrixX2d a(k, 2);
-    for (int r = 0; r < k; ++r) a.row(r) = g_inv_u_.row(gaps_[static_cast<std::size_t>(r)]);
-    return full_stiffness_ - a.transpose() * llt_dual_.solve(a);
+    for (int r = 0; r < k; ++r) a.row(r) = g_inv_u_.row(ws.gaps[static_cast<std::size_t>(r)]);
+    return full_stiffness_ - a.transpose() * ws.llt_dual.solve(a);
   }
-  const int m = static_cast<int>(index_.size());
+  const int m = static_cast<int>(ws.index.size());
   if (m == 0) return Eigen::Matrix2d::Zero();
   Eigen::MatrixXd u(m, 2);
   for (int a = 0; a < m; ++a) {
-    u(a, 0) = cos_[static_cast<std::size_t>(index_[static_cast<std::size_t>(a)])];
-    u(a, 1) = sin_[static_cast<std::size_t>(index_[static_cast<std::size_t>(a)])];
+    u(a, 0) = cos_[static_cast<std::size_t>(ws.index[static_cast<std::size_t>(a)])];
+    u(a, 1) = sin_[static_cast<std::size_t>(ws.index[static_cast<std::size_t>(a)])];
   }
-  const Eigen::MatrixXd x = llt_.solve(u);
+  const Eigen::MatrixXd x = ws.llt.solve(u);
   return u.transpose() * x;
 }
 
@@ -234,8 +247,8 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
       std::fill(p, p + n, 0.0);
       continue;
     }
-    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s])) {
-      contact_.Solve(delta_.data(), p, &active_[s], full_.data());
+    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s], &factors_[s])) {
+      contact_.Solve(delta_.data(), p, &active_[s], full_.data(), &factors_[s]);
     } else {
       std::copy(full_.begin(), full_.end(), p);
     }
@@ -306,6 +319,8 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   active_.assign(sections.size(), std::vector<char>(static_cast<std::size_t>(columns()), 0));
   inverse_gap_.resize(sections.size() * static_cast<std::size_t>(columns()));
   inverse_gap_ready_.assign(sections.size(), 0);
+  factors_.resize(sections.size());
+  for (CirculantContact::Factorization& f : factors_) f.valid = false;
   double length = 0.0;
   for (const ContactSection& s : sections) length = std::max(length, std::abs(s.y));
   length = std::max(length, 1e-6);

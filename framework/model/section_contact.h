@@ -22,6 +22,25 @@ namespace fitfeel {
 // fallback that guarantees termination. Prepare-time only: it allocates.
 class FITFEEL_API CirculantContact {
  public:
+  // The factorization of one contact set, kept between solves: a section whose contact set has
+  // not changed since its last solve (the usual case late in a Newton search) solves with it in
+  // O(n m) instead of factoring again. One per section; Solve uses its own without one.
+  struct Factorization {
+    std::vector<int> index, gaps;  // the contact set F and the gaps N of the last step
+    bool dual = false;             // solved on N with (G^-1)_NN (llt_dual), else on F with G_FF
+    bool last_full = false;        // the last solve was full contact (closed form)
+    bool valid = false;            // llt or llt_dual factors the set `set`
+    std::vector<char> set;
+    Eigen::MatrixXd gff, hnn;
+    Eigen::LLT<Eigen::MatrixXd> llt, llt_dual;
+    bool Holds(const std::vector<char>& f, bool d) const { return valid && dual == d && set == f; }
+    void Remember(const std::vector<char>& f, bool d) {
+      set = f;
+      dual = d;
+      valid = true;
+    }
+  };
+
   // compliance[k] for k = 0 .. n/2 (m/Pa); n even >= 4.
   CirculantContact(const std::vector<double>& compliance, int n);
 
@@ -32,14 +51,14 @@ class FITFEEL_API CirculantContact {
   // `full`, when given, is G^-1 delta (every pressure of full contact, some negative: the caller
   // has tried SolveFull); otherwise Solve computes it and returns at once if it is feasible.
   int Solve(const double* delta, double* p, std::vector<char>* active,
-            const double* full = nullptr);
+            const double* full = nullptr, Factorization* workspace = nullptr);
   // The closed form of full contact for delta = U e - gap (U the columns' unit vectors) from
   // inverse_gap = G^-1 gap (InverseTimes): p = (G^-1 U) e - G^-1 gap, O(n) instead of O(n^2), so a
   // Newton search that moves e over fixed gaps pays the n^2 product once. p receives G^-1 delta
   // in every case; returns false when a pressure is negative (Solve takes it from there), and on
   // success sets every flag of `active`, as Solve does.
   bool SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
-                 std::vector<char>* active);
+                 std::vector<char>* active, Factorization* workspace = nullptr);
   // out = G^-1 x (n values each).
   void InverseTimes(const double* x, double* out) const;
   // After Solve: d(sum_j p_j u_j)/d(offset), the section's 2x2 radial contact stiffness per unit
@@ -55,14 +74,11 @@ class FITFEEL_API CirculantContact {
   Eigen::MatrixXd g_inv_;
   Eigen::MatrixX2d g_inv_u_;  // G^-1 U
   Eigen::Matrix2d full_stiffness_;
-  bool last_full_ = false;
-  // Workspace of the last solve: the contact set F (index_) and the gaps N (gaps_); whether it
-  // solved the primal system on F (llt_ of G_FF) or the dual on N (llt_dual_ of (G^-1)_NN).
-  std::vector<int> index_, gaps_;
-  bool dual_ = false;
   Eigen::VectorXd full_;
-  Eigen::MatrixXd gff_, hnn_;
-  Eigen::LLT<Eigen::MatrixXd> llt_, llt_dual_;
+  Factorization own_;                  // without a caller's workspace
+  // The last solve's workspace, for OffsetStiffness; null: own_. A copy of this object made
+  // between a solve and its OffsetStiffness would point at the original's; nobody does that.
+  const Factorization* last_ = nullptr;
 };
 
 // One cross-section (slice) of the engaged length for the rigid-body problem.
@@ -123,6 +139,7 @@ class FITFEEL_API RigidSectionContact {
   CirculantContact contact_;
   std::vector<double> cos_, sin_, delta_, full_, pressure_, inverse_gap_;
   std::vector<char> inverse_gap_ready_;
+  std::vector<CirculantContact::Factorization> factors_;  // one per section of the current Solve
   std::vector<std::vector<char>> active_;
 };
 
