@@ -7,14 +7,21 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/plot/gnuplot.h"
+#include "framework/plot/render.h"
+#include "framework/plot/study_chart.h"
 #include "framework/plugin/registry.h"
 #include "framework/study/study.h"
+#include "framework/study/study_record.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -52,6 +59,10 @@ class InterruptScope {
 };
 
 void Run(const StudyArgs& args) {
+  const fs::path dir = args.out.empty() ? fs::path("out") / (fs::path(args.file).stem().string() +
+                                                              "-study")
+                                       : fs::path(args.out);
+  CheckOutputFolder("--out", dir);
   PluginRegistry registry;
   registry.LoadAll();
   study::StudySettings settings;
@@ -71,9 +82,11 @@ void Run(const StudyArgs& args) {
   settings.stop = &g_stop;
   const study::StudyResult result = study::RunStudy(args.file, registry, settings);
   if (terminal) std::fprintf(stderr, "\n");
-  const fs::path dir =
-      args.out.empty() ? fs::path("out") / (result.scenario + "-study") : fs::path(args.out);
   study::WriteStudy(dir, result);
+  // The chart from the files just written (what `fitfeel plot study DIR` draws): a failure to
+  // draw leaves the two data files, complete.
+  plot::Render(plot::MakeStudyChart({study::LoadStudy(dir)}, std::nullopt),
+               plot::ResolveOutputs(dir / "study.png"));
 
   std::vector<double> mean;
   int interfering = 0;
@@ -93,8 +106,8 @@ void Run(const StudyArgs& args) {
   std::printf("  axial resistance mean over a pair: p5 %.4g, p25 %.4g, p50 %.4g, p75 %.4g, "
               "p95 %.4g N\n",
               d.p5, d.p25, d.p50, d.p75, d.p95);
-  std::printf("  pairs %s\n  study %s\n", (dir / "pairs.csv").c_str(),
-              (dir / "study.json").c_str());
+  std::printf("  pairs %s\n  study %s\n  chart %s\n", (dir / "pairs.csv").c_str(),
+              (dir / "study.json").c_str(), (dir / "study.png").c_str());
 }
 
 }  // namespace
@@ -104,14 +117,19 @@ void AddStudyCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "study",
       "A fit study: draw N part pairs from a scenario (pair i seeded from --seed and i), insert "
-      "each in virtual time on all cores, write DIR/pairs.csv and DIR/study.json");
+      "each in virtual time on all cores, write DIR/pairs.csv, DIR/study.json and DIR/study.png");
   cmd->add_option("file", args->file, "scenario file")->required();
-  cmd->add_option("--pairs", args->pairs, "number of part pairs (default 100)")
-      ->check(CLI::Range(1, 10'000'000));
-  cmd->add_option("--seed", args->seed, "study seed (default 1)");
-  cmd->add_option("--threads", args->threads, "worker threads (default: every core)")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--out", args->out, "output folder (default: out/<scenario name>-study)");
+  AddIntegerOption(
+      cmd, "--pairs", 1, 10'000'000, [args](long n) { args->pairs = static_cast<int>(n); },
+      "number of part pairs (default 100)");
+  AddIntegerOption(
+      cmd, "--seed", 0, std::numeric_limits<long>::max(),
+      [args](long s) { args->seed = static_cast<std::uint64_t>(s); },
+      "study seed (default 1; the range of run.seed)");
+  AddIntegerOption(
+      cmd, "--threads", 1, 1024, [args](long t) { args->threads = static_cast<int>(t); },
+      "worker threads (default: every core)");
+  cmd->add_option("--out", args->out, "output folder (default: out/<scenario file name without .yaml>-study)");
   cmd->callback([args] { Run(*args); });
 }
 

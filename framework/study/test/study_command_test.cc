@@ -59,6 +59,8 @@ TEST(StudyCommand, WritesPairsAndStudyIdenticalForOneAndTwoThreads) {
     EXPECT_LE(d.at("p75").get<double>(), d.at("p95").get<double>());
   }
   EXPECT_THAT(one.out, HasSubstr("6 of 6 pairs"));
+  // The chart of the distribution: a PNG file.
+  EXPECT_EQ(ReadText(dir / "one/study.png").substr(1, 3), "PNG");
 }
 
 TEST(StudyCommand, RefusesBadArgumentsAndWritesNothing) {
@@ -66,6 +68,12 @@ TEST(StudyCommand, RefusesBadArgumentsAndWritesNothing) {
   const std::string out = " --out " + ShellQuote((dir / "o").string());
   EXPECT_EQ(RunFitfeel("study " + ShellQuote(kScene) + " --pairs 0" + out).exit_code, 2);
   EXPECT_EQ(RunFitfeel("study " + ShellQuote(kScene) + " --threads 0" + out).exit_code, 2);
+  for (const char* seed : {"-1", "''", "18446744073709551616", "1.5"}) {
+    const auto r = RunFitfeel("study " + ShellQuote(kScene) + " --pairs 1 --seed " + seed + out);
+    EXPECT_EQ(r.exit_code, 2) << seed;
+    EXPECT_THAT(r.err, HasSubstr("--seed")) << seed;
+  }
+  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kScene) + " --pairs 1 --out /dev/null").exit_code, 2);
   const auto missing = RunFitfeel("study no-such.yaml --pairs 2" + out);
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_THAT(missing.err, HasSubstr("no-such.yaml"));
