@@ -95,6 +95,12 @@ nlohmann::json DistributionJson(const Distribution& d) {
 
 }  // namespace
 
+PairResult RunStudyPair(const fs::path& file, const PluginRegistry& registry, std::uint64_t seed,
+                        int index) {
+  if (index < 0) throw UserError("study: pair index must be >= 0, got " + std::to_string(index));
+  return RunPair(file, registry, index, seed);
+}
+
 std::uint64_t PairSeed(std::uint64_t seed, int index) {
   return SplitMix64(SplitMix64(seed) ^ static_cast<std::uint64_t>(index));
 }

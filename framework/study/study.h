@@ -80,6 +80,11 @@ FITFEEL_API std::uint64_t PairSeed(std::uint64_t seed, int index);
 // definition R and NumPy call type 7); the values are copied. Zeros for an empty vector.
 FITFEEL_API Distribution Describe(std::vector<double> values);
 
+// Pair `index` of a study seeded `seed` of the scenario `file`, alone: what RunStudy computes for
+// it (a distributed study runs pairs where it likes and gathers them). Throws UserError.
+FITFEEL_API PairResult RunStudyPair(const std::filesystem::path& file,
+                                    const PluginRegistry& registry, std::uint64_t seed, int index);
+
 // Runs the study of the scenario `file`. Throws UserError (ScenarioError) before any pair runs
 // when the scenario, the settings or the plugins are unusable.
 FITFEEL_API StudyResult RunStudy(const std::filesystem::path& file, const PluginRegistry& registry,

@@ -13,11 +13,11 @@ prefix=$work/prefix
 
 # The README's snippets are copied from the example files this test builds and runs: every line
 # of its cmake, cpp and c blocks in "Using fitfeel from other programs" is a line of those files.
-for kind in cmake cpp c; do
+for kind in cmake cpp c python; do
   awk -v k="$kind" '/^## Using fitfeel from other programs/{s=1} /^## Layout/{s=0}
     s && $0 == "```" k {b=1; next} b && /^```/ {b=0} b' "$source/README.md" | while IFS= read -r line; do
     grep -qxF -- "$line" <(sed 's/^ *//' "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc" \
-                                 "$source/examples/c_host/c_host.c") ||
+                                 "$source/examples/c_host/c_host.c" "$source/examples/python/example.py") ||
       grep -qxF -- "$line" "$source/examples/CMakeLists.txt" "$source/examples/host/host.cc" ||
       { echo "README line not in examples/: $line"; exit 1; }
   done
@@ -56,4 +56,18 @@ test -s "$work/out/trace.csv" && test -s "$work/out/summary.json" ||
 c_out=$("$work/examples/fitfeel_example_c_host" "$source/scenarios/paper-case1-h7js6.yaml" 500)
 echo "$c_out"
 grep -q "^500 ticks at 1 kHz" <<<"$c_out" || { echo "the C host did not run 500 ticks"; exit 1; }
+# Python: the installed package, imported from the prefix only (not the build tree).
+if [ -d "$prefix/lib/python3/dist-packages/fitfeel" ]; then
+  py_out=$(PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c \
+    'import fitfeel, os, sys; print(os.path.dirname(fitfeel.__file__))')
+  [ "$py_out" = "$prefix/lib/python3/dist-packages/fitfeel" ] ||
+    { echo "python imported fitfeel from $py_out, not the prefix"; exit 1; }
+  py_out=$(PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 \
+    "$source/examples/python/example.py" "$source/scenarios/paper-case1-h7js6.yaml" "$work/py-study")
+  echo "$py_out"
+  grep -q "^P(interference)" <<<"$py_out" && test -s "$work/py-study/pairs.csv" ||
+    { echo "the Python example did not run its study"; exit 1; }
+else
+  echo "install test: no Python package installed (pybind11 missing?)"; exit 1
+fi
 echo "install test: ok"
