@@ -3,15 +3,19 @@
 // run`, so the same states give the same wrenches bit for bit.
 #include "framework/capi/fitfeel.h"
 
+#include <algorithm>
 #include <exception>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/constrained_stage.h"
+#include "framework/runtime/outputs.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/run.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
 
@@ -192,6 +196,59 @@ int fitfeel_contact_state(const fitfeel_scene* s, fitfeel_contact* out) {
 
 uint64_t fitfeel_ticks(const fitfeel_scene* s) {
   return s == nullptr ? 0 : s->scheduler->ticks_done();
+}
+
+int fitfeel_pressure_map(fitfeel_scene* s, double* pressure, int capacity, int* rows,
+                         int* columns) {
+  if (s == nullptr || rows == nullptr || columns == nullptr) return FITFEEL_INVALID_ARGUMENT;
+  s->error.clear();
+  const fitfeel::SurfaceGrid& grid = s->prepared.inner_sms->grid;
+  *rows = grid.rows;
+  *columns = grid.columns;
+  if (pressure == nullptr || capacity < grid.size()) {
+    s->error = "fitfeel_pressure_map: room for " + std::to_string(grid.size()) +
+               " values needed, " + std::to_string(capacity) + " given";
+    return FITFEEL_INVALID_ARGUMENT;
+  }
+  try {
+    const double k = s->prepared.law->PressurePerInterference();
+    fitfeel::MatingPose pose;
+    const std::uint64_t done = s->scheduler->ticks_done();
+    if (done > 0) pose = s->scheduler->trace()[done - 1].pose;
+    Eigen::VectorXd delta;
+    s->prepared.analyzer->InterferenceMap(pose, &delta);
+    for (int c = 0; c < grid.size(); ++c) pressure[c] = k * delta(c);
+    return FITFEEL_OK;
+  } catch (const std::exception& e) {
+    s->error = e.what();
+    return FITFEEL_ERROR;
+  }
+}
+
+int fitfeel_write_outputs(fitfeel_scene* s, const char* dir) {
+  if (s == nullptr) return FITFEEL_INVALID_ARGUMENT;
+  s->error.clear();
+  if (dir == nullptr) {
+    s->error = "fitfeel_write_outputs: dir is null";
+    return FITFEEL_INVALID_ARGUMENT;
+  }
+  try {
+    fitfeel::RunInfo info = fitfeel::MakeRunInfo(s->scene, s->prepared);
+    info.device = "host (C interface)";
+    const std::uint64_t done = s->scheduler->ticks_done();
+    const auto& trace = s->scheduler->trace();
+    const std::vector<fitfeel::TickRecord> stepped(
+        trace.begin(), trace.begin() + static_cast<std::ptrdiff_t>(std::min<std::uint64_t>(
+                                           done, trace.size())));
+    fitfeel::WriteOutputs(dir, info, stepped, s->scheduler->StatsSoFar());
+    return FITFEEL_OK;
+  } catch (const fitfeel::ScenarioError& e) {
+    s->error = e.what();
+    return FITFEEL_SCENARIO_ERROR;
+  } catch (const std::exception& e) {
+    s->error = e.what();
+    return FITFEEL_ERROR;
+  }
 }
 
 const char* fitfeel_last_error(const fitfeel_scene* s) {

@@ -83,8 +83,23 @@ FITFEEL_C_API int fitfeel_contact_state(const fitfeel_scene* scene, fitfeel_cont
 /* Ticks done so far. */
 FITFEEL_C_API uint64_t fitfeel_ticks(const fitfeel_scene* scene);
 
-/* The last error on this handle, or on this thread for calls without a handle (open); "" if
- * none. Valid until the next call on the handle / thread. */
+/* The contact pressure on each cell of the inner part's grid at the last step's pose, Pa,
+ * row-major (rows along the mating axis, columns around or across it), the cells' interference
+ * times the law's pressure per unit interference (what `fitfeel plot pressure` draws). With
+ * `pressure` null or `capacity` (doubles) too small, only *rows and *columns are set and
+ * FITFEEL_INVALID_ARGUMENT returned: ask first, then allocate. FITFEEL_ERROR for a law without a
+ * pressure field (the handle's last error says so). Allocates: never from the servo callback;
+ * between steps, on the stepping thread. */
+FITFEEL_C_API int fitfeel_pressure_map(fitfeel_scene* scene, double* pressure, int capacity,
+                                       int* rows, int* columns);
+
+/* Writes DIR/trace.csv and DIR/summary.json of the ticks stepped so far, as `fitfeel run` writes
+ * them (both or neither; DIR created if needed). Allocates and does I/O: never from the servo
+ * callback; between steps or after the last, on the stepping thread. */
+FITFEEL_C_API int fitfeel_write_outputs(fitfeel_scene* scene, const char* dir);
+
+/* The last error on this handle (pressure map, outputs), or on this thread for calls without a
+ * handle (open); "" if none. Valid until the next call on the handle / thread. */
 FITFEEL_C_API const char* fitfeel_last_error(const fitfeel_scene* scene);
 FITFEEL_C_API const char* fitfeel_thread_last_error(void);
 

@@ -65,19 +65,8 @@ nlohmann::json MeasuredPartsReport(const Scene& scene, const PreparedScene& prep
 
 }  // namespace
 
-RunResult RunScene(Scene scene, const RunOptions& options) {
-  if (options.seed) scene.run.seed = *options.seed;
-  if (options.clock) scene.run.clock = *options.clock;
-  if (!scene.device) {
-    throw UserError("scene '" + scene.name + "' has no device '" + scene.device_id + "'");
-  }
-
-  RunResult result;
-  PreparedScene prepared = Prepare(scene);
-  if (options.prepared) options.prepared(prepared);
-  ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
-
-  RunInfo& info = result.info;
+RunInfo MakeRunInfo(const Scene& scene, const PreparedScene& prepared) {
+  RunInfo info;
   info.scenario = scene.name;
   info.scenario_file = scene.file;
   info.seed = scene.run.seed;
@@ -99,6 +88,23 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   info.outer_rows = prepared.outer_sms->grid.rows;
   info.outer_columns = prepared.outer_sms->grid.columns;
   info.measured_parts = MeasuredPartsReport(scene, prepared);
+  return info;
+}
+
+RunResult RunScene(Scene scene, const RunOptions& options) {
+  if (options.seed) scene.run.seed = *options.seed;
+  if (options.clock) scene.run.clock = *options.clock;
+  if (!scene.device) {
+    throw UserError("scene '" + scene.name + "' has no device '" + scene.device_id + "'");
+  }
+
+  RunResult result;
+  PreparedScene prepared = Prepare(scene);
+  if (options.prepared) options.prepared(prepared);
+  ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
+
+  RunInfo& info = result.info;
+  info = MakeRunInfo(scene, prepared);
 
   SchedulerSettings settings;
   settings.rate = scene.run.rate;

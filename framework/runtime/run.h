@@ -43,4 +43,8 @@ struct RunResult {
 // file is created when the scene cannot run.
 FITFEEL_API RunResult RunScene(Scene scene, const RunOptions& options);
 
+// What summary.json says of a prepared scene before its run (name, law, rates, prepare times,
+// grids, measured parts); the device report is added after the run.
+FITFEEL_API RunInfo MakeRunInfo(const Scene& scene, const PreparedScene& prepared);
+
 }  // namespace fitfeel

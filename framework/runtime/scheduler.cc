@@ -329,6 +329,21 @@ void Scheduler::RunDeviceClock() {
   device_.RunServoLoop(settings_.duration, [this](double time) { return Tick(time); });
 }
 
+RunStats Scheduler::StatsSoFar() const {
+  const std::uint64_t n = ticks_done_.load(std::memory_order_relaxed);
+  RunStats s = stats_;
+  s.safety = run_.chain.report();
+  s.ticks = n;
+  s.planned_ticks = planned_ticks_;
+  s.guard_faults = run_.guard_faults;
+  s.device_faults = run_.device_faults;
+  s.dropped_rows = run_.dropped_rows;
+  const auto end = compute_us_.begin() + static_cast<std::ptrdiff_t>(std::min<std::uint64_t>(
+                                             n, compute_us_.size()));
+  s.compute_us = ComputePercentiles(std::vector<double>(compute_us_.begin(), end));
+  return s;
+}
+
 void Scheduler::ComputeStats() {
   const std::uint64_t n = ticks_done_.load(std::memory_order_relaxed);
   if (settings_.stream == nullptr) {

@@ -111,6 +111,9 @@ class FITFEEL_API Scheduler {
   const std::vector<RecordedSample>& recording() const { return recording_; }
   const SafetyChain& safety() const { return run_.chain; }
   const RunStats& stats() const { return stats_; }
+  // The statistics of the ticks done so far, as a finished run reports them (not for the tick: it
+  // allocates), for hosts that step the scheduler themselves and write outputs between steps.
+  RunStats StatsSoFar() const;
   std::uint64_t planned_ticks() const { return planned_ticks_; }
   // Ticks done so far; safe to read from another thread (progress display).
   std::uint64_t ticks_done() const { return ticks_done_.load(std::memory_order_relaxed); }

@@ -30,6 +30,11 @@ lib.fitfeel_open_yaml.argtypes = [ctypes.c_char_p, ctypes.c_char_p, ctypes.c_uin
                                   ctypes.POINTER(ctypes.c_void_p)]
 lib.fitfeel_step.argtypes = [ctypes.c_void_p, ctypes.POINTER(DeviceState), ctypes.POINTER(Wrench)]
 lib.fitfeel_close.argtypes = [ctypes.c_void_p]
+lib.fitfeel_write_outputs.argtypes = [ctypes.c_void_p, ctypes.c_char_p]
+lib.fitfeel_pressure_map.argtypes = [ctypes.c_void_p, ctypes.POINTER(ctypes.c_double), ctypes.c_int,
+                                     ctypes.POINTER(ctypes.c_int), ctypes.POINTER(ctypes.c_int)]
+lib.fitfeel_last_error.argtypes = [ctypes.c_void_p]
+lib.fitfeel_last_error.restype = ctypes.c_char_p
 lib.fitfeel_thread_last_error.restype = ctypes.c_char_p
 assert lib.fitfeel_abi_version() == 1
 
@@ -45,6 +50,7 @@ with tempfile.TemporaryDirectory() as work:
     lines = [l for l in (pathlib.Path(work) / "recording.csv").read_text().splitlines()
              if not l.startswith("#")]
     header, rows = lines[0].split(), [l.split() for l in lines[1:]]
+    run_trace = (pathlib.Path(work) / "trace.csv").read_text()
 
 col = {name: i for i, name in enumerate(header)}
 handle = ctypes.c_void_p()
@@ -71,7 +77,36 @@ for n, row in enumerate(rows):
         mismatches += 1
         if mismatches <= 5:
             print(f"tick {n}: C API {got} != fitfeel run {want}")
+
+
+def without_timings(trace):
+    # tick_us (the 7th column) is a measurement, the only value not fixed in virtual time.
+    return [",".join(l.split(",")[:6] + l.split(",")[7:]) for l in trace.splitlines()]
+
+
+# The host's run written by the library: the same trace as fitfeel run's, row for row.
+with tempfile.TemporaryDirectory() as work:
+    assert lib.fitfeel_write_outputs(handle, work.encode()) == 0, lib.fitfeel_last_error(handle)
+    host_trace = (pathlib.Path(work) / "trace.csv").read_text()
+    assert (pathlib.Path(work) / "summary.json").is_file()
+trace_ok = without_timings(host_trace) == without_timings(run_trace)
+print(f"fitfeel_write_outputs: trace {'equal to' if trace_ok else 'DIFFERENT from'} fitfeel run's")
+assert lib.fitfeel_write_outputs(handle, b"/dev/null/x") != 0
+assert b"/dev/null" in lib.fitfeel_last_error(handle), lib.fitfeel_last_error(handle)
+
+# The pressure map: ask its size, then fetch it.
+rows_n, cols_n = ctypes.c_int(), ctypes.c_int()
+assert lib.fitfeel_pressure_map(handle, None, 0, ctypes.byref(rows_n), ctypes.byref(cols_n)) == -1
+assert rows_n.value > 0 and cols_n.value > 0, (rows_n.value, cols_n.value)
+cells = (ctypes.c_double * (rows_n.value * cols_n.value))()
+status = lib.fitfeel_pressure_map(handle, cells, len(cells), ctypes.byref(rows_n),
+                                  ctypes.byref(cols_n))
+assert status == 0, lib.fitfeel_last_error(handle)
+assert all(p >= 0.0 for p in cells)
+print(f"pressure map {rows_n.value} x {cols_n.value}, max {max(cells):.4g} Pa")
 lib.fitfeel_close(handle)
+if not trace_ok:
+    sys.exit(1)
 print(f"{len(rows)} ticks through ctypes ({loaded} with a non-zero wrench), "
       f"{mismatches} differing from fitfeel run")
 # A run that renders nothing would compare zeros with zeros: most of the insertion is loaded.
