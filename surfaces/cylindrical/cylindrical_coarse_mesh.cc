@@ -38,9 +38,24 @@ CoarseMeshes MakeCylindricalCoarseMeshes(const PartSpec& inner, const PartSpec& 
   const int facets = CoarseFacets(inner, outer);
   const double radius = 0.5 * shaft.diameter();
   CoarseMeshes meshes;
-  meshes.inner = MakeClosedCylinder(radius, -shaft.length(), 0.0, facets);
-  meshes.outer =
-      MakeTube(0.5 * hole.diameter(), 0.5 * hole.outer_diameter(), 0.0, hole.length(), facets);
+  // The lead-in chamfers, as frustums: the shaft's end narrows toward its tip, the bore widens
+  // toward its entrance, so that a part pushed off the axis meets a slope that turns it in.
+  const Chamfer& end = shaft.chamfer();
+  if (end.length > 0.0) {
+    meshes.inner = MakeClosedCylinder(radius, -shaft.length(), -end.length, facets);
+    AppendMesh(MakeClosedFrustum(radius, radius - end.width(), -end.length, 0.0, facets),
+               &meshes.inner);
+  } else {
+    meshes.inner = MakeClosedCylinder(radius, -shaft.length(), 0.0, facets);
+  }
+  const double bore = 0.5 * hole.diameter(), hub = 0.5 * hole.outer_diameter();
+  const Chamfer& entrance = hole.chamfer();
+  if (entrance.length > 0.0) {
+    meshes.outer = MakeTaperedTube(bore + entrance.width(), bore, hub, 0.0, entrance.length, facets);
+    AppendMesh(MakeTube(bore, hub, entrance.length, hole.length(), facets), &meshes.outer);
+  } else {
+    meshes.outer = MakeTube(bore, hub, 0.0, hole.length(), facets);
+  }
   return meshes;
 }
 

@@ -28,6 +28,10 @@ std::string CylindricalGeometry::Describe() const {
   if (role_ == Role::kOuter) out << " hub outer d=" << mm(outer_diameter_);
   if (role_ == Role::kInner && bore_diameter_ > 0.0)
     out << " hollow, bore d=" << mm(bore_diameter_);
+  if (chamfer_.length > 0.0) {
+    out << " chamfer " << mm(chamfer_.length) << " x "
+        << std::round(chamfer_.angle * 180.0 / std::numbers::pi * 10.0) / 10.0 << " deg";
+  }
   return out.str();
 }
 
@@ -35,9 +39,9 @@ std::shared_ptr<const CylindricalGeometry> ParseCylindricalGeometry(const PartSp
                                                                     const ConfigNode& geometry) {
   const bool inner = part.role == Role::kInner;
   if (inner) {
-    geometry.ExpectOnlyKeys({"length", "bore_diameter"});
+    geometry.ExpectOnlyKeys({"length", "bore_diameter", "chamfer"});
   } else {
-    geometry.ExpectOnlyKeys({"length", "outer_diameter"});
+    geometry.ExpectOnlyKeys({"length", "outer_diameter", "chamfer"});
   }
   const double d = part.size.nominal;
   if (!(d > 0.0) || d > kMaxSize) {
@@ -65,7 +69,34 @@ std::shared_ptr<const CylindricalGeometry> ParseCylindricalGeometry(const PartSp
           node.Describe());
     }
   }
-  return std::make_shared<CylindricalGeometry>(part.role, d, length, outer_diameter, bore_diameter);
+  auto parsed =
+      std::make_shared<CylindricalGeometry>(part.role, d, length, outer_diameter, bore_diameter);
+  if (auto node = geometry.Find("chamfer")) {
+    Chamfer chamfer;
+    chamfer.angle = std::numbers::pi / 4;  // ISO 13715's plain "C" edge: 45 degrees
+    if (node->is_map()) {
+      node->ExpectOnlyKeys({"length", "angle"});
+      chamfer.length = node->Child("length").AsQuantityIn(Dimension::kLength, 0.0, kMaxSize);
+      if (auto angle = node->Find("angle")) {
+        // 1-80 degrees: flatter is no lead-in, steeper no chamfer at all.
+        chamfer.angle =
+            angle->AsQuantityIn(Dimension::kAngle, std::numbers::pi / 180, 80 * std::numbers::pi / 180);
+      }
+    } else {
+      chamfer.length = node->AsQuantityIn(Dimension::kLength, 0.0, kMaxSize);
+    }
+    // The chamfer lies on the mating end and inside the wall it cuts.
+    const double wall = inner ? 0.5 * (d - bore_diameter) : 0.5 * (outer_diameter - d);
+    if (chamfer.length >= length || chamfer.width() >= wall) {
+      node->Fail("a chamfer shorter than the part (" + FormatQuantity(length, Dimension::kLength) +
+                     ") and narrower than its wall (" + FormatQuantity(wall, Dimension::kLength) +
+                     ")",
+                 FormatQuantity(chamfer.length, Dimension::kLength) + " long, " +
+                     FormatQuantity(chamfer.width(), Dimension::kLength) + " wide");
+    }
+    parsed->set_chamfer(chamfer);
+  }
+  return parsed;
 }
 
 void CheckCylindricalPair(const PartSpec& inner, const PartSpec& outer,

@@ -1,13 +1,22 @@
 #pragma once
 
-#include <string>
-
+#include <cmath>
 #include <memory>
+#include <string>
 
 #include "framework/core/config_node.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::cylindrical {
+
+// A lead-in chamfer at the mating end (the shaft's leading end, the bore's entrance): `length`
+// along the axis, the chamfer surface at `angle` to the axis, so it is length * tan(angle) wide
+// radially. Zero length: a sharp edge.
+struct Chamfer {
+  double length = 0.0;  // m
+  double angle = 0.0;   // rad, in (0, 90 deg)
+  double width() const { return length > 0.0 ? length * std::tan(angle) : 0.0; }
+};
 
 // Nominal geometry of one cylindrical mating surface. The mating diameter is the part's nominal
 // size (PartSpec::size.nominal); the rest comes from the part's `geometry` node.
@@ -28,6 +37,8 @@ class CylindricalGeometry final : public Geometry {
   double bore_diameter() const {
     return bore_diameter_;
   }  // inner part: bore of a hollow shaft (0 = solid), m
+  const Chamfer& chamfer() const { return chamfer_; }  // at the mating end
+  void set_chamfer(const Chamfer& chamfer) { chamfer_ = chamfer; }
 
   double nominal_area() const override;
   double mating_length() const override { return length_; }
@@ -39,11 +50,14 @@ class CylindricalGeometry final : public Geometry {
   double length_;
   double outer_diameter_;
   double bore_diameter_;
+  Chamfer chamfer_;
 };
 
 // Parses one part's `geometry` node: `length` (> 0) for both parts; `outer_diameter` (the hub's
 // d2, > d, required) for the outer part; optional `bore_diameter` (hollow shaft, 0 <= di < d)
-// for the inner part. d is part.size.nominal. Throws ScenarioError at the offending key.
+// for the inner part; optional `chamfer` at the mating end, a length (45 degrees, ISO 13715's
+// "C" edge) or {length, angle}, shorter than the part and narrower than its wall. d is
+// part.size.nominal. Throws ScenarioError at the offending key.
 std::shared_ptr<const CylindricalGeometry> ParseCylindricalGeometry(const PartSpec& part,
                                                                     const ConfigNode& geometry);
 

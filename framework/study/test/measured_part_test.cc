@@ -62,9 +62,8 @@ class MeasuredPart : public ::testing::Test {
       ASSERT_NE(at, std::string::npos) << after;
       text.insert(at + after.size(), line);
     };
-    insert("    geometry: {length: 40 mm}\n", "    measured: {roundness: shaft.csv}\n");
-    insert("    geometry: {length: 20 mm, outer_diameter: 30 mm}\n",
-           "    measured: {roundness: bushing.csv}\n");
+    insert("\n  shaft:\n", "    measured: {roundness: shaft.csv}\n");
+    insert("\n  bushing:\n", "    measured: {roundness: bushing.csv}\n");
     const fs::path file = dir_ / "measured.yaml";
     std::ofstream(file) << text;
     return file;

@@ -87,6 +87,49 @@ TEST(CylindricalCoarseMeshTest, ACentredShaftClearsTheBoreAndAnOffOneStrikesTheF
   EXPECT_NEAR(p.depth, 1e-4, 1e-12);
 }
 
+// The lead-in: 1 mm off the axis, the shaft's C0.5 end meets the bore's C1 entrance on the
+// chamfers' 45 degree slope, which pushes it back and toward the axis alike; without chamfers the
+// same pose strikes the flat face, which only pushes back.
+TEST(CylindricalCoarseMeshTest, ChamfersTurnAnOffAxisShaftTowardTheAxis) {
+  PartSpec shaft = PaperShaft();
+  PartSpec hole = Hub(PaperHole(), 0.030);
+  auto chamfered = [](const PartSpec& part, double length) {
+    auto g = std::make_shared<CylindricalGeometry>(
+        *static_cast<const CylindricalGeometry*>(part.geometry.get()));
+    g->set_chamfer({length, M_PI / 4});
+    PartSpec out = part;
+    out.geometry = g;
+    return out;
+  };
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  Penetration p;
+  // Tip 0.6 mm past the entrance face, 1 mm off the axis toward +x: the tip's edge (r 9.5 mm,
+  // reaching x = 10.5 mm) is 0.1 mm into the entrance cone (r = 11 mm - y = 10.4 mm there).
+  pose.translation() = Eigen::Vector3d(1e-3, 0.6e-3, 0.0);
+  {
+    const CoarseMeshes meshes = MakeCylindricalCoarseMeshes(chamfered(shaft, 0.5e-3),
+                                                            chamfered(hole, 1e-3));
+    EXPECT_EQ(meshes.inner.triangles.size(), 4u * CoarseFacets(shaft, hole) * 2);
+    const MeshCollider collider(meshes.outer, meshes.inner, 256);
+    const auto scratch = collider.MakeScratch();
+    collider.Query(pose, scratch.get(), &p);
+    ASSERT_TRUE(p.contact);
+    // 0.1 mm radial overlap on a 45 degree slope: 0.0707 mm deep, within the facets' error.
+    EXPECT_NEAR(p.depth, 0.1e-3 * std::sqrt(0.5), 0.02e-3);
+    EXPECT_LT(p.normal.x(), -0.5);  // toward the axis
+    EXPECT_LT(p.normal.y(), -0.5);  // and back out of the entrance
+  }
+  {
+    const CoarseMeshes sharp = MakeCylindricalCoarseMeshes(shaft, hole);
+    const MeshCollider collider(sharp.outer, sharp.inner, 256);
+    const auto scratch = collider.MakeScratch();
+    collider.Query(pose, scratch.get(), &p);
+    ASSERT_TRUE(p.contact);
+    EXPECT_NEAR(p.normal.y(), -1.0, 1e-9);  // the face: straight back
+    EXPECT_NEAR(p.normal.x(), 0.0, 1e-9);
+  }
+}
+
 TEST(CylindricalCoarseMeshTest, RefusesAPartWithoutCylindricalGeometry) {
   PartSpec shaft = PaperShaft();
   shaft.geometry.reset();

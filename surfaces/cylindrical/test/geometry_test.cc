@@ -1,5 +1,6 @@
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -38,6 +39,16 @@ TEST(CylindricalGeometry, ParsesShaftAndHub) {
                                       Node("{length: 20 mm, outer_diameter: 30 mm}"));
   EXPECT_DOUBLE_EQ(hub->outer_diameter(), 0.03);
   EXPECT_EQ(hub->Describe(), "bore d=20 mm l=20 mm hub outer d=30 mm");
+  // Lead-in chamfers: a length is ISO 13715's 45 degree "C" edge; or length and angle.
+  auto c = ParseCylindricalGeometry(Spec(Role::kInner, 0.02), Node("{length: 60 mm, chamfer: 0.5 mm}"));
+  EXPECT_DOUBLE_EQ(c->chamfer().length, 0.5e-3);
+  EXPECT_NEAR(c->chamfer().width(), 0.5e-3, 1e-15);
+  EXPECT_EQ(c->Describe(), "shaft d=20 mm l=60 mm chamfer 0.5 mm x 45 deg");
+  auto steep = ParseCylindricalGeometry(
+      Spec(Role::kOuter, 0.02),
+      Node("{length: 20 mm, outer_diameter: 30 mm, chamfer: {length: 2 mm, angle: 15 deg}}"));
+  EXPECT_NEAR(steep->chamfer().width(), 2e-3 * std::tan(std::numbers::pi / 12), 1e-15);
+  EXPECT_DOUBLE_EQ(shaft->chamfer().length, 0.0);  // none given: a sharp edge
 }
 
 // Each bad geometry is refused at its key with what was expected.
@@ -58,6 +69,14 @@ TEST(CylindricalGeometry, RefusesBadGeometryAtTheKey) {
       {Role::kOuter, "{length: 20 mm, outer_diameter: 20 mm}", "parts.p.geometry.outer_diameter"},
       {Role::kOuter, "{length: 20 mm, outer_diameter: 30 mm, bore_diameter: 5 mm}",
        "parts.p.geometry"},
+      {Role::kInner, "{length: 20 mm, chamfer: 20 mm}", "parts.p.geometry.chamfer"},
+      {Role::kInner, "{length: 60 mm, chamfer: 11 mm}", "parts.p.geometry.chamfer"},
+      {Role::kOuter, "{length: 20 mm, outer_diameter: 30 mm, chamfer: 6 mm}",
+       "parts.p.geometry.chamfer"},
+      {Role::kOuter, "{length: 20 mm, outer_diameter: 30 mm, chamfer: {length: 1 mm, angle: 85 deg}}",
+       "parts.p.geometry.chamfer.angle"},
+      {Role::kInner, "{length: 20 mm, chamfer: {angle: 30 deg}}", "parts.p.geometry.chamfer"},
+      {Role::kInner, "{length: 20 mm, chamfer: -1 mm}", "parts.p.geometry.chamfer"},
   };
   for (const Bad& bad : cases) {
     try {
