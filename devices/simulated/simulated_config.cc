@@ -61,7 +61,27 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     node.ExpectOnlyKeys({"plugin", "mode", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;
     const ConfigNode hand = node.Child("hand");
-    hand.ExpectOnlyKeys({"mass", "stiffness", "damping"});
+    hand.ExpectOnlyKeys({"mass", "stiffness", "damping", "tremor", "aim_error"});
+    if (const auto tremor = hand.Find("tremor")) {
+      // Physiological tremor of the outstretched hand: 8-12 Hz, displacement amplitudes of the
+      // order of 0.1 mm (Elble & Koller, Tremor, 1990); `tremor: true` takes 0.1 mm at 10 Hz.
+      s.tremor_amplitude = 0.1e-3;
+      s.tremor_frequency = 10.0;
+      if (tremor->is_map()) {
+        tremor->ExpectOnlyKeys({"amplitude", "frequency"});
+        s.tremor_amplitude =
+            Optional(*tremor, "amplitude", Dimension::kLength, 0.0, 10e-3, s.tremor_amplitude);
+        s.tremor_frequency =
+            Optional(*tremor, "frequency", Dimension::kFrequency, 0.1, 100.0, s.tremor_frequency);
+      } else if (!tremor->AsBool()) {
+        s.tremor_amplitude = 0.0;
+      }
+    }
+    if (const auto aim = hand.Find("aim_error")) {
+      const auto xz = aim->is_sequence() ? aim->Items() : std::vector<ConfigNode>{};
+      if (xz.size() != 2) aim->Fail("[x, z] with units, e.g. [0.3 mm, 0 mm]", aim->Describe());
+      for (int i = 0; i < 2; ++i) s.aim_error[i] = xz[i].AsQuantityIn(Dimension::kLength, -0.1, 0.1);
+    }
     s.hand_mass = hand.Child("mass").AsQuantityIn(Dimension::kMass, 0.0, 1e3, false);
     s.hand_stiffness = hand.Child("stiffness").AsQuantityIn(Dimension::kStiffness, 0.0, 1e8, false);
     s.hand_damping = Optional(hand, "damping", Dimension::kDamping, 0.0, 1e6, 0.0);

@@ -126,6 +126,7 @@ void SimulatedDevice::Target(double time, Eigen::Vector3d* position,
   velocity->setZero();
   if (time <= w.front().time) {
     *position = w.front().position;
+    AddHandErrors(time, position, velocity);
     return;
   }
   for (std::size_t i = 1; i < w.size(); ++i) {
@@ -133,10 +134,25 @@ void SimulatedDevice::Target(double time, Eigen::Vector3d* position,
       const double span = w[i].time - w[i - 1].time;
       *velocity = (w[i].position - w[i - 1].position) / span;
       *position = w[i - 1].position + (time - w[i - 1].time) * *velocity;
+      AddHandErrors(time, position, velocity);
       return;
     }
   }
   *position = w.back().position;
+  AddHandErrors(time, position, velocity);
+}
+
+void SimulatedDevice::AddHandErrors(double time, Eigen::Vector3d* position,
+                                    Eigen::Vector3d* velocity) const noexcept {
+  position->x() += settings_.aim_error.x();
+  position->z() += settings_.aim_error.y();
+  const double a = settings_.tremor_amplitude;
+  if (!(a > 0.0)) return;
+  const double omega = 2.0 * M_PI * settings_.tremor_frequency;
+  position->x() += a * std::sin(omega * time);
+  position->z() += a * (std::cos(omega * time) - 1.0);
+  velocity->x() += a * omega * std::cos(omega * time);
+  velocity->z() -= a * omega * std::sin(omega * time);
 }
 
 void SimulatedDevice::Twist(double time, double* angle, double* rate) const noexcept {

@@ -50,6 +50,14 @@ struct Settings {
   double hand_mass = 0.0;           // kg
   double hand_stiffness = 0.0;      // N/m
   double hand_damping = 0.0;        // N*s/m
+  // Physiological tremor added to the target across the mating axis: a circle of `tremor_amplitude`
+  // in (x, z) at `tremor_frequency` (x = A sin(2 pi f t), z = A cos(2 pi f t) - A, so it starts at
+  // the waypoint). 0: none. Defaults of the key: 0.1 mm at 10 Hz (docs in README.md).
+  double tremor_amplitude = 0.0;   // m
+  double tremor_frequency = 0.0;   // Hz
+  // A constant aiming error added to every waypoint across the axis: where a person's hand puts
+  // the part's axis when aiming at the bore, (x, z).
+  Eigen::Vector2d aim_error{0.0, 0.0};  // m
 };
 
 // The simulated device of the paper's case study and a scripted hand (plugin
@@ -136,6 +144,9 @@ class SimulatedDevice final : public Device {
 
  private:
   void Target(double time, Eigen::Vector3d* position, Eigen::Vector3d* velocity) const noexcept;
+  // The aiming error and the tremor, added to the waypoints' target.
+  void AddHandErrors(double time, Eigen::Vector3d* position,
+                     Eigen::Vector3d* velocity) const noexcept;
   // kConstantRotation: the twist about y and its rate at `time`, from the time alone (exact).
   void Twist(double time, double* angle, double* rate) const noexcept;
 

@@ -53,6 +53,29 @@ waypoints:
   ASSERT_EQ(s.waypoints.size(), 2u);
   EXPECT_DOUBLE_EQ(s.waypoints[1].position.y(), 15e-3);
   EXPECT_DOUBLE_EQ(s.waypoints[1].time, 2.0);
+  EXPECT_EQ(s.tremor_amplitude, 0.0);
+
+  SimulatedDevice shaky;
+  shaky.Configure(Node(R"(mode: scripted
+hand: {mass: 500 g, stiffness: 2 N/mm, tremor: true, aim_error: [0.3 mm, -1 mm]}
+waypoints: [{time: 0 s, position: [0 mm, -10 mm, 0 mm]}]
+)"));
+  EXPECT_DOUBLE_EQ(shaky.settings().tremor_amplitude, 0.1e-3);
+  EXPECT_DOUBLE_EQ(shaky.settings().tremor_frequency, 10.0);
+  EXPECT_DOUBLE_EQ(shaky.settings().aim_error.y(), -1e-3);
+  SimulatedDevice custom;
+  custom.Configure(Node(R"(mode: scripted
+hand: {mass: 500 g, stiffness: 2 N/mm, tremor: {amplitude: 50 um, frequency: 8 Hz}}
+waypoints: [{time: 0 s, position: [0 mm, -10 mm, 0 mm]}]
+)"));
+  EXPECT_DOUBLE_EQ(custom.settings().tremor_amplitude, 50e-6);
+  EXPECT_DOUBLE_EQ(custom.settings().tremor_frequency, 8.0);
+  SimulatedDevice bad;
+  EXPECT_THROW(bad.Configure(Node(R"(mode: scripted
+hand: {mass: 500 g, stiffness: 2 N/mm, aim_error: [1 mm]}
+waypoints: [{time: 0 s, position: [0 mm, -10 mm, 0 mm]}]
+)")),
+               ScenarioError);
 }
 
 TEST(SimulatedConfigTest, ReadsARotaryDriveInDegrees) {

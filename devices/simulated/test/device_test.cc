@@ -291,6 +291,49 @@ TEST(SimulatedHandTest, FollowsTheWaypointsAndYieldsToAForceByItsStiffness) {
   EXPECT_NEAR(state.velocity.norm(), 0.0, 1e-9);
 }
 
+// The hand's tremor passes through its own mass-spring-damper: the hand moves at the tremor's
+// frequency with the steady-state gain |k + i b w| / |k - m w^2 + i b w| of the target's motion
+// (within backward Euler's damping at w h = 0.063), circling about the aimed-at point.
+TEST(SimulatedHandTest, TremorsAtItsFrequencyAroundTheAimedPoint) {
+  Settings s;
+  s.mode = Settings::Mode::kScripted;
+  s.hand_mass = 0.5;
+  s.hand_stiffness = 2000.0;
+  s.hand_damping = 20.0;
+  s.tremor_amplitude = 0.1e-3;
+  s.tremor_frequency = 10.0;
+  s.aim_error = Eigen::Vector2d(0.3e-3, -0.2e-3);
+  s.waypoints = {{0.0, {0.0, -5e-3, 0.0}}};
+  SimulatedDevice device;
+  device.Configure(s);
+  device.Start(kPeriod);
+  double lo = 1.0, hi = -1.0, sum = 0.0;
+  int crossings = 0;
+  double previous = 0.0;
+  const int settle = 2000;  // transients (time constant 2 m / b = 50 ms) gone
+  const int n = 1000;       // then one second: ten tremor periods
+  DeviceState state;
+  for (int k = 0; k < settle + n; ++k) {
+    device.Read(k * kPeriod, &state);
+    device.Write(Wrench{});
+    if (k < settle) continue;
+    const int t = k - settle;
+    const double x = state.position.x() - 0.3e-3;
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+    sum += state.position.z();
+    if (t > 0 && (x > 0.0) != (previous > 0.0)) ++crossings;
+    previous = x;
+  }
+  EXPECT_NEAR(crossings, 20, 1);  // 10 Hz
+  const double w = 2 * M_PI * 10.0;
+  const double gain = std::hypot(2000.0, 20.0 * w) / std::hypot(2000.0 - 0.5 * w * w, 20.0 * w);
+  EXPECT_NEAR(0.5 * (hi - lo), gain * 0.1e-3, 0.1 * gain * 0.1e-3);
+  // The circle's centre: the aimed-at point, offset by the aiming error (z starts at the
+  // waypoint: its centre is one amplitude below).
+  EXPECT_NEAR(sum / n, -0.2e-3 - 0.1e-3, 0.02e-3);
+}
+
 Settings Rotor(double angular_speed, double swing, double load) {
   Settings s;
   s.mode = Settings::Mode::kConstantRotation;
