@@ -47,7 +47,9 @@ TEST(SphericalGeometry, BandAreaIsTwoPiAB) {
 }
 
 TEST(SphericalGeometry, MeanAxisDistanceIsTheBandAverage) {
-  const auto& g = GeometryOf(test::Socket());
+  // The part owns its geometry: keep it alive while the reference is used.
+  const PartSpec socket = test::Socket();
+  const auto& g = GeometryOf(socket);
   double sum = 0.0;
   const int steps = 100000;
   for (int s = 0; s < steps; ++s) {
