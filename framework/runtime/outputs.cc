@@ -144,6 +144,7 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   j["constrained_ticks"] = axial.count;
   j["interference_ticks"] = interference_ticks;
   j["deadline_misses"] = stats.deadline_misses;
+  j["overruns"] = stats.overruns;
   j["guard_faults"] = stats.guard_faults;
   j["device_faults"] = stats.device_faults;
   j["dropped_rows"] = stats.dropped_rows;

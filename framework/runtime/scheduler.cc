@@ -158,6 +158,8 @@ void Scheduler::Rewind() noexcept {
   run_.guard_faults = 0;
   run_.device_faults = 0;
   run_.dropped_rows = 0;
+  run_.overrun.Reset();
+  run_.wake_lateness = 0.0;
   run_.last_sane_device = DeviceState{};
   ticks_done_.store(0, std::memory_order_relaxed);
   run_.current = StageId::kPositioning;
@@ -202,6 +204,16 @@ bool Scheduler::Tick(double time) noexcept {
   run.last_time = time;
   Wrench device_wrench = run.chain.Apply(output.wrench, run.device, dt);
   if (device_fault) device_wrench = Wrench{};
+  // Real time only: after a missed deadline, zero and then a ramp (overrun_guard.h). A device's
+  // own clock shows the miss as a long period; the scheduler's clock as a late wake-up.
+  if (stats_.realtime) {
+    const double lateness = device_clock_ ? dt - period_ : run.wake_lateness;
+    const double factor = run.overrun.Factor(lateness, period_);
+    if (factor < 1.0) {
+      device_wrench.force *= factor;
+      device_wrench.torque *= factor;
+    }
+  }
   const bool fault = !output.wrench.AllFinite();
   if (fault) {
     run.output.wrench.SetZero();
@@ -313,6 +325,7 @@ void Scheduler::RunRealTime() {
         break;
       }
       deadline_ns_[k] = static_cast<double>(deadline);
+      run_.wake_lateness = static_cast<double>(NowNs() - deadline) * 1e-9;
       if (!Tick(static_cast<double>(k) / settings_.rate)) break;
     }
   });
@@ -355,6 +368,7 @@ void Scheduler::ComputeStats() {
   stats_.guard_faults = run_.guard_faults;
   stats_.device_faults = run_.device_faults;
   stats_.dropped_rows = run_.dropped_rows;
+  stats_.overruns = run_.overrun.overruns();
   stats_.compute_us = ComputePercentiles(
       std::vector<double>(compute_us_.begin(), compute_us_.begin() + static_cast<std::ptrdiff_t>(n)));
   stats_.achieved_rate = stats_.wall_seconds > 0.0 ? n / stats_.wall_seconds : 0.0;

@@ -13,6 +13,7 @@
 #include "framework/core/spsc_ring.h"
 #include "framework/runtime/stream_row.h"
 #include "framework/runtime/tick_observer.h"
+#include "framework/runtime/overrun_guard.h"
 #include "framework/runtime/tick_record.h"
 #include "framework/safety/safety_chain.h"
 #include "framework/scenario/scene.h"
@@ -66,6 +67,8 @@ struct RunState {
   std::uint64_t dropped_rows = 0;   // streamed rows the ring had no room for (real time)
   DeviceState last_sane_device;     // the newest device state inside physical bounds
   StreamRow row;                    // the tick's row when streaming
+  OverrunGuard overrun;             // zero and ramp after a missed deadline (real time)
+  double wake_lateness = 0.0;       // how late this tick woke after its deadline, s (real time)
   double last_time = 0.0;  // the previous tick's time (a device's clock: measured)
 };
 

@@ -41,6 +41,9 @@ struct RunStats {
   std::uint64_t ticks = 0;
   std::uint64_t planned_ticks = 0;
   std::uint64_t deadline_misses = 0;  // real time: ticks that finished after the next deadline
+  // Real time: ticks that woke more than a period late and sent zero, the next ones ramping back
+  // (OverrunGuard).
+  std::uint64_t overruns = 0;
   std::uint64_t guard_faults = 0;     // ticks whose wrench was not finite
   // Ticks whose device state was not finite or outside physical bounds (physical_bounds.h): the
   // last sane state was held and zero force sent.

@@ -1,4 +1,8 @@
 
+#include <chrono>
+#include <cmath>
+#include <thread>
+
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
@@ -43,6 +47,58 @@ TEST(RealTimeSchedulerTest, TwoSecondsAtOneKilohertz) {
       s.realtime_note.c_str(), s.compute_us.p50, s.compute_us.p99, s.compute_us.max,
       s.jitter_us.p50, s.jitter_us.p99, s.jitter_us.max, s.lateness_us.p50, s.lateness_us.p99,
       s.lateness_us.max, static_cast<unsigned long long>(s.deadline_misses), s.achieved_rate);
+}
+
+TEST(OverrunGuard, ZeroOnAMissedDeadlineThenARampBack) {
+  OverrunGuard guard;
+  const double period = 1e-3;
+  EXPECT_EQ(guard.Factor(0.2e-3, period), 1.0);  // late within its period: on time
+  EXPECT_EQ(guard.Factor(1.5e-3, period), 0.0);  // woke after the next deadline: zero
+  for (int k = 1; k <= OverrunGuard::kRampTicks; ++k) {
+    EXPECT_DOUBLE_EQ(guard.Factor(0.0, period), static_cast<double>(k) / OverrunGuard::kRampTicks);
+  }
+  EXPECT_EQ(guard.Factor(0.0, period), 1.0);
+  EXPECT_EQ(guard.Factor(2e-3, period), 0.0);  // a second overrun restarts the ramp
+  EXPECT_EQ(guard.overruns(), 2u);
+}
+
+// A stage that renders a constant force and, once, computes for 3 ms: an injected overrun.
+class SlowOnceStage final : public Stage {
+ public:
+  StageId id() const override { return StageId::kPositioning; }
+
+ protected:
+  void DoEvaluate(const DeviceState& device, StageState*, StageOutput* out) const noexcept override {
+    out->wrench.SetZero();
+    out->wrench.force.y() = -1.0;
+    out->next = StageId::kPositioning;
+    if (device.time >= 0.2 && device.time < 0.2005) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    }
+  }
+};
+
+// Real time with an injected overrun: the late tick sends zero, the next ones ramp back (within
+// what other, unplanned misses on a loaded machine allow), and the summary counts it.
+TEST(RealTimeSchedulerTest, AnInjectedOverrunSendsZeroThenRampsBack) {
+  const PreparedScene prepared = Prepare(testing::MakeFakeScene(1));
+  const SlowOnceStage slow;
+  const ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
+  testing::KinematicDevice device(-1e-3, 0.0);
+  device.Start(1e-3);
+  Scheduler scheduler(device, slow, constrained, {1000.0, 0.4, ClockMode::kRealTime});
+  scheduler.Run();
+  EXPECT_GE(scheduler.stats().overruns, 1u);
+  const auto& trace = scheduler.trace();
+  // The tick after the slow one woke at least 2 ms late.
+  EXPECT_EQ(trace[201].wrench.force.y(), -1.0);
+  EXPECT_EQ(trace[201].device_wrench.force.y(), 0.0);
+  // Within the next 20 ticks the device force never exceeds the ramp's.
+  for (int k = 1; k <= OverrunGuard::kRampTicks; ++k) {
+    EXPECT_LE(std::abs(trace[201 + k].device_wrench.force.y()),
+              static_cast<double>(k) / OverrunGuard::kRampTicks + 1e-12)
+        << k;
+  }
 }
 
 }  // namespace
