@@ -351,6 +351,7 @@ RunStats Scheduler::StatsSoFar() const {
   s.guard_faults = run_.guard_faults;
   s.device_faults = run_.device_faults;
   s.dropped_rows = run_.dropped_rows;
+  s.overruns = run_.overrun.overruns();
   const auto end = compute_us_.begin() + static_cast<std::ptrdiff_t>(std::min<std::uint64_t>(
                                              n, compute_us_.size()));
   s.compute_us = ComputePercentiles(std::vector<double>(compute_us_.begin(), end));
@@ -363,14 +364,7 @@ void Scheduler::ComputeStats() {
     trace_.resize(n);  // shrinking never allocates
     if (!recording_.empty()) recording_.resize(n);
   }
-  stats_.safety = run_.chain.report();
-  stats_.ticks = n;
-  stats_.guard_faults = run_.guard_faults;
-  stats_.device_faults = run_.device_faults;
-  stats_.dropped_rows = run_.dropped_rows;
-  stats_.overruns = run_.overrun.overruns();
-  stats_.compute_us = ComputePercentiles(
-      std::vector<double>(compute_us_.begin(), compute_us_.begin() + static_cast<std::ptrdiff_t>(n)));
+  stats_ = StatsSoFar();
   stats_.achieved_rate = stats_.wall_seconds > 0.0 ? n / stats_.wall_seconds : 0.0;
   if (!stats_.realtime) return;
 
