@@ -112,20 +112,12 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
     // same solution (block inverse of G), found at a cost set by the fewer of contacts and gaps.
     ws.dual = k < m;
     if (ws.dual) {
-      Eigen::VectorXd rhs(k);
-      for (int a = 0; a < k; ++a) rhs[a] = full_[ws.gaps[static_cast<std::size_t>(a)]];
       if (!ws.Holds(f, true)) {
-        ws.hnn.resize(k, k);
-        for (int a = 0; a < k; ++a) {
-          for (int b = 0; b < k; ++b) {
-            ws.hnn(a, b) =
-                g_inv_(ws.gaps[static_cast<std::size_t>(a)], ws.gaps[static_cast<std::size_t>(b)]);
-          }
-        }
+        ws.hnn = g_inv_(ws.gaps, ws.gaps);  // principal submatrix (Eigen's indexed view)
         ws.llt_dual.compute(ws.hnn);
         ws.Remember(f, true);
       }
-      const Eigen::VectorXd z = ws.llt_dual.solve(rhs);
+      const Eigen::VectorXd z = ws.llt_dual.solve(full_(ws.gaps));
       for (int c : ws.index) {
         double s = full_[c];
         // G^-1 is symmetric: read column c (contiguous) instead of row c.
@@ -135,20 +127,13 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       for (int a = 0; a < k; ++a) w[ws.gaps[static_cast<std::size_t>(a)]] = -z[a];
     } else {
       if (m > 0) {
-        Eigen::VectorXd rhs(m);
-        for (int a = 0; a < m; ++a) rhs[a] = delta[ws.index[static_cast<std::size_t>(a)]];
         if (!ws.Holds(f, false)) {
-          ws.gff.resize(m, m);
-          for (int a = 0; a < m; ++a) {
-            for (int b = 0; b < m; ++b) {
-              ws.gff(a, b) =
-                  g_(ws.index[static_cast<std::size_t>(a)], ws.index[static_cast<std::size_t>(b)]);
-            }
-          }
+          ws.gff = g_(ws.index, ws.index);
           ws.llt.compute(ws.gff);
           ws.Remember(f, false);
         }
-        const Eigen::VectorXd pf = ws.llt.solve(rhs);
+        const Eigen::VectorXd pf =
+            ws.llt.solve(Eigen::Map<const Eigen::VectorXd>(delta, n)(ws.index));
         for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
       }
       for (int j : ws.gaps) {
