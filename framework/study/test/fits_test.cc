@@ -71,10 +71,10 @@ TEST_F(Fits20mm, RankInTheOrderOfTheirInterferenceAndMatchDin7190) {
     int n = 0;
     for (const PairResult& p : r.pairs) n += p.interfering ? 1 : 0;
     interfering.push_back(n / 12.0);
+    const Scene scene = LoadScene(File(fit), registry_);
     for (const PairResult& p : r.pairs) {
       ASSERT_TRUE(p.elastic_utilisation_max.has_value()) << fit << ": yield strength given";
       // A capable process stays inside the drawing (scrap is redrawn).
-      const Scene scene = LoadScene(File(fit), registry_);
       EXPECT_GE(p.shaft_size_um, scene.inner.size.lower_deviation * 1e6 - 1e-9) << fit;
       EXPECT_LE(p.shaft_size_um, scene.inner.size.upper_deviation * 1e6 + 1e-9) << fit;
     }
