@@ -121,21 +121,33 @@ function(fitfeel_add_plugin_folders)
   endforeach()
 endfunction()
 
-# fitfeel_add_fuzzer(<name> SOURCES ... [LIBS ...] [NEEDS target...]) builds a libFuzzer target
-# (preset `fuzz`: clang, FITFEEL_BUILD_FUZZERS=ON) into build-fuzz/fuzz/. The sources define
-# LLVMFuzzerTestOneInput; the seed corpus is the folder `corpus/<name>` beside them, which
-# `make fuzz` copies before a run so that the repository's corpus only grows by hand.
+# fitfeel_add_fuzzer(<name> SOURCES ... [LIBS ...] [NEEDS target...] [REPLAY_ALSO path...]) builds
+# a libFuzzer target (preset `fuzz`: clang, FITFEEL_BUILD_FUZZERS=ON) into build-fuzz/fuzz/. The
+# sources define LLVMFuzzerTestOneInput; the seed corpus is the folder `corpus/<name>` beside them,
+# which `make fuzz` copies before a run so that the repository's corpus only grows by hand: every
+# input that once failed is added there. In an ordinary test build the same sources link against a
+# plain replay driver instead, and ctest replays the corpus (and REPLAY_ALSO, repository-relative).
 function(fitfeel_add_fuzzer name)
-  if(NOT FITFEEL_BUILD_FUZZERS)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;NEEDS;REPLAY_ALSO" ${ARGN})
+  if(FITFEEL_BUILD_FUZZERS)
+    add_executable(${name} ${ARG_SOURCES})
+    target_link_options(${name} PRIVATE -fsanitize=fuzzer)
+    set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz)
+    add_dependencies(fitfeel_fuzzers ${name})
+  elseif(FITFEEL_BUILD_TESTS)
+    set(name ${name}_replay)
+    add_executable(${name} ${ARG_SOURCES} ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_replay_main.cc)
+    set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+    list(TRANSFORM ARG_REPLAY_ALSO PREPEND ${PROJECT_SOURCE_DIR}/)
+    string(REGEX REPLACE "_replay$" "" corpus ${name})
+    add_test(NAME fuzz_replay.${corpus}
+             COMMAND ${name} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/${corpus} ${ARG_REPLAY_ALSO}
+             WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  else()
     return()
   endif()
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;NEEDS" ${ARGN})
-  add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
-  target_link_options(${name} PRIVATE -fsanitize=fuzzer)
-  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz)
   if(ARG_NEEDS)
     add_dependencies(${name} ${ARG_NEEDS})
   endif()
-  add_dependencies(fitfeel_fuzzers ${name})
 endfunction()
