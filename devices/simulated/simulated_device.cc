@@ -92,6 +92,13 @@ DeviceSpec SimulatedDevice::spec() const {
   // The contact is integrated implicitly with the stiffness the runtime hands over, so any
   // contact stiffness is stable; ExplicitStabilityBound() is the limit without it.
   spec.max_stiffness = std::numeric_limits<double>::infinity();
+  if (settings_.mode == Settings::Mode::kScripted) {
+    // The hand stands for a person at a haptic device, which renders a sampled spring passively
+    // only below K = 2 b / T with b the damping holding it (Colgate & Schenkel 1997): the
+    // stiffest wall this hand meets. The runtime then couples the part to the hand by a spring
+    // no stiffer (a god object), as it does for a real device.
+    spec.max_stiffness = 2.0 * settings_.hand_damping / period_;
+  }
   spec.workspace = Eigen::Vector3d::Constant(20.0);
   return spec;
 }

@@ -15,6 +15,7 @@
 #include "framework/runtime/outputs.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/scene_stages.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
@@ -78,18 +79,13 @@ std::unique_ptr<fitfeel_scene> Make(std::unique_ptr<fitfeel::PluginRegistry> reg
   if (seed != 0) s->scene.run.seed = seed;
   s->scene.run.clock = fitfeel::ClockMode::kVirtual;  // the host's loop sets the pace
   s->prepared = fitfeel::Prepare(s->scene);
-  s->constrained =
-      std::make_unique<fitfeel::ConstrainedStage>(*s->prepared.analyzer, *s->prepared.law);
   // The scene's own device, started only to learn its spec (hardware knows it once started).
   s->scene.device->Start(1.0 / s->scene.run.rate);
   const fitfeel::DeviceSpec spec = s->scene.device->spec();
   s->scene.device->Stop();
-  fitfeel::PositioningStage::Options free_motion;
-  free_motion.free_stiffness =
-      fitfeel::FreeMotionStiffness(s->scene.model.contact_stiffness, spec.max_stiffness);
-  s->positioning = std::make_unique<fitfeel::PositioningStage>(
-      free_motion, s->prepared.surface->MakeCoarseMeshes(s->scene.inner, s->scene.outer),
-      s->scene.moving);
+  fitfeel::SceneStages stages = fitfeel::MakeSceneStages(s->scene, s->prepared, spec);
+  s->positioning = std::move(stages.positioning);
+  s->constrained = std::move(stages.constrained);
   s->device = std::make_unique<HostDevice>(spec);
   s->device->Start(1.0 / s->scene.run.rate);
   fitfeel::SchedulerSettings settings;

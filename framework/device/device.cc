@@ -72,6 +72,7 @@ void Stage::Evaluate(const DeviceState& device, StageState* state,
   FITFEEL_DEMAND(out != nullptr);
   FITFEEL_DEMAND(state != nullptr && state->owner() == this);
   DoEvaluate(device, state, out);
+  out->stage = id();
 }
 
 }  // namespace fitfeel

@@ -28,7 +28,14 @@ DeviceSpec ParseDeviceSpec(const ConfigNode& node, const DeviceSpec& base) {
   };
   positive("max_force", Dimension::kForce, &spec.max_force);
   positive("max_continuous_force", Dimension::kForce, &spec.max_continuous_force);
-  positive("max_stiffness", Dimension::kStiffness, &spec.max_stiffness);
+  // `unlimited`: a device that imposes its position (a robot, or a replay of one), to which the
+  // runtime holds the part rigidly instead of through a god object's spring.
+  if (std::optional<ConfigNode> child = node.Find("max_stiffness");
+      child && child->is_scalar() && child->AsString() == "unlimited") {
+    spec.max_stiffness = kInf;
+  } else {
+    positive("max_stiffness", Dimension::kStiffness, &spec.max_stiffness);
+  }
   positive("damping", Dimension::kDamping, &spec.damping);
   positive("native_rate", Dimension::kFrequency, &spec.native_rate);
   if (std::optional<ConfigNode> workspace = node.Find("workspace")) {

@@ -110,7 +110,8 @@ void ValidateDeviceSpec(const DeviceSpec& spec) {
   if (spec.max_continuous_force > spec.max_force) {
     throw UserError(who + "max_continuous_force exceeds max_force");
   }
-  if (!PositiveFinite(spec.max_stiffness)) throw UserError(who + "max_stiffness must be positive");
+  // Infinite: the device imposes its position (see ParseDeviceSpec's `unlimited`).
+  if (!(spec.max_stiffness > 0.0)) throw UserError(who + "max_stiffness must be positive");
   if (!PositiveFinite(spec.damping)) throw UserError(who + "damping must be positive");
   if (!(spec.workspace.allFinite() && (spec.workspace.array() > 0.0).all())) {
     throw UserError(who + "workspace extents must be positive");

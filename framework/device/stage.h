@@ -31,6 +31,10 @@ struct StageOutput {
   // `gap_direction` (unit, in the (x, z) cross-section) before touching; infinity when unknown.
   double gap = std::numeric_limits<double>::infinity();
   Eigen::Vector2d gap_direction{0.0, 0.0};
+  // The stage that wrote this output (set by Stage::Evaluate). The run keeps one output, so on
+  // entry a stage reads the previous tick's: another stage's means a hand-over, whose pose is
+  // where the part was, and the moving part continues from there.
+  StageId stage = StageId::kPositioning;
 };
 
 class Stage;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "framework/collision/coarse_mesh.h"
+#include "framework/collision/lead_in.h"
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
@@ -85,6 +86,18 @@ class FITFEEL_API SurfaceType {
   // that a surface plugin without meshes still runs. Throws UserError if the parts cannot be
   // meshed.
   virtual CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+    (void)inner;
+    (void)outer;
+    return {};
+  }
+
+  // The lead-in of the pair with the inner part moving (LeadIn): the free region its chamfers
+  // leave an aligned moving part, in which the positioning stage guides the part as a god object,
+  // and the depth at which the constrained stage takes over. Built once before a run. Default:
+  // empty (no lead-in: free motion collides the coarse meshes, if any, and the hand-over asks
+  // for the part near the axis at the entrance). Throws UserError if the parts cannot be
+  // profiled.
+  virtual LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
     (void)inner;
     (void)outer;
     return {};

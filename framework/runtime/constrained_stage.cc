@@ -16,13 +16,52 @@ struct ConstrainedState final : StageState {
   Eigen::Vector2d last_settled{0.0, 0.0};
   // The law's state (friction junctions), advanced once per tick at the rendered pose.
   LawState law;
+  // The god object's offset and mating depth (Options::proxy_stiffness finite).
+  Eigen::Vector2d part{0.0, 0.0};
+  double part_depth = 0.0;
 };
+
+// Illinois false position on a bracket [lo, hi] whose residuals f_lo and f_hi have opposite
+// signs: superlinear on the piecewise-linear laws, never leaves the bracket; stops at 1 pm of
+// position, at |f| <= tolerance or after `steps` evaluations (the tick's bound). Returns hi if
+// no step is taken.
+template <typename Residual>
+double IllinoisRoot(const Residual& f, double lo, double hi, double f_lo, double f_hi,
+                    double tolerance, int steps) noexcept {
+  double x = hi;
+  int side = 0;
+  for (int k = 0; k < steps && std::abs(hi - lo) > 1e-12; ++k) {
+    x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    const double r = f(x);
+    if (std::abs(r) <= tolerance) break;
+    if ((r < 0.0) == (f_hi < 0.0)) {
+      hi = x;
+      f_hi = r;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    } else {
+      lo = x;
+      f_lo = r;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    }
+  }
+  return x;
+}
 
 }  // namespace
 
 ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law)
-    : analyzer_(analyzer), law_(law) {
+    : ConstrainedStage(analyzer, law, Options{}) {}
+
+ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law,
+                                   const Options& options)
+    : analyzer_(analyzer), law_(law), options_(options) {
   if (!analyzer.prepared()) throw UserError("constrained stage needs a prepared contact analyzer");
+  if (!std::isfinite(options.depth_origin) || !(options.proxy_stiffness > 0.0)) {
+    throw UserError(
+        "constrained stage: the depth origin must be finite and the proxy stiffness > 0");
+  }
 }
 
 std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
@@ -31,22 +70,32 @@ std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
 
 void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
                                   StageOutput* out) const noexcept {
+  auto* run = static_cast<ConstrainedState*>(state);
+  // Handed over by the positioning stage: the part is where that stage left it.
+  if (out->stage != StageId::kConstrained) {
+    run->part = out->pose.offset;
+    run->part_depth = out->pose.depth;
+  }
   out->pose = MatingPoseOf(device);
+  out->pose.depth -= options_.depth_origin;
   out->contact = ContactState{};
   out->elastic = ElasticLimitCheck{};
-  analyzer_.Evaluate(out->pose, &out->contact);
   MatingMotion motion;
   motion.velocity = device.velocity;
   motion.angular_velocity = device.angular_velocity;
   motion.depth = out->pose.depth;
   motion.angle = out->pose.angle;
+  const bool settle = device.settle_load.squaredNorm() > 0.0;
+  if (!settle && std::isfinite(options_.proxy_stiffness)) {
+    FollowDevice(motion, state, out);
+    return;
+  }
+  analyzer_.Evaluate(out->pose, &out->contact);
   out->wrench.SetZero();
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
-  auto* run = static_cast<ConstrainedState*>(state);
   // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
   // later re-entry forms its contact afresh rather than at a stale anchor.
   if (!out->contact.engaged) run->law = LawState{};
-  const bool settle = device.settle_load.squaredNorm() > 0.0;
   if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
   if (settle && Settle(device.settle_load, motion, &run->last_settled, &run->law, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
@@ -59,6 +108,10 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
   out->elastic = law_.CheckElasticLimit(out->contact);
   out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
+  SetGap(out);
+}
+
+void ConstrainedStage::SetGap(StageOutput* out) noexcept {
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
   const ContactState& c = out->contact;
@@ -73,7 +126,8 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
 
 bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                                   double target, double tolerance, const MatingMotion& motion,
-                                  StageOutput* work, double* solution) const noexcept {
+                                  StageOutput* work, double* solution,
+                                  double spring) const noexcept {
   // Support the contact gives along -axis with the part at origin + s * axis, minus the target:
   // negative while the part would move further along the axis. The laws' radial force grows
   // monotonically with the offset into a wall (eq. 9's spring, eqs. 10-12's interference), so
@@ -83,7 +137,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
     analyzer_.Evaluate(work->pose, &work->contact);
     work->wrench.SetZero();
     law_.Evaluate(work->contact, motion, &work->wrench);
-    return -(work->wrench.force.x() * axis.x() + work->wrench.force.z() * axis.y()) - target;
+    return -(work->wrench.force.x() * axis.x() + work->wrench.force.z() * axis.y()) -
+           (target - spring * s);
   };
   // The root is usually within a few um of the origin (the previous tick's equilibrium): check
   // the origin first, then bracket on the side the residual points to, starting 1 um away and
@@ -116,27 +171,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
     }
   }
   if (!bracketed) return false;
-  // Illinois false position: superlinear on the piecewise-linear laws, never leaves the bracket;
-  // stops at 1 pm of position or at the tolerance; 60 iterations bound the tick's cost.
-  double s = hi;
-  int side = 0;
-  for (int k = 0; k < 60 && hi - lo > 1e-12; ++k) {
-    s = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
-    const double r = residual(s);
-    if (std::abs(r) <= tolerance) break;
-    if (r > 0.0) {
-      hi = s;
-      r_hi = r;
-      if (side == 1) r_lo *= 0.5;
-      side = 1;
-    } else {
-      lo = s;
-      r_lo = r;
-      if (side == -1) r_hi *= 0.5;
-      side = -1;
-    }
-  }
-  *solution = s;
+  // 60 steps bound the tick's cost.
+  *solution = IllinoisRoot(residual, lo, hi, r_lo, r_hi, tolerance, 60);
   return true;
 }
 
@@ -195,6 +231,107 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->wrench = work.wrench;
   *last_settled = at;
   return true;
+}
+
+void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageState* state,
+                                    StageOutput* out) const noexcept {
+  auto* run = static_cast<ConstrainedState*>(state);
+  const double k = options_.proxy_stiffness;
+  const Eigen::Vector2d held = out->pose.offset;
+  const double held_depth = out->pose.depth;
+  MatingMotion motion = device_motion;
+  StageOutput work = *out;
+  // Across the axis, at `depth`: where the contact's push balances the spring k (held - p). The
+  // contact is far stiffer than the spring (kN/um against kN/m), so the part sits on the edge of
+  // the positions its axis may take (the assembly space, or the energy-minimising axis under
+  // interference) within nanometres: first that edge point, where the analyzer anchors the
+  // device's pose (pose - penetration * direction, repeated from there, since between two depth
+  // steps the anchor blends two spaces' projections and moves a little); then, on the line from
+  // it to the device, the balance of the law's push and the spring (found as the settling's
+  // roots are; a push of 1e-4 N, or 1e-6 of the pull, is far below what a hand resolves), which
+  // puts the part just as far into the wall as the law needs to carry the pull.
+  auto anchor_of = [&](const Eigen::Vector2d& offset) {
+    work.pose.offset = offset;
+    analyzer_.Evaluate(work.pose, &work.contact);
+    return Eigen::Vector2d(offset - work.contact.penetration * work.contact.penetration_direction);
+  };
+  auto across = [&](double depth) {
+    work.pose.depth = depth;
+    motion.depth = depth;
+    Eigen::Vector2d edge = anchor_of(held);
+    if (edge == held) return held;  // free: the part follows the device
+    for (int i = 0; i < 8; ++i) {
+      const Eigen::Vector2d next = anchor_of(edge);
+      const bool settled = (next - edge).norm() <= 1e-12;
+      edge = next;
+      if (settled) break;
+    }
+    const Eigen::Vector2d way = held - edge;
+    const double reach = way.norm();
+    if (!(reach > 0.0) || !std::isfinite(reach)) return held;
+    const Eigen::Vector2d into = way / reach;
+    const double tolerance = std::max(1e-4, 1e-6 * k * reach);
+    double s = 0.0;
+    if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k)) return edge;
+    // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
+    // the part has barely entered (it blends the free entrance with the first row's space).
+    return Eigen::Vector2d(edge + std::min(s, reach) * into);
+  };
+  // Along the axis: where the law's resistance (stick-slip junctions, probed from the run's state
+  // without advancing it) balances the spring k (held - y), the part at its balance across the
+  // axis at each depth tried (a bore narrowing ahead pushes it inwards as it goes, as a
+  // chamfer would). The resistance falls monotonically as the part goes deeper (a junction's
+  // spring, then the kinetic level, against the way in), so the root between the part's last
+  // depth and the device's is unique.
+  // The balance across the axis at the device's depth serves every depth tried along it: the
+  // part goes no deeper than the device, and where the bore narrows ahead that balance already
+  // has it clear of the narrowing (a balance taken at the part's own depth would run it into
+  // the step and hold it there as if it were jammed).
+  const Eigen::Vector2d at_device_depth = across(held_depth);
+  Eigen::Vector2d at = at_device_depth;
+  auto axial = [&](double depth) {
+    work.pose.depth = depth;
+    work.pose.offset = at;
+    motion.depth = depth;
+    analyzer_.Evaluate(work.pose, &work.contact);
+    LawState probe = run->law;
+    if (!work.contact.engaged) probe = LawState{};
+    work.wrench.SetZero();
+    law_.Evaluate(work.contact, motion, &probe, &work.wrench);
+    return k * (held_depth - depth) + work.wrench.force.y();
+  };
+  double depth = held_depth;
+  const double at_device = axial(held_depth);
+  constexpr double kAxialTolerance = 1e-4;  // N, as across
+  if (std::abs(at_device) > kAxialTolerance) {
+    double lo = run->part_depth, hi = held_depth;
+    double g_lo = axial(lo), g_hi = at_device;
+    if (g_lo * g_hi < 0.0) {
+      depth = IllinoisRoot(axial, lo, hi, g_lo, g_hi, kAxialTolerance, 40);
+    } else {
+      depth = std::abs(g_lo) < std::abs(g_hi) ? lo : hi;
+    }
+    if (depth != held_depth) at = across(depth);
+  }
+  run->part = at;
+  run->part_depth = depth;
+  out->pose.offset = at;
+  out->pose.depth = depth;
+  motion.depth = depth;
+  analyzer_.Evaluate(out->pose, &out->contact);
+  // Out of engagement (withdrawn) the junctions let go, as in the rigid case.
+  if (!out->contact.engaged) run->law = LawState{};
+  out->wrench.SetZero();
+  law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
+  out->elastic = law_.CheckElasticLimit(out->contact);
+  // The device feels the spring that pulls the part towards it; the part sits where the
+  // contact balances it, so the two agree to within the solves' tolerances.
+  out->wrench.force.x() = k * (at.x() - held.x());
+  out->wrench.force.y() = k * (depth - held_depth);
+  out->wrench.force.z() = k * (at.y() - held.y());
+  out->stiffness = (at == held && depth == held_depth) ? 0.0 : k;
+  out->next = depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
+  SetGap(out);
 }
 
 double ConstrainedStage::RadialStiffness(const MatingPose& pose, const MatingMotion& motion,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <limits>
+
 #include "framework/core/export.h"
 #include "framework/device/stage.h"
 #include "framework/model/contact_analyzer.h"
@@ -15,10 +17,29 @@ namespace fitfeel {
 // settled tick left the part (the next settle's starting point) lives in the run's state.
 class FITFEEL_API ConstrainedStage final : public Stage {
  public:
+  struct Options {
+    // The scene-frame y of mating depth 0 (the positioning stage's depth_origin: a lead-in's
+    // capture depth); the stage reports and evaluates depth = y - depth_origin and hands back
+    // below 0.
+    double depth_origin = 0.0;
+    // The stiffness of the spring that couples the device to the moving part across the axis
+    // (the positioning stage's k_free), N/m. Infinite: the device holds the part rigidly (a
+    // robot), and the contact is evaluated where the device is. Finite: the part is a god object
+    // across the axis, at the offset where the contact's push balances that spring pulling it
+    // towards the device; the device feels the spring. Without it, a device that renders at
+    // most k_free, held a little into the wall by the hand, would put the part micrometres into
+    // a contact of kN/um.
+    double proxy_stiffness = std::numeric_limits<double>::infinity();
+  };
+
   // Both must be prepared and outlive the stage. Throws UserError if the analyzer is not prepared.
   // Probes (settling searches, stiffness) evaluate the law without history; the tick's wrench
   // comes from one evaluation with the run's law state at the pose the part is rendered at.
   ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law);
+  // Also throws UserError for a non-finite depth origin or a proxy stiffness that is not > 0.
+  ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law,
+                   const Options& options);
+  const Options& options() const { return options_; }
 
   StageId id() const override { return StageId::kConstrained; }
 
@@ -28,6 +49,8 @@ class FITFEEL_API ConstrainedStage final : public Stage {
                   StageOutput* out) const noexcept override;
 
  private:
+  // The free way outwards (StageOutput::gap) from the output's contact and stiffness.
+  static void SetGap(StageOutput* out) noexcept;
   // -dF/dx of the radial force along its own direction, by a second evaluation 1 nm deeper
   // (exact for the piecewise-linear laws of eqs. 9-12 away from a kink); 0 without contact.
   double RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
@@ -43,12 +66,21 @@ class FITFEEL_API ConstrainedStage final : public Stage {
               StageOutput* out) const noexcept;
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
   // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
+  // With `spring` > 0 the target falls as the part moves: target - spring * s (the coupling
+  // spring of a god object whose device lies at s = target / spring).
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
                   double tolerance, const MatingMotion& motion, StageOutput* work,
-                  double* solution) const noexcept;
+                  double* solution, double spring = 0.0) const noexcept;
+  // The god object (Options::proxy_stiffness): moves the part from where it was (in `state`)
+  // towards the device's pose (out->pose on entry) until the contact's push balances the
+  // spring across the axis, and the law's resistance balances it along the axis; leaves the
+  // outputs at the part's pose with the spring's wrench on the device.
+  void FollowDevice(const MatingMotion& device_motion, StageState* state,
+                    StageOutput* out) const noexcept;
 
   const ContactAnalyzer& analyzer_;
   const ResistanceLaw& law_;
+  Options options_;
 };
 
 }  // namespace fitfeel

@@ -21,6 +21,11 @@ TriangleMesh HalfTurnAboutZ(TriangleMesh mesh) {
 
 struct PositioningState final : StageState {
   std::unique_ptr<CollisionScratch> scratch;  // null without coarse meshes
+  // The god object (lead-in): where the part was on the last positioning tick, in (y, r), and the
+  // direction of its offset (kept while the device is on the axis).
+  bool has_part = false;
+  Eigen::Vector2d part{0.0, 0.0};
+  Eigen::Vector2d direction{1.0, 0.0};
 };
 
 }  // namespace
@@ -80,6 +85,12 @@ PositioningStage::PositioningStage(const Options& options, const CoarseMeshes& m
   }
 }
 
+PositioningStage::PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving,
+                                   LeadIn lead_in)
+    : PositioningStage(options, meshes, moving) {
+  if (moving == Role::kInner) lead_in_ = std::move(lead_in);
+}
+
 PositioningStage::~PositioningStage() = default;
 
 std::unique_ptr<StageState> PositioningStage::DoMakeState() const {
@@ -90,6 +101,10 @@ std::unique_ptr<StageState> PositioningStage::DoMakeState() const {
 
 void PositioningStage::DoEvaluate(const DeviceState& device, StageState* state,
                                   StageOutput* out) const noexcept {
+  if (!lead_in_.empty()) {
+    GuideThroughLeadIn(device, state, out);
+    return;
+  }
   out->wrench.SetZero();
   out->pose = MatingPoseOf(device);
   out->contact = ContactState{};
@@ -118,6 +133,44 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageState* state,
   // About the leading end, the point whose pose the device reports.
   out->wrench.torque = (penetration.point - device.position).cross(out->wrench.force);
   out->stiffness = k;
+}
+
+void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState* state,
+                                          StageOutput* out) const noexcept {
+  auto* run = static_cast<PositioningState*>(state);
+  const double origin = lead_in_.capture_depth();
+  // Handed back by the constrained stage: the part is where that stage left it.
+  if (out->stage != StageId::kPositioning) {
+    run->part = Eigen::Vector2d(out->pose.depth + origin, out->pose.offset.norm());
+    run->has_part = true;
+  }
+  const MatingPose held = MatingPoseOf(device);
+  out->pose = held;
+  out->contact = ContactState{};
+  out->elastic = ElasticLimitCheck{};
+  out->wrench.SetZero();
+  out->stiffness = 0.0;
+  out->gap = std::numeric_limits<double>::infinity();
+  out->gap_direction.setZero();
+  out->next = StageId::kPositioning;
+  if (!device.position.allFinite()) return;
+  const double held_r = held.offset.norm();
+  if (held_r > 0.0) run->direction = held.offset / held_r;
+  const Eigen::Vector2d target(device.position.y(), held_r);
+  const Eigen::Vector2d part = lead_in_.Project(target, run->has_part ? run->part : target);
+  run->part = part;
+  run->has_part = true;
+  out->pose.depth = part.x() - origin;
+  out->pose.offset = part.y() * run->direction;
+  const double k = options_.free_stiffness;
+  if (part != target) {
+    // The spring between the device and the part: along the axis and across it.
+    out->wrench.force = k * Eigen::Vector3d(out->pose.offset.x() - held.offset.x(),
+                                            part.x() - target.x(),
+                                            out->pose.offset.y() - held.offset.y());
+    out->stiffness = k;
+  }
+  if (part.x() >= origin) out->next = StageId::kConstrained;
 }
 
 }  // namespace fitfeel

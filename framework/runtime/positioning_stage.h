@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "framework/collision/coarse_mesh.h"
+#include "framework/collision/lead_in.h"
 #include "framework/core/export.h"
 #include "framework/device/stage.h"
 #include "framework/model/gps_spec.h"
@@ -18,7 +19,19 @@ class CollisionScratch;
 // the pose of the moving part's leading end on its axis, and the orientation whose y axis is the
 // moving part's axis. The insertion depth is then the y of the leading end.
 
-// Free motion before mating (paper section 3: "positioning stage"). Collides the parts' coarse
+// Free motion before mating (paper section 3: "positioning stage").
+//
+// With a lead-in (LeadIn: a pair of revolution whose chamfers guide the part, the inner part
+// moving) the moving part is a god object: where the lead-in lets an aligned part be, as close to
+// the device as it can slide there (LeadIn::Project), and the device is pulled towards it by a
+// spring of stiffness k_free; the pose the stage reports is the part's, not the device's. The
+// part's orientation is the constraint's (aligned: a 3-DOF device renders no torque; a 6-DOF
+// device's tilt is not rendered) and only its twist follows the device. It hands over to the
+// constrained stage once the part reaches the lead-in's capture depth, the depth from which the
+// reported depth is counted (the mating depth); the constrained stage continues from the part's
+// pose, and hands back when the part is pulled out past it.
+//
+// Otherwise it collides the parts' coarse
 // meshes with FCL (docs/architecture.md, section 4: FCL here and only here, since mesh-mesh queries
 // between mated surfaces cost 1-35 ms) and renders a penalty force k_free * depth along the
 // contact normal, zero when free. Hands over to the constrained stage once the leading end has
@@ -68,6 +81,10 @@ class FITFEEL_API PositioningStage final : public Stage {
   // z into the scene frame. Empty meshes mean no collision. Throws UserError for bad options or a
   // mesh FCL refuses.
   PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving);
+  // As above, with a lead-in, which takes the place of the meshes when it is not empty and the
+  // inner part moves (LeadIn describes that case only).
+  PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving,
+                   LeadIn lead_in);
   ~PositioningStage() override;
   PositioningStage(const PositioningStage&) = delete;
   PositioningStage& operator=(const PositioningStage&) = delete;
@@ -75,7 +92,11 @@ class FITFEEL_API PositioningStage final : public Stage {
   StageId id() const override { return StageId::kPositioning; }
   const Options& options() const { return options_; }
   // True when coarse meshes were given: free motion collides.
-  bool collides() const { return collider_ != nullptr; }
+  bool collides() const { return collider_ != nullptr || !lead_in_.empty(); }
+  // Empty when the stage has none (free motion then collides the meshes, if any).
+  const LeadIn& lead_in() const { return lead_in_; }
+  // Where mating depth 0 is in the scene frame: the lead-in's capture depth, else 0.
+  double depth_origin() const { return lead_in_.empty() ? 0.0 : lead_in_.capture_depth(); }
 
  protected:
   // The run's state holds the collider's scratch (FCL's request and reserved result buffer).
@@ -84,7 +105,12 @@ class FITFEEL_API PositioningStage final : public Stage {
                   StageOutput* out) const noexcept override;
 
  private:
+  // The god object's tick (lead-in).
+  void GuideThroughLeadIn(const DeviceState& device, StageState* state, StageOutput* out) const
+      noexcept;
+
   Options options_;
+  LeadIn lead_in_;
   double cos_alignment_tolerance_ = 1.0;
   std::unique_ptr<MeshCollider> collider_;
 };

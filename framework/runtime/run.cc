@@ -12,6 +12,7 @@
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/scene_stages.h"
 #include "framework/runtime/trace_stream.h"
 
 namespace fitfeel {
@@ -101,7 +102,6 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   RunResult result;
   PreparedScene prepared = Prepare(scene);
   if (options.prepared) options.prepared(prepared);
-  ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
 
   RunInfo& info = result.info;
   info = MakeRunInfo(scene, prepared);
@@ -114,20 +114,16 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     DeviceRun device_run(*scene.device, 1.0 / scene.run.rate);
     // Hardware knows its limits only once started.
     const DeviceSpec spec = scene.device->spec();
-    // Free motion collides the surface type's coarse meshes (none: collision-free), with the
-    // penalty stiffness the scenario's contact stiffness capped at the device's stable limit.
-    PositioningStage::Options free_motion;
-    free_motion.free_stiffness =
-        FreeMotionStiffness(scene.model.contact_stiffness, spec.max_stiffness);
-    const PositioningStage positioning(
-        free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving);
+    const SceneStages stages = MakeSceneStages(scene, prepared, spec);
     settings.safety = RuntimeSafetySettings(scene.safety, spec);
     settings.record = scene.run.write_recording;
     const bool coupled = settings.safety.coupling == CouplingMode::kSpringDamper;
+    // The device meets k_free (the god object's spring, at most its limit), scaled.
+    const double rendered = stages.positioning->options().free_stiffness;
     if (!coupled && std::isfinite(spec.max_stiffness) &&
-        scene.model.contact_stiffness * settings.safety.force_scale > spec.max_stiffness) {
-      result.notes.push_back("note: contact stiffness " +
-                             FormatStiffness(scene.model.contact_stiffness) +
+        rendered * settings.safety.force_scale > spec.max_stiffness) {
+      result.notes.push_back("note: stiffness " + FormatStiffness(rendered) + " scaled by " +
+                             std::to_string(settings.safety.force_scale) +
                              " exceeds what the device '" + scene.device_id + "' renders stably (" +
                              FormatStiffness(spec.max_stiffness) + " at " +
                              std::to_string(std::lround(settings.rate)) +
@@ -143,7 +139,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     if (scene.run.write_recording) outputs.recording = RecordingInfo{spec.model};
     TraceStream stream(outputs, options.observer);
     settings.stream = &stream.ring();
-    Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
     scheduler.set_observer(options.observer);
     if (options.watch) options.watch(&scheduler);
     try {

@@ -163,6 +163,7 @@ void Scheduler::Rewind() noexcept {
   run_.last_sane_device = DeviceState{};
   ticks_done_.store(0, std::memory_order_relaxed);
   run_.current = StageId::kPositioning;
+  run_.output = StageOutput{};  // a run starts with no part pose of an earlier run
 }
 
 void Scheduler::MakeStageStates() {

@@ -51,12 +51,28 @@ CoarseMeshes MakeCylindricalCoarseMeshes(const PartSpec& inner, const PartSpec& 
   const double bore = 0.5 * hole.diameter(), hub = 0.5 * hole.outer_diameter();
   const Chamfer& entrance = hole.chamfer();
   if (entrance.length > 0.0) {
-    meshes.outer = MakeTaperedTube(bore + entrance.width(), bore, hub, 0.0, entrance.length, facets);
-    AppendMesh(MakeTube(bore, hub, entrance.length, hole.length(), facets), &meshes.outer);
+    // In front of the mating surface, as the lead-in has it (MakeCylindricalLeadIn).
+    meshes.outer = MakeTaperedTube(bore + entrance.width(), bore, hub, -entrance.length, 0.0, facets);
+    AppendMesh(MakeTube(bore, hub, 0.0, hole.length(), facets), &meshes.outer);
   } else {
     meshes.outer = MakeTube(bore, hub, 0.0, hole.length(), facets);
   }
   return meshes;
+}
+
+LeadIn MakeCylindricalLeadIn(const PartSpec& inner, const PartSpec& outer) {
+  auto mid_radius = [](const PartSpec& part) {
+    return 0.5 * (part.size.nominal + 0.5 * (part.size.lower_deviation + part.size.upper_deviation));
+  };
+  const double shaft = mid_radius(inner), bore = mid_radius(outer);
+  const Chamfer& end = GeometryOf(inner).chamfer();
+  const Chamfer& entrance = GeometryOf(outer).chamfer();
+  RadiusProfile moving, fixed;
+  moving.points.emplace_back(0.0, shaft - end.width());
+  if (end.length > 0.0) moving.points.emplace_back(end.length, shaft);
+  fixed.points.emplace_back(0.0, bore + entrance.width());
+  if (entrance.length > 0.0) fixed.points.emplace_back(entrance.length, bore);
+  return LeadIn(moving, fixed, -entrance.length, end.length);
 }
 
 }  // namespace fitfeel::cylindrical

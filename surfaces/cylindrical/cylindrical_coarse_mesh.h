@@ -1,6 +1,7 @@
 #pragma once
 
 #include "framework/collision/coarse_mesh.h"
+#include "framework/collision/lead_in.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::cylindrical {
@@ -21,7 +22,8 @@ int CoarseFacets(const PartSpec& inner, const PartSpec& outer);
 //  - inner (shaft or pin): a closed prism inscribed in the circle of d / 2, from y = -length to
 //    y = 0 (its leading end at the origin); a hollow shaft's bore is not meshed (nothing enters
 //    it in free motion);
-//  - outer (bushing or hole): a tube from y = 0 (its entrance) to y = length, its outer wall on
+//  - outer (bushing or hole): a tube from y = 0 (its mating surface's start; an entrance chamfer
+//    lies in front of it, from y = -chamfer length) to y = length, its outer wall on
 //    the circle of the hub's outer diameter d2, its bore a polygon circumscribing the circle of
 //    d / 2 with its vertices at the shaft's vertex angles.
 // The two polygons are then similar, the bore's larger by 1 / cos(pi / n): a centred shaft is
@@ -30,5 +32,12 @@ int CoarseFacets(const PartSpec& inner, const PartSpec& outer);
 // interference within micrometres) is the constrained stage's. Throws UserError if a part's
 // geometry is not cylindrical.
 CoarseMeshes MakeCylindricalCoarseMeshes(const PartSpec& inner, const PartSpec& outer);
+
+// The lead-in of a cylindrical pair, the shaft moving (docs/lead-in.md): both parts at the middle
+// of their size zones (the play a typical pair has), the shaft's end narrowed by its chamfer, the
+// bore widened by its own in front of the mating surface (its face at y = -chamfer length), the
+// constrained stage taking over once the shaft's chamfer has passed the bore's edge (y = the
+// shaft's chamfer length), or where an interference fit wedges on the axis before that.
+LeadIn MakeCylindricalLeadIn(const PartSpec& inner, const PartSpec& outer);
 
 }  // namespace fitfeel::cylindrical

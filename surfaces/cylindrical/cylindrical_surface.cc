@@ -38,6 +38,10 @@ CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
   return MakeCylindricalCoarseMeshes(inner, outer);
 }
 
+LeadIn CylindricalSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+  return MakeCylindricalLeadIn(inner, outer);
+}
+
 std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view name) const {
   if (name == "gps") return std::make_unique<GpsLaw>();
   if (name == "elastic") return std::make_unique<ElasticLaw>();

@@ -17,6 +17,7 @@ class CylindricalSurface final : public SurfaceType {
   std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
   // Shaft: a closed prism; bushing: a tube; see cylindrical_coarse_mesh.h for sizes and facets.
   CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const override;
+  LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const override;
 
  protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,

@@ -348,13 +348,15 @@ TEST_P(ReplayTest, ReproducesTheRecordedRunBitForBit) {
   const Recording back = ReadRecording(recorded.recording);
   ASSERT_EQ(back.samples.size(), recorded.run.probe->samples().size());
 
-  // Replayed as the device it was recorded from: the simulated robot has no force limits and is
-  // rendered directly (no coupling), so the replay says the same of itself.
+  // Replayed as the device it was recorded from: the simulated robot has no force limits,
+  // imposes its position and is rendered directly (no coupling), so the replay says the same of
+  // itself.
   const fs::path scene = SceneWithDevice(
       WorkDir(), "replay-bits-" + radial,
       "device:\n  plugin: fitfeel.device.replay\n  file: '" +
           SimulatedRecording(radial).recording.string() +
-          "'\n  model: PHANTOM Desktop\n  spec: {max_force: 1e9 N, max_continuous_force: 1e9 N}\n"
+          "'\n  model: PHANTOM Desktop\n  spec: {max_force: 1e9 N, max_continuous_force: 1e9 N, "
+          "max_stiffness: unlimited}\n"
           "safety:\n  coupling: direct\n");
   const DeviceRunResult replay = RunWithProbe(scene, 4.0);
   const auto& a = recorded.run.probe->samples();

@@ -34,6 +34,7 @@
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/scene_stages.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
 #include "surfaces/conical/conical_scan_analyzer.h"
@@ -110,19 +111,14 @@ void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
     PreparedScene prepared = Prepare(scene);
     const double prepare = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
     if (scan) prepared.analyzer = ScanAnalyzer(scene, prepared);
-    PositioningStage::Options free_motion;
-    free_motion.free_stiffness =
-        FreeMotionStiffness(scene.model.contact_stiffness, scene.device->spec().max_stiffness);
-    const PositioningStage positioning(
-        free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving);
-    const ConstrainedStage constrained(*prepared.analyzer, *prepared.law);
+    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
     SchedulerSettings settings;
     settings.rate = scene.run.rate;
     settings.duration = scene.run.duration;
     settings.clock = ClockMode::kVirtual;
     scene.device->Start(1.0 / settings.rate);
     settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
-    Scheduler scheduler(*scene.device, positioning, constrained, settings);
+    Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
     ticks.assign(scheduler.planned_ticks(), 0.0);
     std::size_t done = 0;
     for (; done < ticks.size(); ++done) {

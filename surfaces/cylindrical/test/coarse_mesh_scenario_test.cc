@@ -51,7 +51,8 @@ TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
   stage.Evaluate(At(0.0, 0.0, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
-  stage.Evaluate(At(0.0, 2e-4, 4e-3), stage_run.get(), &out);  // 4 mm off: the end lands on the face
+  // 4 mm off, 0.2 mm past the face (y = -1 mm, in front of the C1 entrance): the end lands on it.
+  stage.Evaluate(At(0.0, -0.8e-3, 4e-3), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
   EXPECT_NEAR(out.wrench.force.y(), -1e3 * 2e-4, 1e-9);
 }

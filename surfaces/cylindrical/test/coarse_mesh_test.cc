@@ -103,9 +103,10 @@ TEST(CylindricalCoarseMeshTest, ChamfersTurnAnOffAxisShaftTowardTheAxis) {
   };
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   Penetration p;
-  // Tip 0.6 mm past the entrance face, 1 mm off the axis toward +x: the tip's edge (r 9.5 mm,
-  // reaching x = 10.5 mm) is 0.1 mm into the entrance cone (r = 11 mm - y = 10.4 mm there).
-  pose.translation() = Eigen::Vector3d(1e-3, 0.6e-3, 0.0);
+  // Tip 0.6 mm past the entrance face (y = -1 mm: the chamfer lies in front of the bore), 1 mm
+  // off the axis toward +x: the tip's edge (r 9.5 mm, reaching x = 10.5 mm) is 0.1 mm into the
+  // entrance cone (r = 10 mm - y = 10.4 mm there).
+  pose.translation() = Eigen::Vector3d(1e-3, -0.4e-3, 0.0);
   {
     const CoarseMeshes meshes = MakeCylindricalCoarseMeshes(chamfered(shaft, 0.5e-3),
                                                             chamfered(hole, 1e-3));
@@ -120,9 +121,11 @@ TEST(CylindricalCoarseMeshTest, ChamfersTurnAnOffAxisShaftTowardTheAxis) {
     EXPECT_LT(p.normal.y(), -0.5);  // and back out of the entrance
   }
   {
+    // The sharp bore's face is at y = 0: the tip 0.6 mm past it, as above.
     const CoarseMeshes sharp = MakeCylindricalCoarseMeshes(shaft, hole);
     const MeshCollider collider(sharp.outer, sharp.inner, 256);
     const auto scratch = collider.MakeScratch();
+    pose.translation().y() = 0.6e-3;
     collider.Query(pose, scratch.get(), &p);
     ASSERT_TRUE(p.contact);
     EXPECT_NEAR(p.normal.y(), -1.0, 1e-9);  // the face: straight back

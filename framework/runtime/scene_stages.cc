@@ -1,0 +1,27 @@
+#include "framework/runtime/scene_stages.h"
+
+#include <cmath>
+
+namespace fitfeel {
+
+SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
+                            const DeviceSpec& spec) {
+  PositioningStage::Options free_motion;
+  free_motion.free_stiffness =
+      FreeMotionStiffness(scene.model.contact_stiffness, spec.max_stiffness);
+  SceneStages stages;
+  stages.positioning = std::make_unique<PositioningStage>(
+      free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving,
+      prepared.surface->MakeLeadIn(scene.inner, scene.outer));
+  ConstrainedStage::Options mating;
+  mating.depth_origin = stages.positioning->depth_origin();
+  const bool limited = spec.max_stiffness > 0.0 && std::isfinite(spec.max_stiffness);
+  if (limited && free_motion.free_stiffness > 0.0) {
+    mating.proxy_stiffness = free_motion.free_stiffness;
+  }
+  stages.constrained =
+      std::make_unique<ConstrainedStage>(*prepared.analyzer, *prepared.law, mating);
+  return stages;
+}
+
+}  // namespace fitfeel
