@@ -275,7 +275,29 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k)) return edge;
     // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
     // the part has barely entered (it blends the free entrance with the first row's space).
-    return Eigen::Vector2d(edge + std::min(s, reach) * into);
+    Eigen::Vector2d part = edge + std::min(s, reach) * into;
+    // That line is the wall's normal only where the edge is the device's nearest point of the
+    // space; where it is not (the anchor blends two depth steps' spaces, or the space is a sliver
+    // off the axis), the law's push at the balance has a part across the line, and its size,
+    // the normal force friction takes, exceeds the spring's pull that the wall carries. Along
+    // the push itself the part then backs out of the wall (nanometres) until the push equals
+    // the pull: the wall carries what the hand presses, no more.
+    work.pose.offset = part;
+    analyzer_.Evaluate(work.pose, &work.contact);
+    work.wrench.SetZero();
+    law_.Evaluate(work.contact, motion, &work.wrench);
+    const Eigen::Vector2d push(work.wrench.force.x(), work.wrench.force.z());
+    const double pull = k * (held - part).norm();
+    const double magnitude = push.norm();
+    if (magnitude > 1.01 * pull + 1e-4 && std::isfinite(magnitude)) {
+      const Eigen::Vector2d wall = -push / magnitude;
+      double t = 0.0;
+      if (SolveAlong(part, wall, pull, std::max(1e-4, 1e-3 * pull), motion, &work, &t) &&
+          t < 0.0) {
+        part += t * wall;
+      }
+    }
+    return part;
   };
   // Along the axis: where the law's resistance (stick-slip junctions, probed from the run's state
   // without advancing it) balances the spring k (held - y), the part at its balance across the
