@@ -259,23 +259,40 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     work.pose.depth = depth;
     motion.depth = depth;
     Eigen::Vector2d edge = anchor_of(held);
-    if (edge == held) return held;  // free: the part follows the device
-    for (int i = 0; i < 8; ++i) {
-      const Eigen::Vector2d next = anchor_of(edge);
-      const bool settled = (next - edge).norm() <= 1e-12;
-      edge = next;
-      if (settled) break;
+    Eigen::Vector2d part = held;
+    if (edge == held) {
+      // No assembly space in the analyzer's answer (a Winkler bed of cells, as the cone's and the
+      // sphere's): free if the law does not push, else balanced along its push, from the device
+      // outwards, where the push falls and the spring's pull rises.
+      work.wrench.SetZero();
+      law_.Evaluate(work.contact, motion, &work.wrench);
+      const Eigen::Vector2d push(work.wrench.force.x(), work.wrench.force.z());
+      const double magnitude = push.norm();
+      if (!(magnitude > 0.0) || !std::isfinite(magnitude)) return held;  // free: it follows
+      const Eigen::Vector2d into = -push / magnitude;
+      double s = 0.0;
+      if (!SolveAlong(held, into, 0.0, std::max(1e-4, 1e-6 * magnitude), motion, &work, &s, k)) {
+        return held;
+      }
+      part = held + std::min(s, 0.0) * into;
+    } else {
+      for (int i = 0; i < 8; ++i) {
+        const Eigen::Vector2d next = anchor_of(edge);
+        const bool settled = (next - edge).norm() <= 1e-12;
+        edge = next;
+        if (settled) break;
+      }
+      const Eigen::Vector2d way = held - edge;
+      const double reach = way.norm();
+      if (!(reach > 0.0) || !std::isfinite(reach)) return held;
+      const Eigen::Vector2d into = way / reach;
+      const double tolerance = std::max(1e-4, 1e-6 * k * reach);
+      double s = 0.0;
+      if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k)) return edge;
+      // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
+      // the part has barely entered (it blends the free entrance with the first row's space).
+      part = edge + std::min(s, reach) * into;
     }
-    const Eigen::Vector2d way = held - edge;
-    const double reach = way.norm();
-    if (!(reach > 0.0) || !std::isfinite(reach)) return held;
-    const Eigen::Vector2d into = way / reach;
-    const double tolerance = std::max(1e-4, 1e-6 * k * reach);
-    double s = 0.0;
-    if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k)) return edge;
-    // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
-    // the part has barely entered (it blends the free entrance with the first row's space).
-    Eigen::Vector2d part = edge + std::min(s, reach) * into;
     // That line is the wall's normal only where the edge is the device's nearest point of the
     // space; where it is not (the anchor blends two depth steps' spaces, or the space is a sliver
     // off the axis), the law's push at the balance has a part across the line, and its size,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "framework/collision/coarse_mesh.h"
+#include "framework/collision/lead_in.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::conical {
@@ -19,6 +20,15 @@ inline constexpr int kMaxCoarseFacets = 256;
 // the hole until the small ends meet (the nominal clearance (L_hole - s) tan(alpha) only grows the
 // gap), and the coarse geometry is no cruder than the fit's tolerance. Throws UserError if a
 // part's geometry is not conical.
+// Chamfers (ConicalGeometry::chamfer) narrow the pin's small end and widen the hole's entrance in
+// front of it (from y = -chamfer length), as the lead-in has them.
 CoarseMeshes MakeConicalCoarseMeshes(const PartSpec& inner, const PartSpec& outer);
+
+// The lead-in of a taper pair, the pin moving (docs/lead-in.md): both parts at the middle of their
+// size zones, the pin's radius growing behind its chamfered small end at the taper, the hole's
+// narrowing behind its chamfered entrance; the constrained stage's depth counts from where the
+// pin's chamfer has passed the hole's edge (or the cones wedge, if sooner). The cones themselves
+// form a funnel: the play (L - s) tan(alpha) closes as the pin goes in.
+LeadIn MakeConicalLeadIn(const PartSpec& inner, const PartSpec& outer);
 
 }  // namespace fitfeel::conical

@@ -74,6 +74,10 @@ std::string ConicalGeometry::Describe() const {
   if (role_ == Role::kOuter) {
     text += " hub D=" + FormatQuantity(outer_diameter_, Dimension::kLength);
   }
+  if (chamfer_.length > 0.0) {
+    text += " chamfer " + FormatQuantity(chamfer_.length, Dimension::kLength) + " x " +
+            FormatQuantity(chamfer_.width(), Dimension::kLength);
+  }
   return text;
 }
 
@@ -83,9 +87,9 @@ std::shared_ptr<const ConicalGeometry> ParseConicalGeometry(const PartSpec& part
     node.Fail("a map of the cone's geometry (length, taper, ...)", node.Describe());
   const bool outer = part.role == Role::kOuter;
   if (outer) {
-    node.ExpectOnlyKeys({"length", "taper", "outer_diameter"});
+    node.ExpectOnlyKeys({"length", "taper", "outer_diameter", "chamfer"});
   } else {
-    node.ExpectOnlyKeys({"length", "taper"});
+    node.ExpectOnlyKeys({"length", "taper", "chamfer"});
   }
   const double length = node.Child("length").AsQuantityIn(Dimension::kLength, 0.0, kMaxLength,
                                                           /*min_inclusive=*/false);
@@ -103,7 +107,13 @@ std::shared_ptr<const ConicalGeometry> ParseConicalGeometry(const PartSpec& part
               d2.Describe());
     }
   }
-  return std::make_shared<ConicalGeometry>(part.role, d, length, taper, outer_diameter);
+  auto parsed = std::make_shared<ConicalGeometry>(part.role, d, length, taper, outer_diameter);
+  if (auto chamfer = node.Find("chamfer")) {
+    // The pin's chamfer cuts its small end (solid), the hole's its hub at the large end.
+    const double wall = outer ? 0.5 * (outer_diameter - parsed->large_diameter()) : 0.5 * d;
+    parsed->set_chamfer(ParseChamfer(*chamfer, length, wall));
+  }
+  return parsed;
 }
 
 const ConicalGeometry& GeometryOf(const PartSpec& part) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "framework/core/config_node.h"
+#include "framework/model/chamfer.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::conical {
@@ -31,6 +32,10 @@ class ConicalGeometry final : public Geometry {
   double DiameterAt(double axial) const;
   // Mean diameter over the length, m.
   double mean_diameter() const { return small_diameter_ + 0.5 * taper_ * length_; }
+  // The lead-in chamfer at the mating end (the pin's small end, the hole's entrance), in front
+  // of the mating cone (docs/lead-in.md); zero length: a sharp edge.
+  const Chamfer& chamfer() const { return chamfer_; }
+  void set_chamfer(const Chamfer& chamfer) { chamfer_ = chamfer; }
 
   double nominal_area() const override;
   double mating_length() const override { return length_; }
@@ -43,10 +48,12 @@ class ConicalGeometry final : public Geometry {
   double taper_;
   double half_angle_;
   double outer_diameter_;
+  Chamfer chamfer_;
 };
 
 // Parses a part's `geometry` node: {length, taper} for the pin, {length, taper, outer_diameter}
-// for the hole. `taper` is "1:50" or the ratio C as a number.
+// for the hole, each with an optional `chamfer` at its mating end (ParseChamfer). `taper` is
+// "1:50" or the ratio C as a number.
 std::shared_ptr<const ConicalGeometry> ParseConicalGeometry(const PartSpec& part,
                                                             const ConfigNode& node);
 

@@ -71,6 +71,10 @@ CoarseMeshes ConicalSurface::MakeCoarseMeshes(const PartSpec& inner, const PartS
   return MakeConicalCoarseMeshes(inner, outer);
 }
 
+LeadIn ConicalSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+  return MakeConicalLeadIn(inner, outer);
+}
+
 // The pin's rows are measured from its small (leading) end back along the body, so the moving
 // frame mirrors them; the hole's rows start at its entrance, as the fixed frame does.
 RenderMesh ConicalSurface::DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {

@@ -20,6 +20,7 @@ class ConicalSurface final : public SurfaceType {
   std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
   std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
   CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const override;
+  LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const override;
 
  protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,

@@ -72,29 +72,8 @@ std::shared_ptr<const CylindricalGeometry> ParseCylindricalGeometry(const PartSp
   auto parsed =
       std::make_shared<CylindricalGeometry>(part.role, d, length, outer_diameter, bore_diameter);
   if (auto node = geometry.Find("chamfer")) {
-    Chamfer chamfer;
-    chamfer.angle = std::numbers::pi / 4;  // ISO 13715's plain "C" edge: 45 degrees
-    if (node->is_map()) {
-      node->ExpectOnlyKeys({"length", "angle"});
-      chamfer.length = node->Child("length").AsQuantityIn(Dimension::kLength, 0.0, kMaxSize);
-      if (auto angle = node->Find("angle")) {
-        // 1-80 degrees: flatter is no lead-in, steeper no chamfer at all.
-        chamfer.angle =
-            angle->AsQuantityIn(Dimension::kAngle, std::numbers::pi / 180, 80 * std::numbers::pi / 180);
-      }
-    } else {
-      chamfer.length = node->AsQuantityIn(Dimension::kLength, 0.0, kMaxSize);
-    }
-    // The chamfer lies on the mating end and inside the wall it cuts.
     const double wall = inner ? 0.5 * (d - bore_diameter) : 0.5 * (outer_diameter - d);
-    if (chamfer.length >= length || chamfer.width() >= wall) {
-      node->Fail("a chamfer shorter than the part (" + FormatQuantity(length, Dimension::kLength) +
-                     ") and narrower than its wall (" + FormatQuantity(wall, Dimension::kLength) +
-                     ")",
-                 FormatQuantity(chamfer.length, Dimension::kLength) + " long, " +
-                     FormatQuantity(chamfer.width(), Dimension::kLength) + " wide");
-    }
-    parsed->set_chamfer(chamfer);
+    parsed->set_chamfer(ParseChamfer(*node, length, wall));
   }
   return parsed;
 }

@@ -5,18 +5,11 @@
 #include <string>
 
 #include "framework/core/config_node.h"
+#include "framework/model/chamfer.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::cylindrical {
 
-// A lead-in chamfer at the mating end (the shaft's leading end, the bore's entrance): `length`
-// along the axis, the chamfer surface at `angle` to the axis, so it is length * tan(angle) wide
-// radially. Zero length: a sharp edge.
-struct Chamfer {
-  double length = 0.0;  // m
-  double angle = 0.0;   // rad, in (0, 90 deg)
-  double width() const { return length > 0.0 ? length * std::tan(angle) : 0.0; }
-};
 
 // Nominal geometry of one cylindrical mating surface. The mating diameter is the part's nominal
 // size (PartSpec::size.nominal); the rest comes from the part's `geometry` node.

@@ -28,6 +28,8 @@ struct SurfaceCase {
   // Inside the mating part, pressed sideways by more than the capture radius: into a wall.
   double inside_depth = 0.0;  // m
   double sideways = 0.0;      // m, along x
+  // Where the mating part's entrance face is: a chamfer lies in front of the mating surface.
+  double face = 0.0;  // m, along y
 };
 
 void PrintTo(const SurfaceCase& c, std::ostream* out) { *out << c.scenario; }
@@ -65,7 +67,7 @@ TEST_P(PositioningEverySurface, CollidesBeforeMatingAndHandsOverAtTheEntrance) {
   EXPECT_EQ(out.next, StageId::kConstrained);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
   // Off the axis, 0.2 mm through the entrance face: pushed straight back out, by the depth.
-  stage.Evaluate(At(c.off_axis, 2e-4, 0.0), state.get(), &out);
+  stage.Evaluate(At(c.off_axis, c.face + 2e-4, 0.0), state.get(), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
   EXPECT_NEAR(out.wrench.force.y(), -k * 2e-4, k * 1e-6) << out.wrench.force.transpose();
   EXPECT_NEAR(out.wrench.force.x(), 0.0, k * 1e-6);
@@ -84,10 +86,10 @@ INSTANTIATE_TEST_SUITE_P(
         SurfaceCase{"key-parallel.yaml", 6e-3, 10e-3, 0.8e-3},
         // 20 mm square shaft in its square hole.
         SurfaceCase{"square-shaft.yaml", 14e-3, 10e-3, 0.8e-3},
-        // 8 mm 1:50 taper pin, 20 mm hole (large end 8.4 mm): 7 mm off lands on the hub's face;
-        // 15 mm in the radial clearance is (20 - 15) / 100 = 0.05 mm, so 0.8 mm sideways cuts the
-        // wall.
-        SurfaceCase{"taper-pin.yaml", 7e-3, 15e-3, 0.8e-3}),
+        // 8 mm 1:50 taper pin, 20 mm hole (large end 8.4 mm): 7 mm off lands on the hub's face
+        // (0.5 mm in front of the mating cone: the hole's C0.5 chamfer); 15 mm in the radial
+        // clearance is (20 - 15) / 100 = 0.05 mm, so 0.8 mm sideways cuts the wall.
+        SurfaceCase{"taper-pin.yaml", 7e-3, 15e-3, 0.8e-3, -0.5e-3}),
     [](const ::testing::TestParamInfo<SurfaceCase>& param) {
       std::string name = param.param.scenario.substr(0, param.param.scenario.find('.'));
       for (char& ch : name) {
