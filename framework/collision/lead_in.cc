@@ -65,7 +65,8 @@ double RadiusProfile::At(double u) const noexcept {
 }
 
 LeadIn::LeadIn(const RadiusProfile& moving, const RadiusProfile& fixed, double face,
-               double mating_start) {
+               double mating_start, Section section)
+    : section_(section) {
   CheckProfile(moving, "moving", true);
   CheckProfile(fixed, "fixed", false);
   if (!std::isfinite(face) || face > 0.0 || !std::isfinite(mating_start) || mating_start < 0.0) {
@@ -113,6 +114,34 @@ LeadIn::LeadIn(const RadiusProfile& moving, const RadiusProfile& fixed, double f
   } else {
     capture_depth_ = std::min(mating_start, boundary_.back().x());
   }
+}
+
+double LeadIn::Extent(const Eigen::Vector2d& offset) const noexcept {
+  switch (section_) {
+    case Section::kAcrossX:
+      return std::abs(offset.x());
+    case Section::kSquare:
+      return offset.cwiseAbs().maxCoeff();
+    case Section::kRound:
+      break;
+  }
+  return offset.norm();
+}
+
+Eigen::Vector2d LeadIn::Place(const Eigen::Vector2d& offset, double extent,
+                              const Eigen::Vector2d& direction) const noexcept {
+  switch (section_) {
+    case Section::kAcrossX: {
+      const double side = offset.x() != 0.0 ? offset.x() : direction.x();
+      return {std::copysign(extent, side), offset.y()};
+    }
+    case Section::kSquare:
+      return offset.cwiseMax(-extent).cwiseMin(extent);
+    case Section::kRound:
+      break;
+  }
+  const double r = offset.norm();
+  return extent * (r > 0.0 ? Eigen::Vector2d(offset / r) : direction);
 }
 
 double LeadIn::MaxOffset(double y) const noexcept {

@@ -27,6 +27,11 @@ struct RadiusProfile {
 // a run; Project is per tick and allocates nothing.
 class FITFEEL_API LeadIn {
  public:
+  // How far a part is off the axis, for its cross-section: round parts by the distance |o|; a key
+  // between two flanks (normals +-x) by |o_x| alone, its height free; a square shaft by
+  // max(|o_x|, |o_z|). The radius profiles are then half-widths across flats.
+  enum class Section { kRound, kAcrossX, kSquare };
+
   // No lead-in: every pose is free.
   LeadIn() = default;
   // `moving` and `fixed` as RadiusProfile says; `face` is the y of the fixed part's entrance face
@@ -36,7 +41,16 @@ class FITFEEL_API LeadIn {
   // that is empty, not finite, not increasing in u, a moving radius that shrinks behind the tip
   // or a fixed one that grows behind the face.
   LeadIn(const RadiusProfile& moving, const RadiusProfile& fixed, double face,
-         double mating_start);
+         double mating_start, Section section = Section::kRound);
+
+  Section section() const { return section_; }
+  // The offset's distance from the axis in the section's measure (see Section).
+  double Extent(const Eigen::Vector2d& offset) const noexcept;
+  // `offset` brought to extent `extent` (<= its own) as the section constrains it: a round part
+  // along its direction (`direction`, a unit vector, where the offset is zero), a key across the
+  // flanks only, a square per axis.
+  Eigen::Vector2d Place(const Eigen::Vector2d& offset, double extent,
+                        const Eigen::Vector2d& direction) const noexcept;
 
   bool empty() const { return boundary_.empty(); }
   // r_max at depth y (+infinity before the face).
@@ -65,6 +79,7 @@ class FITFEEL_API LeadIn {
 
  private:
   std::vector<Eigen::Vector2d> boundary_;  // (y, r), y nondecreasing, r nonincreasing
+  Section section_ = Section::kRound;
   double play_ = 0.0;
   double capture_depth_ = 0.0;
 };

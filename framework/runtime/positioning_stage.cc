@@ -50,9 +50,11 @@ double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness
         "largest stable stiffness >= 0");
   }
   // 0 or infinity: the device states no limit (a simulated device integrates implicitly).
-  if (device_max_stiffness > 0.0 && contact_stiffness > device_max_stiffness) {
-    return device_max_stiffness;
-  }
+  const bool limited = device_max_stiffness > 0.0 && std::isfinite(device_max_stiffness);
+  // A contact stiffness of 0 (`auto`: the law's own elastic model, far stiffer than any device)
+  // leaves the device's limit as the stiffest wall it can be shown.
+  if (contact_stiffness == 0.0) return limited ? device_max_stiffness : 0.0;
+  if (limited && contact_stiffness > device_max_stiffness) return device_max_stiffness;
   return contact_stiffness;
 }
 
@@ -141,7 +143,7 @@ void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState*
   const double origin = lead_in_.capture_depth();
   // Handed back by the constrained stage: the part is where that stage left it.
   if (out->stage != StageId::kPositioning) {
-    run->part = Eigen::Vector2d(out->pose.depth + origin, out->pose.offset.norm());
+    run->part = Eigen::Vector2d(out->pose.depth + origin, lead_in_.Extent(out->pose.offset));
     run->has_part = true;
   }
   const MatingPose held = MatingPoseOf(device);
@@ -154,14 +156,14 @@ void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState*
   out->gap_direction.setZero();
   out->next = StageId::kPositioning;
   if (!device.position.allFinite()) return;
-  const double held_r = held.offset.norm();
-  if (held_r > 0.0) run->direction = held.offset / held_r;
+  const double held_r = lead_in_.Extent(held.offset);
+  if (held.offset.norm() > 0.0) run->direction = held.offset.normalized();
   const Eigen::Vector2d target(device.position.y(), held_r);
   const Eigen::Vector2d part = lead_in_.Project(target, run->has_part ? run->part : target);
   run->part = part;
   run->has_part = true;
   out->pose.depth = part.x() - origin;
-  out->pose.offset = part.y() * run->direction;
+  out->pose.offset = lead_in_.Place(held.offset, part.y(), run->direction);
   const double k = options_.free_stiffness;
   if (part != target) {
     // The spring between the device and the part: along the axis and across it.

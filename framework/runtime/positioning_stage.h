@@ -119,8 +119,9 @@ class FITFEEL_API PositioningStage final : public Stage {
 // eq. 9, the one stiffness the scenario gives for a rigid contact), capped at the device's
 // largest stable stiffness when the device states one (finite and > 0; 0 or infinity mean no
 // limit): a face met in free motion is rendered as stiff as the device holds stably, never
-// stiffer than the mating contact itself. Throws UserError for a negative or NaN argument or a
-// non-finite contact stiffness.
+// stiffer than the mating contact itself. A contact stiffness of 0 (`auto`: the law's own model)
+// gives the device's limit, or 0 without one. Throws UserError for a negative or NaN argument or
+// a non-finite contact stiffness.
 FITFEEL_API double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness);
 
 // The moving part's pose in the fixed part's mating frame (see the convention above): depth = y

@@ -11,13 +11,17 @@ std::string PlanarGeometry::Describe() const {
   return std::string(faces_ == 2 ? "pair of flat faces" : "square (two pairs of flat faces)") +
          " b=" + FormatQuantity(width_, Dimension::kLength) +
          " l=" + FormatQuantity(length_, Dimension::kLength) +
-         " h=" + FormatQuantity(height_, Dimension::kLength);
+         " h=" + FormatQuantity(height_, Dimension::kLength) +
+         (chamfer_.length > 0.0
+              ? " chamfer " + FormatQuantity(chamfer_.length, Dimension::kLength) + " x " +
+                    FormatQuantity(chamfer_.width(), Dimension::kLength)
+              : std::string());
 }
 
 std::shared_ptr<const PlanarGeometry> ParsePlanarGeometry(const PartSpec& part,
                                                           const ConfigNode& node) {
   if (!node.is_map()) node.Fail("a map {length, height, faces}", node.Describe());
-  node.ExpectOnlyKeys({"length", "height", "faces"});
+  node.ExpectOnlyKeys({"length", "height", "faces", "chamfer"});
   const double width = part.size.nominal;
   // A face shorter than a micrometre or longer than 10 m is a typing error, not a part.
   const double length = node.QuantityIn("length", Dimension::kLength, 1e-6, 10.0);
@@ -34,7 +38,13 @@ std::shared_ptr<const PlanarGeometry> ParsePlanarGeometry(const PartSpec& part,
                                   FormatQuantity(width, Dimension::kLength),
                               node.Child("height").Describe());
   }
-  return std::make_shared<PlanarGeometry>(part.role, width, length, height, faces);
+  auto parsed = std::make_shared<PlanarGeometry>(part.role, width, length, height, faces);
+  if (std::optional<ConfigNode> chamfer = node.Find("chamfer")) {
+    // A key's chamfer cuts at most half its width; a keyway's the hub beside it, bounded here by
+    // the width too (the hub's own size is not modelled).
+    parsed->set_chamfer(ParseChamfer(*chamfer, length, part.role == Role::kInner ? 0.5 * width : width));
+  }
+  return parsed;
 }
 
 const PlanarGeometry& PlanarGeometryOf(const PartSpec& part) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "framework/core/config_node.h"
+#include "framework/model/chamfer.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel::planar {
@@ -25,6 +26,10 @@ class PlanarGeometry final : public Geometry {
   double height() const { return height_; }
   int faces() const { return faces_; }  // 2 (one pair) or 4 (two pairs)
   int pairs() const { return faces_ / 2; }
+  // The lead-in chamfer on the faces' mating edges (a key's leading end, a keyway's entrance),
+  // in front of the mating faces (docs/lead-in.md); zero length: sharp edges.
+  const Chamfer& chamfer() const { return chamfer_; }
+  void set_chamfer(const Chamfer& chamfer) { chamfer_ = chamfer; }
 
   double nominal_area() const override { return faces_ * height_ * length_; }
   double mating_length() const override { return length_; }
@@ -36,9 +41,11 @@ class PlanarGeometry final : public Geometry {
   double length_;
   double height_;
   int faces_;
+  Chamfer chamfer_;
 };
 
-// Parses a part's `geometry` node: {length, height, faces (2 | 4, default 2)}. Throws
+// Parses a part's `geometry` node: {length, height, faces (2 | 4, default 2), chamfer (optional,
+// ParseChamfer)}. Throws
 // ScenarioError at the offending key.
 std::shared_ptr<const PlanarGeometry> ParsePlanarGeometry(const PartSpec& part,
                                                           const ConfigNode& node);

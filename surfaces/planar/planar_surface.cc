@@ -73,6 +73,23 @@ CoarseMeshes PlanarSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSp
   return MakePlanarCoarseMeshes(inner, outer);
 }
 
+LeadIn PlanarSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+  const PlanarGeometry& key = PlanarGeometryOf(inner);
+  const PlanarGeometry& slot = PlanarGeometryOf(outer);
+  auto half_width = [](const PartSpec& part) {
+    return 0.5 * (part.size.nominal + 0.5 * (part.size.lower_deviation + part.size.upper_deviation));
+  };
+  const Chamfer& end = key.chamfer();
+  const Chamfer& entrance = slot.chamfer();
+  RadiusProfile moving, fixed;
+  moving.points.emplace_back(0.0, half_width(inner) - end.width());
+  if (end.length > 0.0) moving.points.emplace_back(end.length, half_width(inner));
+  fixed.points.emplace_back(0.0, half_width(outer) + entrance.width());
+  if (entrance.length > 0.0) fixed.points.emplace_back(entrance.length, half_width(outer));
+  return LeadIn(moving, fixed, -entrance.length, end.length,
+                key.faces() == 2 ? LeadIn::Section::kAcrossX : LeadIn::Section::kSquare);
+}
+
 // Strips of one face are height / columns-per-face wide; the inner part's leading end is its last
 // row's far edge (the analyzer's shift depth - inner length), put at the origin.
 RenderMesh PlanarSurface::DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {

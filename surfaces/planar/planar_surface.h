@@ -20,6 +20,10 @@ class PlanarSurface final : public SurfaceType {
   std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
   std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
   CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const override;
+  // The key's or square's lead-in (docs/lead-in.md): half-widths across the flats at the middle
+  // of the size zones, narrowed by the moving part's chamfer and widened by the fixed one's, in
+  // front of the faces; a key is constrained across its flanks only, a square on both axes.
+  LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const override;
 
  protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,

@@ -1,7 +1,7 @@
 // A hand assembles the parts (issue 16): the simulated hand (0.5 kg held by 2000 N/m and
 // 20 N*s/m to its target, physiological tremor 0.1 mm at 10 Hz) aims 0.3 mm or 1 mm off the axis
-// and pushes each shipped cylindrical or conical scenario's moving part along a line parallel to
-// the axis, 27 mm in 3 s. The chamfers guide the part (the positioning stage's god object), the constrained stage
+// and pushes each shipped scenario's moving part (shafts, pins, the taper pin, the key, the
+// square shaft) along a line parallel to the axis, 27 mm in 3 s. The chamfers guide the part (the positioning stage's god object), the constrained stage
 // takes it over where the lead-in ends, and the hand feels the part through a spring no stiffer
 // than it can render (2 b / T). Fits a handbook joins by hand go in to full engagement; fits it
 // joins with a mallet or a press stop the hand at their onset. Either way the hand meets no
@@ -110,7 +110,8 @@ TEST_P(HandInsertion, OffTheAxisWithTremor) {
     // The part was caught and handed over by the lead-in.
     EXPECT_GT(constrained, 0.0);
     if (c.joining == Joining::kByHand) {
-      // In to full engagement (every bore here is 20 mm long), most of the run in the bore.
+      // In to 20 mm: the whole length of every bore here (more than half the keyway's), most of
+      // the run in contact.
       EXPECT_GE(deepest, 20e-3);
       EXPECT_GE(constrained, 0.8 * ticks);
     } else {
@@ -168,7 +169,10 @@ INSTANTIATE_TEST_SUITE_P(
                       HandCase{"pin-cylindrical.yaml", Joining::kNotByHand},
                       // A taper pin goes in by hand until the cones wedge (at the middle of their
                       // size zones 20 + 0.058 mm / (1:50) = 22.9 mm), then a hammer drives it.
-                      HandCase{"taper-pin.yaml", Joining::kByHand}),
+                      HandCase{"taper-pin.yaml", Joining::kByHand},
+                      // A DIN 6885 key slides into its JS9 hub keyway by hand; so does the square.
+                      HandCase{"key-parallel.yaml", Joining::kByHand},
+                      HandCase{"square-shaft.yaml", Joining::kByHand}),
     [](const auto& param_info) {
       const std::string& file = param_info.param.scenario;
       std::string name = file.substr(0, file.find('.'));

@@ -142,6 +142,8 @@ TEST(PositioningCollisionTest, FreeStiffnessIsTheContactStiffnessCappedByTheDevi
   EXPECT_EQ(FreeMotionStiffness(1e3, 1.5e3), 1e3);
   EXPECT_EQ(FreeMotionStiffness(2e6, 0.0), 2e6);  // device states no limit
   EXPECT_EQ(FreeMotionStiffness(2e6, std::numeric_limits<double>::infinity()), 2e6);
+  EXPECT_EQ(FreeMotionStiffness(0.0, 1.5e3), 1.5e3);  // `auto`: the device's own limit
+  EXPECT_EQ(FreeMotionStiffness(0.0, std::numeric_limits<double>::infinity()), 0.0);
   EXPECT_THROW(FreeMotionStiffness(std::numeric_limits<double>::infinity(), 0.0), UserError);
   EXPECT_THROW(FreeMotionStiffness(-1.0, 0.0), UserError);
   EXPECT_THROW(FreeMotionStiffness(1.0, std::nan("")), UserError);
