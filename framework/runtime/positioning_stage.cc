@@ -172,7 +172,11 @@ void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState*
                                             out->pose.offset.y() - held.offset.y());
     out->stiffness = k;
   }
-  if (part.x() >= origin) out->next = StageId::kConstrained;
+  // Past the capture depth (an interference fit: at it, where the part wedges and stops), so
+  // that the constrained stage's first tick has some engagement.
+  if (part.x() > origin || (lead_in_.play() < 0.0 && part.x() >= origin)) {
+    out->next = StageId::kConstrained;
+  }
 }
 
 }  // namespace fitfeel
