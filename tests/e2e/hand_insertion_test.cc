@@ -9,7 +9,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -20,15 +19,17 @@
 #include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
 #include "framework/testing/cli_runner.h"
+#include "framework/testing/hand_scene.h"
 
 namespace fitfeel {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kHandStiffness = 2000.0;  // N/m
-constexpr double kTremor = 0.1e-3;         // m, amplitude of the tremor's circle
-constexpr double kStroke = 27e-3;          // m, how far the hand's target travels
+using test_support::kHandPushIn;
+using test_support::kHandStiffness;
+using test_support::kHandTremor;
+constexpr double kStroke = 27e-3;  // m, how far the hand's target travels (kHandPushIn)
 
 // How a handbook joins the fit (sliding / by hand; light mallet; press).
 enum class Joining { kByHand, kNotByHand };
@@ -56,31 +57,16 @@ std::string ReadText(const fs::path& file) {
   return text.str();
 }
 
-// The shipped scenario with the hand as its device; `waypoints` in YAML flow lines.
+// The shipped scenario with the hand as its device, written beside the test's outputs.
 fs::path WithHand(const std::string& scenario, double aim, const std::string& waypoints,
                   double seconds, const fs::path& dir) {
-  std::string text = ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
-  const std::size_t device = text.find("\ndevice:");
-  const std::size_t run = text.find("\nrun:");
-  EXPECT_TRUE(device != std::string::npos && run != std::string::npos && run > device);
-  std::ostringstream hand;
-  hand << "\ndevice:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n"
-       << "  hand: {mass: 0.5 kg, stiffness: " << kHandStiffness
-       << " N/m, damping: 20 N*s/m, tremor: true, aim_error: [" << aim * 1e3 << " mm, 0 mm]}\n"
-       << "  waypoints:\n"
-       << waypoints;
-  text = text.substr(0, device) + hand.str() + text.substr(run);
-  text = std::regex_replace(text, std::regex("duration: [^\\n]*"),
-                            "duration: " + std::to_string(seconds) + " s");
+  const std::string text =
+      ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
   const fs::path file = dir / ("hand-" + std::to_string(static_cast<int>(aim * 1e6)) + "um-" +
                                scenario);
-  std::ofstream(file) << text;
+  std::ofstream(file) << test_support::WithHand(text, aim, waypoints, seconds);
   return file;
 }
-
-constexpr const char* kPushIn =
-    "    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
-    "    - {time: 3 s, position: [0 mm, 25 mm, 0 mm]}\n";
 
 RunResult RunHand(const std::string& scenario, double aim, const std::string& waypoints,
                   double seconds, const fs::path& out = {}) {
@@ -97,7 +83,7 @@ TEST_P(HandInsertion, OffTheAxisWithTremor) {
   const HandCase& c = GetParam();
   for (const double aim : {0.3e-3, 1e-3}) {
     SCOPED_TRACE(std::to_string(aim * 1e3) + " mm off the axis");
-    const RunResult result = RunHand(c.scenario, aim, kPushIn, 3.5);
+    const RunResult result = RunHand(c.scenario, aim, kHandPushIn, 3.5);
     const nlohmann::json& s = result.summary;
     const double ticks = s["ticks"].get<double>();
     const double constrained = s["constrained_ticks"].get<double>();
@@ -128,9 +114,9 @@ TEST(HandInsertionClearance, TheHandFeelsItsOwnPullNotTheWall) {
   for (const char* scenario : {"paper-case1-h7g6.yaml", "fits-20mm-h7h6.yaml"}) {
     for (const double aim : {0.3e-3, 1e-3}) {
       SCOPED_TRACE(std::string(scenario) + ", " + std::to_string(aim * 1e3) + " mm off");
-      const RunResult result = RunHand(scenario, aim, kPushIn, 3.5);
+      const RunResult result = RunHand(scenario, aim, kHandPushIn, 3.5);
       EXPECT_LE(result.summary["safety"]["max_delivered_force_N"].get<double>(),
-                2.0 * kHandStiffness * (aim + 2.0 * kTremor));
+                2.0 * kHandStiffness * (aim + 2.0 * kHandTremor));
     }
   }
 }
@@ -140,11 +126,11 @@ TEST(HandInsertionRelease, PulledOutTheConstrainedStageLetsGo) {
   const fs::path out = test_support::EmptyFolder("hand-insertion", "release") / "run";
   const RunResult result =
       RunHand("paper-case1-h7g6.yaml", 1e-3,
-              std::string(kPushIn) + "    - {time: 5 s, position: [0 mm, -5 mm, 0 mm]}\n", 6.0,
+              std::string(kHandPushIn) + "    - {time: 5 s, position: [0 mm, -5 mm, 0 mm]}\n", 6.0,
               out);
   EXPECT_LE(result.summary["safety"]["energy_created_J"].get<double>(), 1e-9);
   EXPECT_LE(result.summary["safety"]["max_delivered_force_N"].get<double>(),
-            2.0 * kHandStiffness * (1e-3 + 2.0 * kTremor));
+            2.0 * kHandStiffness * (1e-3 + 2.0 * kHandTremor));
   std::ifstream trace(out / "trace.csv");
   std::string line, stages;
   while (std::getline(trace, line)) {

@@ -14,15 +14,21 @@
 // After Google Benchmark's own output, a Markdown table of the medians, one row per scenario, with
 // the scan's p50 / p99 and the ratio where a scan exists: the README's scene table is this table.
 //
+// Scenes with a lead-in run once more with the simulated hand 1 mm off the axis pushing the part
+// in ("/hand": the god object's cost; framework/testing/hand_scene.h).
+//
 // Scenarios come from $FITFEEL_SOURCE_DIR/scenarios, else ./scenarios (`make bench` runs from the
 // repository's root). Run: build/bench/scene_benchmark [--benchmark_filter=taper]
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +43,7 @@
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/hand_scene.h"
 #include "surfaces/conical/conical_scan_analyzer.h"
 #include "surfaces/spherical/spherical_scan_analyzer.h"
 
@@ -102,6 +109,25 @@ double Percentile(std::vector<double>* v, double q) {
   return (*v)[k];
 }
 
+// The scenario with the simulated hand 1 mm off the axis pushing its part in (the god object's
+// cost, docs/lead-in.md), written to a temporary file of its own.
+fs::path HandVariant(const fs::path& file) {
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const fs::path out = fs::temp_directory_path() /
+                       ("fitfeel-bench-hand-" + std::to_string(::getpid()) + "-" +
+                        file.filename().string());
+  std::ofstream(out) << test_support::WithHand(text, 1e-3, test_support::kHandPushIn, 3.5);
+  return out;
+}
+
+// True where the hand variant means something: a surface with a lead-in, the inner part moving.
+bool HasLeadIn(const fs::path& file) {
+  const Scene scene = LoadScene(file, Registry());
+  return scene.moving == Role::kInner &&
+         !scene.surface->MakeLeadIn(scene.inner, scene.outer).empty();
+}
+
 void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
   static const double clock_cost = ClockCost();
   std::vector<double> ticks;
@@ -111,12 +137,13 @@ void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
     PreparedScene prepared = Prepare(scene);
     const double prepare = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
     if (scan) prepared.analyzer = ScanAnalyzer(scene, prepared);
-    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
     SchedulerSettings settings;
     settings.rate = scene.run.rate;
     settings.duration = scene.run.duration;
     settings.clock = ClockMode::kVirtual;
+    // Started first: a device knows its limits (the hand's 2 b / T) only at its rate.
     scene.device->Start(1.0 / settings.rate);
+    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
     settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
     Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
     ticks.assign(scheduler.planned_ticks(), 0.0);
@@ -147,10 +174,12 @@ class TableReporter final : public benchmark::ConsoleReporter {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& run : runs) {
       if (run.aggregate_name != "median") continue;
-      std::string name = run.run_name.function_name;  // scene/<name>[/scan]
+      std::string name = run.run_name.function_name;  // scene/<name>[/scan|/hand]
       name = name.substr(name.find('/') + 1);
       const bool scan = name.size() > 5 && name.substr(name.size() - 5) == "/scan";
       if (scan) name.resize(name.size() - 5);
+      const bool hand = name.size() > 5 && name.substr(name.size() - 5) == "/hand";
+      if (hand) name = name.substr(0, name.size() - 5) + ", hand 1 mm off";
       Row& row = rows_[name];
       Medians& m = scan ? row.scan : row.table;
       m.present = true;
@@ -209,6 +238,15 @@ int main(int argc, char** argv) {
       if (scan && !HasScan(LoadScene(file, Registry()).surface_id)) continue;
       benchmark::RegisterBenchmark(("scene/" + name + (scan ? "/scan" : "")).c_str(),
                                    [file, scan](benchmark::State& s) { BM_Scene(s, file, scan); })
+          ->Iterations(1)
+          ->Repetitions(5)
+          ->ReportAggregatesOnly(true)
+          ->Unit(benchmark::kMillisecond);
+    }
+    if (HasLeadIn(file)) {
+      const fs::path hand = HandVariant(file);
+      benchmark::RegisterBenchmark(("scene/" + name + "/hand").c_str(),
+                                   [hand](benchmark::State& s) { BM_Scene(s, hand, false); })
           ->Iterations(1)
           ->Repetitions(5)
           ->ReportAggregatesOnly(true)

@@ -1,0 +1,43 @@
+#pragma once
+
+// The simulated hand in place of a scenario's device (docs/lead-in.md), for tests and benchmarks
+// that insert parts as a person does: 0.5 kg held by 2000 N/m and 20 N*s/m to a target that moves
+// through `waypoints` (YAML flow lines under `waypoints:`), physiological tremor (0.1 mm at
+// 10 Hz), aimed `aim` metres off the axis along x; the run lasts `seconds`.
+
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace fitfeel::test_support {
+
+inline constexpr double kHandStiffness = 2000.0;  // N/m
+inline constexpr double kHandTremor = 0.1e-3;     // m
+
+// Pushing in: 27 mm along the axis in 3 s from 2 mm in front of the entrance.
+inline constexpr const char* kHandPushIn =
+    "    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
+    "    - {time: 3 s, position: [0 mm, 25 mm, 0 mm]}\n";
+
+// `scenario_text` (a scenario file's text) with its device section replaced by the hand.
+// Throws std::invalid_argument if the text has no `device:` followed by a `run:` section.
+inline std::string WithHand(const std::string& scenario_text, double aim,
+                            const std::string& waypoints, double seconds) {
+  const std::size_t device = scenario_text.find("\ndevice:");
+  const std::size_t run = scenario_text.find("\nrun:");
+  if (device == std::string::npos || run == std::string::npos || run < device) {
+    throw std::invalid_argument("hand scene: no device section followed by a run section");
+  }
+  std::ostringstream hand;
+  hand << "\ndevice:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n"
+       << "  hand: {mass: 0.5 kg, stiffness: " << kHandStiffness
+       << " N/m, damping: 20 N*s/m, tremor: true, aim_error: [" << aim * 1e3 << " mm, 0 mm]}\n"
+       << "  waypoints:\n"
+       << waypoints;
+  const std::string text = scenario_text.substr(0, device) + hand.str() + scenario_text.substr(run);
+  return std::regex_replace(text, std::regex("duration: [^\\n]*"),
+                            "duration: " + std::to_string(seconds) + " s");
+}
+
+}  // namespace fitfeel::test_support
