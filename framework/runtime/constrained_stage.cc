@@ -299,10 +299,14 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // the normal force friction takes, exceeds the spring's pull that the wall carries. Along
     // the push itself the part then backs out of the wall (nanometres) until the push equals
     // the pull: the wall carries what the hand presses, no more.
-    work.pose.offset = part;
-    analyzer_.Evaluate(work.pose, &work.contact);
-    work.wrench.SetZero();
-    law_.Evaluate(work.contact, motion, &work.wrench);
+    // The solve's last evaluation is usually at the part already.
+    if (work.pose.offset != part || work.pose.depth != depth) {
+      work.pose.offset = part;
+      work.pose.depth = depth;
+      analyzer_.Evaluate(work.pose, &work.contact);
+      work.wrench.SetZero();
+      law_.Evaluate(work.contact, motion, &work.wrench);
+    }
     const Eigen::Vector2d push(work.wrench.force.x(), work.wrench.force.z());
     const double pull = k * (held - part).norm();
     const double magnitude = push.norm();
