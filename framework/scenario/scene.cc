@@ -14,6 +14,7 @@
 #include "framework/core/quantity.h"
 #include "framework/model/measured_surface.h"
 #include "framework/plugin/registry.h"
+#include "framework/safety/safety_settings.h"
 #include "framework/scenario/part_parser.h"
 #include "framework/core/line_endings.h"
 #include "framework/scenario/yaml_file.h"
@@ -456,7 +457,9 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
 
   if (std::optional<ConfigNode> safety = root.Find("safety")) {
     if (!safety->is_map()) safety->Fail("a map of safety settings", safety->Describe());
-    safety->Keys();  // no repeated keys; the safety chain checks the keys themselves
+    safety->Keys();  // no repeated keys
+    // Parsed here as the run parses it, so that `validate` refuses what `run` would, located.
+    (void)ParseSafetySettings(*safety);
     scene.safety = *safety;
   }
   scene.run = ParseRun(root.Child("run"));

@@ -372,6 +372,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "20 mm and 25 mm"},
                 "nominal: 20 mm",
                 "nominal: 25 mm"},
+        // The safety section is checked when the scene loads, as `run` checks it, so that
+        // `validate` refuses it too (it was checked only at run time once).
+        Variant{{"safety_checked_when_loaded", 34, 20, "safety.coupling",
+                 "one of spring_damper, direct", "'bogus'"},
+                "safety: {physical_full_scale: 20 N}",
+                "safety: {coupling: bogus}"},
         Variant{{"unknown_top_level_key", 34, 1, "safty", "one of the keys scenario, description",
                  "unknown key 'safty'"},
                 "safety: {",
@@ -516,7 +522,7 @@ TEST_F(SceneTest, FullScenarioIsParsedIntoSi) {
   EXPECT_DOUBLE_EQ(state.position.y(), 2.0 * 0.010);
 
   ASSERT_TRUE(scene.safety.has_value());
-  EXPECT_EQ(scene.safety->Quantity("max_force", Dimension::kForce), 20.0);
+  EXPECT_EQ(scene.safety->Quantity("physical_full_scale", Dimension::kForce), 20.0);
 
   EXPECT_EQ(scene.run.rate, 2000.0);
   EXPECT_EQ(scene.run.duration, 5.0);
