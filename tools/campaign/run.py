@@ -5,7 +5,8 @@ Cases are drawn from a seeded generator over three families and each is run as a
 it, as a process:
 
   scenario     a shipped scenario, shrunk to a tiny run (milliseconds of virtual time, a coarse
-               grid), then mutated: values replaced by absurd, negative, non-finite, unit-swapped
+               grid; three of them also with the scripted hand and a safety section, which no
+               shipped scenario has), then mutated: values replaced by absurd, negative, non-finite, unit-swapped
                or malformed ones, lines deleted, duplicated or truncated, indentation broken, line
                endings changed, bytes inserted. Both `fitfeel validate F` and `fitfeel run F`.
   recording    a valid recording made once by `fitfeel run`, mutated (fields made huge, non-finite
@@ -353,6 +354,22 @@ def make_bases(fitfeel, scratch):
     replay = re.sub(r"(?m)^device:\n(?:  .*\n)+", "device:\n  plugin: fitfeel.device.replay\n"
                     "  file: rec.csv\n  model: PHANTOM Desktop\n", bases["paper-case1-h7g6.yaml"])
     bases["replay"] = replay
+    # Sections no shipped scenario has: the scripted hand (tremor, aim, waypoints) and a safety
+    # section (the chain's keys), on three surfaces with lead-ins, so that mutations reach them.
+    hand_and_safety = (
+        "device:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n"
+        "  hand: {mass: 0.5 kg, stiffness: 2000 N/m, damping: 20 N*s/m, tremor: true,"
+        " aim_error: [1 mm, 0 mm]}\n"
+        "  waypoints:\n"
+        "    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
+        "    - {time: 20 ms, position: [0 mm, 5 mm, 0 mm]}\n"
+        "safety:\n  force_scale: 0.5\n  coupling: spring_damper\n"
+        "  coupling_stiffness: 800 N/m\n  passivity_controller: true\n")
+    for name in ("paper-case1-h7g6.yaml", "key-parallel.yaml", "taper-pin.yaml"):
+        variant = name.replace(".yaml", "+hand.yaml")
+        bases[variant] = re.sub(r"(?m)^device:\n(?:  .*\n|\s*#.*\n)+", hand_and_safety,
+                                bases[name])
+        SCENARIOS.append(variant)
     return bases
 
 
