@@ -5,7 +5,6 @@
 // through `waypoints` (YAML flow lines under `waypoints:`), physiological tremor (0.1 mm at
 // 10 Hz), aimed `aim` metres off the axis along x; the run lasts `seconds`.
 
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -35,9 +34,17 @@ inline std::string WithHand(const std::string& scenario_text, double aim,
        << " N/m, damping: 20 N*s/m, tremor: true, aim_error: [" << aim * 1e3 << " mm, 0 mm]}\n"
        << "  waypoints:\n"
        << waypoints;
-  const std::string text = scenario_text.substr(0, device) + hand.str() + scenario_text.substr(run);
-  return std::regex_replace(text, std::regex("duration: [^\\n]*"),
-                            "duration: " + std::to_string(seconds) + " s");
+  std::string text = scenario_text.substr(0, device) + hand.str() + scenario_text.substr(run);
+  // Every `duration:` to the end of its line (by hand: GCC 12 warns inside <regex> under the
+  // sanitizers, and warnings are errors).
+  const std::string key = "duration: ", value = std::to_string(seconds) + " s";
+  for (std::size_t at = text.find(key); at != std::string::npos;
+       at = text.find(key, at + key.size() + value.size())) {
+    const std::size_t end = text.find('\n', at);
+    text.replace(at + key.size(), (end == std::string::npos ? text.size() : end) - at - key.size(),
+                 value);
+  }
+  return text;
 }
 
 }  // namespace fitfeel::test_support
