@@ -22,6 +22,8 @@ struct SizeSpec {
   double lower_deviation = 0.0;
   double upper_deviation = 0.0;
   std::string iso_code;  // "H7", "g6", ... when given as a code; empty for explicit deviations
+  // The middle of the size zone (what a typical part of the population measures), m.
+  double mid_size() const { return nominal + 0.5 * (lower_deviation + upper_deviation); }
 };
 
 // GPS form (and pair orientation) characteristics a surface type may support (paper Table 1).

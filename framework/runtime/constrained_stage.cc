@@ -299,10 +299,10 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // the normal force friction takes, exceeds the spring's pull that the wall carries. Along
     // the push itself the part then backs out of the wall (nanometres) until the push equals
     // the pull: the wall carries what the hand presses, no more.
-    // The solve's last evaluation is usually at the part already.
-    if (work.pose.offset != part || work.pose.depth != depth) {
+    // The solve's last evaluation is usually at the part already (at this depth: every
+    // evaluation above was).
+    if (work.pose.offset != part) {
       work.pose.offset = part;
-      work.pose.depth = depth;
       analyzer_.Evaluate(work.pose, &work.contact);
       work.wrench.SetZero();
       law_.Evaluate(work.contact, motion, &work.wrench);
@@ -320,18 +320,16 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     }
     return part;
   };
-  // Along the axis: where the law's resistance (stick-slip junctions, probed from the run's state
-  // without advancing it) balances the spring k (held - y), the part at its balance across the
-  // axis at each depth tried (a bore narrowing ahead pushes it inwards as it goes, as a
-  // chamfer would). The resistance falls monotonically as the part goes deeper (a junction's
-  // spring, then the kinetic level, against the way in), so the root between the part's last
-  // depth and the device's is unique.
   // The balance across the axis at the device's depth serves every depth tried along it: the
   // part goes no deeper than the device, and where the bore narrows ahead that balance already
   // has it clear of the narrowing (a balance taken at the part's own depth would run it into
   // the step and hold it there as if it were jammed).
-  const Eigen::Vector2d at_device_depth = across(held_depth);
-  Eigen::Vector2d at = at_device_depth;
+  Eigen::Vector2d at = across(held_depth);
+  // Along the axis: where the law's resistance (stick-slip junctions, probed from the run's state
+  // without advancing it) balances the spring k (held - y), the part at that balance across. The
+  // resistance falls monotonically as the part goes deeper (a junction's spring, then the
+  // kinetic level, against the way in), so the root between the part's last depth and the
+  // device's is unique.
   auto axial = [&](double depth) {
     work.pose.depth = depth;
     work.pose.offset = at;

@@ -10,9 +10,13 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
   free_motion.free_stiffness =
       FreeMotionStiffness(scene.model.contact_stiffness, spec.max_stiffness);
   SceneStages stages;
+  LeadIn lead_in = prepared.surface->MakeLeadIn(scene.inner, scene.outer);
+  // Coarse meshes only where no lead-in takes their place (PositioningStage).
+  const bool meshes = lead_in.empty() || scene.moving != Role::kInner;
   stages.positioning = std::make_unique<PositioningStage>(
-      free_motion, prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer), scene.moving,
-      prepared.surface->MakeLeadIn(scene.inner, scene.outer));
+      free_motion,
+      meshes ? prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer) : CoarseMeshes{},
+      scene.moving, std::move(lead_in));
   ConstrainedStage::Options mating;
   mating.depth_origin = stages.positioning->depth_origin();
   const bool limited = spec.max_stiffness > 0.0 && std::isfinite(spec.max_stiffness);

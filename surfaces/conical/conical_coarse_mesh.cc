@@ -51,12 +51,9 @@ LeadIn MakeConicalLeadIn(const PartSpec& inner, const PartSpec& outer) {
   const ConicalGeometry& pin = GeometryOf(inner);
   const ConicalGeometry& hole = GeometryOf(outer);
   // Middle of the size zones: the small-end diameters are the toleranced sizes.
-  auto mid = [](const PartSpec& part) {
-    return 0.5 * (part.size.lower_deviation + part.size.upper_deviation);
-  };
   const double slope = 0.5 * pin.taper();  // tan(alpha): radius per length
-  const double tip = 0.5 * (pin.small_diameter() + mid(inner));
-  const double mouth = 0.5 * (hole.large_diameter() + mid(outer));
+  const double tip = 0.5 * inner.size.mid_size();
+  const double mouth = 0.5 * outer.size.mid_size() + slope * hole.length();
   const Chamfer& end = pin.chamfer();
   const Chamfer& entrance = hole.chamfer();
   RadiusProfile moving, fixed;

@@ -61,10 +61,7 @@ CoarseMeshes MakeCylindricalCoarseMeshes(const PartSpec& inner, const PartSpec& 
 }
 
 LeadIn MakeCylindricalLeadIn(const PartSpec& inner, const PartSpec& outer) {
-  auto mid_radius = [](const PartSpec& part) {
-    return 0.5 * (part.size.nominal + 0.5 * (part.size.lower_deviation + part.size.upper_deviation));
-  };
-  const double shaft = mid_radius(inner), bore = mid_radius(outer);
+  const double shaft = 0.5 * inner.size.mid_size(), bore = 0.5 * outer.size.mid_size();
   const Chamfer& end = GeometryOf(inner).chamfer();
   const Chamfer& entrance = GeometryOf(outer).chamfer();
   RadiusProfile moving, fixed;

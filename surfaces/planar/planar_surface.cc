@@ -76,16 +76,13 @@ CoarseMeshes PlanarSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSp
 LeadIn PlanarSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
   const PlanarGeometry& key = PlanarGeometryOf(inner);
   const PlanarGeometry& slot = PlanarGeometryOf(outer);
-  auto half_width = [](const PartSpec& part) {
-    return 0.5 * (part.size.nominal + 0.5 * (part.size.lower_deviation + part.size.upper_deviation));
-  };
   const Chamfer& end = key.chamfer();
   const Chamfer& entrance = slot.chamfer();
   RadiusProfile moving, fixed;
-  moving.points.emplace_back(0.0, half_width(inner) - end.width());
-  if (end.length > 0.0) moving.points.emplace_back(end.length, half_width(inner));
-  fixed.points.emplace_back(0.0, half_width(outer) + entrance.width());
-  if (entrance.length > 0.0) fixed.points.emplace_back(entrance.length, half_width(outer));
+  moving.points.emplace_back(0.0, 0.5 * inner.size.mid_size() - end.width());
+  if (end.length > 0.0) moving.points.emplace_back(end.length, 0.5 * inner.size.mid_size());
+  fixed.points.emplace_back(0.0, 0.5 * outer.size.mid_size() + entrance.width());
+  if (entrance.length > 0.0) fixed.points.emplace_back(entrance.length, 0.5 * outer.size.mid_size());
   return LeadIn(moving, fixed, -entrance.length, end.length,
                 key.faces() == 2 ? LeadIn::Section::kAcrossX : LeadIn::Section::kSquare);
 }

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -50,18 +49,11 @@ PluginRegistry& Registry() {
   return *registry;
 }
 
-std::string ReadText(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // The shipped scenario with the hand as its device, written beside the test's outputs.
 fs::path WithHand(const std::string& scenario, double aim, const std::string& waypoints,
                   double seconds, const fs::path& dir) {
   const std::string text =
-      ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
+      test_support::ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
   const fs::path file = dir / ("hand-" + std::to_string(static_cast<int>(aim * 1e6)) + "um-" +
                                scenario);
   std::ofstream(file) << test_support::WithHand(text, aim, waypoints, seconds);
