@@ -33,4 +33,10 @@ Chamfer ParseChamfer(const ConfigNode& node, double part_length, double wall) {
   return chamfer;
 }
 
+std::string DescribeChamfer(const Chamfer& chamfer) {
+  if (!(chamfer.length > 0.0)) return {};
+  return " chamfer " + FormatQuantity(chamfer.length, Dimension::kLength) + " x " +
+         FormatQuantity(chamfer.width(), Dimension::kLength);
+}
+
 }  // namespace fitfeel

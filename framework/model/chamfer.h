@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
@@ -21,5 +22,8 @@ struct Chamfer {
 // The chamfer must be shorter than the part and narrower than the wall it cuts; otherwise the
 // key fails with its location, what was expected and what was found.
 FITFEEL_API Chamfer ParseChamfer(const ConfigNode& node, double part_length, double wall);
+
+// " chamfer <length> x <width>" for a geometry's description; empty for a sharp edge.
+FITFEEL_API std::string DescribeChamfer(const Chamfer& chamfer);
 
 }  // namespace fitfeel

@@ -74,11 +74,7 @@ std::string ConicalGeometry::Describe() const {
   if (role_ == Role::kOuter) {
     text += " hub D=" + FormatQuantity(outer_diameter_, Dimension::kLength);
   }
-  if (chamfer_.length > 0.0) {
-    text += " chamfer " + FormatQuantity(chamfer_.length, Dimension::kLength) + " x " +
-            FormatQuantity(chamfer_.width(), Dimension::kLength);
-  }
-  return text;
+  return text + DescribeChamfer(chamfer_);
 }
 
 std::shared_ptr<const ConicalGeometry> ParseConicalGeometry(const PartSpec& part,

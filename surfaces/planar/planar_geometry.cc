@@ -11,11 +11,7 @@ std::string PlanarGeometry::Describe() const {
   return std::string(faces_ == 2 ? "pair of flat faces" : "square (two pairs of flat faces)") +
          " b=" + FormatQuantity(width_, Dimension::kLength) +
          " l=" + FormatQuantity(length_, Dimension::kLength) +
-         " h=" + FormatQuantity(height_, Dimension::kLength) +
-         (chamfer_.length > 0.0
-              ? " chamfer " + FormatQuantity(chamfer_.length, Dimension::kLength) + " x " +
-                    FormatQuantity(chamfer_.width(), Dimension::kLength)
-              : std::string());
+         " h=" + FormatQuantity(height_, Dimension::kLength) + DescribeChamfer(chamfer_);
 }
 
 std::shared_ptr<const PlanarGeometry> ParsePlanarGeometry(const PartSpec& part,
