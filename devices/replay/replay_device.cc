@@ -79,7 +79,7 @@ void ReplayDevice::DoRead(double time, DeviceState* out) noexcept {
   out->buttons = a.buttons;
   // A load the part carries switches on at the entrance: held from the earlier sample like the
   // buttons, never blended.
-  out->settle_load = a.settle_load;
+  out->load = a.load;
   if (i + 1 >= s.size() || tau == a.time) {
     out->position = a.position;
     out->orientation = a.orientation;

@@ -16,6 +16,23 @@ double Optional(const ConfigNode& node, std::string_view key, Dimension dimensio
   return child ? child->AsQuantityIn(dimension, lo, hi) : fallback;
 }
 
+// The part's radial motion is the scene's, not the device's (framework/runtime/part_motion.h):
+// keys of earlier scenario files are refused with where they went.
+void RefuseMovedKeys(const ConfigNode& node) {
+  if (const auto radial = node.Find("radial")) {
+    radial->Fail(
+        "no `radial` here: how the part moves across the axis is the scene's "
+        "`part_motion: {radial: held | quasi_static | dynamic}`",
+        radial->Describe());
+  }
+  if (const auto damping = node.Find("radial_damping")) {
+    damping->Fail(
+        "no `radial_damping` here: the part's radial damping is the scene's "
+        "`part_motion: {damping: ...}`",
+        damping->Describe());
+  }
+}
+
 }  // namespace
 
 void SimulatedDevice::DoConfigure(const ConfigNode& node) {
@@ -23,10 +40,9 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
   const auto mode = node.Find("mode");
   const std::string name =
       mode ? mode->AsOneOf({"constant_speed", "constant_rotation", "scripted"}) : "constant_speed";
+  RefuseMovedKeys(node);
   if (name == "constant_speed") {
-    node.ExpectOnlyKeys(
-        {"plugin", "mode", "speed", "radial_load", "start_offset", "radial_damping", "radial",
-         "stop_force"});
+    node.ExpectOnlyKeys({"plugin", "mode", "speed", "radial_load", "start_offset", "stop_force"});
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
     // robot holds; 1 m of approach is the size of a workcell.
@@ -35,15 +51,8 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     s.start_offset = Optional(node, "start_offset", Dimension::kLength, 0.0, 1.0, 1e-3);
     // A press's force monitoring: 1 MN is beyond any bench press.
     s.stop_force = Optional(node, "stop_force", Dimension::kForce, 0.0, 1e6, 0.0);
-    s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
-    if (const auto radial = node.Find("radial")) {
-      s.radial = radial->AsOneOf({"quasi_static", "dynamic"}) == "dynamic"
-                     ? Settings::Radial::kDynamic
-                     : Settings::Radial::kQuasiStatic;
-    }
   } else if (name == "constant_rotation") {
-    node.ExpectOnlyKeys(
-        {"plugin", "mode", "angular_speed", "swing", "radial_load", "radial_damping", "radial"});
+    node.ExpectOnlyKeys({"plugin", "mode", "angular_speed", "swing", "radial_load"});
     s.mode = Settings::Mode::kConstantRotation;
     // 100 rad/s is far beyond a plain bearing's oscillation; a swing beyond half a turn each way
     // is a rotation (0 or no key: continuous).
@@ -51,12 +60,6 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
         node.Child("angular_speed").AsQuantityIn(Dimension::kAngularVelocity, 0.0, 100.0, false);
     s.swing = Optional(node, "swing", Dimension::kAngle, 0.0, M_PI + 1e-9, 0.0);
     s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
-    s.radial_damping = Optional(node, "radial_damping", Dimension::kDamping, 0.0, 1e6, 0.0);
-    if (const auto radial = node.Find("radial")) {
-      s.radial = radial->AsOneOf({"quasi_static", "dynamic"}) == "dynamic"
-                     ? Settings::Radial::kDynamic
-                     : Settings::Radial::kQuasiStatic;
-    }
   } else {
     node.ExpectOnlyKeys({"plugin", "mode", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;

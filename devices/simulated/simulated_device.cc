@@ -24,7 +24,6 @@ void Validate(const Settings& s) {
     Require(InRange(s.start_offset, 0.0, 1.0), "start_offset must be in [0, 1] m");
     Require(InRange(s.stop_force, 0.0, 1e6), "stop_force must be in [0, 1] MN");
     Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
-    Require(InRange(s.radial_damping, 0.0, 1e6), "radial_damping must be in [0, 1e6] N*s/m");
     return;
   }
   if (s.mode == Settings::Mode::kConstantRotation) {
@@ -35,7 +34,6 @@ void Validate(const Settings& s) {
     Require(InRange(s.swing, 0.0, M_PI + 1e-9),
             "swing must be in [0, 180] deg (0: continuous rotation)");
     Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
-    Require(InRange(s.radial_damping, 0.0, 1e6), "radial_damping must be in [0, 1e6] N*s/m");
     return;
   }
   Require(!s.waypoints.empty(), "a scripted run needs at least one waypoint");
@@ -59,20 +57,6 @@ void SimulatedDevice::Configure(const Settings& settings) {
   settings_ = settings;
 }
 
-double SimulatedDevice::mass() const {
-  return settings_.mode == Settings::Mode::kScripted ? settings_.hand_mass
-                                                     : settings_.radial_load / kStandardGravity;
-}
-
-double SimulatedDevice::ExplicitStabilityBound() const {
-  const double m = mass();
-  const double c = settings_.mode == Settings::Mode::kScripted ? settings_.hand_damping
-                                                               : settings_.radial_damping;
-  // A part held rigidly on the axis (no mass) cannot be destabilised by a contact stiffness.
-  return m > 0.0 ? (4.0 + 2.0 * period_ * c / m) * m / (period_ * period_)
-                 : std::numeric_limits<double>::infinity();
-}
-
 DeviceSpec SimulatedDevice::spec() const {
   DeviceSpec spec;
   spec.native_rate = 1.0 / period_;
@@ -84,13 +68,11 @@ DeviceSpec SimulatedDevice::spec() const {
     spec.damping = settings_.hand_damping;
   } else if (settings_.mode == Settings::Mode::kConstantRotation) {
     spec.model = "simulated rotary drive (constant angular speed, constant radial load)";
-    spec.damping = settings_.radial_damping;
   } else {
     spec.model = "simulated robot (constant speed, constant radial load)";
-    spec.damping = settings_.radial_damping;
   }
-  // The contact is integrated implicitly with the stiffness the runtime hands over, so any
-  // contact stiffness is stable; ExplicitStabilityBound() is the limit without it.
+  // A position-controlled axis renders any stiffness: what moves under the force is the part
+  // (PartMotion), which takes the contact's stiffness implicitly.
   spec.max_stiffness = std::numeric_limits<double>::infinity();
   if (settings_.mode == Settings::Mode::kScripted) {
     // The hand stands for a person at a haptic device, which renders a sampled spring passively
@@ -110,13 +92,8 @@ void SimulatedDevice::DoStart(double period) {
   delivered_.SetZero();
   velocity_.setZero();
   stiffness_ = 0.0;
-  has_anchor_ = false;
-  plane_valid_ = false;
-  previous_stiffness_ = 0.0;
   stopped_ = false;
   stop_position_ = 0.0;
-  gap_ = std::numeric_limits<double>::infinity();
-  gap_direction_.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     position_ = Eigen::Vector3d(0.0, -settings_.start_offset, 0.0);
   } else if (settings_.mode == Settings::Mode::kConstantRotation) {
@@ -207,10 +184,9 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   out->velocity = velocity_;
   out->buttons = 0;
   out->delivered = delivered_;
-  out->settle_load.setZero();
-  if (settings_.mode != Settings::Mode::kScripted &&
-      settings_.radial == Settings::Radial::kQuasiStatic && position_.y() >= 0.0) {
-    out->settle_load = Eigen::Vector2d(0.0, -settings_.radial_load);
+  out->load.setZero();
+  if (settings_.mode != Settings::Mode::kScripted && position_.y() >= 0.0) {
+    out->load = Eigen::Vector2d(0.0, -settings_.radial_load);
   }
 }
 
@@ -223,88 +199,8 @@ void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
     stopped_ = true;
     stop_position_ = position_.y();
   }
-  if (settings_.mode != Settings::Mode::kScripted) {
-    const double m = mass();
-    // Held on the axis by the robot until the leading end is inside; with no weight, no mass;
-    // settled by the stage in the quasi-static mode.
-    if (m <= 0.0 || position_.y() < 0.0 || settings_.radial == Settings::Radial::kQuasiStatic) {
-      return;
-    }
-    const double c = settings_.radial_damping;
-    const Eigen::Vector2d load(0.0, -settings_.radial_load);
-    const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());
-    const Eigen::Vector2d x(position_.x(), position_.z());
-    Eigen::Vector2d v(velocity_.x(), velocity_.z());
-    // At a kink of the piecewise-linear contact force (an assembly-space vertex, a row entering)
-    // the runtime's 1 nm probe can read a fraction of the stiffness for a tick. Too soft a slope
-    // makes the step overshoot (a Newton step on a kink), too stiff a one only slows the
-    // approach, so the step takes the larger of the probe and 0.9 of the previous tick's slope:
-    // a dip of one tick is bridged, a real softening is followed within ~20 ticks.
-    Eigen::Vector2d anchor_velocity(0.0, 0.0);
-    const double k = stiffness_ > 0.0 ? std::max(stiffness_, 0.9 * previous_stiffness_) : 0.0;
-    previous_stiffness_ = k > 0.0 ? k : 0.9 * previous_stiffness_;
-    if (k > 0.0) {
-      // The anchor from the probed slope (the law's own), not the bridged one used to step.
-      const Eigen::Vector2d anchor = x + contact / stiffness_;
-      const Eigen::Vector2d travel =
-          has_anchor_ ? Eigen::Vector2d(anchor - previous_anchor_) : Eigen::Vector2d(0.0, 0.0);
-      previous_anchor_ = anchor;
-      has_anchor_ = true;
-      v = (m * v + h * (contact + load + k * travel)) / (m + h * c + h * h * k);
-      anchor_velocity = travel / h;
-      // The contact as a plane for the next tick (through the anchor expected then, normal along
-      // the force), in case the next pose lands just outside it.
-      const double magnitude = contact.norm();
-      plane_valid_ = magnitude > 0.0;
-      if (plane_valid_) {
-        plane_normal_ = contact / magnitude;
-        plane_point_ = anchor + travel;
-        plane_stiffness_ = k;
-      }
-    } else {
-      has_anchor_ = false;
-      v = (m * v + h * (contact + load)) / (m + h * c);
-      // A tick without contact right after one with contact is usually the part resting a hair
-      // outside the surface it was pushed back to. A free step from there would fall g h^2
-      // (9.8 um at 1 kHz, more than most fits' clearance) deep into that surface within one
-      // tick; if it would cross the remembered plane, the step meets it as the contact step
-      // above would, along its normal (tangentially the part stays free). Only for one tick:
-      // a part that is still free next tick has really left the contact.
-      const Eigen::Vector2d free = x + h * v;
-      if (std::isfinite(gap_) && previous_stiffness_ > 0.0 && gap_direction_.norm() > 0.5) {
-        // The surface at the end of the free way, as a plane facing the part.
-        plane_point_ = x + gap_ * gap_direction_;
-        plane_normal_ = -gap_direction_;
-        plane_stiffness_ = previous_stiffness_;
-        plane_valid_ = true;
-      }
-      if (plane_valid_ && (free - plane_point_).dot(plane_normal_) < 0.0) {
-        const Eigen::Vector2d& n = plane_normal_;
-        const double kp = plane_stiffness_;
-        const Eigen::Vector2d v0(velocity_.x(), velocity_.z());
-        const double vn =
-            (m * v0.dot(n) + h * ((contact + load).dot(n) + kp * (plane_point_ - x).dot(n))) /
-            (m + h * c + h * h * kp);
-        v += (vn - v.dot(n)) * n;
-      }
-      plane_valid_ = false;
-    }
-    position_.x() += h * v.x();
-    position_.z() += h * v.y();
-    // v is the step's mean velocity. Its end velocity differs in contact: a contact far stiffer
-    // than the tick resolves (h^2 k >> m) has settled within the step, so the part ends moving
-    // with the contact's anchor, not with the velocity that carried it there (which, kept, would
-    // fling it micrometres per tick into free flight). That makes such a contact inelastic at the
-    // tick's scale; a soft one (h^2 k << m) keeps v.
-    Eigen::Vector2d end = v;
-    if (k > 0.0) {
-      const double settled = h * h * k / (m + h * h * k);
-      end = (1.0 - settled) * v + settled * anchor_velocity;
-    }
-    velocity_.x() = end.x();
-    velocity_.z() = end.y();
-    return;
-  }
+  // The robot and the drive are position-controlled: the force moves nothing of theirs.
+  if (settings_.mode != Settings::Mode::kScripted) return;
   // Scripted hand: backward Euler for its spring-damper towards the target at the end of the
   // step and for the contact's stiffness, the rendered force at the current position.
   Eigen::Vector3d target, target_velocity;

@@ -21,11 +21,14 @@
 #include "framework/scenario/scene.h"
 
 namespace {
-
 using fitfeel::DeviceState;
 using fitfeel::Wrench;
-
 thread_local std::string thread_error;
+}  // namespace
+
+// Named, not anonymous: fitfeel_scene (external linkage) holds one, which a unity build's
+// -Wsubobject-linkage refuses for a type private to the file.
+namespace fitfeel::capi_detail {
 
 // The host's device: Read hands the scheduler the state the host passed to fitfeel_step, Write
 // keeps the wrench for the host. Its spec is the scene's device's, so the safety chain limits
@@ -49,7 +52,7 @@ class HostDevice final : public fitfeel::Device {
   Wrench written_;
 };
 
-}  // namespace
+}  // namespace fitfeel::capi_detail
 
 struct fitfeel_scene {
   std::unique_ptr<fitfeel::PluginRegistry> registry;
@@ -57,7 +60,7 @@ struct fitfeel_scene {
   fitfeel::PreparedScene prepared;
   std::unique_ptr<fitfeel::ConstrainedStage> constrained;
   std::unique_ptr<fitfeel::PositioningStage> positioning;
-  std::unique_ptr<HostDevice> device;
+  std::unique_ptr<fitfeel::capi_detail::HostDevice> device;
   std::unique_ptr<fitfeel::Scheduler> scheduler;
   std::string error;
   bool done = false;
@@ -86,11 +89,9 @@ std::unique_ptr<fitfeel_scene> Make(std::unique_ptr<fitfeel::PluginRegistry> reg
   fitfeel::SceneStages stages = fitfeel::MakeSceneStages(s->scene, s->prepared, spec);
   s->positioning = std::move(stages.positioning);
   s->constrained = std::move(stages.constrained);
-  s->device = std::make_unique<HostDevice>(spec);
+  s->device = std::make_unique<fitfeel::capi_detail::HostDevice>(spec);
   s->device->Start(1.0 / s->scene.run.rate);
-  fitfeel::SchedulerSettings settings;
-  settings.rate = s->scene.run.rate;
-  settings.duration = s->scene.run.duration;
+  fitfeel::SchedulerSettings settings = fitfeel::SceneSchedulerSettings(s->scene);
   settings.clock = fitfeel::ClockMode::kVirtual;
   settings.safety = fitfeel::RuntimeSafetySettings(s->scene.safety, spec);
   s->scheduler = std::make_unique<fitfeel::Scheduler>(*s->device, *s->positioning,
@@ -155,7 +156,7 @@ int fitfeel_step(fitfeel_scene* s, const fitfeel_device_state* d, fitfeel_wrench
   state.velocity = Eigen::Vector3d(d->velocity[0], d->velocity[1], d->velocity[2]);
   state.angular_velocity =
       Eigen::Vector3d(d->angular_velocity[0], d->angular_velocity[1], d->angular_velocity[2]);
-  state.settle_load = Eigen::Vector2d(d->settle_load[0], d->settle_load[1]);
+  state.load = Eigen::Vector2d(d->settle_load[0], d->settle_load[1]);
   state.buttons = d->buttons;
   s->device->Set(state);
   const bool ticked = !s->done && s->scheduler->Tick(d->time);

@@ -42,7 +42,9 @@ typedef struct {
   double orientation[4];     /* unit quaternion w, x, y, z */
   double velocity[3];
   double angular_velocity[3];
-  double settle_load[2];     /* radial load (x, z) carried quasi-statically; 0: none */
+  /* The radial load (x, z) acting on the part (its weight once inside); 0: none. What the part
+     does under it is the scene's part_motion (quasi_static by default: settled). */
+  double settle_load[2];
   uint32_t buttons;
 } fitfeel_device_state;
 

@@ -73,7 +73,7 @@ std::string Um(double metres, bool sign = true) { return Fixed(metres * 1e6, 0, 
 
 std::string Mm(double metres) { return Fixed(metres * 1e3, 3, 5, false) + " mm"; }
 
-std::string Pad(std::string text, std::size_t width) {
+std::string PadLeft(std::string text, std::size_t width) {
   if (text.size() < width) text.insert(0, width - text.size(), ' ');
   return text;
 }
@@ -83,8 +83,8 @@ void PrintPart(std::ostream& out, const char* role, const iso286::Limits& part) 
   const char* upper_name = part.is_hole ? "ES" : "es";
   out << "  " << role << " " << part.code
       << std::string(6 - std::min<std::size_t>(5, part.code.size()), ' ') << lower_name << " = "
-      << Pad(Um(part.lower_deviation), 10) << "   " << upper_name << " = "
-      << Pad(Um(part.upper_deviation), 10) << "   limits "
+      << PadLeft(Um(part.lower_deviation), 10) << "   " << upper_name << " = "
+      << PadLeft(Um(part.upper_deviation), 10) << "   limits "
       << Mm(part.nominal + part.lower_deviation) << " .. "
       << Mm(part.nominal + part.upper_deviation) << "   (tolerance "
       << Um(part.upper_deviation - part.lower_deviation, false) << ")\n";

@@ -45,7 +45,7 @@ std::vector<Row> CollectRows(const PluginRegistry& registry) {
   return rows;
 }
 
-std::string Pad(const std::string& text, std::size_t width) {
+std::string PadRight(const std::string& text, std::size_t width) {
   return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
 }
 
@@ -61,12 +61,12 @@ void PrintText(const PluginRegistry& registry, const std::vector<Row>& rows) {
       version_width = std::max(version_width, row.info.version.size());
     }
     const std::string indent(2 + id_width + 2, ' ');
-    std::cout << "  " << Pad("ID", id_width) << "  " << Pad("KIND", kind_width) << "  "
-              << Pad("VERSION", version_width) << "  SUMMARY\n";
+    std::cout << "  " << PadRight("ID", id_width) << "  " << PadRight("KIND", kind_width) << "  "
+              << PadRight("VERSION", version_width) << "  SUMMARY\n";
     for (const Row& row : rows) {
-      std::cout << "  " << Pad(row.info.id, id_width) << "  "
-                << Pad(PluginKindName(row.info.kind), kind_width) << "  "
-                << Pad(row.info.version, version_width) << "  " << row.info.summary << "\n";
+      std::cout << "  " << PadRight(row.info.id, id_width) << "  "
+                << PadRight(PluginKindName(row.info.kind), kind_width) << "  "
+                << PadRight(row.info.version, version_width) << "  " << row.info.summary << "\n";
       std::cout << indent << "library: "
                 << (row.info.library.empty() ? std::string("(in-process)")
                                              : row.info.library.string())

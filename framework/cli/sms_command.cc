@@ -84,7 +84,7 @@ std::string Csv(const SkinModelShape& sms) {
   return out.str();
 }
 
-struct Options {
+struct SmsOptions {
   std::string file;
   std::string part;
   std::string output;
@@ -92,7 +92,7 @@ struct Options {
   std::optional<std::uint64_t> seed;
 };
 
-void Run(const Options& options) {
+void Run(const SmsOptions& options) {
   PluginRegistry registry;
   registry.LoadAll();
   for (const RefusedLibrary& refused : registry.refused()) {
@@ -191,7 +191,7 @@ void Run(const Options& options) {
 void AddSmsCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "sms", "Generate a part's skin model shape, write it as CSV and check it against its spec");
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<SmsOptions>();
   cmd->add_option("file", options->file, "Scenario file (YAML)")->required();
   cmd->add_option("--part", options->part, "Part name (default: both parts)");
   cmd->add_option("-o,--output", options->output,

@@ -27,8 +27,7 @@
 namespace fitfeel::cli {
 namespace {
 
-
-struct Options {
+struct StabilityOptions {
   std::string scenario = kDefaultScenario;
   std::string device;
   std::string output;
@@ -59,7 +58,7 @@ std::string Number(double value, const char* format = "%.4g") {
 
 // The device whose limits and damping the sweep uses: --device, else the scene's device when it
 // is one of the known models (with the scene's overrides), else the PHANTOM Desktop.
-DeviceSpec ChooseDevice(const Options& options, const Scene& scene) {
+DeviceSpec ChooseDevice(const StabilityOptions& options, const Scene& scene) {
   if (!options.device.empty()) return LookupDeviceSpec(options.device);
   if (scene.device) {
     const DeviceSpec spec = scene.device->spec();
@@ -68,7 +67,7 @@ DeviceSpec ChooseDevice(const Options& options, const Scene& scene) {
   return LookupDeviceSpec("PHANTOM Desktop");
 }
 
-double ForceScale(const Options& options, const Scene& scene, const DeviceSpec& spec) {
+double ForceScale(const StabilityOptions& options, const Scene& scene, const DeviceSpec& spec) {
   if (options.force_scale) {
     if (!(*options.force_scale > 0.0) || !std::isfinite(*options.force_scale)) {
       throw UserError("stability: --force-scale must be a positive number");
@@ -81,7 +80,7 @@ double ForceScale(const Options& options, const Scene& scene, const DeviceSpec& 
   return safety.force_scale;
 }
 
-void Run(const Options& options) {
+void Run(const StabilityOptions& options) {
   // Every input is checked before anything runs or is written.
   PluginRegistry registry;
   registry.LoadAll();
@@ -254,7 +253,7 @@ void Run(const Options& options) {
 }  // namespace
 
 void AddStabilityCommand(CLI::App& app) {
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<StabilityOptions>();
   auto* cmd = app.add_subcommand(
       "stability",
       "Sweep contact stiffness x rate x virtual damping for direct and coupled rendering of the "

@@ -27,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Options {
+struct TradeoffOptions {
   std::string scenario;
   std::string prefix;
   std::string resolutions;
@@ -43,7 +43,7 @@ bool Contains(const std::vector<Resolution>& ladder, const Resolution& r) {
   return false;
 }
 
-void Run(const Options& options) {
+void Run(const TradeoffOptions& options) {
   // Every input is checked, and gnuplot found, before the first run.
   tradeoff::TradeoffSettings settings;
   settings.seeds = options.seeds;
@@ -122,7 +122,7 @@ void Run(const Options& options) {
 }  // namespace
 
 void AddTradeoffCommand(CLI::App& app) {
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<TradeoffOptions>();
   auto* cmd = app.add_subcommand(
       "tradeoff",
       "Speed against accuracy: run the scene (virtual clock) at a ladder of grid resolutions, "

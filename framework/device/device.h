@@ -38,11 +38,12 @@ struct DeviceState {
   std::uint32_t buttons = 0;
   // Wrench the device delivered in the previous tick after its own limits (for recording).
   Wrench delivered;
-  // Radial load (x, z components, N) that the moving part carries in quasi-static equilibrium, as
-  // the paper's case-study robot does with the shaft's weight. When non-zero, the constrained
-  // stage places the part across the mating axis where the rendered radial force balances this
-  // load, instead of at `position`'s x and z: a settled part, with no radial dynamics to integrate.
-  Eigen::Vector2d settle_load{0.0, 0.0};
+  // The external radial load (x, z components, N) the device lets act on the moving part: the
+  // paper's case-study robot lets the shaft's weight act once its leading end is inside. What the
+  // part does under it is the framework's (PartMotion, the scene's `part_motion`): held, settled
+  // quasi-statically by the constrained stage, or integrated. In the state the stages see, it is
+  // the load to settle the part under (zero unless `part_motion.radial` is quasi_static).
+  Eigen::Vector2d load{0.0, 0.0};
 };
 
 // Who calls the tick: the framework's scheduler, or the device vendor's servo thread.
@@ -63,19 +64,14 @@ class FITFEEL_API Device {
   void Read(double time, DeviceState* out) noexcept;
   // Per tick: the wrench to apply (already scaled and bounded by the safety chain).
   void Write(const Wrench& wrench) noexcept;
-  // Per tick, before Write: the stiffness (N/m) of the contact the next wrench comes from, 0 when
-  // free. A device that simulates its own inertia integrates the contact implicitly with it (a
-  // press fit is far stiffer than an explicit step at 1 kHz can hold); hardware ignores it.
+  // Per tick, before Write: the stiffness (N/m) of the rendered wrench at the handle, 0 when free:
+  // the local model that goes with the force, as an intermediate representation hands a device a
+  // plane and its stiffness. A device that simulates its own inertia (the scripted hand)
+  // integrates the contact implicitly with it (a press fit is far stiffer than an explicit step at
+  // 1 kHz can hold); hardware ignores it.
   void SetEnvironmentStiffness(double stiffness) noexcept {
     DoSetEnvironmentStiffness(stiffness >= 0.0 && stiffness < 1e300 ? stiffness : 0.0);
   }
-  // Per tick, before Write, when not in contact: the part can move `gap` (m) along the unit
-  // `direction` in the (x, z) cross-section before it touches (infinity: unknown). A simulated
-  // device whose free step would cross that distance meets the surface instead of falling into it.
-  void SetEnvironmentGap(double gap, const Eigen::Vector2d& direction) noexcept {
-    DoSetEnvironmentGap(gap >= 0.0 ? gap : 0.0, direction);
-  }
-
   // The device's limits. A device that measures them (hardware) knows them only after Start.
   virtual DeviceSpec spec() const = 0;
   virtual ClockOwner clock_owner() const { return ClockOwner::kFramework; }
@@ -95,7 +91,6 @@ class FITFEEL_API Device {
   virtual void DoRead(double time, DeviceState* out) noexcept = 0;
   virtual void DoWrite(const Wrench& wrench) noexcept = 0;
   virtual void DoSetEnvironmentStiffness(double) noexcept {}
-  virtual void DoSetEnvironmentGap(double, const Eigen::Vector2d&) noexcept {}
 };
 
 }  // namespace fitfeel

@@ -26,8 +26,8 @@ inline bool DeviceStateInBounds(const DeviceState& s) noexcept {
     return v.allFinite() && v.cwiseAbs().maxCoeff() <= bound;
   };
   return within(s.position, kMaxDevicePosition) && within(s.velocity, kMaxDeviceSpeed) &&
-         within(s.angular_velocity, kMaxDeviceAngularSpeed) &&
-         within(s.settle_load, kMaxDeviceForce) && s.orientation.coeffs().allFinite() &&
+         within(s.angular_velocity, kMaxDeviceAngularSpeed) && within(s.load, kMaxDeviceForce) &&
+         s.orientation.coeffs().allFinite() &&
          std::abs(s.orientation.squaredNorm() - 1.0) <= kMaxQuaternionNormError;
 }
 

@@ -47,7 +47,7 @@ void Flatten(const RecordedSample& s, double* out) {
   for (int k = 0; k < 3; ++k) out[i++] = s.commanded.torque[k];
   for (int k = 0; k < 3; ++k) out[i++] = s.delivered.force[k];
   for (int k = 0; k < 3; ++k) out[i++] = s.delivered.torque[k];
-  for (int k = 0; k < 2; ++k) out[i++] = s.settle_load[k];
+  for (int k = 0; k < 2; ++k) out[i++] = s.load[k];
 }
 
 void Unflatten(const double* in, RecordedSample* s) {
@@ -62,7 +62,7 @@ void Unflatten(const double* in, RecordedSample* s) {
   for (int k = 0; k < 3; ++k) s->commanded.torque[k] = in[i++];
   for (int k = 0; k < 3; ++k) s->delivered.force[k] = in[i++];
   for (int k = 0; k < 3; ++k) s->delivered.torque[k] = in[i++];
-  for (int k = 0; k < 2; ++k) s->settle_load[k] = in[i++];
+  for (int k = 0; k < 2; ++k) s->load[k] = in[i++];
 }
 
 // A recorded sample obeys the live device state's bounds (physical_bounds.h).

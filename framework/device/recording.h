@@ -27,7 +27,7 @@ struct RecordedSample {
   std::uint32_t buttons = 0;
   Wrench commanded;  // what the framework wrote to the device (after the safety chain)
   Wrench delivered;  // what the device reported delivering (DeviceState::delivered)
-  Eigen::Vector2d settle_load{0.0, 0.0};  // DeviceState::settle_load (x, z), N
+  Eigen::Vector2d load{0.0, 0.0};  // DeviceState::load (x, z), N
 };
 
 // Header facts of a recording.

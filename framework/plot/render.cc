@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "framework/core/number_text.h"
 #include "framework/plot/palette.h"
 
 namespace fitfeel::plot {
@@ -25,12 +26,6 @@ constexpr int kLinePanelHeight = 400;
 constexpr int kHeatPanelHeight = 330;
 constexpr int kTitleHeight = 70;
 constexpr double kLogDecades = 5.0;
-
-std::string Num(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
 
 std::string Rgb(unsigned rgb) {
   char buffer[16];
@@ -79,30 +74,10 @@ std::string Terminal(ImageFormat format, int width, int height) {
   return "set terminal svg" + size + " font 'Sans,12' noenhanced background rgb 'white'\n";
 }
 
-// Renders `body` (a gnuplot script drawing one chart on the current terminal) into every output.
+// Renders `body` into every output at the charts' width.
 void RenderBody(const std::string& body, int height, const std::vector<OutputFile>& outputs,
                 const TempDir& work) {
-  if (outputs.empty()) throw std::invalid_argument("no output file to render into");
-  const Gnuplot gnuplot = Gnuplot::Find();
-  WriteText(work.path() / "chart.gp", body);
-  std::string main = "set encoding utf8\n";
-  std::vector<fs::path> images;
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
-    const std::string name =
-        "image" + std::to_string(k) + std::string(Extension(outputs[k].format));
-    images.push_back(work.path() / name);
-    main += Terminal(outputs[k].format, kWidth, height);
-    main += "set output '" + name + "'\nload 'chart.gp'\nunset output\n";
-  }
-  WriteText(work.path() / "main.gp", main);
-  gnuplot.Run(work.path() / "main.gp", work.path());
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
-    if (!LooksLikeImage(images[k], outputs[k].format)) {
-      throw std::runtime_error("gnuplot wrote no valid " +
-                               std::string(Extension(outputs[k].format)) + " image");
-    }
-  }
-  for (std::size_t k = 0; k < outputs.size(); ++k) InstallAtomically(images[k], outputs[k].path);
+  RenderScript(body, kWidth, height, outputs, work);
 }
 
 std::string PaletteCommand() {
@@ -171,6 +146,31 @@ std::string TicLabel(double value) {
 
 }  // namespace
 
+void RenderScript(const std::string& body, int width, int height,
+                  const std::vector<OutputFile>& outputs, const TempDir& work) {
+  if (outputs.empty()) throw std::invalid_argument("no output file to render into");
+  const Gnuplot gnuplot = Gnuplot::Find();
+  WriteText(work.path() / "chart.gp", body);
+  std::string main = "set encoding utf8\n";
+  std::vector<fs::path> images;
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    const std::string name =
+        "image" + std::to_string(k) + std::string(Extension(outputs[k].format));
+    images.push_back(work.path() / name);
+    main += Terminal(outputs[k].format, width, height);
+    main += "set output '" + name + "'\nload 'chart.gp'\nunset output\n";
+  }
+  WriteText(work.path() / "main.gp", main);
+  gnuplot.Run(work.path() / "main.gp", work.path());
+  for (std::size_t k = 0; k < outputs.size(); ++k) {
+    if (!LooksLikeImage(images[k], outputs[k].format)) {
+      throw std::runtime_error("gnuplot wrote no valid " +
+                               std::string(Extension(outputs[k].format)) + " image");
+    }
+  }
+  for (std::size_t k = 0; k < outputs.size(); ++k) InstallAtomically(images[k], outputs[k].path);
+}
+
 void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
   if (chart.panels.empty()) throw std::invalid_argument("line chart has no panel");
   double x_min = std::numeric_limits<double>::infinity();
@@ -209,7 +209,7 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
   body << "set lmargin 12\nset rmargin 4\n";
   body << "set grid xtics ytics lc rgb '#c8c8c8' lw 1 dt solid\n";
   body << "set key below left Left reverse samplen 5 spacing 1.3 width 2\n";
-  body << "set xrange [" << Num(x_min) << ":" << Num(x_max) << "]\n";
+  body << "set xrange [" << ShortestDecimal(x_min) << ":" << ShortestDecimal(x_max) << "]\n";
   for (int p = 0; p < panels; ++p) {
     const LinePanel& panel = chart.panels[static_cast<std::size_t>(p)];
     body << "set title " << QuoteForGnuplot(panel.title) << " font ',13'\n";
@@ -235,14 +235,15 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       if (empty) {
         body << "set yrange [1:10]\n";
       } else if (flat) {
-        body << "set yrange [" << Num(y_low / 2.0) << ":" << Num(y_high * 2.0) << "]\n";
+        body << "set yrange [" << ShortestDecimal(y_low / 2.0) << ":"
+             << ShortestDecimal(y_high * 2.0) << "]\n";
       } else {
         // Near-zero values (a contact just closing) would stretch a log axis over ten decades
         // and squash everything a reader looks at; the axis keeps kLogDecades below the peak.
         // The lowest curve is lifted off the frame (a factor 1.5, a sixth of a decade), where a
         // constant one would otherwise hide in the border.
         const double bottom = std::max(y_low, y_high * std::pow(10.0, -kLogDecades)) / 1.5;
-        body << "set yrange [" << Num(bottom) << ":*]\n";
+        body << "set yrange [" << ShortestDecimal(bottom) << ":*]\n";
         // Within two decades gnuplot labels at most one power of ten, which leaves the reader
         // without a scale: label the 1-2-5 steps instead.
         if (y_high < 100.0 * bottom) {
@@ -251,7 +252,7 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
           for (double decade = std::pow(10.0, std::floor(std::log10(bottom)));
                decade <= 10.0 * y_high; decade *= 10.0) {
             for (double step : {1.0, 2.0, 5.0}) {
-              body << (first ? "" : ", ") << Num(step * decade);
+              body << (first ? "" : ", ") << ShortestDecimal(step * decade);
               first = false;
             }
           }
@@ -262,9 +263,10 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
       body << "unset logscale y\n";
       const double pad = y_high == 0.0 ? 1.0 : 0.1 * std::abs(y_high);
       if (panel.y_from_zero) {
-        body << "set yrange [0:" << (y_high > 0.0 ? "*" : Num(pad)) << "]\n";
+        body << "set yrange [0:" << (y_high > 0.0 ? "*" : ShortestDecimal(pad)) << "]\n";
       } else if (flat) {
-        body << "set yrange [" << Num(y_low - pad) << ":" << Num(y_high + pad) << "]\n";
+        body << "set yrange [" << ShortestDecimal(y_low - pad) << ":"
+             << ShortestDecimal(y_high + pad) << "]\n";
       } else {
         body << "set yrange [*:*]\n";
       }
@@ -295,7 +297,7 @@ void Render(const LineChart& chart, const std::vector<OutputFile>& outputs) {
         // bridging it.
         if (std::isfinite(series.x[k]) && std::isfinite(series.y[k]) &&
             (!panel.log_y || series.y[k] > 0.0)) {
-          data += Num(series.x[k]) + " " + Num(series.y[k]) + "\n";
+          data += ShortestDecimal(series.x[k]) + " " + ShortestDecimal(series.y[k]) + "\n";
         } else {
           data += "\n";
         }
@@ -366,11 +368,13 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     // gnuplot spaces the label from the tic labels without counting the outward tic marks, and
     // two-digit labels then touch it: the offset moves it clear (the right margin has room).
     body << "set cblabel " << QuoteForGnuplot(map.colour_label) << " offset 1.5,0\n";
-    body << "set xrange [" << Num(x_lower(0)) << ":" << Num(x_upper(x_upper.size() - 1)) << "]\n";
-    body << "set yrange [" << Num(y_lower(0)) << ":" << Num(y_upper(y_upper.size() - 1)) << "]\n";
-    body << "set cbrange [" << Num(low) << ":" << Num(high) << "]\n";
+    body << "set xrange [" << ShortestDecimal(x_lower(0)) << ":"
+         << ShortestDecimal(x_upper(x_upper.size() - 1)) << "]\n";
+    body << "set yrange [" << ShortestDecimal(y_lower(0)) << ":"
+         << ShortestDecimal(y_upper(y_upper.size() - 1)) << "]\n";
+    body << "set cbrange [" << ShortestDecimal(low) << ":" << ShortestDecimal(high) << "]\n";
     if (map.y_tic_step > 0.0) {
-      body << "set ytics " << Num(map.y_tic_step) << "\n";
+      body << "set ytics " << ShortestDecimal(map.y_tic_step) << "\n";
     } else {
       body << "set ytics autofreq\n";
     }
@@ -383,18 +387,19 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
         near_mark = near_mark || std::abs(tic - mark.value) < 0.09 * (high - low);
       }
       if (near_mark) continue;
-      body << (first ? "" : ", ") << "'" << TicLabel(tic) << "' " << Num(tic);
+      body << (first ? "" : ", ") << "'" << TicLabel(tic) << "' " << ShortestDecimal(tic);
       first = false;
     }
     for (const auto& mark : map.colour_marks) {
-      body << (first ? "" : ", ") << QuoteForGnuplot(mark.label) << " " << Num(mark.value);
+      body << (first ? "" : ", ") << QuoteForGnuplot(mark.label) << " "
+           << ShortestDecimal(mark.value);
       first = false;
     }
     body << ")\n";
     body << "unset arrow\nunset label\n";
     for (std::size_t k = 0; k < map.y_lines.size(); ++k) {
       // Black under white dashes: visible on the dark and the light end of the colour map alike.
-      const std::string y = Num(map.y_lines[k].value);
+      const std::string y = ShortestDecimal(map.y_lines[k].value);
       body << "set arrow from graph 0, first " << y << " to graph 1, first " << y
            << " nohead front lw 4 lc rgb 'black'\n";
       body << "set arrow from graph 0, first " << y << " to graph 1, first " << y
@@ -408,12 +413,12 @@ void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs) {
     const bool regular = EvenlySpaced(map.x) && EvenlySpaced(map.y);
     for (Eigen::Index i = 0; i < map.x.size(); ++i) {
       for (Eigen::Index j = 0; j < map.y.size(); ++j) {
-        data += Num(map.x(i)) + " " + Num(map.y(j)) + " ";
+        data += ShortestDecimal(map.x(i)) + " " + ShortestDecimal(map.y(j)) + " ";
         if (!regular) {
-          data += Num(0.5 * (x_upper(i) - x_lower(i))) + " " +
-                  Num(0.5 * (y_upper(j) - y_lower(j))) + " ";
+          data += ShortestDecimal(0.5 * (x_upper(i) - x_lower(i))) + " " +
+                  ShortestDecimal(0.5 * (y_upper(j) - y_lower(j))) + " ";
         }
-        data += Num(map.values(i, j)) + "\n";
+        data += ShortestDecimal(map.values(i, j)) + "\n";
       }
       data += "\n";
     }

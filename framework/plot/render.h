@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "framework/core/export.h"
@@ -13,5 +14,11 @@ namespace fitfeel::plot {
 // std::invalid_argument for malformed chart data (a bug of the caller).
 FITFEEL_API void Render(const LineChart& chart, const std::vector<OutputFile>& outputs);
 FITFEEL_API void Render(const HeatMapChart& chart, const std::vector<OutputFile>& outputs);
+
+// Draws the gnuplot script `body` (one chart on the current terminal, reading its data files from
+// `work`) at `width` x `height` pixels into every output file, as Render does: all formats
+// rendered and checked before any file is installed.
+FITFEEL_API void RenderScript(const std::string& body, int width, int height,
+                              const std::vector<OutputFile>& outputs, const TempDir& work);
 
 }  // namespace fitfeel::plot

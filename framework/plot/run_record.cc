@@ -17,7 +17,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string_view Trim(std::string_view text) {
+std::string_view TrimField(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r");
   if (first == std::string_view::npos) return {};
   const auto last = text.find_last_not_of(" \t\r");
@@ -36,7 +36,7 @@ std::vector<std::pair<std::string_view, int>> SplitCsv(std::string_view line) {
   while (true) {
     const std::size_t comma = line.find(',', start);
     const std::size_t end = comma == std::string_view::npos ? line.size() : comma;
-    fields.emplace_back(Trim(line.substr(start, end - start)), static_cast<int>(start) + 1);
+    fields.emplace_back(TrimField(line.substr(start, end - start)), static_cast<int>(start) + 1);
     if (comma == std::string_view::npos) break;
     start = comma + 1;
   }
@@ -155,7 +155,7 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   int line_number = 1;
   while (std::getline(in, line)) {
     ++line_number;
-    if (Trim(line).empty()) continue;
+    if (TrimField(line).empty()) continue;
     const auto fields = SplitCsv(line);
     if (fields.size() != header.size()) {
       throw UserError(file.string() + ":" + std::to_string(line_number) + ": expected " +

@@ -85,7 +85,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   motion.angular_velocity = device.angular_velocity;
   motion.depth = out->pose.depth;
   motion.angle = out->pose.angle;
-  const bool settle = device.settle_load.squaredNorm() > 0.0;
+  const bool settle = device.load.squaredNorm() > 0.0;
   if (!settle && std::isfinite(options_.proxy_stiffness)) {
     FollowDevice(motion, state, out);
     return;
@@ -97,7 +97,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   // later re-entry forms its contact afresh rather than at a stale anchor.
   if (!out->contact.engaged) run->law = LawState{};
   if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
-  if (settle && Settle(device.settle_load, motion, &run->last_settled, &run->law, out)) {
+  if (settle && Settle(device.load, motion, &run->last_settled, &run->law, out)) {
     // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();

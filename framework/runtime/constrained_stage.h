@@ -56,7 +56,7 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   double RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
                          const Wrench& wrench) const noexcept;
 
-  // Quasi-static placement (DeviceState::settle_load): finds the offset along the load where the
+  // Quasi-static placement (DeviceState::load): finds the offset along the load where the
   // rendered radial force balances it, starting from and updating `*last_settled` (the previous
   // settled offset), and leaves pose, contact and wrench there, the wrench from the law with the
   // run's `*law_state` (advanced once, at the settled pose). Returns false (outputs, state and

@@ -3,24 +3,18 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <system_error>
 
 #include "framework/core/error.h"
+#include "framework/core/number_text.h"
 
 namespace fitfeel {
 namespace {
 
 namespace fs = std::filesystem;
-
-void AppendNumber(std::string* out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  out->append(buffer, result.ptr);
-}
 
 nlohmann::json ToJson(const Percentiles& p) {
   return {{"p50", p.p50}, {"p99", p.p99}, {"max", p.max}};
@@ -42,7 +36,7 @@ std::string TraceHeader() {
          "stiffness_N_per_um,guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,"
          // Appended last so the contract's earlier columns keep their places. x_mm and z_mm are the
          // device's position; the pose's offset differs where the constrained stage settles the
-         // part quasi-statically under a radial load (DeviceState::settle_load).
+         // part quasi-statically under a radial load (DeviceState::load).
          "offset_x_um,offset_z_um,"
          // The largest equivalent stress over the yield strength (DIN 7190), and 1 where a part
          // yields (the ratio exceeds 1): the elastic model no longer holds there.
@@ -63,9 +57,9 @@ void AppendTraceRow(std::string* out, const TickRecord& r) {
   std::string& row = *out;
   auto add = [&row](double v) {
     row += ',';
-    AppendNumber(&row, v);
+    AppendShortestDecimal(&row, v);
   };
-  AppendNumber(&row, r.time);
+  AppendShortestDecimal(&row, r.time);
   row += ',';
   row += ToString(r.stage);
   add(r.pose.depth * 1e3);

@@ -106,10 +106,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   RunInfo& info = result.info;
   info = MakeRunInfo(scene, prepared);
 
-  SchedulerSettings settings;
-  settings.rate = scene.run.rate;
-  settings.duration = scene.run.duration;
-  settings.clock = scene.run.clock;
+  SchedulerSettings settings = SceneSchedulerSettings(scene);
   {
     DeviceRun device_run(*scene.device, 1.0 / scene.run.rate);
     // Hardware knows its limits only once started.

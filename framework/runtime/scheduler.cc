@@ -107,20 +107,36 @@ Percentiles ComputePercentiles(std::vector<double> values) {
   return out;
 }
 
-Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
-                     const SchedulerSettings& settings)
-    : device_(device), stages_{&positioning, &constrained}, settings_(settings) {
-  if (positioning.id() != StageId::kPositioning || constrained.id() != StageId::kConstrained) {
-    throw UserError("scheduler: stages given in the wrong order");
-  }
+SchedulerSettings SceneSchedulerSettings(const Scene& scene) {
+  SchedulerSettings settings;
+  settings.rate = scene.run.rate;
+  settings.duration = scene.run.duration;
+  settings.clock = scene.run.clock;
+  settings.part_motion = scene.part_motion;
+  return settings;
+}
+
+double Scheduler::PeriodOf(const SchedulerSettings& settings) {
   if (!(settings.rate > 0.0) || !std::isfinite(settings.rate) || settings.rate > 100000.0) {
     throw UserError("scheduler: rate must be in (0, 100 kHz], got " +
                     std::to_string(settings.rate) + " Hz");
   }
+  return 1.0 / settings.rate;
+}
+
+Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
+                     const SchedulerSettings& settings)
+    : device_(device),
+      stages_{&positioning, &constrained},
+      settings_(settings),
+      period_(PeriodOf(settings)),
+      part_motion_(settings.part_motion, period_) {
+  if (positioning.id() != StageId::kPositioning || constrained.id() != StageId::kConstrained) {
+    throw UserError("scheduler: stages given in the wrong order");
+  }
   if (!(settings.duration > 0.0) || !std::isfinite(settings.duration)) {
     throw UserError("scheduler: duration must be a positive number of seconds");
   }
-  period_ = 1.0 / settings.rate;
   device_clock_ = device.clock_owner() == ClockOwner::kDevice;
   const double ticks = std::round(settings.duration * settings.rate);
   if (ticks < 1.0) throw UserError("scheduler: the run is shorter than one tick");
@@ -164,6 +180,7 @@ void Scheduler::Rewind() noexcept {
   ticks_done_.store(0, std::memory_order_relaxed);
   run_.current = StageId::kPositioning;
   run_.output = StageOutput{};  // a run starts with no part pose of an earlier run
+  run_.part_motion = part_motion_.MakeState();
 }
 
 void Scheduler::MakeStageStates() {
@@ -185,11 +202,12 @@ bool Scheduler::Tick(double time) noexcept {
   } else {
     run.last_sane_device = run.device;
   }
+  part_motion_.Place(run.device, run.part_motion, &run.part);
   if (run.chain_reset) {
-    run.chain.Reset(run.device);  // proxy at the handle, energy and counters at zero
+    run.chain.Reset(run.part);  // proxy at the handle, energy and counters at zero
     run.chain_reset = false;
   }
-  run.chain.SimulatedState(run.device, &run.law_state);
+  run.chain.SimulatedState(run.part, &run.law_state);
   const StageId stage = run.current;
   const auto index = static_cast<std::size_t>(stage);
   stages_[index]->Evaluate(run.law_state, run.stages[index].get(), &run.output);
@@ -203,7 +221,7 @@ bool Scheduler::Tick(double time) noexcept {
   double dt = period_;
   if (device_clock_ && k > 0 && time > run.last_time) dt = time - run.last_time;
   run.last_time = time;
-  Wrench device_wrench = run.chain.Apply(output.wrench, run.device, dt);
+  Wrench device_wrench = run.chain.Apply(output.wrench, run.part, dt);
   if (device_fault) device_wrench = Wrench{};
   // Real time only: after a missed deadline, zero and then a ramp (overrun_guard.h). A device's
   // own clock shows the miss as a long period; the scheduler's clock as a late wake-up.
@@ -220,14 +238,15 @@ bool Scheduler::Tick(double time) noexcept {
     run.output.wrench.SetZero();
     ++run.guard_faults;
   }
-  device_.SetEnvironmentStiffness(DeviceStiffness(run.chain, output.stiffness));
-  if (run.chain.settings().coupling == CouplingMode::kSpringDamper) {
-    // The handle meets the coupling spring, not the surface: its free way is unknown.
-    device_.SetEnvironmentGap(std::numeric_limits<double>::infinity(), output.gap_direction);
-  } else {
-    device_.SetEnvironmentGap(output.gap, output.gap_direction);
-  }
+  ContactFeedback feedback;
+  feedback.stiffness = DeviceStiffness(run.chain, output.stiffness);
+  // Coupled, the part meets the coupling spring, not the surface: its free way is unknown.
+  const bool coupled = run.chain.settings().coupling == CouplingMode::kSpringDamper;
+  feedback.gap = coupled ? std::numeric_limits<double>::infinity() : output.gap;
+  feedback.gap_direction = output.gap_direction;
+  device_.SetEnvironmentStiffness(feedback.stiffness);
   device_.Write(device_wrench);
+  part_motion_.Step(run.device, device_wrench, feedback, &run.part_motion);
   const std::int64_t end = NowNs();
 
   const bool streaming = settings_.stream != nullptr;
@@ -255,7 +274,7 @@ bool Scheduler::Tick(double time) noexcept {
     sample.buttons = run.device.buttons;
     sample.commanded = device_wrench;
     sample.delivered = run.device.delivered;
-    sample.settle_load = run.device.settle_load;
+    sample.load = run.device.load;
   }
   if (!wake_ns_.empty()) {
     wake_ns_[k] = static_cast<double>(start);

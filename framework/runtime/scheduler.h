@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "framework/core/export.h"
+#include "framework/core/spsc_ring.h"
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
 #include "framework/device/stage.h"
-#include "framework/core/spsc_ring.h"
+#include "framework/runtime/overrun_guard.h"
+#include "framework/runtime/part_motion.h"
 #include "framework/runtime/stream_row.h"
 #include "framework/runtime/tick_observer.h"
-#include "framework/runtime/overrun_guard.h"
 #include "framework/runtime/tick_record.h"
 #include "framework/safety/safety_chain.h"
 #include "framework/scenario/scene.h"
@@ -33,6 +34,8 @@ struct SchedulerSettings {
   // stay empty), so memory does not grow with the run; TraceStream drains it and states the
   // overrun policy. Null: the run's rows are kept in buffers sized before the loop.
   SpscRing<StreamRow>* stream = nullptr;
+  // The moving part's radial motion under the device's load (the scene's `part_motion`).
+  PartMotionSettings part_motion{};
 
   // Direct rendering at scale 1: with a device without limits (the simulated robot), the device
   // receives the stage's wrench bit for bit.
@@ -42,6 +45,11 @@ struct SchedulerSettings {
     return s;
   }
 };
+
+// A scene's run as the scheduler takes it: rate, duration, clock and the part's motion; the
+// safety settings need the started device's spec (RuntimeSafetySettings) and the outputs are the
+// caller's.
+FITFEEL_API SchedulerSettings SceneSchedulerSettings(const Scene& scene);
 
 // The safety settings of a run: the scenario's `safety` section (absent: defaults), with one
 // runtime default on top. A device without a motor (spec max_force +inf, the simulated robot and
@@ -58,7 +66,9 @@ struct RunState {
   std::array<std::unique_ptr<StageState>, 2> stages;  // indexed by StageId
   StageId current = StageId::kPositioning;
   DeviceState device;     // as the device reported it
+  DeviceState part;       // the moving part: the device's state after PartMotion::Place
   DeviceState law_state;  // where the stage is evaluated (the proxy when coupled)
+  PartMotionState part_motion;  // the part's radial dynamics
   StageOutput output;
   SafetyChain chain;
   bool chain_reset = true;  // reset the chain at the next tick's device state
@@ -127,11 +137,14 @@ class FITFEEL_API Scheduler {
   void RunDeviceClock();
   void ComputeStats();
   void MakeStageStates();
+  // 1 / settings.rate; throws UserError for a rate out of range.
+  static double PeriodOf(const SchedulerSettings& settings);
 
   Device& device_;
   std::array<const Stage*, 2> stages_;
   SchedulerSettings settings_;
   double period_ = 0.0;
+  PartMotion part_motion_;
   bool device_clock_ = false;
   std::uint64_t planned_ticks_ = 0;
 

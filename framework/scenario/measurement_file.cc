@@ -31,7 +31,7 @@ struct Cell {
   int position = 0;
 };
 
-std::string Trim(const std::string& s) {
+std::string TrimBlanks(const std::string& s) {
   const auto begin = s.find_first_not_of(" \t\r");
   if (begin == std::string::npos) return "";
   return s.substr(begin, s.find_last_not_of(" \t\r") - begin + 1);
@@ -44,7 +44,8 @@ std::vector<Cell> SplitCells(const std::string& line) {
     const std::size_t end = std::min(line.find(',', start), line.size());
     const std::string raw = line.substr(start, end - start);
     const std::size_t lead = raw.find_first_not_of(" \t\r");
-    cells.push_back({Trim(raw), static_cast<int>(start + (lead == std::string::npos ? 0 : lead)) + 1});
+    cells.push_back(
+        {TrimBlanks(raw), static_cast<int>(start + (lead == std::string::npos ? 0 : lead)) + 1});
     if (end == line.size()) break;
     start = end + 1;
   }
@@ -78,7 +79,7 @@ const std::map<std::string, Dimension>& KnownColumns(MeasurementKind kind) {
   return kind == MeasurementKind::kPoints ? points : traces;
 }
 
-std::string Expected(MeasurementKind kind) {
+std::string ExpectedKind(MeasurementKind kind) {
   return kind == MeasurementKind::kPoints
              ? "a header of the columns x, y, z, each as 'name [unit]' (e.g. 'x [mm]')"
              : "a header of the columns height, angle and radius or deviation, each as "
@@ -95,13 +96,13 @@ std::map<std::string, Column> ParseHeader(const std::string& line, int number,
     const std::size_t open = cell.text.find('[');
     const std::size_t close = cell.text.rfind(']');
     if (open == std::string::npos || close != cell.text.size() - 1 || close < open) {
-      reader.Fail(number, cell.position, Expected(kind), "'" + cell.text + "'");
+      reader.Fail(number, cell.position, ExpectedKind(kind), "'" + cell.text + "'");
     }
-    const std::string name = Trim(cell.text.substr(0, open));
-    const std::string unit = Trim(cell.text.substr(open + 1, close - open - 1));
+    const std::string name = TrimBlanks(cell.text.substr(0, open));
+    const std::string unit = TrimBlanks(cell.text.substr(open + 1, close - open - 1));
     const auto it = known.find(name);
     if (it == known.end()) {
-      reader.Fail(number, cell.position, Expected(kind), "a column '" + name + "'");
+      reader.Fail(number, cell.position, ExpectedKind(kind), "a column '" + name + "'");
     }
     if (columns.count(name) != 0) {
       reader.Fail(number, cell.position, "each column once", "'" + name + "' again");
@@ -118,7 +119,7 @@ std::map<std::string, Column> ParseHeader(const std::string& line, int number,
   }
   auto need = [&](const char* name) {
     if (columns.count(name) == 0) {
-      reader.Fail(number, 1, Expected(kind), std::string("no column '") + name + "'");
+      reader.Fail(number, 1, ExpectedKind(kind), std::string("no column '") + name + "'");
     }
   };
   if (kind == MeasurementKind::kPoints) {
@@ -177,7 +178,7 @@ MeasuredSurface ReadMeasurement(const fs::path& file, MeasurementKind kind, doub
   int number = 0;
   while (std::getline(lines, line)) {
     ++number;
-    const std::string trimmed = Trim(line);
+    const std::string trimmed = TrimBlanks(line);
     if (trimmed.empty() || trimmed.front() == '#') continue;
     if (!header) {
       header = ParseHeader(line, number, kind, reader);
@@ -246,7 +247,7 @@ MeasuredSurface ReadMeasurement(const fs::path& file, MeasurementKind kind, doub
     }
     line_of.push_back(number);
   }
-  if (!header) reader.Fail(number, 1, Expected(kind), "no header");
+  if (!header) reader.Fail(number, 1, ExpectedKind(kind), "no header");
   if (m.value.empty()) reader.Fail(number, 1, "at least one sample after the header", "none");
 
   // Traces: group, check distinct samples and enough of them.

@@ -51,13 +51,13 @@ auto Located(const ConfigNode& node, const std::string& expected, Check&& check)
   }
 }
 
-std::string Number(double value) {
+std::string ThreeDigits(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
 }
 
-std::string Join(const std::vector<std::string>& items) {
+std::string JoinList(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
   return out.empty() ? "none" : out;
@@ -87,7 +87,7 @@ std::shared_ptr<SurfaceType> ResolveSurface(const ConfigNode& node, const Plugin
     surface = registry.MakeSurface(*id);
   } catch (const PluginError& e) {
     node.Fail(
-        "a loaded surface plugin id (" + Join(LoadedIds(registry, kFitfeelSurfacePlugin)) + ")",
+        "a loaded surface plugin id (" + JoinList(LoadedIds(registry, kFitfeelSurfacePlugin)) + ")",
         node.Describe() + " (" + e.what() + ")");
   }
   if (surface == nullptr) throw std::logic_error("plugin registry returned no surface object");
@@ -114,7 +114,7 @@ Parts ParseParts(const ConfigNode& root, const SurfaceType& surface,
   if (names.size() != 2) {
     node.Fail("exactly two parts, one with role inner and one with role outer",
               std::to_string(names.size()) + " part" + (names.size() == 1 ? "" : "s") +
-                  (names.empty() ? "" : " (" + Join(names) + ")"));
+                  (names.empty() ? "" : " (" + JoinList(names) + ")"));
   }
   // Roles first, so a duplicate is reported before either part's details.
   std::vector<Role> roles;
@@ -219,7 +219,7 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   if (std::optional<ConfigNode> law = node.Find("law")) {
     model.law = law->AsString();
     if (std::find(laws.begin(), laws.end(), model.law) == laws.end()) {
-      law->Fail("a resistance law that " + surface_id + " offers (" + Join(laws) + ")",
+      law->Fail("a resistance law that " + surface_id + " offers (" + JoinList(laws) + ")",
                 law->Describe());
     }
   }
@@ -260,6 +260,23 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   return model;
 }
 
+PartMotionSettings ParsePartMotion(const ConfigNode& node) {
+  if (!node.is_map()) node.Fail("a map with the keys radial and damping", node.Describe());
+  node.ExpectOnlyKeys({"radial", "damping"});
+  PartMotionSettings motion;
+  if (std::optional<ConfigNode> radial = node.Find("radial")) {
+    const std::string name = radial->AsOneOf({"held", "quasi_static", "dynamic"});
+    motion.radial = name == "held"           ? RadialMotion::kHeld
+                    : name == "quasi_static" ? RadialMotion::kQuasiStatic
+                                             : RadialMotion::kDynamic;
+  }
+  // 1e6 N*s/m stops a 1 kg part within a microsecond: beyond it nothing moves.
+  if (std::optional<ConfigNode> damping = node.Find("damping")) {
+    motion.damping = damping->AsQuantityIn(Dimension::kDamping, 0.0, 1e6);
+  }
+  return motion;
+}
+
 RunSettings ParseRun(const ConfigNode& node) {
   node.ExpectOnlyKeys({"rate", "duration", "seed", "clock", "outputs"});
   RunSettings run;
@@ -294,8 +311,9 @@ RunSettings ParseRun(const ConfigNode& node) {
   const ConfigNode duration = node.Child("duration");
   const double ticks = std::round(run.duration * run.rate);
   if (ticks < 1.0) {
-    duration.Fail("a run of at least one tick (1 / run.rate = " + Number(1.0 / run.rate) + " s)",
-                  duration.Describe() + " at " + Number(run.rate) + " Hz");
+    duration.Fail(
+        "a run of at least one tick (1 / run.rate = " + ThreeDigits(1.0 / run.rate) + " s)",
+        duration.Describe() + " at " + ThreeDigits(run.rate) + " Hz");
   }
   static_assert(kMaxDuration * kMaxRate * kStreamBytesPerTick <= kMaxRunBufferBytes,
                 "the longest run at the highest rate fits the scheduler's buffer cap");
@@ -360,11 +378,11 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
   const double vertices = cost.depth_steps * (columns + 4.0);
   if (step_node && model.depth_step > 0.0 &&
       (!(cost.depth_steps < kMaxDepthSteps) || !(vertices < kMaxDepthTableVertices))) {
-    step_node->Fail("a step giving fewer than " + Number(kMaxDepthSteps) +
-                        " depth-table rows and " + Number(kMaxDepthTableVertices) +
-                        " table vertices over the " + Number(li + lo) + " m stroke",
-                    step_node->Describe() + ": " + Number(cost.depth_steps) + " rows of up to " +
-                        Number(columns + 4.0) + " vertices");
+    step_node->Fail("a step giving fewer than " + ThreeDigits(kMaxDepthSteps) +
+                        " depth-table rows and " + ThreeDigits(kMaxDepthTableVertices) +
+                        " table vertices over the " + ThreeDigits(li + lo) + " m stroke",
+                    step_node->Describe() + ": " + ThreeDigits(cost.depth_steps) +
+                        " rows of up to " + ThreeDigits(columns + 4.0) + " vertices");
   }
   cost.prepare_bytes = cells * kBytesPerCell + cost.depth_steps * kBytesPerDepthStep +
                        vertices * kBytesPerTableVertex;
@@ -376,11 +394,12 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
     const bool table = step_node && model.depth_step > 0.0 &&
                        vertices * kSecondsPerTableVertex > cells * kSecondsPerCell;
     const ConfigNode& key = table ? *step_node : grid_key;
-    key.Fail("a scene that prepares within " + Number(kLargeSceneBytes / (1 << 30)) + " GiB and " +
-                 Number(kLargeSceneSeconds) + " s, or --allow-large to run it anyway",
-             key.Describe() + ": " + Number(cells) + " cells, " + Number(cost.depth_steps) +
-                 " depth steps, about " + Number(cost.prepare_bytes / (1 << 20)) + " MiB and " +
-                 Number(cost.prepare_seconds) + " s to prepare");
+    key.Fail(
+        "a scene that prepares within " + ThreeDigits(kLargeSceneBytes / (1 << 30)) + " GiB and " +
+            ThreeDigits(kLargeSceneSeconds) + " s, or --allow-large to run it anyway",
+        key.Describe() + ": " + ThreeDigits(cells) + " cells, " + ThreeDigits(cost.depth_steps) +
+            " depth steps, about " + ThreeDigits(cost.prepare_bytes / (1 << 20)) + " MiB and " +
+            ThreeDigits(cost.prepare_seconds) + " s to prepare");
   }
   return cost;
 }
@@ -413,8 +432,8 @@ namespace {
 
 Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
                     const PluginRegistry& registry, const LoadOptions& options) {
-  root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "model", "device",
-                       "safety", "run"});
+  root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "part_motion",
+                       "model", "device", "safety", "run"});
   // Every required section is present before any is interpreted, so a missing one is reported
   // first rather than after an unrelated plugin error.
   for (const char* key : {"scenario", "surface", "parts", "moving", "model", "device", "run"}) {
@@ -434,6 +453,9 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   scene.surface = ResolveSurface(root.Child("surface"), registry, options, &scene.surface_id);
   Parts parts = ParseParts(root, *scene.surface, scene.surface_id);
   scene.moving = parts.moving;
+  if (std::optional<ConfigNode> motion = root.Find("part_motion")) {
+    scene.part_motion = ParsePartMotion(*motion);
+  }
   scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);
   scene.inner = std::move(parts.inner);
   scene.outer = std::move(parts.outer);
@@ -448,7 +470,7 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
     scene.device = registry.MakeDevice(scene.device_id);
   } catch (const PluginError& e) {
     plugin.Fail(
-        "a loaded device plugin id (" + Join(LoadedIds(registry, kFitfeelDevicePlugin)) + ")",
+        "a loaded device plugin id (" + JoinList(LoadedIds(registry, kFitfeelDevicePlugin)) + ")",
         plugin.Describe() + " (" + e.what() + ")");
   }
   if (scene.device == nullptr) throw std::logic_error("plugin registry returned no device object");

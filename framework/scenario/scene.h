@@ -13,6 +13,7 @@
 #include "framework/model/gps_spec.h"
 #include "framework/model/model_settings.h"
 #include "framework/model/surface_type.h"
+#include "framework/scenario/part_motion_settings.h"
 
 namespace fitfeel {
 
@@ -67,6 +68,7 @@ struct Scene {
   PartSpec inner;
   PartSpec outer;
   Role moving = Role::kInner;
+  PartMotionSettings part_motion;  // the `part_motion` section (absent: quasi-static)
   ModelSettings model;
   std::string device_id;
   std::shared_ptr<Device> device;

@@ -10,7 +10,7 @@
 namespace fitfeel {
 namespace {
 
-void Check(bool ok, const char* what) {
+void CheckStiction(bool ok, const char* what) {
   if (!ok) throw UserError(std::string("stiction experiment: ") + what);
 }
 
@@ -19,18 +19,20 @@ void Check(bool ok, const char* what) {
 StictionOutcome RunStictionExperiment(const StictionExperiment& e) {
   ValidateDeviceSpec(e.spec);
   const StickSlipFriction friction(e.friction);  // checks the coefficients
-  Check(std::isfinite(e.rate) && e.rate > 0.0, "rate must be positive");
-  Check(std::isfinite(e.force_scale) && e.force_scale > 0.0, "force scale must be positive");
-  Check(std::isfinite(e.normal_force) && e.normal_force > 0.0, "normal force must be positive");
-  Check(std::isfinite(e.hand_mass) && e.hand_mass > 0.0, "hand mass must be positive");
-  Check(std::isfinite(e.push_force) && e.push_force > 0.0 &&
-            e.push_force < e.spec.max_continuous_force,
-        "push force must be positive and below the device's continuous force rating");
-  Check(std::isfinite(e.horizon) && e.horizon > 0.0, "horizon must be positive");
-  Check(e.substeps >= 1 && e.substeps <= 10000, "substeps must be in 1..10000");
+  CheckStiction(std::isfinite(e.rate) && e.rate > 0.0, "rate must be positive");
+  CheckStiction(std::isfinite(e.force_scale) && e.force_scale > 0.0,
+                "force scale must be positive");
+  CheckStiction(std::isfinite(e.normal_force) && e.normal_force > 0.0,
+                "normal force must be positive");
+  CheckStiction(std::isfinite(e.hand_mass) && e.hand_mass > 0.0, "hand mass must be positive");
+  CheckStiction(std::isfinite(e.push_force) && e.push_force > 0.0 &&
+                    e.push_force < e.spec.max_continuous_force,
+                "push force must be positive and below the device's continuous force rating");
+  CheckStiction(std::isfinite(e.horizon) && e.horizon > 0.0, "horizon must be positive");
+  CheckStiction(e.substeps >= 1 && e.substeps <= 10000, "substeps must be in 1..10000");
   const double period = 1.0 / e.rate;
   const auto ticks = static_cast<std::uint64_t>(std::ceil(e.horizon * e.rate));
-  Check(ticks <= 100'000'000, "horizon x rate is more than 1e8 ticks");
+  CheckStiction(ticks <= 100'000'000, "horizon x rate is more than 1e8 ticks");
 
   SafetySettings settings;
   settings.force_scale = e.force_scale;

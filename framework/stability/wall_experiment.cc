@@ -16,7 +16,7 @@ namespace {
 // depend on where in a cycle the run ends.
 constexpr double kFinalWindowShare = 0.1;
 
-void Check(bool ok, const std::string& what) {
+void CheckWall(bool ok, const std::string& what) {
   if (!ok) throw UserError("stability experiment: " + what);
 }
 
@@ -51,23 +51,23 @@ double PassivityMargin(double physical_damping, double stiffness, double damping
 
 WallOutcome RunWallExperiment(const WallExperiment& e) {
   ValidateDeviceSpec(e.spec);
-  Check(std::isfinite(e.rate) && e.rate > 0.0, "rate must be positive");
-  Check(std::isfinite(e.stiffness) && e.stiffness > 0.0, "stiffness must be positive");
-  Check(std::isfinite(e.damping), "damping must be finite");
-  Check(std::isfinite(e.force_scale) && e.force_scale > 0.0, "force scale must be positive");
-  Check(std::isfinite(e.hand_mass) && e.hand_mass > 0.0, "hand mass must be positive");
+  CheckWall(std::isfinite(e.rate) && e.rate > 0.0, "rate must be positive");
+  CheckWall(std::isfinite(e.stiffness) && e.stiffness > 0.0, "stiffness must be positive");
+  CheckWall(std::isfinite(e.damping), "damping must be finite");
+  CheckWall(std::isfinite(e.force_scale) && e.force_scale > 0.0, "force scale must be positive");
+  CheckWall(std::isfinite(e.hand_mass) && e.hand_mass > 0.0, "hand mass must be positive");
   // The experiment is about a resting contact: something must hold the hand on the wall, and the
   // device must be able to hold it back for good (its continuous rating).
-  Check(std::isfinite(e.push_force) && e.push_force > 0.0 &&
-            e.push_force < e.spec.max_continuous_force,
-        "push force must be positive and below the device's continuous force rating");
-  Check(std::isfinite(e.approach_speed) && e.approach_speed >= 0.0,
-        "approach speed must be zero or positive");
-  Check(std::isfinite(e.horizon) && e.horizon > 0.0, "horizon must be positive");
-  Check(e.substeps >= 1 && e.substeps <= 10000, "substeps must be in 1..10000");
+  CheckWall(std::isfinite(e.push_force) && e.push_force > 0.0 &&
+                e.push_force < e.spec.max_continuous_force,
+            "push force must be positive and below the device's continuous force rating");
+  CheckWall(std::isfinite(e.approach_speed) && e.approach_speed >= 0.0,
+            "approach speed must be zero or positive");
+  CheckWall(std::isfinite(e.horizon) && e.horizon > 0.0, "horizon must be positive");
+  CheckWall(e.substeps >= 1 && e.substeps <= 10000, "substeps must be in 1..10000");
   const double period = 1.0 / e.rate;
   const auto ticks = static_cast<std::uint64_t>(std::ceil(e.horizon * e.rate));
-  Check(ticks <= 100'000'000, "horizon x rate is more than 1e8 ticks");
+  CheckWall(ticks <= 100'000'000, "horizon x rate is more than 1e8 ticks");
 
   SafetySettings settings;
   settings.force_scale = e.force_scale;
@@ -165,8 +165,8 @@ WallOutcome RunWallExperiment(const WallExperiment& e) {
 }
 
 double MeasureStabilityBoundary(WallExperiment e, double low, double high, double tolerance) {
-  Check(low > 0.0 && high > low && tolerance > 0.0,
-        "boundary search needs 0 < low < high and a positive tolerance");
+  CheckWall(low > 0.0 && high > low && tolerance > 0.0,
+            "boundary search needs 0 < low < high and a positive tolerance");
   e.stiffness = low;
   const bool low_stable = RunWallExperiment(e).stable;
   e.stiffness = high;

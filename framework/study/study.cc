@@ -1,7 +1,6 @@
 #include "framework/study/study.h"
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -12,6 +11,7 @@
 
 #include "framework/core/atomic_files.h"
 #include "framework/core/error.h"
+#include "framework/core/number_text.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
@@ -31,12 +31,6 @@ std::uint64_t SplitMix64(std::uint64_t x) {
 }
 
 // Shortest decimal that reads back to the same double (CSV and JSON both).
-std::string Number(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
-
 double Stat(const nlohmann::json& summary, const char* key, const char* field) {
   const auto it = summary.find(key);
   if (it == summary.end() || it->is_null()) return 0.0;
@@ -196,15 +190,16 @@ std::string PairsCsv(const StudyResult& result) {
       "pair,seed,shaft_size_um,hole_size_um,min_clearance_um,interfering,axial_mean_N,"
       "axial_max_N,radial_max_N,constrained_ticks,plastic,elastic_utilisation_max,rejections\n";
   for (const PairResult& p : result.pairs) {
-    text += std::to_string(p.pair) + ',' + std::to_string(p.seed) + ',' +
-            Number(p.shaft_size_um) + ',' + Number(p.hole_size_um) + ',' +
-            (p.min_clearance_um ? Number(*p.min_clearance_um) : std::string()) + ',' +
-            (p.interfering ? "1" : "0") + ',' + Number(p.axial_mean_N) + ',' +
-            Number(p.axial_max_N) + ',' + Number(p.radial_max_N) + ',' +
-            std::to_string(p.constrained_ticks) + ',' +
-            (p.elastic_utilisation_max ? (p.plastic ? "1" : "0") : "") + ',' +
-            (p.elastic_utilisation_max ? Number(*p.elastic_utilisation_max) : std::string()) +
-            ',' + std::to_string(p.rejections) + '\n';
+    text +=
+        std::to_string(p.pair) + ',' + std::to_string(p.seed) + ',' +
+        ShortestDecimal(p.shaft_size_um) + ',' + ShortestDecimal(p.hole_size_um) + ',' +
+        (p.min_clearance_um ? ShortestDecimal(*p.min_clearance_um) : std::string()) + ',' +
+        (p.interfering ? "1" : "0") + ',' + ShortestDecimal(p.axial_mean_N) + ',' +
+        ShortestDecimal(p.axial_max_N) + ',' + ShortestDecimal(p.radial_max_N) + ',' +
+        std::to_string(p.constrained_ticks) + ',' +
+        (p.elastic_utilisation_max ? (p.plastic ? "1" : "0") : "") + ',' +
+        (p.elastic_utilisation_max ? ShortestDecimal(*p.elastic_utilisation_max) : std::string()) +
+        ',' + std::to_string(p.rejections) + '\n';
   }
   return text;
 }

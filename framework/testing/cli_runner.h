@@ -16,10 +16,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "framework/testing/source_tree.h"
 
 #ifndef FITFEEL_TEST_BUILD_DIR
 #error "cli_runner.h is for test binaries made by fitfeel_add_test (FITFEEL_TEST_BUILD_DIR)"
@@ -82,6 +85,22 @@ inline std::string ReadText(const std::filesystem::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// The lines of a text, without their line breaks.
+inline std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// The cells of one CSV line (no quoting: fitfeel's CSV cells hold none).
+inline std::vector<std::string> SplitCells(const std::string& line, char separator = ',') {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string cell; std::getline(in, cell, separator);) out.push_back(cell);
+  return out;
+}
+
 // An empty folder <test temp dir>/<group>/<name>, emptied if a previous run left it.
 inline std::filesystem::path EmptyFolder(const std::string& group, const std::string& name) {
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / group / name;
@@ -124,6 +143,12 @@ inline CliResult RunFitfeel(const std::string& arguments, const CliOptions& opti
   std::filesystem::remove(out, ignored);
   std::filesystem::remove(err, ignored);
   return result;
+}
+
+// Runs `fitfeel <arguments>` from the repository's root (where scenarios name their files),
+// stdout and stderr together.
+inline CliResult RunFitfeelInSourceTree(const std::string& arguments) {
+  return RunFitfeel(arguments, CliOptions().In(kSourceTree).MergingStderr());
 }
 
 }  // namespace fitfeel::test_support

@@ -1,37 +1,17 @@
 #include "framework/tradeoff/tradeoff_chart.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "framework/core/number_text.h"
+#include "framework/plot/render.h"
+
 namespace fitfeel::tradeoff {
 namespace fs = std::filesystem;
 namespace {
-
-std::string Num(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-void WriteText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-}
-
-bool LooksLikeImage(const fs::path& path, plot::ImageFormat format) {
-  std::ifstream in(path, std::ios::binary);
-  std::string prefix(4096, '\0');
-  in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
-  prefix.resize(static_cast<std::size_t>(in.gcount()));
-  if (format == plot::ImageFormat::kPng) return prefix.rfind("\x89PNG\r\n\x1a\n", 0) == 0;
-  return prefix.find("<svg") != std::string::npos;
-}
 
 // Grid labels hold digits, 'x', '=', '/', '(', ')' and spaces only (grid_ladder.cc and
 // tradeoff_study.cc make them), so double quotes delimit them safely in a data block.
@@ -67,34 +47,35 @@ std::string Body(const std::vector<GridRow>& rows, const std::string& title, Tic
   s << "reset\nset encoding utf8\n";
   s << "$grids << EOD\n";
   for (const GridRow& r : rows) {
-    s << Num(Cost(r, cost)) << " " << Num(r.mean_axial_N) << " " << Num(r.sd_axial_N) << " "
-      << DataLabel(r.label) << "\n";
+    s << ShortestDecimal(Cost(r, cost)) << " " << ShortestDecimal(r.mean_axial_N) << " "
+      << ShortestDecimal(r.sd_axial_N) << " " << DataLabel(r.label) << "\n";
   }
   s << "EOD\n$errors << EOD\n";
   int errors = 0;
   for (const GridRow& r : rows) {
     if (r.reference || !(r.rms_error_N > 0.0)) continue;
     ++errors;
-    s << Num(Cost(r, cost)) << " " << Num(r.rms_error_N) << " "
-      << Num(std::max(r.noise_rms_N, 1e-300)) << " " << DataLabel(r.label) << "\n";
+    s << ShortestDecimal(Cost(r, cost)) << " " << ShortestDecimal(r.rms_error_N) << " "
+      << ShortestDecimal(std::max(r.noise_rms_N, 1e-300)) << " " << DataLabel(r.label) << "\n";
   }
   s << "EOD\n";
   s << "set multiplot layout 2,1 title " << plot::QuoteForGnuplot(title) << " font ',14'\n";
   s << "set lmargin 12\nset rmargin 6\n";
   s << "set grid xtics ytics mxtics lc rgb '#c8c8c8' lw 1 dt solid\n";
-  s << "set logscale x\nset xrange [" << Num(x_min / 1.6) << ":" << Num(x_max * 1.6) << "]\n";
+  s << "set logscale x\nset xrange [" << ShortestDecimal(x_min / 1.6) << ":"
+    << ShortestDecimal(x_max * 1.6) << "]\n";
   s << "set key below\n";
   s << "set xtics (0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)\n";
   s << "set xlabel 'tick compute time: median over the seeds of each run`s "
     << (cost == TickCost::kP50 ? "p50" : "p99") << " (us, log scale)'\n";
   s << "set ylabel 'mean axial resistance (N)'\n";
   // |fy| is never negative: a bar below zero only says how wide the spread is.
-  s << "set yrange [0:" << Num(y_max > 0.0 ? 1.08 * y_max : 1.0) << "]\n";
+  s << "set yrange [0:" << ShortestDecimal(y_max > 0.0 ? 1.08 * y_max : 1.0) << "]\n";
   s << "set title 'Mean |fy| over the constrained ticks: mean over seeds, bars +-1 seed-to-seed "
        "SD'\n";
   s << "plot $grids using 1:2:3 with yerrorbars pt 7 ps 1.2 lw 1.5 lc rgb '#3b528b' "
        "title 'grid (rows x columns per part), mean +-1 SD over seeds', "
-    << Num(ref_mean)
+    << ShortestDecimal(ref_mean)
     << " with lines dt 2 lw 1.5 lc rgb '#5ec962' title 'finest grid (reference)', "
        "$grids every 2 using 1:2:4 with labels left offset 0.8,0.9 font ',10' notitle"
     << (rows.size() > 1 ? AlternateLabels("$grids") : "") << "\n";
@@ -127,31 +108,8 @@ void RenderTradeoffChart(const std::vector<GridRow>& rows, const std::string& ti
                          const std::vector<plot::OutputFile>& outputs) {
   if (rows.empty()) throw std::invalid_argument("tradeoff chart: no grid");
   if (outputs.empty()) throw std::invalid_argument("tradeoff chart: no output file");
-  const plot::Gnuplot gnuplot = plot::Gnuplot::Find();
   const plot::TempDir work;
-  WriteText(work.path() / "chart.gp", Body(rows, title, cost));
-  std::string main = "set encoding utf8\n";
-  std::vector<fs::path> images;
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
-    const std::string name =
-        "image" + std::to_string(k) + std::string(plot::Extension(outputs[k].format));
-    images.push_back(work.path() / name);
-    const std::string terminal = outputs[k].format == plot::ImageFormat::kPng ? "pngcairo" : "svg";
-    main += "set terminal " + terminal +
-            " size 1100,900 font 'Sans,12' noenhanced background rgb 'white'\n";
-    main += "set output '" + name + "'\nload 'chart.gp'\nunset output\n";
-  }
-  WriteText(work.path() / "main.gp", main);
-  gnuplot.Run(work.path() / "main.gp", work.path());
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
-    if (!LooksLikeImage(images[k], outputs[k].format)) {
-      throw std::runtime_error("gnuplot wrote no valid " +
-                               std::string(plot::Extension(outputs[k].format)) + " image");
-    }
-  }
-  for (std::size_t k = 0; k < outputs.size(); ++k) {
-    plot::InstallAtomically(images[k], outputs[k].path);
-  }
+  plot::RenderScript(Body(rows, title, cost), 1100, 900, outputs, work);
 }
 
 }  // namespace fitfeel::tradeoff

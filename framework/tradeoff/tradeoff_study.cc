@@ -85,7 +85,8 @@ double PairedVarianceOfMean(const std::vector<double>& a, const std::vector<doub
   return ss / static_cast<double>(n - 1) / static_cast<double>(n);
 }
 
-std::string Num(double value) {
+// A CSV cell of six significant digits; empty where the value is not finite.
+std::string SixDigitCell(double value) {
   if (!std::isfinite(value)) return "";
   char buffer[64];
   const auto result =
@@ -316,11 +317,13 @@ std::string TradeoffCsv(const std::vector<GridRow>& rows) {
     text += label + "," + std::to_string(r.inner_rows) + "," + std::to_string(r.inner_columns) +
             "," + std::to_string(r.outer_rows) + "," + std::to_string(r.outer_columns) + "," +
             std::to_string(r.inner_cells) + "," + std::to_string(r.outer_cells) + "," +
-            std::to_string(r.seeds) + "," + Num(r.prepare_seconds) + "," + Num(r.tick_p50_us) +
-            "," + Num(r.tick_p99_us) + "," + Num(r.mean_axial_N) + "," + Num(r.sd_axial_N) + "," +
-            Num(r.se_axial_N) + "," + Num(r.bias_N) + "," + Num(r.bias_se_N) + "," +
-            Num(r.rms_error_N) + "," + Num(r.max_error_N) + "," + Num(r.rms_error_rel) + "," +
-            Num(r.max_error_rel) + "," + Num(r.noise_rms_N) + "," +
+            std::to_string(r.seeds) + "," + SixDigitCell(r.prepare_seconds) + "," +
+            SixDigitCell(r.tick_p50_us) + "," + SixDigitCell(r.tick_p99_us) + "," +
+            SixDigitCell(r.mean_axial_N) + "," + SixDigitCell(r.sd_axial_N) + "," +
+            SixDigitCell(r.se_axial_N) + "," + SixDigitCell(r.bias_N) + "," +
+            SixDigitCell(r.bias_se_N) + "," + SixDigitCell(r.rms_error_N) + "," +
+            SixDigitCell(r.max_error_N) + "," + SixDigitCell(r.rms_error_rel) + "," +
+            SixDigitCell(r.max_error_rel) + "," + SixDigitCell(r.noise_rms_N) + "," +
             std::to_string(r.compared_ticks) + "," + (r.reference ? "yes" : "no") + "\n";
   }
   return text;

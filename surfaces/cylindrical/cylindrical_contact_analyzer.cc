@@ -12,22 +12,15 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
+#include "framework/core/number_text.h"
+#include "framework/model/convex_polygon.h"
 #include "framework/model/grid_rows.h"
 #include "framework/model/section_contact.h"
-#include "framework/model/convex_polygon.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/elastic_options.h"
 
 namespace fitfeel::cylindrical {
 namespace {
-
-// Numbers in messages. snprintf rather than std::to_string, whose integer path instantiates a
-// GNU-unique (exported) table in the plugin, and whose "%f" hides micrometres.
-std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 // An automatic step never makes more rows than this (a step of 3 um on a 60 mm stroke), however
 // fine the grid: a haptic hand does not resolve the difference, and the tables stay in memory.
@@ -74,7 +67,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   const SurfaceGrid& gb = outer_sms.grid;
   if (gs.columns != gb.columns) {
     throw UserError("cylindrical contact needs the same number of columns on both parts (" +
-                    Num(gs.columns) + " and " + Num(gb.columns) + ")");
+                    MessageNumber(gs.columns) + " and " + MessageNumber(gb.columns) + ")");
   }
   n_ = gs.columns;
   angle_.assign(static_cast<std::size_t>(n_), 0.0);
@@ -157,8 +150,8 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   const double steps = std::ceil(max_depth_ / step_);
   // Each step stores up to n + 4 polygon vertices.
   if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxDepthTableVertices)) {
-    throw UserError("depth_step " + Num(step_) + " m gives " + Num(steps) +
-                    " table rows of up to " + Num(n_ + 4) +
+    throw UserError("depth_step " + MessageNumber(step_) + " m gives " + MessageNumber(steps) +
+                    " table rows of up to " + MessageNumber(n_ + 4) +
                     " vertices, more than the analyzer holds; use a coarser step");
   }
   const std::size_t count = static_cast<std::size_t>(steps) + 1;

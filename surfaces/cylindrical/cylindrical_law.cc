@@ -2,24 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/core/number_text.h"
 #include "framework/model/elastic_limit.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 
 namespace fitfeel::cylindrical {
 namespace {
-
-// Numbers in messages. snprintf rather than std::to_string, whose integer path instantiates a
-// GNU-unique (exported) table in the plugin, and whose "%f" hides micrometres.
-std::string Num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 const CylindricalGeometry& Cylinder(const PartSpec& part) {
   const auto* g = dynamic_cast<const CylindricalGeometry*>(part.geometry.get());
@@ -50,7 +42,8 @@ PressFitDimensions PressFitDimensionsOf(const PartSpec& inner, const PartSpec& o
   d.di = Cylinder(inner).bore_diameter();
   if (!(d.d1 > 0.0) || !(d.d2 > d.d1) || !(d.di >= 0.0 && d.di < d.d1)) {
     throw UserError("press fit needs 0 <= shaft bore < shaft diameter < hub outer diameter (got " +
-                    Num(d.di) + ", " + Num(d.d1) + ", " + Num(d.d2) + " m)");
+                    MessageNumber(d.di) + ", " + MessageNumber(d.d1) + ", " + MessageNumber(d.d2) +
+                    " m)");
   }
   return d;
 }

@@ -17,11 +17,14 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/source_tree.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
 
 namespace fitfeel {
 namespace {
+
+using test_support::ShippedScenario;
 
 namespace fs = std::filesystem;
 
@@ -43,7 +46,7 @@ class StrikeThenInsertDevice final : public Device {
   void DoStart(double) override {}
   void DoRead(double time, DeviceState* out) noexcept override {
     out->time = time;
-    out->settle_load.setZero();
+    out->load.setZero();
     Eigen::Vector3d p;
     if (time < 0.3) {  // 3 mm off the axis: the shaft's end meets the bushing's face at 0.25 s
       p = Eigen::Vector3d(3e-3, -1e-3 + 4e-3 * time, 0.0);
@@ -51,7 +54,7 @@ class StrikeThenInsertDevice final : public Device {
       p = Eigen::Vector3d(3e-3 * (0.4 - time) / 0.1, -0.5e-3, 0.0);
     } else {
       p = Eigen::Vector3d(0.0, -0.5e-3 + 10e-3 * (time - 0.4), 0.0);
-      if (p.y() >= 0.0) out->settle_load = Eigen::Vector2d(0.0, -2.0);
+      if (p.y() >= 0.0) out->load = Eigen::Vector2d(0.0, -2.0);
     }
     out->velocity = (p - out->position) / 1e-3;
     out->position = p;
@@ -68,10 +71,6 @@ struct SharedScene {
   std::unique_ptr<ConstrainedStage> constrained;
   SchedulerSettings settings;
 };
-
-fs::path Shipped(const std::string& scenario) {
-  return fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario;
-}
 
 const PluginRegistry& Registry() {
   static const PluginRegistry* registry = [] {
@@ -94,8 +93,8 @@ SharedScene PrepareShared(const Scene& scene) {
       scene.moving);
   shared.constrained =
       std::make_unique<ConstrainedStage>(*shared.prepared.analyzer, *shared.prepared.law);
-  shared.settings.rate = scene.run.rate;
-  shared.settings.duration = scene.run.duration;
+  shared.settings = SceneSchedulerSettings(scene);
+  shared.settings.clock = ClockMode::kVirtual;
   shared.settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
   return shared;
 }
@@ -137,8 +136,8 @@ class ConcurrentRunsTest : public ::testing::TestWithParam<std::string> {};
 // Every shipped scenario: each surface plugin's analyzer and law, settled and dynamic devices.
 TEST_P(ConcurrentRunsTest, TwoRunsOfOnePreparedSceneMatchTheRunsAlone) {
   // Loaded twice: the same configuration on two device instances (a device is one run's I/O).
-  const Scene scene = LoadScene(Shipped(GetParam()), Registry());
-  const Scene twin = LoadScene(Shipped(GetParam()), Registry());
+  const Scene scene = LoadScene(ShippedScenario(GetParam()), Registry());
+  const Scene twin = LoadScene(ShippedScenario(GetParam()), Registry());
   const SharedScene shared = PrepareShared(scene);
   ExpectSameTracesConcurrently(*scene.device, *twin.device, shared, GetParam());
 }
@@ -155,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ConcurrentRunsTest,
                          });
 
 TEST(ConcurrentRunsTest, FreeMotionCollisionsShareOneCollider) {
-  const Scene scene = LoadScene(Shipped("paper-case1-h7js6.yaml"), Registry());
+  const Scene scene = LoadScene(ShippedScenario("paper-case1-h7js6.yaml"), Registry());
   const SharedScene shared = PrepareShared(scene);
   ASSERT_TRUE(shared.positioning->collides());
   StrikeThenInsertDevice first, second;

@@ -18,18 +18,19 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
+using ::fitfeel::test_support::kSourceTree;
 constexpr double kBudgetBytes = 512.0 * 1024 * 1024;
 
 // The paper's case 1 at 0.015 mm/s: the shaft stays in contact through the bushing for the whole
 // run (54 mm of stroke in an hour), recording every tick.
 fs::path LongScenario(const fs::path& dir, int seconds) {
-  std::ifstream in(kSource / "scenarios" / "paper-case1-h7js6.yaml");
+  std::ifstream in(kSourceTree / "scenarios" / "paper-case1-h7js6.yaml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto replace = [&text](const std::string& from, const std::string& to) {
     const std::size_t at = text.find(from);

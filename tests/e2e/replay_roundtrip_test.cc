@@ -14,20 +14,16 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using ::fitfeel::test_support::CliOptions;
 using ::fitfeel::test_support::CliResult;
 using ::fitfeel::test_support::ReadText;
+using ::fitfeel::test_support::RunFitfeelInSourceTree;
 
-const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-
-// Runs `fitfeel <args>` (shell text) from the repository's root, stdout and stderr together.
-CliResult RunFitfeel(const std::string& args) {
-  return ::fitfeel::test_support::RunFitfeel(args, CliOptions().In(kSource).MergingStderr());
-}
+using ::fitfeel::test_support::kSourceTree;
 
 void WriteText(const fs::path& file, const std::string& text) {
   std::ofstream out(file);
@@ -35,7 +31,7 @@ void WriteText(const fs::path& file, const std::string& text) {
 }
 
 // Every row of a trace with the tick_us column (the 7th) removed.
-std::vector<std::string> Physics(const fs::path& file) {
+std::vector<std::string> TracePhysics(const fs::path& file) {
   std::ifstream in(file);
   std::vector<std::string> rows;
   for (std::string line; std::getline(in, line);) {
@@ -49,7 +45,7 @@ std::vector<std::string> Physics(const fs::path& file) {
 
 // The paper's case-1 scene (parts, model) with the given device, safety and run sections.
 std::string CaseOneWith(const std::string& tail) {
-  const std::string paper = ReadText(kSource / "scenarios" / "paper-case1-h7js6.yaml");
+  const std::string paper = ReadText(kSourceTree / "scenarios" / "paper-case1-h7js6.yaml");
   const std::size_t device = paper.find("\ndevice:");
   EXPECT_NE(device, std::string::npos);
   return paper.substr(0, device + 1) + tail;
@@ -91,8 +87,8 @@ nlohmann::json RoundTrip(const fs::path& dir, const std::string& safety,
   const fs::path recorded = dir / "recorded";
   WriteText(dir / "record.yaml", CaseOneWith(std::string(kHand) + safety + kRun +
                                              "  outputs: [trace, summary, recording]\n"));
-  const CliResult a =
-      RunFitfeel("run '" + (dir / "record.yaml").string() + "' --out '" + recorded.string() + "'");
+  const CliResult a = RunFitfeelInSourceTree("run '" + (dir / "record.yaml").string() +
+                                             "' --out '" + recorded.string() + "'");
   EXPECT_EQ(a.exit_code, 0) << a.out;
   EXPECT_TRUE(fs::exists(recorded / "recording.csv")) << a.out;
   EXPECT_NE(a.out.find((recorded / "recording.csv").string()), std::string::npos) << a.out;
@@ -102,12 +98,12 @@ nlohmann::json RoundTrip(const fs::path& dir, const std::string& safety,
   WriteText(dir / "replay.yaml",
             CaseOneWith(replay_device + safety + kRun + "  outputs: [trace, summary]\n"));
   const fs::path replayed = dir / "replayed";
-  const CliResult b =
-      RunFitfeel("run '" + (dir / "replay.yaml").string() + "' --out '" + replayed.string() + "'");
+  const CliResult b = RunFitfeelInSourceTree("run '" + (dir / "replay.yaml").string() +
+                                             "' --out '" + replayed.string() + "'");
   EXPECT_EQ(b.exit_code, 0) << b.out;
 
-  const auto original = Physics(recorded / "trace.csv");
-  const auto replay = Physics(replayed / "trace.csv");
+  const auto original = TracePhysics(recorded / "trace.csv");
+  const auto replay = TracePhysics(replayed / "trace.csv");
   EXPECT_EQ(original.size(), 1501u);
   EXPECT_EQ(replay.size(), original.size());
   for (std::size_t k = 0; k < std::min(original.size(), replay.size()); ++k) {
@@ -148,8 +144,8 @@ TEST_F(ReplayRoundTrip, ReplayingARecordingGivesTheSameTraceBitForBit) {
   text.resize(text.rfind('\n') + 1);
   WriteText(dir_ / "hand.rec", text);
   const fs::path refused = dir_ / "refused";
-  const CliResult c =
-      RunFitfeel("run '" + (dir_ / "replay.yaml").string() + "' --out '" + refused.string() + "'");
+  const CliResult c = RunFitfeelInSourceTree("run '" + (dir_ / "replay.yaml").string() +
+                                             "' --out '" + refused.string() + "'");
   EXPECT_EQ(c.exit_code, 2) << c.out;
   EXPECT_NE(c.out.find("hand.rec:"), std::string::npos) << c.out;
   EXPECT_FALSE(fs::exists(refused));

@@ -13,19 +13,15 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using ::fitfeel::test_support::CliOptions;
 using ::fitfeel::test_support::CliResult;
+using ::fitfeel::test_support::RunFitfeelInSourceTree;
 
-const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-
-// Runs `fitfeel <args>` (shell text) from the repository's root, stdout and stderr together.
-CliResult RunFitfeel(const std::string& args) {
-  return ::fitfeel::test_support::RunFitfeel(args, CliOptions().In(kSource).MergingStderr());
-}
+using ::fitfeel::test_support::kSourceTree;
 
 fs::path FreshDir(const std::string& name) {
   const fs::path dir =
@@ -47,7 +43,7 @@ std::vector<std::vector<std::string>> ReadCsv(const fs::path& file) {
 }
 
 // Every column but tick_us (a measurement of this machine).
-std::vector<std::vector<std::string>> Physics(std::vector<std::vector<std::string>> rows) {
+std::vector<std::vector<std::string>> RowPhysics(std::vector<std::vector<std::string>> rows) {
   for (auto& row : rows) row.erase(row.begin() + 6);
   return rows;
 }
@@ -59,7 +55,7 @@ nlohmann::json ReadJson(const fs::path& file) {
 
 TEST(RunCommandTest, DefaultScenarioWritesTheContractAndCarriesTheShaftsWeight) {
   const fs::path out = FreshDir("default");
-  const CliResult r = RunFitfeel("run --virtual --out '" + out.string() + "'");
+  const CliResult r = RunFitfeelInSourceTree("run --virtual --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("axial resistance"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find((out / "trace.csv").string()), std::string::npos) << r.out;
@@ -95,11 +91,14 @@ TEST(RunCommandTest, DefaultScenarioWritesTheContractAndCarriesTheShaftsWeight) 
 
 TEST(RunCommandTest, SameSeedSameTraceAnotherSeedAnother) {
   const fs::path a = FreshDir("seed-a"), b = FreshDir("seed-b"), c = FreshDir("seed-c");
-  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + a.string() + "'").exit_code, 0);
-  ASSERT_EQ(RunFitfeel("run --virtual --seed 11 --out '" + b.string() + "'").exit_code, 0);
-  ASSERT_EQ(RunFitfeel("run --virtual --seed 12 --out '" + c.string() + "'").exit_code, 0);
-  EXPECT_EQ(Physics(ReadCsv(a / "trace.csv")), Physics(ReadCsv(b / "trace.csv")));
-  EXPECT_NE(Physics(ReadCsv(a / "trace.csv")), Physics(ReadCsv(c / "trace.csv")));
+  ASSERT_EQ(RunFitfeelInSourceTree("run --virtual --seed 11 --out '" + a.string() + "'").exit_code,
+            0);
+  ASSERT_EQ(RunFitfeelInSourceTree("run --virtual --seed 11 --out '" + b.string() + "'").exit_code,
+            0);
+  ASSERT_EQ(RunFitfeelInSourceTree("run --virtual --seed 12 --out '" + c.string() + "'").exit_code,
+            0);
+  EXPECT_EQ(RowPhysics(ReadCsv(a / "trace.csv")), RowPhysics(ReadCsv(b / "trace.csv")));
+  EXPECT_NE(RowPhysics(ReadCsv(a / "trace.csv")), RowPhysics(ReadCsv(c / "trace.csv")));
   EXPECT_EQ(ReadJson(a / "summary.json")["seed"], 11);
   for (const auto& d : {a, b, c}) fs::remove_all(d);
 }
@@ -109,7 +108,7 @@ TEST(RunCommandTest, ABadScenarioExitsTwoAndCreatesNothing) {
   fs::create_directories(dir);
   const fs::path scene = dir / "bad.yaml";
   {
-    std::ifstream in(kSource / "scenarios" / "paper-case1-h7js6.yaml");
+    std::ifstream in(kSourceTree / "scenarios" / "paper-case1-h7js6.yaml");
     std::stringstream text;
     text << in.rdbuf();
     std::string yaml = text.str();
@@ -118,13 +117,14 @@ TEST(RunCommandTest, ABadScenarioExitsTwoAndCreatesNothing) {
     std::ofstream(scene) << yaml;
   }
   const fs::path out = dir / "out";
-  const CliResult r = RunFitfeel("run '" + scene.string() + "' --out '" + out.string() + "'");
+  const CliResult r =
+      RunFitfeelInSourceTree("run '" + scene.string() + "' --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find("bad.yaml:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("speeed"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(out));
 
-  const CliResult missing = RunFitfeel("run '" + (dir / "nowhere.yaml").string() + "'");
+  const CliResult missing = RunFitfeelInSourceTree("run '" + (dir / "nowhere.yaml").string() + "'");
   EXPECT_EQ(missing.exit_code, 2) << missing.out;
   fs::remove_all(dir);
 }

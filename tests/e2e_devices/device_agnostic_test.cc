@@ -33,6 +33,7 @@
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/source_tree.h"
 #include "tests/fakehd/fake_hd.h"
 
 namespace fitfeel {
@@ -40,9 +41,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-const fs::path kBuild = FITFEEL_TEST_BUILD_DIR;
-const fs::path kPaperScene = kSource / "scenarios/paper-case1-h7js6.yaml";
+using ::fitfeel::test_support::kBuildTree;
+using ::fitfeel::test_support::kSourceTree;
+const fs::path kPaperScene = kSourceTree / "scenarios/paper-case1-h7js6.yaml";
 
 // Forwards every call to the scene's device and keeps what crossed the boundary. Buffers are
 // reserved in DoStart (before the loop), so the tick allocates nothing here either.
@@ -85,7 +86,7 @@ class ProbeDevice final : public Device {
       s.angular_velocity = out->angular_velocity;
       s.buttons = out->buttons;
       s.delivered = out->delivered;
-      s.settle_load = out->settle_load;
+      s.load = out->load;
       samples_.push_back(s);
     } else {
       ++overflow_;
@@ -98,9 +99,6 @@ class ProbeDevice final : public Device {
   }
   void DoSetEnvironmentStiffness(double stiffness) noexcept override {
     inner_->SetEnvironmentStiffness(stiffness);
-  }
-  void DoSetEnvironmentGap(double gap, const Eigen::Vector2d& direction) noexcept override {
-    inner_->SetEnvironmentGap(gap, direction);
   }
 
  private:
@@ -197,7 +195,7 @@ struct DeviceCase {
 
 void PrintTo(const DeviceCase& c, std::ostream* out) { *out << c.name; }
 
-const fs::path kFakeHd = kBuild / "tests/fakehd/libHD.so";
+const fs::path kFakeHd = kBuildTree / "tests/fakehd/libHD.so";
 
 // The fake HD library's counters, from the copy the Phantom plugin loaded.
 FakeHdStats FakeHd() {
@@ -217,7 +215,7 @@ FakeHdStats FakeHd() {
 // What a run computed, without what depends on the device's identity or the machine: the
 // replay states other limits and damping (finite ones, so the safety report's limits and the
 // energy credited to the device's damping differ) and the same forces.
-nlohmann::json Physics(nlohmann::json summary) {
+nlohmann::json SummaryPhysics(nlohmann::json summary) {
   for (const char* key : {"device", "scenario_file", "prepare_s", "tick_us", "wall_s"}) {
     summary.erase(key);
   }
@@ -230,13 +228,17 @@ nlohmann::json Physics(nlohmann::json summary) {
   return summary;
 }
 
-// The paper's robot: 10 mm/s, the shaft's 2 N weight. `radial` is the device's radial model:
-// quasi_static (its default: the stage settles the part where the contact carries the weight) or
-// dynamic (the device integrates the part's radial motion).
+// How the part moves under the device's load (the scene's part_motion): quasi_static (the
+// default: the stage settles the part where the contact carries the weight) or dynamic (the
+// framework integrates the part's radial motion).
+std::string PartMotion(const std::string& radial) {
+  return "part_motion:\n  radial: " + radial + "\n";
+}
+
+// The paper's robot: 10 mm/s, the shaft's 2 N weight, with the part's radial motion.
 std::string SimulatedDevice(const std::string& radial = "quasi_static") {
-  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n  radial_load: 2 N\n"
-         "  radial: " +
-         radial + "\n";
+  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n  radial_load: 2 N\n" +
+         PartMotion(radial);
 }
 
 // A simulated run whose device stream the replay plays back, and its recording.
@@ -260,7 +262,8 @@ const Recorded& SimulatedRecording(const std::string& radial) {
 
 std::string ReplayDevice(const std::string& radial) {
   return "device:\n  plugin: fitfeel.device.replay\n  file: '" +
-         SimulatedRecording(radial).recording.string() + "'\n  model: PHANTOM Desktop\n";
+         SimulatedRecording(radial).recording.string() + "'\n  model: PHANTOM Desktop\n" +
+         PartMotion(radial);
 }
 
 // Runs each case once; the tests below read the same run.
@@ -338,7 +341,8 @@ TEST_P(DeviceAgnosticTest, NoWrenchAboveTheDeviceLimits) {
 
 // The replay of a simulated run's device stream gives the simulated run again, bit for bit: the
 // same states read, the same wrenches written, the same summary. For both radial models of the
-// simulated robot: what the device reports must all be in the recording.
+// simulated robot's part: what the device reports must all be in the recording, and the part's
+// motion is the scene's, replayed as recorded.
 class ReplayTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ReplayTest, ReproducesTheRecordedRunBitForBit) {
@@ -357,7 +361,8 @@ TEST_P(ReplayTest, ReproducesTheRecordedRunBitForBit) {
           SimulatedRecording(radial).recording.string() +
           "'\n  model: PHANTOM Desktop\n  spec: {max_force: 1e9 N, max_continuous_force: 1e9 N, "
           "max_stiffness: unlimited}\n"
-          "safety:\n  coupling: direct\n");
+          "safety:\n  coupling: direct\n" +
+          PartMotion(radial));
   const DeviceRunResult replay = RunWithProbe(scene, 4.0);
   const auto& a = recorded.run.probe->samples();
   const auto& b = replay.probe->samples();
@@ -376,8 +381,9 @@ TEST_P(ReplayTest, ReproducesTheRecordedRunBitForBit) {
   }
   EXPECT_EQ(differing, 0u) << "of " << a.size() << " ticks (radial: " << radial
                            << "). Same states, other forces: does the device report something "
-                              "the recording does not carry (DeviceState::settle_load)?";
-  EXPECT_EQ(Physics(recorded.run.run.summary).dump(), Physics(replay.run.summary).dump());
+                              "the recording does not carry (DeviceState::load)?";
+  EXPECT_EQ(SummaryPhysics(recorded.run.run.summary).dump(),
+            SummaryPhysics(replay.run.summary).dump());
   EXPECT_EQ(recorded.run.run.stats.ticks, replay.run.stats.ticks);
 }
 
@@ -430,7 +436,7 @@ INSTANTIATE_TEST_SUITE_P(
 // survived and reported in summary.json.
 TEST(PhantomE2e, ReachesTheConstrainedStageThroughInjectedFaults) {
   const fs::path dir = WorkDir();
-  ::setenv("FITFEEL_HD_LIBRARY", (kBuild / "tests/fakehd/libHD.so").c_str(), 1);
+  ::setenv("FITFEEL_HD_LIBRARY", (kBuildTree / "tests/fakehd/libHD.so").c_str(), 1);
   // The stylus starts 20 mm before the entrance (the default frame) and pushes in at 20 mm/s, 0.1
   // mm off the axis: at the entrance after 1000 frames, 10 mm in after 1500, where it stays. The
   // faults come early enough that a servo thread slowed by a busy machine still reaches them.

@@ -35,7 +35,6 @@ TEST(SimulatedConfigTest, ReadsTheRobotWithUnits) {
   EXPECT_DOUBLE_EQ(s.speed, 0.01);
   EXPECT_DOUBLE_EQ(s.radial_load, 2.0);
   EXPECT_DOUBLE_EQ(s.start_offset, 5e-3);
-  EXPECT_DOUBLE_EQ(s.radial_damping, 0.0);
 }
 
 TEST(SimulatedConfigTest, ReadsAScriptedHand) {
@@ -88,7 +87,6 @@ TEST(SimulatedConfigTest, ReadsARotaryDriveInDegrees) {
   EXPECT_NEAR(s.angular_speed, 15.0 * M_PI / 180.0, 1e-15);
   EXPECT_NEAR(s.swing, 15.0 * M_PI / 180.0, 1e-15);
   EXPECT_DOUBLE_EQ(s.radial_load, 1000.0);
-  EXPECT_EQ(s.radial, Settings::Radial::kQuasiStatic);
   device.Configure(Node("mode: constant_rotation\nangular_speed: 2 rad/s\n"));
   EXPECT_DOUBLE_EQ(device.settings().angular_speed, 2.0);
   EXPECT_EQ(device.settings().swing, 0.0);  // continuous rotation
@@ -120,6 +118,13 @@ TEST(SimulatedConfigTest, RefusesBadKeysWithTheirPath) {
                     "  - {time: 1 s, position: [0 mm, 1 mm, 0 mm]}")
                 .find("time"),
             std::string::npos);
+  // The part's radial motion left the device: the old keys say where it went.
+  const std::string moved = ErrorOf("speed: 10 mm/s\nradial: dynamic");
+  EXPECT_NE(moved.find("device.radial"), std::string::npos) << moved;
+  EXPECT_NE(moved.find("part_motion"), std::string::npos) << moved;
+  const std::string damping = ErrorOf("speed: 10 mm/s\nradial_damping: 5 N*s/m");
+  EXPECT_NE(damping.find("device.radial_damping"), std::string::npos) << damping;
+  EXPECT_NE(damping.find("part_motion"), std::string::npos) << damping;
   EXPECT_NE(ErrorOf("speed: 10 mm/s").find("no error"), std::string::npos);
 }
 

@@ -6,13 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
+#include "framework/testing/units.h"
 
 namespace fitfeel {
 namespace {
 
 constexpr double kMm = 1e-3;
-constexpr double kUm = 1e-6;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test_support::kInf;
+using test_support::kUm;
 
 // A 20 mm shaft with a C0.5 end in a bore with a C1 entrance, `play` of radial clearance (< 0:
 // interference), both chamfers at 45 degrees.

@@ -6,14 +6,15 @@
 namespace fitfeel {
 namespace {
 
-ConfigNode Node(const std::string& text) {
+ConfigNode SpecNode(const std::string& text) {
   return ConfigNode::Parse(text, "scene.yaml", "device.spec");
 }
 
 TEST(DeviceSpecConfig, OverridesAnyField) {
   const DeviceSpec spec = ParseDeviceSpec(
-      Node("{model: touch, max_force: 2.5 N, max_continuous_force: 0.5 N, max_stiffness: 0.3 N/mm,"
-           " damping: 3 N*s/m, workspace: [100 mm, 80 mm, 60 mm], native_rate: 2 kHz}"),
+      SpecNode(
+          "{model: touch, max_force: 2.5 N, max_continuous_force: 0.5 N, max_stiffness: 0.3 N/mm,"
+          " damping: 3 N*s/m, workspace: [100 mm, 80 mm, 60 mm], native_rate: 2 kHz}"),
       LookupDeviceSpec("PHANTOM Desktop"));
   EXPECT_EQ(spec.model, "Touch");
   EXPECT_DOUBLE_EQ(spec.max_force, 2.5);
@@ -25,19 +26,20 @@ TEST(DeviceSpecConfig, OverridesAnyField) {
 }
 
 TEST(DeviceSpecConfig, KeepsTheBaseForFieldsNotGiven) {
-  const DeviceSpec spec = ParseDeviceSpec(Node("{max_force: 5 N}"), LookupDeviceSpec("Desktop"));
+  const DeviceSpec spec =
+      ParseDeviceSpec(SpecNode("{max_force: 5 N}"), LookupDeviceSpec("Desktop"));
   EXPECT_DOUBLE_EQ(spec.max_force, 5.0);
   EXPECT_DOUBLE_EQ(spec.max_stiffness, 1000.0);
 }
 
 TEST(DeviceSpecConfig, RefusesBadValuesWithTheKey) {
   const DeviceSpec base = LookupDeviceSpec("Desktop");
-  EXPECT_THROW(ParseDeviceSpec(Node("{max_force: 5 mm}"), base), ScenarioError);
-  EXPECT_THROW(ParseDeviceSpec(Node("{max_force: -1 N}"), base), ScenarioError);
-  EXPECT_THROW(ParseDeviceSpec(Node("{colour: red}"), base), ScenarioError);
-  EXPECT_THROW(ParseDeviceSpec(Node("{model: falcon}"), base), ScenarioError);
-  EXPECT_THROW(ParseDeviceSpec(Node("{workspace: [1 mm, 2 mm]}"), base), ScenarioError);
-  EXPECT_THROW(ParseDeviceSpec(Node("{max_continuous_force: 9 N}"), base), ScenarioError);
+  EXPECT_THROW(ParseDeviceSpec(SpecNode("{max_force: 5 mm}"), base), ScenarioError);
+  EXPECT_THROW(ParseDeviceSpec(SpecNode("{max_force: -1 N}"), base), ScenarioError);
+  EXPECT_THROW(ParseDeviceSpec(SpecNode("{colour: red}"), base), ScenarioError);
+  EXPECT_THROW(ParseDeviceSpec(SpecNode("{model: falcon}"), base), ScenarioError);
+  EXPECT_THROW(ParseDeviceSpec(SpecNode("{workspace: [1 mm, 2 mm]}"), base), ScenarioError);
+  EXPECT_THROW(ParseDeviceSpec(SpecNode("{max_continuous_force: 9 N}"), base), ScenarioError);
 }
 
 }  // namespace

@@ -136,7 +136,7 @@ std::string Join(const std::vector<std::string>& lines) {
   return out;
 }
 
-void ExpectRefused(const fs::path& p, int line, const std::string& reason_part) {
+void ExpectRecordingRefused(const fs::path& p, int line, const std::string& reason_part) {
   try {
     ReadRecording(p);
     ADD_FAILURE() << "accepted " << p << ", expected refusal at line " << line;
@@ -158,37 +158,38 @@ TEST_F(RecordingTest, RefusesMalformedFilesWithLineAndReason) {
     l[index] = replacement;
     return Join(l);
   };
-  ExpectRefused(Write("a.rec", with(0, "fitfeel recording")), 1, "not a fitfeel recording");
-  ExpectRefused(Write("b.rec", with(0, "# fitfeel-recording 7")), 1, "unsupported");
+  ExpectRecordingRefused(Write("a.rec", with(0, "fitfeel recording")), 1,
+                         "not a fitfeel recording");
+  ExpectRecordingRefused(Write("b.rec", with(0, "# fitfeel-recording 7")), 1, "unsupported");
   std::string header = good[2];
-  ExpectRefused(Write("c.rec", with(2, "t " + header.substr(4))), 3, "has no unit");
+  ExpectRecordingRefused(Write("c.rec", with(2, "t " + header.substr(4))), 3, "has no unit");
   std::string wrong_unit = header;
   wrong_unit.replace(wrong_unit.find("x_m"), 3, "x_mm");
-  ExpectRefused(Write("d.rec", with(2, wrong_unit)), 3, "is in 'mm', expected 'm'");
+  ExpectRecordingRefused(Write("d.rec", with(2, wrong_unit)), 3, "is in 'mm', expected 'm'");
   std::string no_unit_cmd = header;
   no_unit_cmd.replace(no_unit_cmd.find("fx_cmd_N"), 8, "fx_cmd");
-  ExpectRefused(Write("e.rec", with(2, no_unit_cmd)), 3, "has no unit");
-  ExpectRefused(Write("f.rec", with(3, good[3] + " 1.0")), 4, "30 fields, expected 29");
+  ExpectRecordingRefused(Write("e.rec", with(2, no_unit_cmd)), 3, "has no unit");
+  ExpectRecordingRefused(Write("f.rec", with(3, good[3] + " 1.0")), 4, "30 fields, expected 29");
   std::string bad_number = good[4];
   bad_number.replace(bad_number.find(' ') + 1, 0, "x");
-  ExpectRefused(Write("g.rec", with(4, bad_number)), 5, "not a finite number");
+  ExpectRecordingRefused(Write("g.rec", with(4, bad_number)), 5, "not a finite number");
   std::string nan_field = good[4];
   nan_field.replace(nan_field.find(' ') + 1, 0, "nan ");
   nan_field = nan_field.substr(0, nan_field.rfind(' '));
-  ExpectRefused(Write("h.rec", with(4, nan_field)), 5, "not a finite number");
+  ExpectRecordingRefused(Write("h.rec", with(4, nan_field)), 5, "not a finite number");
   // Time going backwards: the second sample takes the first's time.
   std::string same_time = good[4];
   same_time = good[3].substr(0, good[3].find(' ')) + same_time.substr(same_time.find(' '));
-  ExpectRefused(Write("i.rec", with(4, same_time)), 5, "does not come after");
-  ExpectRefused(Write("j.rec", with(5, "# end: 3 samples")), 6, "announces 3 samples");
+  ExpectRecordingRefused(Write("i.rec", with(4, same_time)), 5, "does not come after");
+  ExpectRecordingRefused(Write("j.rec", with(5, "# end: 3 samples")), 6, "announces 3 samples");
   // Truncations: no end line; cut mid-line; nothing after the format line.
   std::vector<std::string> cut(good.begin(), good.end() - 1);
-  ExpectRefused(Write("k.rec", Join(cut)), 5, "truncated");
+  ExpectRecordingRefused(Write("k.rec", Join(cut)), 5, "truncated");
   const std::string text = Join(good);
-  ExpectRefused(Write("l.rec", text.substr(0, text.size() - 40)), 5, "truncated");
-  ExpectRefused(Write("m.rec", good[0] + "\n"), 1, "truncated: no column header");
-  ExpectRefused(Write("n.rec", ""), 1, "empty file");
-  ExpectRefused(Write("o.rec", Join(good) + "0 0\n"), 7, "after the end line");
+  ExpectRecordingRefused(Write("l.rec", text.substr(0, text.size() - 40)), 5, "truncated");
+  ExpectRecordingRefused(Write("m.rec", good[0] + "\n"), 1, "truncated: no column header");
+  ExpectRecordingRefused(Write("n.rec", ""), 1, "empty file");
+  ExpectRecordingRefused(Write("o.rec", Join(good) + "0 0\n"), 7, "after the end line");
   // The first sample with field `index` replaced.
   auto with_field = [&](int index, const std::string& value) {
     std::vector<std::string> f;
@@ -199,10 +200,12 @@ TEST_F(RecordingTest, RefusesMalformedFilesWithLineAndReason) {
     for (const std::string& w : f) line += (line.empty() ? "" : " ") + w;
     return line;
   };
-  ExpectRefused(Write("p.rec", with(3, with_field(4, "2"))), 4, "unit length");
+  ExpectRecordingRefused(Write("p.rec", with(3, with_field(4, "2"))), 4, "unit length");
   // Finite but absurd: a position of 1e308 m once reached trace.csv as inf.
-  ExpectRefused(Write("q.rec", with(3, with_field(1, "1e308"))), 4, "outside physical sense");
-  ExpectRefused(Write("s.rec", with(3, with_field(9, "-1e3"))), 4, "outside physical sense");
+  ExpectRecordingRefused(Write("q.rec", with(3, with_field(1, "1e308"))), 4,
+                         "outside physical sense");
+  ExpectRecordingRefused(Write("s.rec", with(3, with_field(9, "-1e3"))), 4,
+                         "outside physical sense");
   // Lone CR line endings read as lines.
   std::string cr = Join(good);
   for (char& c : cr) {

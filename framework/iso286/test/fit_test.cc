@@ -6,10 +6,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "framework/testing/units.h"
+
 namespace fitfeel::iso286 {
 namespace {
 
-constexpr double kUm = 1e-6;
+using test_support::kUm;
 
 void ExpectFit(double nominal_mm, const char* code, double min_um, double max_um,
                FitClass fit_class) {

@@ -13,13 +13,14 @@
 #include "framework/iso286/iso286.h"
 #include "framework/iso286/size_steps_table.h"
 #include "framework/iso286/standard_tolerance_table.h"
+#include "framework/testing/units.h"
 
 namespace fitfeel::iso286 {
 namespace {
 
 namespace t = tables;
 
-constexpr double kUm = 1e-6;
+using test_support::kUm;
 
 const std::vector<std::string> kLetters = {"a", "b",  "c", "cd", "d", "e",  "ef", "f", "fg", "g",
                                            "h", "js", "j", "k",  "m", "n",  "p",  "r", "s",  "t",

@@ -3,6 +3,7 @@
 // 286-1.
 
 #include "framework/iso286/iso286.h"
+#include "framework/testing/units.h"
 
 #include <stdexcept>
 #include <string>
@@ -17,7 +18,7 @@ using ::testing::HasSubstr;
 
 // Deviations are tabulated in micrometres; compare in micrometres with a rounding allowance far
 // below the table's 0.05 um resolution.
-constexpr double kUm = 1e-6;
+using test_support::kUm;
 constexpr double kTol = 1e-9;
 
 struct Expected {
@@ -172,7 +173,7 @@ TEST(Iso286Sizes, FinestGradesAndSmallSizes) {
   EXPECT_EQ(Lookup(0.02, "h01").code, "h01");
 }
 
-void ExpectRefused(double nominal_mm, const std::string& code, const std::string& fragment) {
+void ExpectCodeRefused(double nominal_mm, const std::string& code, const std::string& fragment) {
   SCOPED_TRACE(std::to_string(nominal_mm) + " mm " + code);
   try {
     Lookup(nominal_mm * 1e-3, code);
@@ -183,44 +184,44 @@ void ExpectRefused(double nominal_mm, const std::string& code, const std::string
 }
 
 TEST(Iso286Errors, UnknownLetterOrGrade) {
-  ExpectRefused(20, "I7", "unknown ISO 286 fundamental deviation 'I'");
-  ExpectRefused(20, "Js6", "unknown ISO 286 fundamental deviation 'Js'");
-  ExpectRefused(20, "w6", "unknown ISO 286 fundamental deviation 'w'");
-  ExpectRefused(20, "7", "has no fundamental deviation letter");
-  ExpectRefused(20, "H", "has no grade");
-  ExpectRefused(20, "H19", "unknown ISO 286 standard tolerance grade '19'");
-  ExpectRefused(20, "H00", "unknown ISO 286 standard tolerance grade '00'");
-  ExpectRefused(20, "H07", "unknown ISO 286 standard tolerance grade '07'");
-  ExpectRefused(20, "H7x", "unknown ISO 286 standard tolerance grade '7x'");
-  ExpectRefused(20, "", "has no fundamental deviation letter");
+  ExpectCodeRefused(20, "I7", "unknown ISO 286 fundamental deviation 'I'");
+  ExpectCodeRefused(20, "Js6", "unknown ISO 286 fundamental deviation 'Js'");
+  ExpectCodeRefused(20, "w6", "unknown ISO 286 fundamental deviation 'w'");
+  ExpectCodeRefused(20, "7", "has no fundamental deviation letter");
+  ExpectCodeRefused(20, "H", "has no grade");
+  ExpectCodeRefused(20, "H19", "unknown ISO 286 standard tolerance grade '19'");
+  ExpectCodeRefused(20, "H00", "unknown ISO 286 standard tolerance grade '00'");
+  ExpectCodeRefused(20, "H07", "unknown ISO 286 standard tolerance grade '07'");
+  ExpectCodeRefused(20, "H7x", "unknown ISO 286 standard tolerance grade '7x'");
+  ExpectCodeRefused(20, "", "has no fundamental deviation letter");
 }
 
 TEST(Iso286Errors, SizeOutsideTables) {
-  ExpectRefused(0, "H7", "outside the ISO 286 tables");
-  ExpectRefused(-5, "H7", "outside the ISO 286 tables");
-  ExpectRefused(500.01, "H7", "outside the ISO 286 tables");
-  ExpectRefused(1e6, "H7", "outside the ISO 286 tables");
+  ExpectCodeRefused(0, "H7", "outside the ISO 286 tables");
+  ExpectCodeRefused(-5, "H7", "outside the ISO 286 tables");
+  ExpectCodeRefused(500.01, "H7", "outside the ISO 286 tables");
+  ExpectCodeRefused(1e6, "H7", "outside the ISO 286 tables");
   EXPECT_THROW(Lookup(std::nan(""), "H7"), std::invalid_argument);
 }
 
 TEST(Iso286Errors, UndefinedCombinations) {
-  ExpectRefused(20, "t6", "does not define t6 at 20 mm");
-  ExpectRefused(10, "v6", "does not define v6");
-  ExpectRefused(15, "y6", "does not define y6");
-  ExpectRefused(20, "T7", "does not define T7");
-  ExpectRefused(1, "a11", "not used for sizes up to 1 mm");
-  ExpectRefused(0.8, "B11", "not used for sizes up to 1 mm");
-  ExpectRefused(20, "cd8", "up to 10 mm only");
-  ExpectRefused(12, "EF7", "up to 10 mm only");
-  ExpectRefused(20, "j9", "j is defined for IT5 to IT8 only");
-  ExpectRefused(20, "j8", "j8 is defined up to 3 mm only");
-  ExpectRefused(20, "J5", "J is defined for IT6 to IT8 only");
-  ExpectRefused(20, "J9", "J is defined for IT6 to IT8 only");
-  ExpectRefused(20, "K9", "K above IT8 is defined up to 3 mm only");
-  ExpectRefused(1, "N9", "N above IT8 is not used for sizes up to 1 mm");
-  ExpectRefused(1, "h14", "IT14 to IT18 are not used for sizes up to 1 mm");
-  ExpectRefused(20, "K2", "Delta");
-  ExpectRefused(20, "P1", "Delta");
+  ExpectCodeRefused(20, "t6", "does not define t6 at 20 mm");
+  ExpectCodeRefused(10, "v6", "does not define v6");
+  ExpectCodeRefused(15, "y6", "does not define y6");
+  ExpectCodeRefused(20, "T7", "does not define T7");
+  ExpectCodeRefused(1, "a11", "not used for sizes up to 1 mm");
+  ExpectCodeRefused(0.8, "B11", "not used for sizes up to 1 mm");
+  ExpectCodeRefused(20, "cd8", "up to 10 mm only");
+  ExpectCodeRefused(12, "EF7", "up to 10 mm only");
+  ExpectCodeRefused(20, "j9", "j is defined for IT5 to IT8 only");
+  ExpectCodeRefused(20, "j8", "j8 is defined up to 3 mm only");
+  ExpectCodeRefused(20, "J5", "J is defined for IT6 to IT8 only");
+  ExpectCodeRefused(20, "J9", "J is defined for IT6 to IT8 only");
+  ExpectCodeRefused(20, "K9", "K above IT8 is defined up to 3 mm only");
+  ExpectCodeRefused(1, "N9", "N above IT8 is not used for sizes up to 1 mm");
+  ExpectCodeRefused(1, "h14", "IT14 to IT18 are not used for sizes up to 1 mm");
+  ExpectCodeRefused(20, "K2", "Delta");
+  ExpectCodeRefused(20, "P1", "Delta");
 }
 
 TEST(Iso286Errors, AllowedNearRefusals) {

@@ -7,10 +7,12 @@
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
+#include "framework/testing/units.h"
+
 namespace fitfeel::metrology {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 
 // r = R + a cos(k theta) about `centre`: minimum-zone roundness 2a (docs/oracles.md), whatever the
 // centre, because the 2k alternating extremes satisfy the Chebyshev alternation criterion.

@@ -6,10 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/units.h"
+
 namespace fitfeel::metrology {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 
 // Grid with rows at both ends of [0, L] so the extremes of the analytic shapes are sampled.
 CylinderSamples Grid(int m, int n, double L, const std::function<double(double, double)>& v) {

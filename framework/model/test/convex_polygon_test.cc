@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "framework/model/convex_polygon.h"
+#include "framework/testing/units.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
 #include <gtest/gtest.h>
@@ -13,7 +14,7 @@ namespace fitfeel {
 namespace {
 
 using Poly = std::vector<Eigen::Vector2d>;
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 
 // Reference: clip a large square by each half-plane in turn (Sutherland-Hodgman), O(n^2).
 Poly ClipReference(const std::vector<double>& angle, const std::vector<double>& h) {

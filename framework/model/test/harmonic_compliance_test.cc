@@ -10,18 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
+#include "framework/model/test/steel_pair.h"
 
 namespace fitfeel {
 namespace {
 
-PressFitSection SteelPair() {
-  PressFitSection s;
-  s.d1 = 0.020;
-  s.d2 = 0.030;
-  s.shaft = {"steel", 210e9, 0.3};
-  s.hub = s.shaft;
-  return s;
-}
+using test_support::SteelPair;
 
 TEST(HarmonicCompliance, BreathingModeIsLame) {
   // Lame, solid shaft d1 = 20 in a hub d2 = 30, steel: 5.8333 MPa per um of radial interference.

@@ -10,11 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
+#include "framework/testing/units.h"
 
 namespace fitfeel {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 constexpr double kRadius = 0.01;
 
 SurfaceGrid Cylinder(int rows, int columns, double length) {

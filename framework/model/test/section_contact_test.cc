@@ -7,19 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/model/test/steel_pair.h"
+#include "framework/testing/units.h"
+
 namespace fitfeel {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test_support::SteelPair;
 
-PressFitSection SteelPair() {
-  PressFitSection s;
-  s.d1 = 0.020;
-  s.d2 = 0.030;
-  s.shaft = {"steel", 210e9, 0.3};
-  s.hub = s.shaft;
-  return s;
-}
+using test_support::kPi;
 
 // One slice of length L as a section of n cells.
 ContactSection Slice(const std::vector<double>& gap, double length, double d = 0.020) {

@@ -11,6 +11,7 @@
 #include "framework/core/quantity.h"
 #include "framework/device/device.h"
 #include "framework/model/surface_type.h"
+#include "framework/plot/test/fake_laws.h"
 
 namespace fitfeel::plot::testing {
 namespace {
@@ -79,23 +80,6 @@ class FacingAnalyzer final : public ContactAnalyzer {
   double outer_min_ = 0.0;
 };
 
-class LameLaw final : public ResistanceLaw {
- protected:
-  void DoPrepare(const PartSpec&, const PartSpec&, const ModelSettings&) override {}
-  void DoEvaluate(const ContactState&, const MatingMotion&, Wrench* out) const noexcept override {
-    out->SetZero();
-  }
-  double DoPressurePerInterference() const override { return 5.8333e12; }
-};
-
-class IdealLaw final : public ResistanceLaw {
- protected:
-  void DoPrepare(const PartSpec&, const PartSpec&, const ModelSettings&) override {}
-  void DoEvaluate(const ContactState&, const MatingMotion&, Wrench* out) const noexcept override {
-    out->SetZero();
-  }
-};
-
 class TestCylinder final : public SurfaceType {
  public:
   std::vector<FormCharacteristic> form_characteristics() const override {
@@ -122,7 +106,7 @@ class TestCylinder final : public SurfaceType {
   }
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override {
     if (name == "lame") return std::make_unique<LameLaw>();
-    return std::make_unique<IdealLaw>();
+    return std::make_unique<NoPressureLaw>();
   }
 };
 

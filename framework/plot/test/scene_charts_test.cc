@@ -8,6 +8,7 @@
 #include "framework/core/error.h"
 #include "framework/plot/render.h"
 #include "framework/plot/sms_chart.h"
+#include "framework/plot/test/fake_laws.h"
 #include "framework/plot/test/synthetic_sms.h"
 #include "framework/plot/test/test_support.h"
 
@@ -15,10 +16,11 @@ namespace fitfeel::plot {
 namespace {
 
 using ::testing::HasSubstr;
+using testing::kBushing;
+using testing::kShaft;
+using testing::LameLaw;
+using testing::NoPressureLaw;
 using testing::ScratchDir;
-
-const PartSpec kShaft = testing::SyntheticPart("shaft", Role::kInner, -6.5e-6, 6.5e-6, "js6");
-const PartSpec kBushing = testing::SyntheticPart("bushing", Role::kOuter, 0.0, 21e-6, "H7");
 
 // Interference of 1 um on the shaft rows within `depth` of its leading end, and the pose asked.
 class FakeAnalyzer final : public ContactAnalyzer {
@@ -40,24 +42,6 @@ class FakeAnalyzer final : public ContactAnalyzer {
     for (int i = std::max(0, rows - engaged); i < rows; ++i) {
       for (int j = 0; j < columns; ++j) (*delta)(i * columns + j) = 1e-6;
     }
-  }
-};
-
-class LameLaw final : public ResistanceLaw {
- protected:
-  void DoPrepare(const PartSpec&, const PartSpec&, const ModelSettings&) override {}
-  void DoEvaluate(const ContactState&, const MatingMotion&, Wrench* out) const noexcept override {
-    out->SetZero();
-  }
-  // docs/oracles.md: steel, d1 = 20 mm, d2 = 30 mm: 5.8333 MPa per um of radial interference.
-  double DoPressurePerInterference() const override { return 5.8333e12; }
-};
-
-class NoPressureLaw final : public ResistanceLaw {
- protected:
-  void DoPrepare(const PartSpec&, const PartSpec&, const ModelSettings&) override {}
-  void DoEvaluate(const ContactState&, const MatingMotion&, Wrench* out) const noexcept override {
-    out->SetZero();
   }
 };
 

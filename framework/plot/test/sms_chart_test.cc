@@ -12,13 +12,11 @@ namespace fitfeel::plot {
 namespace {
 
 using ::testing::HasSubstr;
+using testing::kBushing;
+using testing::kShaft;
 using testing::ScratchDir;
 using testing::SyntheticPart;
 using testing::SyntheticSms;
-
-// ISO 286 for 20 mm: js6 = +/-6.5 um, H7 = 0 / +21 um (diametral).
-const PartSpec kShaft = SyntheticPart("shaft", Role::kInner, -6.5e-6, 6.5e-6, "js6");
-const PartSpec kBushing = SyntheticPart("bushing", Role::kOuter, 0.0, 21e-6, "H7");
 
 TEST(Limits, HalfTheDiametralDeviations) {
   const RadialLimits v = VariationLimits(kShaft);

@@ -19,6 +19,10 @@ inline PartSpec SyntheticPart(const std::string& name, Role role, double lower, 
   return part;
 }
 
+// The paper's case-1 pair, Ø20 H7/js6. ISO 286 for 20 mm: js6 = +/-6.5 um, H7 = 0 / +21 um.
+inline const PartSpec kShaft = SyntheticPart("shaft", Role::kInner, -6.5e-6, 6.5e-6, "js6");
+inline const PartSpec kBushing = SyntheticPart("bushing", Role::kOuter, 0.0, 21e-6, "H7");
+
 // A cylinder grid of `rows` x `columns` equal cells over `length` (m) and a variation that stays
 // inside the part's radial limits: a size offset plus a lobed, axially waving form.
 inline SkinModelShape SyntheticSms(const PartSpec& part, int rows, int columns, double length,

@@ -13,10 +13,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "framework/plugin/test/test_plugin_dirs.h"
 #include "framework/testing/cli_runner.h"
 
 namespace fitfeel {
 namespace {
+
+using test_support::BuildDir;
+using test_support::CaseDir;
 
 namespace fs = std::filesystem;
 using test_support::CliOptions;
@@ -26,14 +30,6 @@ using ::testing::HasSubstr;
 // The build tree: FITFEEL_BUILD_DIR when set (fitfeel_add_test means to set it), else the folder
 // above this test binary, which fitfeel_add_test puts in <build>/tests/. The fallback matters:
 // gtest_discover_tests keeps only the first variable of a multi-variable ENVIRONMENT property.
-fs::path BuildDir() {
-  if (const char* dir = std::getenv("FITFEEL_BUILD_DIR")) return fs::path(dir);
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path() : self.parent_path().parent_path();
-}
-
-fs::path CaseDir(const std::string& name) { return BuildDir() / "test-plugins" / name; }
 
 // Runs `fitfeel plugins <args>` with the given plugin path; its stderr goes to the test log.
 CliResult RunPlugins(const std::string& plugin_path, const std::string& args) {

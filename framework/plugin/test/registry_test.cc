@@ -19,12 +19,16 @@
 #include "framework/device/device.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/fingerprint.h"
+#include "framework/plugin/test/test_plugin_dirs.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 namespace fitfeel {
 namespace {
+
+using test_support::BuildDir;
+using test_support::CaseDir;
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -35,14 +39,6 @@ const std::vector<fs::path> kNoFolders;
 // The build tree: FITFEEL_BUILD_DIR when set (fitfeel_add_test means to set it), else the folder
 // above this test binary, which fitfeel_add_test puts in <build>/tests/. The fallback matters:
 // gtest_discover_tests keeps only the first variable of a multi-variable ENVIRONMENT property.
-fs::path BuildDir() {
-  if (const char* dir = std::getenv("FITFEEL_BUILD_DIR")) return fs::path(dir);
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return ec ? fs::path() : self.parent_path().parent_path();
-}
-
-fs::path CaseDir(const std::string& name) { return BuildDir() / "test-plugins" / name; }
 
 fs::path CaseLibrary(const std::string& name) {
   return fs::canonical(CaseDir(name) / ("libfitfeel_test_" + name + ".so"));

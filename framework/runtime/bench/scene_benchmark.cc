@@ -137,9 +137,7 @@ void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
     PreparedScene prepared = Prepare(scene);
     const double prepare = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
     if (scan) prepared.analyzer = ScanAnalyzer(scene, prepared);
-    SchedulerSettings settings;
-    settings.rate = scene.run.rate;
-    settings.duration = scene.run.duration;
+    SchedulerSettings settings = SceneSchedulerSettings(scene);
     settings.clock = ClockMode::kVirtual;
     // Started first: a device knows its limits (the hand's 2 b / T) only at its rate.
     scene.device->Start(1.0 / settings.rate);

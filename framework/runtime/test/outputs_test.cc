@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path FreshDir(const std::string& name) { return testing::FreshDir("outputs", name); }
+fs::path OutputsDir(const std::string& name) { return testing::FreshDir("outputs", name); }
 using testing::Lines;
 
 // Drops the tick_us column (7th), the only measured one.
@@ -32,7 +32,7 @@ std::vector<std::string> WithoutTickTime(std::vector<std::string> lines) {
 }
 
 TEST(OutputsTest, RunWritesTheContractsFilesAndNothingElse) {
-  const fs::path dir = FreshDir("run");
+  const fs::path dir = OutputsDir("run");
   RunOptions options;
   options.out_dir = dir;
   const RunResult result = RunScene(testing::MakeFakeScene(5, 0.5), options);
@@ -68,7 +68,7 @@ TEST(OutputsTest, RunWritesTheContractsFilesAndNothingElse) {
   EXPECT_EQ(result.summary, summary);
 
   // The same seed again gives the same file except for the measured compute time.
-  const fs::path again = FreshDir("again");
+  const fs::path again = OutputsDir("again");
   options.out_dir = again;
   RunScene(testing::MakeFakeScene(5, 0.5), options);
   EXPECT_EQ(WithoutTickTime(Lines(dir / "trace.csv")), WithoutTickTime(Lines(again / "trace.csv")));
@@ -77,7 +77,7 @@ TEST(OutputsTest, RunWritesTheContractsFilesAndNothingElse) {
 }
 
 TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
-  const fs::path dir = FreshDir("safety");
+  const fs::path dir = OutputsDir("safety");
   RunOptions options;
   options.out_dir = dir;
   const RunResult result = RunScene(testing::MakeFakeScene(5, 0.5), options);
@@ -103,7 +103,7 @@ TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
 }
 
 TEST(OutputsTest, RecordingIsWrittenOnRequestAndReadsBack) {
-  const fs::path dir = FreshDir("recording");
+  const fs::path dir = OutputsDir("recording");
   RunOptions options;
   options.out_dir = dir;
   Scene scene = testing::MakeFakeScene(5, 0.5);
@@ -127,7 +127,7 @@ TEST(OutputsTest, RecordingIsWrittenOnRequestAndReadsBack) {
 }
 
 TEST(OutputsTest, AFailedPrepareCreatesNoFolder) {
-  const fs::path dir = FreshDir("prepare");
+  const fs::path dir = OutputsDir("prepare");
   RunOptions options;
   options.out_dir = dir;
   auto failing = std::make_shared<testing::FakeSurface>(false, true);
@@ -136,7 +136,7 @@ TEST(OutputsTest, AFailedPrepareCreatesNoFolder) {
 }
 
 TEST(OutputsTest, AFailedRenameLeavesNoFileBehind) {
-  const fs::path dir = FreshDir("rename");
+  const fs::path dir = OutputsDir("rename");
   // summary.json is a non-empty folder: the trace is written and renamed, then the summary's
   // rename fails, and the trace must go again.
   fs::create_directories(dir / "summary.json" / "blocker");
@@ -152,7 +152,7 @@ TEST(OutputsTest, AFailedRenameLeavesNoFileBehind) {
 }
 
 TEST(OutputsTest, AnUnwritableFolderIsAUserErrorAndCreatesNothing) {
-  const fs::path dir = FreshDir("file");
+  const fs::path dir = OutputsDir("file");
   { std::ofstream(dir.string()) << "not a folder"; }
   EXPECT_THROW(WriteOutputs(dir / "sub", RunInfo{}, {}, RunStats{}), UserError);
   EXPECT_THROW(WriteOutputs(dir, RunInfo{}, {}, RunStats{}), UserError);

@@ -192,7 +192,7 @@ TEST(SchedulerTest, StopsWhenTheDeviceBecomesInactive) {
 }
 
 // A device whose own "servo thread" calls the tick (here synchronously, at its native 500 Hz).
-class ServoDevice final : public Device {
+class HalfRateServoDevice final : public Device {
  public:
   DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
   ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
@@ -212,7 +212,7 @@ class ServoDevice final : public Device {
 };
 
 TEST(SchedulerTest, DeviceOwnedClockCallsTheSameTick) {
-  ServoDevice device;
+  HalfRateServoDevice device;
   const PositioningStage positioning;
   Rng rng(1);
   const RngStage constrained(rng);

@@ -118,7 +118,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   StageOutput out;
   // The device holds the part on the axis; a 2 N load along -z settles it at clearance + W/k.
   DeviceState s = At(0.0, 5e-3, 0.0);
-  s.settle_load = Eigen::Vector2d(0.0, -2.0);
+  s.load = Eigen::Vector2d(0.0, -2.0);
   stage.Evaluate(s, stage_run.get(), &out);
   // Along the load, balanced to 1e-6 of it (2 uN, i.e. 2e-11 m on this 1e5 N/m spring).
   EXPECT_NEAR(out.pose.offset.y(), -(analyzer.clearance() + 2.0 / 1e5), 3e-11);
@@ -128,7 +128,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   EXPECT_TRUE(std::isinf(out.gap));
   // A load along +x, starting from that equilibrium: the part slides round until the sideways
   // push is below 1 % of the load, and carries the load along x.
-  s.settle_load = Eigen::Vector2d(3.0, 0.0);
+  s.load = Eigen::Vector2d(3.0, 0.0);
   stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_NEAR(out.wrench.force.x(), -3.0, 3e-6);
   EXPECT_LE(std::abs(out.wrench.force.z()), 0.03);
@@ -137,7 +137,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   EXPECT_NEAR(out.pose.offset.norm(), analyzer.clearance() + radial / 1e5, 1e-12);
   // Not yet engaged: nothing carries the load, the device's own pose stands.
   s = At(0.0, 0.0, 0.0);
-  s.settle_load = Eigen::Vector2d(0.0, -2.0);
+  s.load = Eigen::Vector2d(0.0, -2.0);
   stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_EQ(out.pose.offset, Eigen::Vector2d(0.0, 0.0));
   EXPECT_EQ(out.wrench.force.z(), 0.0);

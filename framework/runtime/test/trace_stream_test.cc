@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path FreshDir(const std::string& name) { return testing::FreshDir("stream", name); }
+fs::path StreamDir(const std::string& name) { return testing::FreshDir("stream", name); }
 using testing::Lines;
 
 std::size_t Entries(const fs::path& dir) {
@@ -52,7 +52,7 @@ TEST(TraceStreamTest, StreamedTraceAndSummaryEqualTheKeptOnes) {
   Scheduler kept(kept_device, s.positioning, s.constrained, {1000.0, 0.5, ClockMode::kVirtual});
   kept.Run();
 
-  const fs::path dir = FreshDir("equal");
+  const fs::path dir = StreamDir("equal");
   testing::KinematicDevice device(-1e-3, 10e-3, {0.0, -20e-6});
   device.Start(1e-3);
   // A ring of 8 rows: the virtual loop waits for the writer again and again, and loses nothing.
@@ -91,7 +91,7 @@ TEST(TraceStreamTest, StreamedTraceAndSummaryEqualTheKeptOnes) {
 // A device that owns the clock (hardware) ticks in real time: when the writer falls behind (here
 // it never drains: the ring has no consumer) the tick does not wait; the rows beyond the ring's
 // room are dropped and counted.
-class ServoDevice final : public Device {
+class StreamServoDevice final : public Device {
  public:
   DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
   ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
@@ -113,7 +113,7 @@ class ServoDevice final : public Device {
 
 TEST(TraceStreamTest, UnderARealTimeClockAFullRingDropsAndCountsRowsAndNeverWaits) {
   Stages s;
-  ServoDevice device;
+  StreamServoDevice device;
   device.Start(1e-3);
   SpscRing<StreamRow> ring(16);  // nobody pops
   SchedulerSettings settings{1000.0, 0.2, ClockMode::kRealTime};
@@ -131,7 +131,7 @@ TEST(TraceStreamTest, UnderARealTimeClockAFullRingDropsAndCountsRowsAndNeverWait
 
 // A stream that never finishes (the run failed) leaves no file and removes the folder it made.
 TEST(TraceStreamTest, AnUnfinishedStreamLeavesNothing) {
-  const fs::path dir = FreshDir("unfinished");
+  const fs::path dir = StreamDir("unfinished");
   {
     TraceStream stream({dir, true, true, RecordingInfo{"x"}});
     StreamRow row;
@@ -144,7 +144,7 @@ TEST(TraceStreamTest, AnUnfinishedStreamLeavesNothing) {
 
 // A row the recording refuses (a non-finite sample) fails Finish with the reason; nothing stays.
 TEST(TraceStreamTest, ARefusedRecordingSampleFailsTheRunAndLeavesNothing) {
-  const fs::path dir = FreshDir("refused");
+  const fs::path dir = StreamDir("refused");
   fs::create_directories(dir);
   TraceStream stream({dir, true, true, RecordingInfo{"x"}});
   StreamRow row;
@@ -185,7 +185,7 @@ class GlitchingDevice final : public Device {
 TEST(TraceStreamTest, AbsurdDeviceStatesAreHeldZeroForcedFlaggedAndCounted) {
   auto device = std::make_shared<GlitchingDevice>();
   device->written.reserve(1000);
-  const fs::path dir = FreshDir("glitch");
+  const fs::path dir = StreamDir("glitch");
   RunOptions options;
   options.out_dir = dir;
   Scene scene = testing::MakeFakeScene(3, 0.5, device);

@@ -10,12 +10,13 @@
 
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
+#include "framework/testing/units.h"
 
 namespace fitfeel {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test_support::kInf;
 
 Wrench Force(double x, double y, double z) {
   Wrench w;

@@ -7,16 +7,16 @@
 namespace fitfeel {
 namespace {
 
-ConfigNode Node(const std::string& text) {
+ConfigNode SafetyNode(const std::string& text) {
   return ConfigNode::Parse(text, "scene.yaml", "safety");
 }
 
 TEST(SafetyConfig, ParsesEveryKey) {
   const SafetySettings s = ParseSafetySettings(
-      Node("{force_scale: 0.01, continuous_window: 5 s, coupling: direct,"
-           " coupling_stiffness: 500 N/m, coupling_damping: 1 N*s/m, proxy_mass: 10 g,"
-           " credit_device_damping: false, passivity_controller: true,"
-           " passivity_max_damping: 2 N*s/m}"));
+      SafetyNode("{force_scale: 0.01, continuous_window: 5 s, coupling: direct,"
+                 " coupling_stiffness: 500 N/m, coupling_damping: 1 N*s/m, proxy_mass: 10 g,"
+                 " credit_device_damping: false, passivity_controller: true,"
+                 " passivity_max_damping: 2 N*s/m}"));
   EXPECT_DOUBLE_EQ(s.force_scale, 0.01);
   EXPECT_DOUBLE_EQ(s.continuous_window, 5.0);
   EXPECT_EQ(s.coupling, CouplingMode::kDirect);
@@ -29,7 +29,7 @@ TEST(SafetyConfig, ParsesEveryKey) {
 }
 
 TEST(SafetyConfig, EmptySectionGivesDefaults) {
-  const SafetySettings s = ParseSafetySettings(Node("{}"));
+  const SafetySettings s = ParseSafetySettings(SafetyNode("{}"));
   EXPECT_DOUBLE_EQ(s.force_scale, 1.0);
   EXPECT_EQ(s.coupling, CouplingMode::kSpringDamper);
   SafetyChain chain;
@@ -38,12 +38,12 @@ TEST(SafetyConfig, EmptySectionGivesDefaults) {
 }
 
 TEST(SafetyConfig, RefusesBadInput) {
-  EXPECT_THROW(ParseSafetySettings(Node("{force_scale: 0.01, physical_full_scale: 300 N}")),
+  EXPECT_THROW(ParseSafetySettings(SafetyNode("{force_scale: 0.01, physical_full_scale: 300 N}")),
                ScenarioError);
-  EXPECT_THROW(ParseSafetySettings(Node("{force_scale: -1}")), ScenarioError);
-  EXPECT_THROW(ParseSafetySettings(Node("{coupling: magic}")), ScenarioError);
-  EXPECT_THROW(ParseSafetySettings(Node("{scale: 1}")), ScenarioError);
-  EXPECT_THROW(ParseSafetySettings(Node("{physical_full_scale: 300 mm}")), ScenarioError);
+  EXPECT_THROW(ParseSafetySettings(SafetyNode("{force_scale: -1}")), ScenarioError);
+  EXPECT_THROW(ParseSafetySettings(SafetyNode("{coupling: magic}")), ScenarioError);
+  EXPECT_THROW(ParseSafetySettings(SafetyNode("{scale: 1}")), ScenarioError);
+  EXPECT_THROW(ParseSafetySettings(SafetyNode("{physical_full_scale: 300 mm}")), ScenarioError);
 }
 
 }  // namespace

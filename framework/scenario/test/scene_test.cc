@@ -40,8 +40,8 @@ struct BadCase {
 
 std::ostream& operator<<(std::ostream& out, const BadCase& c) { return out << c.name; }
 
-void ExpectRefused(const fs::path& file, const BadCase& c, const PluginRegistry& registry,
-                   const LoadOptions& options = {}) {
+void ExpectSceneRefused(const fs::path& file, const BadCase& c, const PluginRegistry& registry,
+                        const LoadOptions& options = {}) {
   try {
     LoadScene(file, registry, options);
     ADD_FAILURE() << file << " was accepted";
@@ -73,7 +73,7 @@ class BadFileTest : public SceneTest, public ::testing::WithParamInterface<BadCa
 
 TEST_P(BadFileTest, IsRefusedWithLocationKeyExpectedAndFound) {
   const BadCase& c = GetParam();
-  ExpectRefused(kTestDir / "bad" / (c.name + ".yaml"), c, registry_);
+  ExpectSceneRefused(kTestDir / "bad" / (c.name + ".yaml"), c, registry_);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -176,7 +176,7 @@ TEST_F(SceneTest, AnHourAtTheHighestRateWithARecordingIsAccepted) {
 
 TEST_P(VariantTest, IsRefused) {
   const Variant& v = GetParam();
-  ExpectRefused(WriteVariant(v.expect.name, v.from, v.to), v.expect, registry_);
+  ExpectSceneRefused(WriteVariant(v.expect.name, v.from, v.to), v.expect, registry_);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -435,7 +435,7 @@ TEST_F(SceneTest, CarriageReturnOnlyLineEndingsReadAsLines) {
     if (c == '\n') c = '\r';
   }
   std::ofstream(bad, std::ios::binary) << bad_text;
-  ExpectRefused(bad, {"cr_bad", 37, 13, "run.duration", "a time", "'5'"}, registry_);
+  ExpectSceneRefused(bad, {"cr_bad", 37, 13, "run.duration", "a time", "'5'"}, registry_);
 }
 
 TEST_F(SceneTest, FileLevelProblemsAreScenarioErrors) {
@@ -443,18 +443,19 @@ TEST_F(SceneTest, FileLevelProblemsAreScenarioErrors) {
   fs::create_directories(dir);
   const fs::path missing = dir / "does_not_exist.yaml";
   fs::remove(missing);
-  ExpectRefused(missing, {"missing", 0, 0, "", "a readable scenario file", "No such file"},
-                registry_);
+  ExpectSceneRefused(missing, {"missing", 0, 0, "", "a readable scenario file", "No such file"},
+                     registry_);
   const fs::path empty = dir / "empty.yaml";
   std::ofstream(empty) << "";
-  ExpectRefused(empty, {"empty", 0, 0, "", "a map of scenario keys", "an empty file"}, registry_);
+  ExpectSceneRefused(empty, {"empty", 0, 0, "", "a map of scenario keys", "an empty file"},
+                     registry_);
   const fs::path two = dir / "two.yaml";
   std::ofstream(two) << "scenario: a\n---\nscenario: b\n";
-  ExpectRefused(two, {"two", 3, 1, "", "one scene per file", "a second document"}, registry_);
+  ExpectSceneRefused(two, {"two", 3, 1, "", "one scene per file", "a second document"}, registry_);
   const fs::path list = dir / "list.yaml";
   std::ofstream(list) << "- scenario: a\n";
-  ExpectRefused(list, {"list", 1, 1, "", "a map of scenario keys", "a list"}, registry_);
-  ExpectRefused(dir, {"dir", 0, 0, "", "a scenario file", "a directory"}, registry_);
+  ExpectSceneRefused(list, {"list", 1, 1, "", "a map of scenario keys", "a list"}, registry_);
+  ExpectSceneRefused(dir, {"dir", 0, 0, "", "a scenario file", "a directory"}, registry_);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -611,12 +612,12 @@ TEST_F(SceneTest, NonRenderingSurfaceOnlyWhenAllowed) {
   std::string text = ReadFile(with_law);
   text.replace(text.find("test.surface.cylinder"), 21, "test.surface.thread");
   std::ofstream(with_law) << text;
-  ExpectRefused(with_law,
-                {"thread_law", 17, 8, "model.law",
-                 "a resistance law that test.surface.thread "
-                 "offers (none)",
-                 "'gps'"},
-                registry_, options);
+  ExpectSceneRefused(with_law,
+                     {"thread_law", 17, 8, "model.law",
+                      "a resistance law that test.surface.thread "
+                      "offers (none)",
+                      "'gps'"},
+                     registry_, options);
 }
 
 TEST_F(SceneTest, EmptyOutputListWritesNothing) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
 
 namespace {
 
@@ -18,18 +19,13 @@ using ::fitfeel::test_support::CliResult;
 using ::fitfeel::test_support::ReadText;
 using ::testing::HasSubstr;
 
-const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-const fs::path kBuild = FITFEEL_TEST_BUILD_DIR;
-const fs::path kScene = kSource / "framework/stability/test/case1_still.yaml";
+using ::fitfeel::test_support::kBuildTree;
+using ::fitfeel::test_support::kSourceTree;
+using ::fitfeel::test_support::Lines;
+using ::fitfeel::test_support::SplitCells;
+const fs::path kStillScene = kSourceTree / "framework/stability/test/case1_still.yaml";
 
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-fs::path EmptyFolder(const std::string& name) {
+fs::path StabilityFolder(const std::string& name) {
   return ::fitfeel::test_support::EmptyFolder("fitfeel_stability_test", name);
 }
 
@@ -37,20 +33,12 @@ fs::path EmptyFolder(const std::string& name) {
 CliResult Stability(const std::string& arguments, const fs::path& cwd) {
   return ::fitfeel::test_support::RunFitfeel(
       "stability " + arguments,
-      CliOptions().In(cwd).WithPluginPath((kBuild / "test-plugins/good").string()));
-}
-
-// Columns of one CSV line.
-std::vector<std::string> Split(const std::string& line) {
-  std::vector<std::string> out;
-  std::istringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
-  return out;
+      CliOptions().In(cwd).WithPluginPath((kBuildTree / "test-plugins/good").string()));
 }
 
 TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
-  const fs::path dir = EmptyFolder("map");
-  const CliResult r = Stability("'" + kScene.string() +
+  const fs::path dir = StabilityFolder("map");
+  const CliResult r = Stability("'" + kStillScene.string() +
                                     "' --rate '500 Hz,1 kHz' --damping '0 N*s/m' --per-decade 4 "
                                     "--horizon '1 s' -o map.csv",
                                 dir);
@@ -63,7 +51,7 @@ TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
             "peak_force_N");
   int case_rows = 0;
   for (std::size_t i = 1; i < lines.size(); ++i) {
-    const std::vector<std::string> c = Split(lines[i]);
+    const std::vector<std::string> c = SplitCells(lines[i]);
     ASSERT_EQ(c.size(), 8u) << lines[i];
     const double k = std::stod(c[2]);
     EXPECT_LE(std::stod(c[7]), 7.9) << lines[i];  // PHANTOM Desktop peak force
@@ -85,11 +73,11 @@ TEST(StabilityCommand, WritesTheMapAndShowsBothMethodsAtTheCaseStiffness) {
 // Without a scenario the command takes the paper's case 1 from the repository's scenarios/
 // (run from the repository's root, as a user would).
 TEST(StabilityCommand, DefaultScenarioIsThePaperCase) {
-  const fs::path dir = EmptyFolder("default");
+  const fs::path dir = StabilityFolder("default");
   const CliResult r =
       Stability("--rate 1kHz --damping 0Ns/m --per-decade 1 --horizon '0.5 s' -o '" +
                     (dir / "m.csv").string() + "'",
-                kSource);
+                kSourceTree);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("paper-case1-h7js6"));
   EXPECT_THAT(r.out, HasSubstr("k_p = 3.665e+09 N/m"));
@@ -97,8 +85,8 @@ TEST(StabilityCommand, DefaultScenarioIsThePaperCase) {
 }
 
 TEST(StabilityCommand, DeviceAndForceScaleChangeTheMap) {
-  const fs::path dir = EmptyFolder("touch");
-  const CliResult r = Stability("'" + kScene.string() +
+  const fs::path dir = StabilityFolder("touch");
+  const CliResult r = Stability("'" + kStillScene.string() +
                                     "' --device touch --force-scale 0.01 --rate '1 kHz' "
                                     "--damping 0Ns/m --per-decade 2 --horizon '0.5 s' -o m.csv",
                                 dir);
@@ -108,13 +96,13 @@ TEST(StabilityCommand, DeviceAndForceScaleChangeTheMap) {
   EXPECT_THAT(csv, HasSubstr("coupled,1000,36650000,0,0,1,"));
   for (const std::string& line : Lines(csv)) {
     if (line.rfind("method", 0) == 0) continue;
-    EXPECT_LE(std::stod(Split(line)[7]), 3.3) << line;  // Touch peak force
+    EXPECT_LE(std::stod(SplitCells(line)[7]), 3.3) << line;  // Touch peak force
   }
 }
 
 TEST(StabilityCommand, BadInputExitsTwoAndWritesNothing) {
-  const fs::path dir = EmptyFolder("bad");
-  const std::string scene = "'" + kScene.string() + "'";
+  const fs::path dir = StabilityFolder("bad");
+  const std::string scene = "'" + kStillScene.string() + "'";
   struct Case {
     std::string arguments;
     std::string message;

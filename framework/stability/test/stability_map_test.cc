@@ -13,23 +13,13 @@
 
 #include "framework/core/error.h"
 #include "framework/device/device_specs.h"
+#include "framework/testing/cli_runner.h"
 
 namespace fitfeel {
 namespace {
 
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::string Slurp(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ::fitfeel::test_support::Lines;
+using ::fitfeel::test_support::ReadText;
 
 TEST(LogSpaced, CoversTheRangeEvenly) {
   const std::vector<double> v = LogSpaced(100.0, 1e5, 4);
@@ -89,12 +79,12 @@ TEST(WriteFileAtomically, ReplacesWholeOrNotAtAll) {
   std::filesystem::create_directories(folder);
   const std::filesystem::path file = folder / "map.csv";
   WriteFileAtomically(file, "first\n");
-  EXPECT_EQ(Slurp(file), "first\n");
+  EXPECT_EQ(ReadText(file), "first\n");
   WriteFileAtomically(file, "second\n");
-  EXPECT_EQ(Slurp(file), "second\n");
+  EXPECT_EQ(ReadText(file), "second\n");
   EXPECT_THROW(WriteFileAtomically(folder / "missing" / "map.csv", "x"), UserError);
   EXPECT_THROW(WriteFileAtomically(folder, "x"), UserError);
-  EXPECT_EQ(Slurp(file), "second\n");
+  EXPECT_EQ(ReadText(file), "second\n");
   // Nothing but the file is left behind.
   int entries = 0;
   for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder)) ++entries;

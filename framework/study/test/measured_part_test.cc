@@ -14,22 +14,17 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/cli_runner.h"
 
 namespace fitfeel {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using ::fitfeel::test_support::ReadText;
 
 // trace.csv without its timing column (tick_us, the 7th), the only one not fixed in virtual time.
 std::string TraceWithoutTimings(const fs::path& file) {
-  std::istringstream in(Slurp(file));
+  std::istringstream in(ReadText(file));
   std::string line, out;
   while (std::getline(in, line)) {
     std::size_t start = 0;
@@ -56,7 +51,7 @@ class MeasuredPart : public ::testing::Test {
 
   // The paper scene with both parts measured from `shaft` and `bushing` files in dir_.
   fs::path MeasuredScene() const {
-    std::string text = Slurp(paper_);
+    std::string text = ReadText(paper_);
     auto insert = [&text](const std::string& after, const std::string& line) {
       const std::size_t at = text.find(after);
       ASSERT_NE(at, std::string::npos) << after;
@@ -142,7 +137,7 @@ TEST_F(MeasuredPart, OutOfToleranceMeasurementIsRenderedAndReported) {
 TEST_F(MeasuredPart, RefusedWhenLoadedForASurfaceThatIsNotACylinder) {
   std::ofstream(dir_ / "hub.csv")
       << "height [mm],angle [deg],deviation [um]\n0,0,1\n0,120,1\n0,240,1\n";
-  std::string text = Slurp(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/taper-pin.yaml");
+  std::string text = ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/taper-pin.yaml");
   const std::string after = "  hub:\n";
   text.insert(text.find(after) + after.size(), "    measured: {roundness: hub.csv}\n");
   std::ofstream(dir_ / "taper.yaml") << text;

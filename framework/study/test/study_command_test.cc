@@ -20,16 +20,18 @@ using fitfeel::test_support::RunFitfeel;
 using fitfeel::test_support::ShellQuote;
 using ::testing::HasSubstr;
 
-const std::string kScene =
+const std::string kStudyScene =
     (fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/paper-case1-h7js6.yaml").string();
 
 TEST(StudyCommand, WritesPairsAndStudyIdenticalForOneAndTwoThreads) {
   const fs::path dir = EmptyFolder("fitfeel_study_command", "threads");
-  const auto one = RunFitfeel("study " + ShellQuote(kScene) + " --pairs 6 --seed 3 --threads 1 " +
-                              "--out " + ShellQuote((dir / "one").string()));
+  const auto one =
+      RunFitfeel("study " + ShellQuote(kStudyScene) + " --pairs 6 --seed 3 --threads 1 " +
+                 "--out " + ShellQuote((dir / "one").string()));
   ASSERT_EQ(one.exit_code, 0) << one.err;
-  const auto two = RunFitfeel("study " + ShellQuote(kScene) + " --pairs 6 --seed 3 --threads 2 " +
-                              "--out " + ShellQuote((dir / "two").string()));
+  const auto two =
+      RunFitfeel("study " + ShellQuote(kStudyScene) + " --pairs 6 --seed 3 --threads 2 " +
+                 "--out " + ShellQuote((dir / "two").string()));
   ASSERT_EQ(two.exit_code, 0) << two.err;
   const std::string a = ReadText(dir / "one/pairs.csv");
   EXPECT_EQ(a, ReadText(dir / "two/pairs.csv"));
@@ -66,14 +68,16 @@ TEST(StudyCommand, WritesPairsAndStudyIdenticalForOneAndTwoThreads) {
 TEST(StudyCommand, RefusesBadArgumentsAndWritesNothing) {
   const fs::path dir = EmptyFolder("fitfeel_study_command", "refusals");
   const std::string out = " --out " + ShellQuote((dir / "o").string());
-  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kScene) + " --pairs 0" + out).exit_code, 2);
-  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kScene) + " --threads 0" + out).exit_code, 2);
+  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kStudyScene) + " --pairs 0" + out).exit_code, 2);
+  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kStudyScene) + " --threads 0" + out).exit_code, 2);
   for (const char* seed : {"-1", "''", "18446744073709551616", "1.5"}) {
-    const auto r = RunFitfeel("study " + ShellQuote(kScene) + " --pairs 1 --seed " + seed + out);
+    const auto r =
+        RunFitfeel("study " + ShellQuote(kStudyScene) + " --pairs 1 --seed " + seed + out);
     EXPECT_EQ(r.exit_code, 2) << seed;
     EXPECT_THAT(r.err, HasSubstr("--seed")) << seed;
   }
-  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kScene) + " --pairs 1 --out /dev/null").exit_code, 2);
+  EXPECT_EQ(RunFitfeel("study " + ShellQuote(kStudyScene) + " --pairs 1 --out /dev/null").exit_code,
+            2);
   const auto missing = RunFitfeel("study no-such.yaml --pairs 2" + out);
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_THAT(missing.err, HasSubstr("no-such.yaml"));

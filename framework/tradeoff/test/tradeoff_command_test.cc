@@ -12,14 +12,19 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-const fs::path kSource = FITFEEL_TEST_SOURCE_DIR;
-const fs::path kBuild = FITFEEL_TEST_BUILD_DIR;
-const fs::path kScene = kSource / "scenarios/paper-case1-h7js6.yaml";
+using ::fitfeel::test_support::kBuildTree;
+using ::fitfeel::test_support::kSourceTree;
+using ::fitfeel::test_support::ReadText;
+using ::fitfeel::test_support::SplitCells;
+const fs::path kTradeoffScene = kSourceTree / "scenarios/paper-case1-h7js6.yaml";
 
 struct Result {
   int exit_code = -1;
@@ -27,42 +32,21 @@ struct Result {
   std::string err;
 };
 
-std::string Slurp(const fs::path& file) {
-  std::string text;
-  if (FILE* f = std::fopen(file.c_str(), "r")) {
-    char buffer[4096];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-    std::fclose(f);
-  }
-  return text;
-}
-
-std::vector<std::string> Split(const std::string& text, char separator) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string cell; std::getline(in, cell, separator);) out.push_back(cell);
-  return out;
-}
-
-fs::path EmptyFolder(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_tradeoff_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+fs::path TradeoffFolder(const std::string& name) {
+  return ::fitfeel::test_support::EmptyFolder("fitfeel_tradeoff_test", name);
 }
 
 // The plugins come from the build tree (the registry's default search path for a build).
 Result Tradeoff(const std::string& arguments, const fs::path& cwd) {
   const fs::path out = cwd / ".stdout", err = cwd / ".stderr";
-  const std::string command = "cd '" + cwd.string() + "' && '" + (kBuild / "bin/fitfeel").string() +
-                              "' tradeoff " + arguments + " >'" + out.string() + "' 2>'" +
-                              err.string() + "'";
+  const std::string command = "cd '" + cwd.string() + "' && '" +
+                              (kBuildTree / "bin/fitfeel").string() + "' tradeoff " + arguments +
+                              " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int status = std::system(command.c_str());
   Result result;
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  result.out = Slurp(out);
-  result.err = Slurp(err);
+  result.out = ReadText(out);
+  result.err = ReadText(err);
   fs::remove(out);
   fs::remove(err);
   return result;
@@ -71,16 +55,16 @@ Result Tradeoff(const std::string& arguments, const fs::path& cwd) {
 bool Empty(const fs::path& dir) { return fs::is_empty(dir); }
 
 TEST(TradeoffCommand, WritesCsvAndChartsForASmallLadder) {
-  const fs::path dir = EmptyFolder("ladder");
-  const Result r = Tradeoff("'" + kScene.string() +
+  const fs::path dir = TradeoffFolder("ladder");
+  const Result r = Tradeoff("'" + kTradeoffScene.string() +
                                 "' -o small --resolutions 20x90,8x36,10x72 --seeds 2 "
                                 "--duration '1.5 s'",
                             dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("reference"));
-  const std::vector<std::string> lines = Split(Slurp(dir / "small.csv"), '\n');
+  const std::vector<std::string> lines = SplitCells(ReadText(dir / "small.csv"), '\n');
   ASSERT_EQ(lines.size(), 4u);
-  const std::vector<std::string> header = Split(lines[0], ',');
+  const std::vector<std::string> header = SplitCells(lines[0], ',');
   const std::vector<std::string> expected = {
       "grid",        "inner_rows",     "inner_columns", "outer_rows",    "outer_columns",
       "inner_cells", "outer_cells",    "seeds",         "prepare_s",     "tick_p50_us",
@@ -90,7 +74,7 @@ TEST(TradeoffCommand, WritesCsvAndChartsForASmallLadder) {
   EXPECT_EQ(header, expected);
   long previous_cells = 0;
   for (std::size_t k = 1; k < lines.size(); ++k) {
-    const std::vector<std::string> cells = Split(lines[k], ',');
+    const std::vector<std::string> cells = SplitCells(lines[k], ',');
     ASSERT_EQ(cells.size(), header.size()) << lines[k];
     const long inner_cells = std::stol(cells[5]);
     EXPECT_EQ(inner_cells, std::stol(cells[1]) * std::stol(cells[2]));
@@ -103,30 +87,30 @@ TEST(TradeoffCommand, WritesCsvAndChartsForASmallLadder) {
     EXPECT_GT(std::stol(cells[21]), 0);    // compared ticks
     EXPECT_EQ(cells[22], k + 1 == lines.size() ? "yes" : "no");
   }
-  EXPECT_EQ(Split(lines[1], ',')[0], "8x36");
-  EXPECT_EQ(Split(lines[3], ',')[0], "20x90");
-  EXPECT_EQ(std::stod(Split(lines[3], ',')[16]), 0.0);  // the reference against itself
-  EXPECT_EQ(Slurp(dir / "small.png").rfind("\x89PNG", 0), 0u);
-  EXPECT_THAT(Slurp(dir / "small.svg"), HasSubstr("<svg"));
+  EXPECT_EQ(SplitCells(lines[1], ',')[0], "8x36");
+  EXPECT_EQ(SplitCells(lines[3], ',')[0], "20x90");
+  EXPECT_EQ(std::stod(SplitCells(lines[3], ',')[16]), 0.0);  // the reference against itself
+  EXPECT_EQ(ReadText(dir / "small.png").rfind("\x89PNG", 0), 0u);
+  EXPECT_THAT(ReadText(dir / "small.svg"), HasSubstr("<svg"));
 }
 
 // Two grids with one seed: a single compared grid on the error panel, no paired noise.
 TEST(TradeoffCommand, ChartsTwoGridsWithOneSeed) {
-  const fs::path dir = EmptyFolder("pair");
-  const Result r = Tradeoff("'" + kScene.string() +
+  const fs::path dir = TradeoffFolder("pair");
+  const Result r = Tradeoff("'" + kTradeoffScene.string() +
                                 "' -o pair --resolutions 8x36,10x72 --seeds 1 --duration '1 s' "
                                 "--cost p99",
                             dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<std::string> lines = Split(Slurp(dir / "pair.csv"), '\n');
+  const std::vector<std::string> lines = SplitCells(ReadText(dir / "pair.csv"), '\n');
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(Split(lines[1], ',')[20], "0");  // one seed: no sampling noise estimate
-  EXPECT_EQ(Slurp(dir / "pair.png").rfind("\x89PNG", 0), 0u);
+  EXPECT_EQ(SplitCells(lines[1], ',')[20], "0");  // one seed: no sampling noise estimate
+  EXPECT_EQ(ReadText(dir / "pair.png").rfind("\x89PNG", 0), 0u);
 }
 
 TEST(TradeoffCommand, BadInputExitsTwoAndWritesNothing) {
-  const fs::path dir = EmptyFolder("bad");
-  const std::string scene = "'" + kScene.string() + "'";
+  const fs::path dir = TradeoffFolder("bad");
+  const std::string scene = "'" + kTradeoffScene.string() + "'";
   Result r = Tradeoff(scene + " -o x --resolutions 8x35", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_THAT(r.err, HasSubstr("even"));

@@ -18,7 +18,7 @@ T At(const std::string& frame, std::size_t offset) {
   return value;
 }
 
-ViewSample Sample() {
+ViewSample SampleFrame() {
   ViewSample s;
   s.time = 1.234;
   s.tick = 1234;
@@ -45,7 +45,7 @@ TEST(FrameCodec, StateFrameLayoutIsTheDocumentedOne) {
   x.assembly_space = {{1e-6, 0.0}, {0.0, 1e-6}, {-1e-6, 0.0}};
   x.assembly_space_known = true;
   x.dropped = 7;
-  const std::string f = EncodeStateFrame(Sample(), x);
+  const std::string f = EncodeStateFrame(SampleFrame(), x);
   ASSERT_EQ(f.size(), kStateFixedBytes + 3 * 8 + 3);
   EXPECT_EQ(f.substr(0, 4), "FFVW");
   EXPECT_EQ(At<std::uint16_t>(f, 4), kFrameVersion);
@@ -69,8 +69,8 @@ TEST(FrameCodec, StateFrameRoundTripsAtFloatPrecision) {
   x.pressure = {3, 0, 9, 200};
   x.pressure_max = 1e5;
   x.run_finished = true;
-  const DecodedState d = DecodeStateFrame(EncodeStateFrame(Sample(), x));
-  const ViewSample s = Sample();
+  const DecodedState d = DecodeStateFrame(EncodeStateFrame(SampleFrame(), x));
+  const ViewSample s = SampleFrame();
   EXPECT_EQ(d.sample.time, s.time);
   EXPECT_EQ(d.sample.tick, s.tick);
   EXPECT_FLOAT_EQ(d.sample.depth, static_cast<float>(s.depth));
@@ -88,7 +88,7 @@ TEST(FrameCodec, StateFrameRoundTripsAtFloatPrecision) {
 }
 
 TEST(FrameCodec, DecodeRefusesMalformedFrames) {
-  const std::string good = EncodeStateFrame(Sample(), {});
+  const std::string good = EncodeStateFrame(SampleFrame(), {});
   EXPECT_THROW(DecodeStateFrame(good.substr(0, 50)), UserError);
   EXPECT_THROW(DecodeStateFrame(good + "x"), UserError);  // length disagrees with the counts
   std::string bad_magic = good;
@@ -139,7 +139,7 @@ TEST(FrameCodec, EmptyMeshIsAPlaceholder) {
 }
 
 TEST(FrameCodec, HistoryFrameHasTwelveFloatsPerRow) {
-  const std::vector<ViewSample> rows(3, Sample());
+  const std::vector<ViewSample> rows(3, SampleFrame());
   const std::string f = EncodeHistoryFrame(rows);
   ASSERT_EQ(f.size(), 12u + 3 * kHistoryRowFloats * 4);
   EXPECT_EQ(At<std::uint16_t>(f, 6), static_cast<std::uint16_t>(FrameKind::kHistory));

@@ -18,14 +18,14 @@ namespace {
 
 constexpr double kMu = 0.15;
 constexpr double kTaper = 1.0 / 50.0;
-constexpr double kHoleLength = 20e-3;
+using test::kHoleLength;
 
-struct Model {
+struct PressFitModel {
   ConicalContactAnalyzer analyzer;
   TaperPressFitLaw law;
 };
 
-void Prepare(Model* model, const PartSpec& pin, const PartSpec& hole, Resolution resolution,
+void Prepare(PressFitModel* model, const PartSpec& pin, const PartSpec& hole, Resolution resolution,
              std::uint64_t seed = 1) {
   ModelSettings settings;
   settings.friction = kMu;
@@ -42,7 +42,7 @@ void Prepare(Model* model, const PartSpec& pin, const PartSpec& hole, Resolution
   model->law.Prepare(pin, hole, settings);
 }
 
-Wrench Evaluate(const Model& model, double depth, double velocity, double spin = 0.0,
+Wrench Evaluate(const PressFitModel& model, double depth, double velocity, double spin = 0.0,
                 Eigen::Vector2d offset = Eigen::Vector2d::Zero()) {
   MatingPose pose;
   pose.depth = depth;
@@ -82,7 +82,7 @@ TEST(ConicalLame, MatchesTheCylinderOracle) {
 }
 
 TEST(ConicalPressFit, InterferenceIsAdvanceTimesTaper) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   for (double advance : {1e-6, 50e-6, 0.25e-3}) {
     MatingPose pose;
@@ -99,7 +99,7 @@ TEST(ConicalPressFit, InterferenceIsAdvanceTimesTaper) {
 }
 
 TEST(ConicalPressFit, PressInAndOutForcesAreDin7190) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   const Oracle oracle;
   for (double advance : {10e-6, 0.1e-3, 0.5e-3}) {
@@ -120,7 +120,7 @@ TEST(ConicalPressFit, PressInAndOutForcesAreDin7190) {
 }
 
 TEST(ConicalPressFit, ReportsTheLameCoefficientOfItsForcesForPressureMaps) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   const Oracle oracle;
   // Closed form at dm = 8.2 mm, d2 = 24 mm: 0.1 mm advance is 1 um radial interference.
@@ -137,7 +137,7 @@ TEST(ConicalPressFit, ReportsTheLameCoefficientOfItsForcesForPressureMaps) {
 }
 
 TEST(ConicalPressFit, AtRestOnlyTheWedgeRemainsAndFrictionIsSmooth) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   const Oracle oracle;
   const double advance = 0.1e-3;
@@ -153,7 +153,7 @@ TEST(ConicalPressFit, AtRestOnlyTheWedgeRemainsAndFrictionIsSmooth) {
 }
 
 TEST(ConicalPressFit, TurningThePinGivesTheFrictionTorque) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   const Oracle oracle;
   const double advance = 0.1e-3;
@@ -164,7 +164,7 @@ TEST(ConicalPressFit, TurningThePinGivesTheFrictionTorque) {
 }
 
 TEST(ConicalPressFit, ClearanceBeforeSeatingAndRadialContact) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   // 1 mm before seating: radial clearance 1 mm * tan(alpha) = 10 um all round.
   const double depth = kHoleLength - 1e-3;
@@ -185,7 +185,7 @@ TEST(ConicalPressFit, ClearanceBeforeSeatingAndRadialContact) {
 TEST(ConicalPressFit, ForceGrowsLinearlyWithAdvanceForAnyResolution) {
   const Oracle oracle;
   for (Resolution r : {Resolution{8, 8}, Resolution{13, 24}, Resolution{200, 72}}) {
-    Model model;
+    PressFitModel model;
     Prepare(&model, test::Pin(), test::Hole(), r);
     for (double advance : {0.03e-3, 0.3e-3}) {
       EXPECT_NEAR(-Evaluate(model, kHoleLength + advance, 0.1).force.y(), oracle.In(advance),
@@ -211,7 +211,7 @@ TEST(ConicalPressFit, WithFormTheForceStaysNearTheOracle) {
   const double advance = 1e-3;
   int off_oracle = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    Model model;
+    PressFitModel model;
     Prepare(&model, pin, hole, Resolution{20, 36}, seed);
     const double f = -Evaluate(model, kHoleLength + advance, 0.1).force.y();
     EXPECT_GT(f, 0.5 * oracle.In(advance)) << seed;
@@ -289,7 +289,7 @@ namespace fitfeel::conical {
 namespace {
 
 // Largest change of |F| between neighbouring depths of a sweep.
-double LargestJump(const Model& model, double from, double to, int samples) {
+double LargestJump(const PressFitModel& model, double from, double to, int samples) {
   double largest = 0.0, previous = 0.0;
   for (int k = 0; k <= samples; ++k) {
     const double f = Evaluate(model, from + (to - from) * k / samples, 0.01).force.norm();
@@ -310,7 +310,7 @@ TEST(ConicalPressFit, ForceIsContinuousInDepthThroughSeatingForAnyForm) {
   pin.form.tolerance[FormCharacteristic::kAxisStraightness] = 15e-6;
   hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 15e-6;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    Model model;
+    PressFitModel model;
     Prepare(&model, pin, hole, Resolution{13, 24}, seed);
     // Contact lies between the nominal seating and 5.8 mm past it (h10 / H10 at 1:50).
     const double from = kHoleLength - 0.2e-3, to = kHoleLength + 6.1e-3;
@@ -328,7 +328,7 @@ namespace fitfeel::conical {
 namespace {
 
 TEST(ConicalPressFit, NonFinitePosesGiveNoContact) {
-  Model model;
+  PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{8, 8});
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (double depth : {nan, std::numeric_limits<double>::infinity()}) {
@@ -362,7 +362,7 @@ TEST(ConicalPressFit, RadialSupportGrowsMonotonicallyWithOffsetForAnyForm) {
   hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 15e-6;
   int rising = 0;
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-    Model model;
+    PressFitModel model;
     Prepare(&model, pin, hole, Resolution{10, 72}, seed);
     for (double past : {1e-3, 3e-3, 5e-3, 6e-3}) {
       for (int d = 0; d < 8; ++d) {

@@ -19,7 +19,7 @@
 namespace fitfeel::conical {
 namespace {
 
-constexpr double kHoleLength = 20e-3;
+using test::kHoleLength;
 
 PartSpec Pin(double taper) {
   PartSpec p = test::Pin();
@@ -33,12 +33,12 @@ PartSpec Hole(double taper) {
   return p;
 }
 
-struct Model {
+struct LockingModel {
   ConicalContactAnalyzer analyzer;
   TaperPressFitLaw law;
   LawState state;
 
-  Model(double taper, double mu, double pin_yield = 0.0, double hub_yield = 0.0) {
+  LockingModel(double taper, double mu, double pin_yield = 0.0, double hub_yield = 0.0) {
     PartSpec pin = Pin(taper), hole = Hole(taper);
     pin.material.yield_strength = pin_yield;
     hole.material.yield_strength = hub_yield;
@@ -93,22 +93,22 @@ double Backlash(double tan_alpha, double mu) {
 
 TEST(ConicalStickSlip, SelfLockingTaperStaysInWhenReleased) {
   // 1:50 (ISO 2339 taper pins): tan(alpha) = 0.01 against mu = 0.15.
-  Model pin(1.0 / 50.0, 0.15);
+  LockingModel pin(1.0 / 50.0, 0.15);
   EXPECT_NEAR(pin.PressAndRelease(0.2e-3, 200e-6), Backlash(0.01, 0.15), 40e-9);
   // 1:5 (tan(alpha) = 0.1) is still self-locking with mu = 0.15 ...
-  Model steep(1.0 / 5.0, 0.15);
+  LockingModel steep(1.0 / 5.0, 0.15);
   EXPECT_NEAR(steep.PressAndRelease(0.05e-3, 200e-6), Backlash(0.1, 0.15), 40e-9);
 }
 
 TEST(ConicalStickSlip, TaperSteeperThanItsFrictionAngleSlidesOut) {
   // ... but not with mu = 0.05 < tan(alpha) = 0.1: released, the wedge drives it out.
-  Model steep(1.0 / 5.0, 0.05);
+  LockingModel steep(1.0 / 5.0, 0.05);
   EXPECT_GE(steep.PressAndRelease(0.05e-3, 20e-6), 20e-6);
 }
 
 TEST(ConicalStickSlip, PressingSlidesAtCoulombTheDin7190Force) {
   // Stick-slip gives DIN 7190's press-in force F = p pi dm L (mu + tan alpha) while sliding.
-  Model pin(1.0 / 50.0, 0.15);
+  LockingModel pin(1.0 / 50.0, 0.15);
   double depth = kHoleLength;
   Wrench w;
   for (int i = 0; i < 20; ++i) w = pin.At(depth += 10e-6);
@@ -123,7 +123,7 @@ TEST(ConicalStickSlip, PressingSlidesAtCoulombTheDin7190Force) {
 TEST(ConicalElasticLimit, HubAtItsMeanDiameterPerDin7190) {
   // C45 +QT hub (R_e 430 MPa, EN 10083-2, 16-40 mm) on a hardened pin (R_e 2 GPa, so that the
   // hub governs): p_F = (1 - Q^2) R_e / sqrt(3), Q = dm / D = 8.2 / 30.
-  Model pin(1.0 / 50.0, 0.15, 2000e6, 430e6);
+  LockingModel pin(1.0 / 50.0, 0.15, 2000e6, 430e6);
   const double q = 8.2 / 30.0, p_f = (1.0 - q * q) * 430e6 / std::sqrt(3.0);
   EXPECT_NEAR(HubYieldPressure(8.2e-3, 30e-3, 430e6), p_f, 1e-6 * p_f);
   ContactState contact;
@@ -137,7 +137,7 @@ TEST(ConicalElasticLimit, HubAtItsMeanDiameterPerDin7190) {
   pin.At(kHoleLength + 1.1 * yield_advance, &contact);
   EXPECT_NEAR(pin.law.CheckElasticLimit(contact).utilisation, 1.1, 1e-6);
   // Without a yield strength nothing is checked.
-  Model unknown(1.0 / 50.0, 0.15);
+  LockingModel unknown(1.0 / 50.0, 0.15);
   unknown.At(kHoleLength + 0.5e-3, &contact);
   EXPECT_EQ(unknown.law.CheckElasticLimit(contact).utilisation, 0.0);
 }

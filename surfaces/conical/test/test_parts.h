@@ -9,6 +9,9 @@
 
 namespace fitfeel::conical::test {
 
+// The hub's length: the bore's mean diameter is 8.2 mm over it.
+inline constexpr double kHoleLength = 20e-3;
+
 inline Material Steel() { return Material{"steel", 210e9, 0.3}; }
 
 inline PartSpec Pin(double length = 40e-3) {
@@ -21,7 +24,7 @@ inline PartSpec Pin(double length = 40e-3) {
   return p;
 }
 
-inline PartSpec Hole(double length = 20e-3, double outer_diameter = 24e-3) {
+inline PartSpec Hole(double length = kHoleLength, double outer_diameter = 24e-3) {
   PartSpec p;
   p.name = "hole";
   p.role = Role::kOuter;

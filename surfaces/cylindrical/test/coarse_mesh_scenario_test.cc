@@ -10,20 +10,18 @@
 #include "framework/plugin/registry.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/source_tree.h"
 
 #include <gtest/gtest.h>
 
 namespace fitfeel {
 namespace {
 
+using test_support::ShippedScenario;
+
 namespace fs = std::filesystem;
 
-// The shipped scenarios as `fitfeel run` loads them, with the build tree's plugins.
-fs::path Shipped(const std::string& scenario) {
-  return fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario;
-}
-
-DeviceState At(double x, double y, double z) {
+DeviceState DeviceAt(double x, double y, double z) {
   DeviceState s;
   s.position = Eigen::Vector3d(x, y, z);
   return s;
@@ -32,7 +30,7 @@ DeviceState At(double x, double y, double z) {
 TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
   PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
   registry.LoadAll();
-  const Scene scene = LoadScene(Shipped("paper-case1-h7g6.yaml"), registry);
+  const Scene scene = LoadScene(ShippedScenario("paper-case1-h7g6.yaml"), registry);
   const CoarseMeshes meshes = scene.surface->MakeCoarseMeshes(scene.inner, scene.outer);
   ASSERT_FALSE(meshes.empty());
   // H7/g6 at 20 mm: 54 facets (see cylindrical_coarse_mesh.h): a 40 mm prism and the frustum
@@ -46,13 +44,13 @@ TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
   ASSERT_TRUE(stage.collides());
   StageOutput out;
-  stage.Evaluate(At(0.0, -1e-3, 0.0), stage_run.get(), &out);
+  stage.Evaluate(DeviceAt(0.0, -1e-3, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
-  stage.Evaluate(At(0.0, 0.0, 0.0), stage_run.get(), &out);
+  stage.Evaluate(DeviceAt(0.0, 0.0, 0.0), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
   EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
   // 4 mm off, 0.2 mm past the face (y = -1 mm, in front of the C1 entrance): the end lands on it.
-  stage.Evaluate(At(0.0, -0.8e-3, 4e-3), stage_run.get(), &out);
+  stage.Evaluate(DeviceAt(0.0, -0.8e-3, 4e-3), stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kPositioning);
   EXPECT_NEAR(out.wrench.force.y(), -1e3 * 2e-4, 1e-9);
 }

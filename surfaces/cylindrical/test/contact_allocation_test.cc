@@ -45,7 +45,6 @@ namespace fitfeel::cylindrical {
 namespace {
 
 using namespace testing;
-constexpr double kUm = 1e-6;
 
 TEST(ContactTick, EvaluateDoesNotAllocateAndIsIndependentOfRows) {
   FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();

@@ -17,17 +17,15 @@ namespace fitfeel::cylindrical {
 namespace {
 
 using namespace testing;
-constexpr double kPi = std::numbers::pi;
-constexpr double kUm = 1e-6;
 
-struct Pair {
+struct SyntheticPair {
   PartSpec shaft = MakeShaft(0.020, 0.040);
   PartSpec bushing = MakeBushing(0.020, 0.020, 0.030);
   SurfaceGrid shaft_grid = MakeGrid(40, 36, 0.020, 0.040);
   SurfaceGrid bushing_grid = MakeGrid(20, 36, 0.020, 0.020);
 };
 
-ContactState At(const ContactAnalyzer& a, double depth, Eigen::Vector2d offset = {0, 0}) {
+ContactState ContactAt(const ContactAnalyzer& a, double depth, Eigen::Vector2d offset = {0, 0}) {
   ContactState s;
   MatingPose pose;
   pose.depth = depth;
@@ -37,7 +35,7 @@ ContactState At(const ContactAnalyzer& a, double depth, Eigen::Vector2d offset =
 }
 
 TEST(CylinderContact, UniformClearanceGivesRegularAssemblySpace) {
-  Pair p;
+  SyntheticPair p;
   const double c = 6 * kUm;  // radial clearance: bushing +6 um, shaft 0
   CylinderContactAnalyzer a;
   a.Prepare(p.shaft, MakeSms(p.shaft_grid, [](int, int) { return 0.0; }), p.bushing,
@@ -50,12 +48,12 @@ TEST(CylinderContact, UniformClearanceGivesRegularAssemblySpace) {
     for (int j : {0, 5, 17}) {
       const double b = 2 * kPi * j / n;
       const Eigen::Vector2d u(std::cos(b), std::sin(b));
-      ContactState s = At(a, depth, 1 * kUm * u);
+      ContactState s = ContactAt(a, depth, 1 * kUm * u);
       EXPECT_TRUE(s.engaged);
       EXPECT_FALSE(s.interference);
       EXPECT_NEAR(s.assembly_extent, c, 1e-15) << depth;
       EXPECT_EQ(s.penetration, 0.0);
-      s = At(a, depth, (c + 2 * kUm) * u);
+      s = ContactAt(a, depth, (c + 2 * kUm) * u);
       // Within the first and last depth step the anchor blends with the free (unengaged) state:
       // the radial spring ramps in over one step instead of switching on.
       const double ramp = depth < a.depth_step() ? depth / a.depth_step()
@@ -66,11 +64,11 @@ TEST(CylinderContact, UniformClearanceGivesRegularAssemblySpace) {
       EXPECT_NEAR((s.penetration_direction - u).norm(), 0.0, 1e-9);
       const double bv = b + kPi / n;
       const Eigen::Vector2d uv(std::cos(bv), std::sin(bv));
-      s = At(a, depth, 0.5 * kUm * uv);
+      s = ContactAt(a, depth, 0.5 * kUm * uv);
       EXPECT_NEAR(s.assembly_extent, c / std::cos(kPi / n), 1e-15);
       EXPECT_NEAR(s.offset_angle, std::remainder(bv, 2 * kPi), 1e-12);
     }
-    EXPECT_EQ(At(a, depth).interference_volume, 0.0);
+    EXPECT_EQ(ContactAt(a, depth).interference_volume, 0.0);
   }
   // Pressed 1 um into the wall at column 0: the map shows the contact line there only.
   MatingPose pose;
@@ -84,20 +82,20 @@ TEST(CylinderContact, UniformClearanceGivesRegularAssemblySpace) {
   EXPECT_EQ(map[p.shaft_grid.index(20, n / 2)], 0.0);
   EXPECT_EQ(map[p.shaft_grid.index(5, 0)], 0.0);  // not yet in the bushing
   // Engagement follows the alignment: depth 0 = leading end at the entrance.
-  EXPECT_FALSE(At(a, -1e-3).engaged);
-  EXPECT_FALSE(At(a, 0.0).engaged);
-  EXPECT_NEAR(At(a, 5e-3).engaged_length, 5e-3, 1e-12);
-  EXPECT_NEAR(At(a, 30e-3).engaged_length, 20e-3, 1e-12);
-  EXPECT_NEAR(At(a, 50e-3).engaged_length, 10e-3, 1e-12);
-  EXPECT_NEAR(At(a, 30e-3).engaged_area, kPi * 0.020 * 0.020, 1e-12);
-  EXPECT_FALSE(At(a, 60e-3).engaged);
-  EXPECT_FALSE(At(a, std::nan("")).engaged);
-  EXPECT_FALSE(At(a, 30e-3, {std::nan(""), 0.0}).engaged);
-  EXPECT_FALSE(At(a, std::numeric_limits<double>::infinity()).engaged);
+  EXPECT_FALSE(ContactAt(a, -1e-3).engaged);
+  EXPECT_FALSE(ContactAt(a, 0.0).engaged);
+  EXPECT_NEAR(ContactAt(a, 5e-3).engaged_length, 5e-3, 1e-12);
+  EXPECT_NEAR(ContactAt(a, 30e-3).engaged_length, 20e-3, 1e-12);
+  EXPECT_NEAR(ContactAt(a, 50e-3).engaged_length, 10e-3, 1e-12);
+  EXPECT_NEAR(ContactAt(a, 30e-3).engaged_area, kPi * 0.020 * 0.020, 1e-12);
+  EXPECT_FALSE(ContactAt(a, 60e-3).engaged);
+  EXPECT_FALSE(ContactAt(a, std::nan("")).engaged);
+  EXPECT_FALSE(ContactAt(a, 30e-3, {std::nan(""), 0.0}).engaged);
+  EXPECT_FALSE(ContactAt(a, std::numeric_limits<double>::infinity()).engaged);
 }
 
 TEST(CylinderContact, OffsetBoreShiftsTheAssemblySpace) {
-  Pair p;
+  SyntheticPair p;
   const double c = 8 * kUm;
   const Eigen::Vector2d o(3 * kUm, 0.2 * kUm);  // bore axis offset
   const int n = 36;
@@ -113,15 +111,15 @@ TEST(CylinderContact, OffsetBoreShiftsTheAssemblySpace) {
   EXPECT_NEAR((a.anchor(k) - o).norm(), 0.0, 1e-15);
   // Leaving the shifted polygon through a face.
   const Eigen::Vector2d u(std::cos(2 * kPi * 9 / n), std::sin(2 * kPi * 9 / n));
-  const ContactState s = At(a, 30e-3, o + (c + 1.5 * kUm) * u);
+  const ContactState s = ContactAt(a, 30e-3, o + (c + 1.5 * kUm) * u);
   EXPECT_NEAR(s.penetration, 1.5 * kUm, 1e-14);
   EXPECT_NEAR((s.penetration_direction - u).norm(), 0.0, 1e-8);
   // S_A along +x from the fixed axis: the face x = c + o.x.
-  EXPECT_NEAR(At(a, 30e-3, {1e-7, 0}).assembly_extent, c + o.x(), 1e-14);
+  EXPECT_NEAR(ContactAt(a, 30e-3, {1e-7, 0}).assembly_extent, c + o.x(), 1e-14);
 }
 
 TEST(CylinderContact, EllipticalBoreExtents) {
-  Pair p;
+  SyntheticPair p;
   const int n = 360;
   p.shaft_grid = MakeGrid(8, n, 0.020, 0.040);
   p.bushing_grid = MakeGrid(4, n, 0.020, 0.020);
@@ -130,9 +128,9 @@ TEST(CylinderContact, EllipticalBoreExtents) {
   a.Prepare(p.shaft, MakeSms(p.shaft_grid, [](int, int) { return 0.0; }), p.bushing,
             MakeSms(p.bushing_grid, [&](int, int j) { return c + e * std::cos(4 * kPi * j / n); }),
             Settings(0.15, 0.0, TextureMode::kSampled));
-  EXPECT_NEAR(At(a, 30e-3, {1e-7, 0}).assembly_extent, c + e, 1e-15);
-  EXPECT_NEAR(At(a, 30e-3, {0, 1e-7}).assembly_extent, c - e, 1e-15);
-  EXPECT_NEAR(At(a, 30e-3, {-1e-7, 0}).assembly_extent, c + e, 1e-15);
+  EXPECT_NEAR(ContactAt(a, 30e-3, {1e-7, 0}).assembly_extent, c + e, 1e-15);
+  EXPECT_NEAR(ContactAt(a, 30e-3, {0, 1e-7}).assembly_extent, c - e, 1e-15);
+  EXPECT_NEAR(ContactAt(a, 30e-3, {-1e-7, 0}).assembly_extent, c + e, 1e-15);
 }
 
 // Different row pitches: the per-angle minimum must equal a brute-force minimum over every
@@ -165,7 +163,7 @@ TEST(CylinderContact, DifferentRowPitchesMapThroughAxialPosition) {
           if (std::min(s1, b1) - std::max(s0, b0) > 1e-12) h = std::min(h, row_b[k] - row_s[i]);
         }
       }
-      const ContactState s = At(b, depth, {1e-9, 0});
+      const ContactState s = ContactAt(b, depth, {1e-9, 0});
       ASSERT_TRUE(s.engaged);
       EXPECT_NEAR(s.assembly_extent, h, 1e-15) << "seed " << seed << " depth " << depth;
     }
@@ -173,7 +171,7 @@ TEST(CylinderContact, DifferentRowPitchesMapThroughAxialPosition) {
 }
 
 TEST(CylinderContact, UniformInterferenceCentresTheAxis) {
-  Pair p;
+  SyntheticPair p;
   const double d = 1 * kUm;
   const Eigen::Vector2d o(0.3 * kUm, 0.2 * kUm);  // shaft's own axis offset (form)
   const int n = 36;
@@ -186,7 +184,7 @@ TEST(CylinderContact, UniformInterferenceCentresTheAxis) {
                     }),
             p.bushing, MakeSms(p.bushing_grid, [](int, int) { return 0.0; }),
             Settings(0.15, 0.0, TextureMode::kSampled));
-  const ContactState s = At(a, 30e-3, {0, 0});
+  const ContactState s = ContactAt(a, 30e-3, {0, 0});
   EXPECT_TRUE(s.interference);
   // Energy minimum: the shaft's real axis sits on the bore's, i.e. the nominal axis at -o, and the
   // interference is d everywhere.
@@ -208,7 +206,7 @@ TEST(CylinderContact, UniformInterferenceCentresTheAxis) {
 }
 
 TEST(CylinderContact, ExpectedTextureInterference) {
-  Pair p;
+  SyntheticPair p;
   const TextureSpec t{3.2 * kUm, 0.4 * kUm, 1.6 * kUm};
   p.shaft.texture = t;
   p.bushing.texture = t;
@@ -218,7 +216,7 @@ TEST(CylinderContact, ExpectedTextureInterference) {
     CylinderContactAnalyzer a;
     a.Prepare(p.shaft, MakeSms(p.shaft_grid, [](int, int) { return 0.0; }), p.bushing,
               MakeSms(p.bushing_grid, [&](int, int) { return c; }), Settings());
-    const ContactState s = At(a, 30e-3);
+    const ContactState s = ContactAt(a, 30e-3);
     // Uniform gap c at the centred axis: volume = area * E[(X - c)+]; deep interference = -c.
     EXPECT_NEAR(s.interference_volume, area * ExpectedInterference(x, c), 1e-6 * x.sigma * area)
         << c;
@@ -227,7 +225,7 @@ TEST(CylinderContact, ExpectedTextureInterference) {
 }
 
 TEST(CylinderContact, RefusesMismatchedGrids) {
-  Pair p;
+  SyntheticPair p;
   CylinderContactAnalyzer a;
   EXPECT_THROW(
       a.Prepare(p.shaft, MakeSms(MakeGrid(4, 36, 0.02, 0.04), [](int, int) { return 0.0; }),

@@ -17,6 +17,9 @@
 
 namespace fitfeel::cylindrical::testing {
 
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kUm = 1e-6;
+
 inline SurfaceGrid MakeGrid(int rows, int columns, double diameter, double length) {
   SurfaceGrid g;
   g.rows = rows;

@@ -23,7 +23,6 @@ namespace fitfeel::cylindrical {
 namespace {
 
 using namespace testing;
-constexpr double kUm = 1e-6;
 constexpr double kSpeed = 0.010;  // m/s, the paper's insertion speed (4.1)
 
 struct Joint {

@@ -19,8 +19,6 @@ namespace fitfeel::cylindrical {
 namespace {
 
 using namespace testing;
-constexpr double kPi = std::numbers::pi;
-constexpr double kUm = 1e-6;
 
 ModelSettings Elastic(TextureMode texture = TextureMode::kDin7190) {
   ModelSettings s = Settings(0.15, 0.0, texture);
@@ -38,7 +36,8 @@ Eigen::Vector2d AnchorNear(const CylinderContactAnalyzer& a, double depth) {
   return a.anchor(static_cast<int>(std::lround(depth / a.depth_step())));
 }
 
-Outcome At(const ContactAnalyzer& a, const ResistanceLaw& law, double depth, Eigen::Vector2d offset) {
+Outcome OutcomeAt(const ContactAnalyzer& a, const ResistanceLaw& law, double depth,
+                  Eigen::Vector2d offset) {
   MatingPose pose;
   pose.depth = depth;
   pose.offset = offset;
@@ -52,12 +51,13 @@ Outcome At(const ContactAnalyzer& a, const ResistanceLaw& law, double depth, Eig
 
 // Paper case 1's pair without form: shaft 20 x 40 mm, bushing 20 x 20 mm in a 30 mm hub, steel,
 // Rz 1.6 um on both, a uniform radial interference `delta` on the shaft.
-struct Pair {
+struct ElasticPair {
   PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
   CylinderContactAnalyzer analyzer;
   ElasticLaw law;
-  Pair(const std::function<double(int, int)>& shaft_v, const std::function<double(int, int)>& bore_v,
-       ModelSettings settings = Elastic(), int columns = 72) {
+  ElasticPair(const std::function<double(int, int)>& shaft_v,
+              const std::function<double(int, int)>& bore_v, ModelSettings settings = Elastic(),
+              int columns = 72) {
     shaft.texture = bushing.texture = TextureSpec{0.0, 0.4e-6, 1.6e-6};
     analyzer.Prepare(shaft, MakeSms(MakeGrid(40, columns, 0.020, 0.040), shaft_v), bushing,
                      MakeSms(MakeGrid(20, columns, 0.020, 0.020), bore_v), settings);
@@ -68,10 +68,10 @@ struct Pair {
 TEST(ElasticLaw, Din7190SmoothingOfAUniformPressFit) {
   // 5 um radial over the full 20 mm engagement, mu = 0.15: 1099.6 N per um of what is left after
   // smoothing 0.8 (1.6 + 1.6) um on the diameter, i.e. 1099.6 x (5 - 1.28) = 4090 N.
-  Pair p([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; });
+  ElasticPair p([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; });
   EXPECT_NEAR(p.analyzer.smoothing(), 1.28 * kUm, 1e-15);
   for (double depth : {20.5e-3, 30e-3, 39.5e-3}) {
-    const Outcome r = At(p.analyzer, p.law, depth, {0, 0});
+    const Outcome r = OutcomeAt(p.analyzer, p.law, depth, {0, 0});
     EXPECT_NEAR(-r.wrench.force.y(), 4090.0, 0.01 * 4090.0) << depth;
     EXPECT_NEAR(r.state.normal_force, 4090.0 / 0.15, 0.01 * 4090.0 / 0.15);
   }
@@ -93,14 +93,14 @@ TEST(ElasticLaw, InterferenceBelowTheSmoothingLeavesOnlyTheWeight) {
   // 1.2 um radial < 1.28 um: the fit is loose after joining. A part held off its free position so
   // that the radial spring carries a 2 N weight feels mu x 2 N, nothing from the texture.
   for (double delta : {0.0, 0.6, 1.2}) {
-    Pair p([&](int, int) { return delta * kUm; }, [](int, int) { return 0.0; });
-    const Outcome free = At(p.analyzer, p.law, 30e-3, {0, 0});
+    ElasticPair p([&](int, int) { return delta * kUm; }, [](int, int) { return 0.0; });
+    const Outcome free = OutcomeAt(p.analyzer, p.law, 30e-3, {0, 0});
     EXPECT_EQ(free.state.normal_force, 0.0);
     EXPECT_EQ(free.wrench.force.y(), 0.0);
     // Settle under 2 N downward: the clearance, then the spring's travel for 2 N.
     const double k = LameRadialStiffness(p.law.pressure_per_interference(), 0.020, 0.020);
     const double clearance = (1.28 - delta) * kUm;
-    const Outcome held = At(p.analyzer, p.law, 30e-3, {0.0, -(clearance + 2.0 / k)});
+    const Outcome held = OutcomeAt(p.analyzer, p.law, 30e-3, {0.0, -(clearance + 2.0 / k)});
     EXPECT_NEAR(held.wrench.force.z(), 2.0, 0.01) << delta;
     EXPECT_NEAR(-held.wrench.force.y(), 0.15 * 2.0, 0.002) << delta;
   }
@@ -112,9 +112,9 @@ TEST(ElasticLaw, OvalInterferenceCarriesOnlyItsMean) {
   const double p0 = 5.8333e12;
   for (double ratio : {0.15, 0.3, 1.0}) {
     const double d2 = 4 * kUm, d0 = ratio * d2;
-    Pair q([&](int, int j) { return d0 + d2 * std::cos(2 * 2 * kPi * j / 360); },
-           [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), 360);
-    const Outcome r = At(q.analyzer, q.law, 30e-3, {0, 0});
+    ElasticPair q([&](int, int j) { return d0 + d2 * std::cos(2 * 2 * kPi * j / 360); },
+                  [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), 360);
+    const Outcome r = OutcomeAt(q.analyzer, q.law, 30e-3, {0, 0});
     EXPECT_NEAR(r.state.normal_force / (p0 * d0 * kPi * 0.020 * 0.020), 1.0, 1e-4) << ratio;
   }
 }
@@ -129,8 +129,8 @@ TEST(ElasticLaw, TiltedBoreWithinTheClearanceCarriesNothing) {
     };
     auto shaft = [](int, int) { return -3 * kUm; };
     ModelSettings free = Elastic(TextureMode::kSampled);
-    Pair p(shaft, bore, free);
-    const Outcome r = At(p.analyzer, p.law, 30e-3, AnchorNear(p.analyzer, 30e-3));
+    ElasticPair p(shaft, bore, free);
+    const Outcome r = OutcomeAt(p.analyzer, p.law, 30e-3, AnchorNear(p.analyzer, 30e-3));
     EXPECT_LT(r.state.normal_force, 1e-6) << half_misalignment;
     EXPECT_EQ(r.wrench.force.y(), 0.0) << half_misalignment;
     if (half_misalignment > 3.0) {
@@ -139,8 +139,9 @@ TEST(ElasticLaw, TiltedBoreWithinTheClearanceCarriesNothing) {
       // Held straight, the same part is pressed at both ends of the bore.
       ModelSettings fixed = free;
       fixed.extra = ConfigNode::Parse("{tilt: fixed}", "test", "model.options");
-      Pair held(shaft, bore, fixed);
-      EXPECT_GT(At(held.analyzer, held.law, 30e-3, AnchorNear(held.analyzer, 30e-3)).state.normal_force,
+      ElasticPair held(shaft, bore, fixed);
+      EXPECT_GT(OutcomeAt(held.analyzer, held.law, 30e-3, AnchorNear(held.analyzer, 30e-3))
+                    .state.normal_force,
                 10.0);
     }
   }
@@ -196,14 +197,17 @@ TEST(ElasticLaw, DISABLED_AgreesWithCalculixOnEveryContactCase) {
   for (const FemCase& c : cases) {
     const int columns = 240;  // the FEM's elements around
     auto shaft = [&](int, int j) { return Interference(c, 2 * kPi * (j + 0.5) / columns) * kUm; };
-    Pair elastic(shaft, [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), columns);
+    ElasticPair elastic(
+        shaft, [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), columns);
     elastic.shaft.texture = TextureSpec{};
     ModelSettings paper = Settings(0.15, 0.0, TextureMode::kSampled);
-    Pair gps(shaft, [](int, int) { return 0.0; }, paper, columns);
+    ElasticPair gps(
+        shaft, [](int, int) { return 0.0; }, paper, columns);
     GpsLaw gps_law;
     gps_law.Prepare(gps.shaft, gps.bushing, paper);
-    const Outcome e = At(elastic.analyzer, elastic.law, 30e-3, AnchorNear(elastic.analyzer, 30e-3));
-    const Outcome g = At(gps.analyzer, gps_law, 30e-3, AnchorNear(gps.analyzer, 30e-3));
+    const Outcome e =
+        OutcomeAt(elastic.analyzer, elastic.law, 30e-3, AnchorNear(elastic.analyzer, 30e-3));
+    const Outcome g = OutcomeAt(gps.analyzer, gps_law, 30e-3, AnchorNear(gps.analyzer, 30e-3));
     const double model = e.state.normal_force / 20.0;  // N per mm of the 20 mm engagement
     const double law = gps_law.pressure_per_interference() * g.state.interference_volume / 20.0;
     const double err = model / c.force_per_mm - 1.0, err_paper = law / c.force_per_mm - 1.0;

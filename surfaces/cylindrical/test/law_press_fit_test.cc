@@ -13,8 +13,6 @@ namespace fitfeel::cylindrical {
 namespace {
 
 using namespace testing;
-constexpr double kPi = std::numbers::pi;
-constexpr double kUm = 1e-6;
 
 Wrench Apply(const ContactAnalyzer& analyzer, const ResistanceLaw& law, double depth,
              Eigen::Vector2d offset, double velocity) {

@@ -9,23 +9,21 @@
 #include "framework/model/surface_type.h"
 #include "framework/plugin/registry.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/source_tree.h"
 
 namespace fitfeel {
 namespace {
 
-namespace fs = std::filesystem;
+using test_support::ShippedScenario;
 
-// The shipped scenarios as `fitfeel run` loads them, with the build tree's plugins.
-fs::path Shipped(const std::string& scenario) {
-  return fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario;
-}
+namespace fs = std::filesystem;
 
 TEST(CylindricalScenarioConformance, PaperScenariosMeetTheirTolerancesOverAHundredSeeds) {
   PluginRegistry registry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
   registry.LoadAll();
   for (const char* scenario :
        {"paper-case1-h7js6.yaml", "paper-case1-h7g6.yaml", "paper-case1-ve1.yaml"}) {
-    const Scene scene = LoadScene(Shipped(scenario), registry);
+    const Scene scene = LoadScene(ShippedScenario(scenario), registry);
     ASSERT_EQ(scene.surface_id, "fitfeel.surface.cylindrical");
     const auto discretizer = scene.surface->MakeDiscretizer();
     const auto generator = scene.surface->MakeVariationGenerator();

@@ -23,19 +23,19 @@ std::string Read(const fs::path& file) {
   return text.str();
 }
 
-struct Block {
+struct Excerpt {
   std::string path;
   bool whole_file = false;
   std::string body;
 };
 
 // Every tagged fenced block of the guide.
-std::vector<Block> GuideBlocks(const std::string& guide_text) {
+std::vector<Excerpt> GuideBlocks(const std::string& guide_text) {
   std::istringstream guide(guide_text);
-  std::vector<Block> blocks;
+  std::vector<Excerpt> blocks;
   std::string line;
   while (std::getline(guide, line)) {
-    Block block;
+    Excerpt block;
     std::string tag;
     for (const char* kind : {"<!-- file: ", "<!-- excerpt: "}) {
       if (line.rfind(kind, 0) == 0) tag = kind;
@@ -57,7 +57,7 @@ TEST(Guide, QuotesTheExampleAsItIs) {
   const std::string guide = Read(kSource / "surfaces/README.md");
   const auto blocks = GuideBlocks(guide);
   EXPECT_GE(blocks.size(), 8u);
-  for (const Block& block : blocks) {
+  for (const Excerpt& block : blocks) {
     ASSERT_TRUE(fs::exists(kSource / block.path))
         << "the guide quotes " << block.path << ", which does not exist";
     const std::string text = Read(kSource / block.path);

@@ -1,0 +1,30 @@
+#pragma once
+
+namespace fitfeel {
+
+// Standard gravity (CGPM 1901), m/s^2: turns the part's weight into its mass.
+inline constexpr double kStandardGravity = 9.80665;
+
+// How the moving part moves across the mating axis (the scene's `part_motion` section). Along the
+// axis (and about it) the part is where the device puts it; across it the device reports only the
+// pose it commands and the external load it applies to the part (DeviceState::load: the robot
+// carrying the part's weight), and this is what becomes of them.
+enum class RadialMotion {
+  // The part is where the device says: the holder takes any load (a hand at a haptic device).
+  kHeld,
+  // The constrained stage places the part each tick where the rendered radial force balances the
+  // load (no radial dynamics): the paper's case study, whose shaft settles onto the bore under its
+  // weight. With no load, as held.
+  kQuasiStatic,
+  // The part floats: its weight and the rendered radial force move the mass m = |load| / g
+  // (semi-implicit Euler, the contact stiffness taken implicitly; part_motion.cc). With no load
+  // (before the entrance, where the robot carries the part), as held.
+  kDynamic,
+};
+
+struct PartMotionSettings {
+  RadialMotion radial = RadialMotion::kQuasiStatic;
+  double damping = 0.0;  // viscous damping of the part's radial motion, N*s/m (dynamic)
+};
+
+}  // namespace fitfeel
