@@ -62,6 +62,17 @@ endfunction()
 # core), so the build links and lists a few executables instead of one per folder. A binary that
 # replaces the global operator new (FITFEEL_COUNT_ALLOCATIONS) takes a name of its own. NEEDS names
 # what the tests load or run (plugins, the CLI); it may be defined later in the tree.
+# fitfeel_off_tick(<target>...): compiles the targets' own sources at FITFEEL_OFF_TICK_OPTIMIZATION
+# in Release (see the top-level CMakeLists.txt); what they link keeps its own level.
+function(fitfeel_off_tick)
+  if(FITFEEL_OFF_TICK_OPTIMIZATION)
+    foreach(target IN LISTS ARGN)
+      target_compile_options(${target} PRIVATE
+                             $<$<CONFIG:Release>:${FITFEEL_OFF_TICK_OPTIMIZATION}>)
+    endforeach()
+  endif()
+endfunction()
+
 function(fitfeel_add_test name)
   if(NOT FITFEEL_BUILD_TESTS)
     return()
@@ -81,6 +92,7 @@ function(fitfeel_add_test name)
                                                FITFEEL_TEST_BUILD_DIR=fitfeel_test_build_dir\(\))
     target_compile_options(${name} PRIVATE
                            -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
+    fitfeel_off_tick(${name})
     gtest_discover_tests(${name}
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
       PROPERTIES LABELS "${ARG_LABELS}"
@@ -138,6 +150,7 @@ function(fitfeel_add_fuzzer name)
     set(name ${name}_replay)
     add_executable(${name} ${ARG_SOURCES} ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_replay_main.cc)
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+    fitfeel_off_tick(${name})
     list(TRANSFORM ARG_REPLAY_ALSO PREPEND ${PROJECT_SOURCE_DIR}/)
     string(REGEX REPLACE "_replay$" "" corpus ${name})
     add_test(NAME fuzz_replay.${corpus}
