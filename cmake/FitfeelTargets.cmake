@@ -73,6 +73,42 @@ function(fitfeel_off_tick)
   endif()
 endfunction()
 
+# The settings every test target compiles with (the test trees' paths, the off-tick level).
+function(fitfeel_test_settings name)
+  target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock)
+  # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees
+  # come from a generated library; the macros call it (framework/testing/test_paths.h).
+  target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR=fitfeel_test_source_dir\(\)
+                                             FITFEEL_TEST_BUILD_DIR=fitfeel_test_build_dir\(\))
+  # Forced into every test file; with the precompiled header it comes from there (a header
+  # forced before the precompiled one would keep the compiler from using it).
+  if(NOT FITFEEL_TEST_PCH)
+    target_compile_options(${name} PRIVATE
+                           -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
+  endif()
+  fitfeel_off_tick(${name})
+endfunction()
+
+# One precompiled header for every test target: GoogleTest, GoogleMock, Eigen and the standard
+# headers most test files include are parsed once per build instead of once per translation unit
+# (each test file otherwise spends seconds on them). Made with the test targets' own settings,
+# which REUSE_FROM requires.
+function(fitfeel_test_pch)
+  if(TARGET fitfeel_test_pch)
+    return()
+  endif()
+  # An executable like the tests (position-independent the same way, which the header must match).
+  file(WRITE ${CMAKE_BINARY_DIR}/test_pch.cc
+       "// The test targets' precompiled header.\nint main() { return 0; }\n")
+  add_executable(fitfeel_test_pch ${CMAKE_BINARY_DIR}/test_pch.cc)
+  fitfeel_test_settings(fitfeel_test_pch)
+  set_target_properties(fitfeel_test_pch PROPERTIES UNITY_BUILD OFF)
+  target_precompile_headers(fitfeel_test_pch PRIVATE
+    ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h
+    <algorithm> <cmath> <cstdint> <filesystem> <fstream> <functional> <map> <memory> <optional>
+    <sstream> <string> <vector> <Eigen/Core> <Eigen/Geometry> <gmock/gmock.h> <gtest/gtest.h>)
+endfunction()
+
 function(fitfeel_add_test name)
   if(NOT FITFEEL_BUILD_TESTS)
     return()
@@ -82,17 +118,13 @@ function(fitfeel_add_test name)
     target_sources(${name} PRIVATE ${ARG_SOURCES})
   else()
     add_executable(${name} ${ARG_SOURCES})
-    target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock
-                                          GTest::gtest_main)
+    target_link_libraries(${name} PRIVATE GTest::gtest_main fitfeel_test_paths)
+    fitfeel_test_settings(${name})
+    if(FITFEEL_TEST_PCH)
+      fitfeel_test_pch()
+      target_precompile_headers(${name} REUSE_FROM fitfeel_test_pch)
+    endif()
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
-    # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees
-    # come from a generated library; the macros call it (framework/testing/test_paths.h).
-    target_link_libraries(${name} PRIVATE fitfeel_test_paths)
-    target_compile_definitions(${name} PRIVATE FITFEEL_TEST_SOURCE_DIR=fitfeel_test_source_dir\(\)
-                                               FITFEEL_TEST_BUILD_DIR=fitfeel_test_build_dir\(\))
-    target_compile_options(${name} PRIVATE
-                           -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
-    fitfeel_off_tick(${name})
     gtest_discover_tests(${name}
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
       PROPERTIES LABELS "${ARG_LABELS}"

@@ -524,28 +524,30 @@ void PhantomDevice::DoWrite(const Wrench& wrench) noexcept { pending_force_ = wr
 
 PhantomDiagnostics PhantomDevice::diagnostics() const { return diagnostics_; }
 
-nlohmann::json PhantomDevice::report() const {
+DeviceReport PhantomDevice::report() const {
   const PhantomDiagnostics& d = diagnostics_;
-  return {{"model", d.hd_model},
-          {"library", d.library},
-          {"calibration", d.calibration},
-          {"calibration_updates", d.calibration_updates},
-          {"calibration_wait_s", d.calibration_wait},
-          {"update_rate_Hz", d.update_rate},
-          {"mean_period_s", d.mean_period},
-          {"max_period_s", d.max_period},
-          {"servo_ticks", d.ticks},
-          {"force_errors", d.force_errors},
-          {"velocity_errors", d.velocity_errors},
-          {"warm_motor_errors", d.warm_motor_errors},
-          {"zeroed_ticks", d.zeroed_ticks},
-          {"ramped_ticks", d.ramped_ticks},
-          {"derated_ticks", d.derated_ticks},
-          {"clamped_writes", d.clamped_writes},
-          {"zeroings", d.zeroings},
-          {"max_motor_temperature", d.max_motor_temperature},
-          {"max_force_sent_N", d.max_force_sent},
-          {"stopped_on_faults", d.stopped_on_faults}};
+  DeviceReport r;
+  r.Set("model", d.hd_model)
+      .Set("library", d.library)
+      .Set("calibration", d.calibration)
+      .Set("calibration_updates", d.calibration_updates)
+      .Set("calibration_wait_s", d.calibration_wait)
+      .Set("update_rate_Hz", d.update_rate)
+      .Set("mean_period_s", d.mean_period)
+      .Set("max_period_s", d.max_period)
+      .Set("servo_ticks", d.ticks)
+      .Set("force_errors", d.force_errors)
+      .Set("velocity_errors", d.velocity_errors)
+      .Set("warm_motor_errors", d.warm_motor_errors)
+      .Set("zeroed_ticks", d.zeroed_ticks)
+      .Set("ramped_ticks", d.ramped_ticks)
+      .Set("derated_ticks", d.derated_ticks)
+      .Set("clamped_writes", d.clamped_writes)
+      .Set("zeroings", d.zeroings)
+      .Set("max_motor_temperature", d.max_motor_temperature)
+      .Set("max_force_sent_N", d.max_force_sent)
+      .Set("stopped_on_faults", d.stopped_on_faults);
+  return r;
 }
 
 }  // namespace fitfeel::phantom

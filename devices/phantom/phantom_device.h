@@ -98,7 +98,7 @@ class PhantomDevice final : public Device {
   DeviceSpec spec() const override { return spec_; }
   ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
   void RunServoLoop(double duration, const std::function<bool(double)>& tick) override;
-  nlohmann::json report() const override;
+  DeviceReport report() const override;
   PhantomDiagnostics diagnostics() const;
 
  protected:

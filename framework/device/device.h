@@ -6,11 +6,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <nlohmann/json.hpp>
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/core/wrench.h"
+#include "framework/device/device_report.h"
 
 namespace fitfeel {
 
@@ -81,8 +81,8 @@ class FITFEEL_API Device {
   // True while the device wants the run to continue (e.g. a replay that has not ended).
   virtual bool active() const { return true; }
   // After a run: what the device saw (faults, recoveries, calibration, measured rate), written to
-  // summary.json's `device_report`; null when it has nothing to report.
-  virtual nlohmann::json report() const { return nullptr; }
+  // summary.json's `device_report`; empty when it has nothing to report.
+  virtual DeviceReport report() const { return {}; }
 
  protected:
   virtual void DoConfigure(const ConfigNode& node) = 0;

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 #include <system_error>
+#include <utility>
+#include <variant>
 
 #include "framework/core/error.h"
 #include "framework/core/number_text.h"
@@ -192,7 +194,13 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
                  {"energy_absorbed_J", safety.energy},
                  {"energy_created_J", safety.energy_created},
                  {"controller_energy_J", safety.controller_energy}};
-  if (!info.device_report.is_null()) j["device_report"] = info.device_report;
+  if (!info.device_report.empty()) {
+    nlohmann::json report = nlohmann::json::object();
+    for (const DeviceReport::Entry& e : info.device_report.entries()) {
+      std::visit([&](const auto& value) { report[e.key] = value; }, e.value);
+    }
+    j["device_report"] = std::move(report);
+  }
   if (!info.measured_parts.is_null()) j["measured_parts"] = info.measured_parts;
   j["prepare_s"] = {{"discretize", info.discretize_seconds},
                     {"generate", info.generate_seconds},

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/core/export.h"
+#include "framework/device/device_report.h"
 #include "framework/device/recording.h"
 #include "framework/runtime/tick_record.h"
 
@@ -35,8 +36,8 @@ struct RunInfo {
   double analyze_seconds = 0.0;
   double prepare_seconds = 0.0;
   int inner_rows = 0, inner_columns = 0, outer_rows = 0, outer_columns = 0;
-  // What the device reported after the run (Device::report); null: nothing.
-  nlohmann::json device_report;
+  // What the device reported after the run (Device::report); empty: nothing.
+  DeviceReport device_report;
   // Measured parts: file, kind, whether each meets its drawing; null: none measured.
   nlohmann::json measured_parts;
 };

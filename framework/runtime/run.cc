@@ -148,7 +148,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     if (options.watch) options.watch(nullptr);
     result.stats = scheduler.stats();
     info.device_report = scene.device->report();
-    if (info.device_report.is_object() && info.device_report.value("stopped_on_faults", false)) {
+    if (info.device_report.IsTrue("stopped_on_faults")) {
       result.notes.push_back("warning: the device '" + scene.device_id +
                              "' kept faulting and the run was stopped early; see device_report "
                              "in summary.json");

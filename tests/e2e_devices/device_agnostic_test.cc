@@ -58,7 +58,7 @@ class ProbeDevice final : public Device {
     inner_->RunServoLoop(duration, tick);
   }
   bool active() const override { return inner_->active(); }
-  nlohmann::json report() const override { return inner_->report(); }
+  DeviceReport report() const override { return inner_->report(); }
 
   const std::vector<RecordedSample>& samples() const { return samples_; }
   std::size_t reads() const { return reads_; }
