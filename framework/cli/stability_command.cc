@@ -75,7 +75,7 @@ double ForceScale(const StabilityOptions& options, const Scene& scene, const Dev
     return *options.force_scale;
   }
   if (!scene.safety) return 1.0;
-  const SafetySettings safety = ParseSafetySettings(*scene.safety);
+  const SafetySettings& safety = scene.safety->settings;
   if (safety.physical_full_scale) return spec.max_continuous_force / *safety.physical_full_scale;
   return safety.force_scale;
 }

@@ -78,10 +78,10 @@ double DeviceStiffness(const SafetyChain& chain, double physical_stiffness) noex
 
 }  // namespace
 
-SafetySettings RuntimeSafetySettings(const std::optional<ConfigNode>& safety,
+SafetySettings RuntimeSafetySettings(const std::optional<SafetySection>& safety,
                                      const DeviceSpec& spec) {
-  SafetySettings settings = safety ? ParseSafetySettings(*safety) : SafetySettings{};
-  const bool names_coupling = safety && safety->is_map() && safety->Has("coupling");
+  SafetySettings settings = safety ? safety->settings : SafetySettings{};
+  const bool names_coupling = safety && safety->names_coupling;
   if (spec.max_force == std::numeric_limits<double>::infinity() && !names_coupling) {
     settings.coupling = CouplingMode::kDirect;
   }

@@ -56,8 +56,8 @@ FITFEEL_API SchedulerSettings SceneSchedulerSettings(const Scene& scene);
 // hand) renders directly unless the section names a `coupling`: no force it renders can hurt
 // anyone, and the paper's traces were computed with the law at the device, so the chain must be a
 // pass-through there (scale 1, direct, limits +inf, no passivity controller). Every other device
-// gets the chain's own default, the virtual coupling. Throws ScenarioError for a bad section.
-FITFEEL_API SafetySettings RuntimeSafetySettings(const std::optional<ConfigNode>& safety,
+// gets the chain's own default, the virtual coupling.
+FITFEEL_API SafetySettings RuntimeSafetySettings(const std::optional<SafetySection>& safety,
                                                  const DeviceSpec& spec);
 
 // What the ticks of one run change, apart from the buffers they fill (see docs/run-state.md). The

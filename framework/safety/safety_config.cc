@@ -61,4 +61,11 @@ void SafetyChain::Configure(const std::optional<ConfigNode>& safety, const Devic
   Configure(safety ? ParseSafetySettings(*safety) : SafetySettings{}, spec, period);
 }
 
+SafetySection ParseSafetySection(const ConfigNode& node) {
+  SafetySection section;
+  section.settings = ParseSafetySettings(node);
+  section.names_coupling = node.is_map() && node.Has("coupling");
+  return section;
+}
+
 }  // namespace fitfeel

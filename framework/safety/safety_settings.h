@@ -54,4 +54,13 @@ struct SafetySettings {
 // Throws ScenarioError at the offending key.
 FITFEEL_API SafetySettings ParseSafetySettings(const ConfigNode& node);
 
+// The `safety` section as the scene holds it, parsed at load: the settings, and whether the
+// section chose the coupling itself (a device without a motor renders directly unless it did).
+struct SafetySection {
+  SafetySettings settings;
+  bool names_coupling = false;
+};
+// Throws ScenarioError at the offending key.
+FITFEEL_API SafetySection ParseSafetySection(const ConfigNode& node);
+
 }  // namespace fitfeel

@@ -480,9 +480,9 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   if (std::optional<ConfigNode> safety = root.Find("safety")) {
     if (!safety->is_map()) safety->Fail("a map of safety settings", safety->Describe());
     safety->Keys();  // no repeated keys
-    // Parsed here as the run parses it, so that `validate` refuses what `run` would, located.
-    (void)ParseSafetySettings(*safety);
-    scene.safety = *safety;
+    // Parsed here, once: `validate` refuses what `run` would, located, and the run takes the
+    // settings as they are.
+    scene.safety = ParseSafetySection(*safety);
   }
   scene.run = ParseRun(root.Child("run"));
   scene.cost = CheckPrepare(root.Child("model"), *scene.surface, scene.inner, scene.outer,

@@ -13,6 +13,7 @@
 #include "framework/model/gps_spec.h"
 #include "framework/model/model_settings.h"
 #include "framework/model/surface_type.h"
+#include "framework/safety/safety_settings.h"
 #include "framework/scenario/part_motion_settings.h"
 
 namespace fitfeel {
@@ -72,7 +73,7 @@ struct Scene {
   ModelSettings model;
   std::string device_id;
   std::shared_ptr<Device> device;
-  std::optional<ConfigNode> safety;  // the `safety` section when present (force scaling etc.)
+  std::optional<SafetySection> safety;  // the `safety` section when present (force scaling etc.)
   RunSettings run;
   SceneCost cost;
 };

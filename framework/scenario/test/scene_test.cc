@@ -523,7 +523,8 @@ TEST_F(SceneTest, FullScenarioIsParsedIntoSi) {
   EXPECT_DOUBLE_EQ(state.position.y(), 2.0 * 0.010);
 
   ASSERT_TRUE(scene.safety.has_value());
-  EXPECT_EQ(scene.safety->Quantity("physical_full_scale", Dimension::kForce), 20.0);
+  ASSERT_TRUE(scene.safety->settings.physical_full_scale.has_value());
+  EXPECT_EQ(*scene.safety->settings.physical_full_scale, 20.0);
 
   EXPECT_EQ(scene.run.rate, 2000.0);
   EXPECT_EQ(scene.run.duration, 5.0);
