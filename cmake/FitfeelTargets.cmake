@@ -27,19 +27,6 @@ function(fitfeel_add_plugin name)
   endif()
 endfunction()
 
-# One precompiled header for the plugins' model libraries (in the tree), made by a library built
-# as they are (static, position-independent, linking the framework), as REUSE_FROM requires.
-function(fitfeel_model_pch)
-  if(TARGET fitfeel_model_pch)
-    return()
-  endif()
-  file(WRITE ${CMAKE_BINARY_DIR}/model_pch.cc "// The plugin models' precompiled header.\n")
-  add_library(fitfeel_model_pch STATIC ${CMAKE_BINARY_DIR}/model_pch.cc)
-  target_link_libraries(fitfeel_model_pch PUBLIC fitfeel::framework)
-  set_target_properties(fitfeel_model_pch PROPERTIES UNITY_BUILD OFF)
-  target_precompile_headers(fitfeel_model_pch PRIVATE ${FITFEEL_LIBRARY_PCH_HEADERS})
-endfunction()
-
 # fitfeel_add_plugin_folder(<surface|device> <name> SOURCES ... [LIBS ...] [OUTPUT_DIR dir]) is the
 # whole CMakeLists.txt of a plugin folder, which has one shape for every plugin:
 #   <name>_<role>.h/.cc  the model, a static library fitfeel_<kind>_<name>_model, namespace
@@ -55,10 +42,6 @@ function(fitfeel_add_plugin_folder kind name)
   set(plugin fitfeel_${kind}_${name})
   add_library(${plugin}_model STATIC ${ARG_SOURCES})
   target_link_libraries(${plugin}_model PUBLIC fitfeel::framework ${ARG_LIBS})
-  if(FITFEEL_LIBRARY_PCH AND TARGET fitfeel_framework)
-    fitfeel_model_pch()
-    target_precompile_headers(${plugin}_model REUSE_FROM fitfeel_model_pch)
-  endif()
   set(output_dir)
   if(ARG_OUTPUT_DIR)
     set(output_dir OUTPUT_DIR ${ARG_OUTPUT_DIR})

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -72,7 +74,8 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
   if (n < 4) throw std::invalid_argument("roundness needs at least 4 points");
   if (!points.allFinite()) throw std::invalid_argument("roundness: non-finite point");
   RoundnessResult out;
-  out.centre = LeastSquaresCircle(points).centre;
+  // The algebraic circle is start enough: the steps below recentre to the minimum zone's centre.
+  out.centre = AlgebraicCircle(points).centre;
   Eigen::VectorXd rho(n), cs(n), sn(n);
   auto polar = [&]() {
     for (long i = 0; i < n; ++i) {
@@ -83,24 +86,65 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
     }
   };
   // Variables (a, b, r_in, r_out) in units of `scale`, deviations from the mean radius.
-  Eigen::MatrixXd A(2 * n, 4);
-  Eigen::VectorXd b(2 * n);
   const Eigen::Vector4d c(0.0, 0.0, -1.0, 1.0);
+  Eigen::VectorXd dev(n);
+  std::vector<long> order(static_cast<std::size_t>(n));
+  std::vector<char> in_set(static_cast<std::size_t>(n));
+  std::vector<long> set;
   for (int step = 0; step < 8; ++step) {
     polar();
     const double mean = rho.mean();
     const double scale = (rho.array() - mean).abs().maxCoeff();
     if (scale <= 1e-15 * mean) break;  // perfectly round to rounding
-    for (long i = 0; i < n; ++i) {
-      const double dev = (rho(i) - mean) / scale;
-      // dev - a cos - b sin <= r_out
-      A.row(2 * i) << -cs(i), -sn(i), 0.0, -1.0;
-      b(2 * i) = -dev;
-      // r_in <= dev - a cos - b sin
-      A.row(2 * i + 1) << cs(i), sn(i), 1.0, 0.0;
-      b(2 * i + 1) = dev;
+    dev = (rho.array() - mean) / scale;
+    // The zone is held by a few points (four, generically): the program is solved over a working
+    // set, first the points farthest out and in, then with every point the solution leaves
+    // outside its zone added, until none is. The optimum of such a relaxation that every point
+    // satisfies is the whole program's (the same constraints, fewer rows to pivot through).
+    std::iota(order.begin(), order.end(), 0L);
+    const long k = std::min<long>(n, 8);
+    std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                      [&](long i, long j) { return dev(i) > dev(j); });
+    set.assign(order.begin(), order.begin() + k);
+    std::partial_sort(order.begin(), order.begin() + k, order.end(),
+                      [&](long i, long j) { return dev(i) < dev(j); });
+    std::fill(in_set.begin(), in_set.end(), 0);
+    for (long i : set) in_set[static_cast<std::size_t>(i)] = 1;
+    for (long j = 0; j < k; ++j) {
+      const long i = order[static_cast<std::size_t>(j)];
+      if (!in_set[static_cast<std::size_t>(i)]) {
+        set.push_back(i);
+        in_set[static_cast<std::size_t>(i)] = 1;
+      }
     }
-    const LinearProgramResult lp = MinimiseLinearProgram(c, A, b);
+    LinearProgramResult lp;
+    for (;;) {
+      const long m = static_cast<long>(set.size());
+      Eigen::MatrixXd A(2 * m, 4);
+      Eigen::VectorXd b(2 * m);
+      for (long r = 0; r < m; ++r) {
+        const long i = set[static_cast<std::size_t>(r)];
+        // dev - a cos - b sin <= r_out
+        A.row(2 * r) << -cs(i), -sn(i), 0.0, -1.0;
+        b(2 * r) = -dev(i);
+        // r_in <= dev - a cos - b sin
+        A.row(2 * r + 1) << cs(i), sn(i), 1.0, 0.0;
+        b(2 * r + 1) = dev(i);
+      }
+      lp = MinimiseLinearProgram(c, A, b);
+      // Points outside the zone found (beyond rounding: deviations are of order 1 here).
+      bool added = false;
+      for (long i = 0; i < n; ++i) {
+        if (in_set[static_cast<std::size_t>(i)]) continue;
+        const double e = dev(i) - lp.x(0) * cs(i) - lp.x(1) * sn(i);
+        if (e > lp.x(3) + 1e-12 || e < lp.x(2) - 1e-12) {
+          set.push_back(i);
+          in_set[static_cast<std::size_t>(i)] = 1;
+          added = true;
+        }
+      }
+      if (!added) break;
+    }
     const Eigen::Vector2d shift = lp.x.head<2>() * scale;
     out.centre += shift;
     if (shift.norm() <= 1e-9 * scale + 1e-15 * mean) break;
