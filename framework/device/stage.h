@@ -25,7 +25,8 @@ struct StageOutput {
   ElasticLimitCheck elastic;             // the contact's stresses against yield (constrained)
   StageId next = StageId::kPositioning;  // stage for the next tick (hand-over)
   // Radial stiffness of the contact at this pose, -dF/dx along the force (N/m); 0 when free. A
-  // simulated device integrates its inertia implicitly with it, the safety chain's coupling too.
+  // dynamic moving part (PartMotion) and a device with inertia of its own (the scripted hand)
+  // integrate it implicitly, the safety chain's coupling too.
   double stiffness = 0.0;
   // Free space in front of the part when it is not in contact: the distance (m) it can move along
   // `gap_direction` (unit, in the (x, z) cross-section) before touching; infinity when unknown.

@@ -98,7 +98,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   if (!out->contact.engaged) run->law = LawState{};
   if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
   if (settle && Settle(device.load, motion, &run->last_settled, &run->law, out)) {
-    // Settled: the device integrates no radial motion, so it needs neither stiffness nor gap.
+    // Settled: nothing integrates the part's radial motion, so neither stiffness nor gap is needed.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
     out->gap_direction.setZero();
