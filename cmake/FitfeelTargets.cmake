@@ -73,7 +73,7 @@ function(fitfeel_off_tick)
   endif()
 endfunction()
 
-# The settings every test target compiles with (the test trees' paths, the off-tick level).
+# The settings every test target compiles with (the test trees' paths, the tests' level).
 function(fitfeel_test_settings name)
   target_link_libraries(${name} PRIVATE fitfeel::framework GTest::gtest GTest::gmock)
   # gtest_discover_tests keeps only the first entry of a list-valued ENVIRONMENT, so the trees
@@ -86,7 +86,9 @@ function(fitfeel_test_settings name)
     target_compile_options(${name} PRIVATE
                            -include ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.h)
   endif()
-  fitfeel_off_tick(${name})
+  if(FITFEEL_TEST_OPTIMIZATION)
+    target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:${FITFEEL_TEST_OPTIMIZATION}>)
+  endif()
 endfunction()
 
 # One precompiled header for every test target: GoogleTest, GoogleMock, Eigen and the standard
