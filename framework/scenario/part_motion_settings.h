@@ -7,8 +7,9 @@ inline constexpr double kStandardGravity = 9.80665;
 
 // How the moving part moves across the mating axis (the scene's `part_motion` section). Along the
 // axis (and about it) the part is where the device puts it; across it the device reports only the
-// pose it commands and the external load it applies to the part (DeviceState::load: the robot
-// carrying the part's weight), and this is what becomes of them.
+// pose it commands and the external load it lets act on the part (DeviceState::load: the
+// simulated robot lets the part's weight act once its leading end is inside), and this is what
+// becomes of them.
 enum class RadialMotion {
   // The part is where the device says: the holder takes any load (a hand at a haptic device).
   kHeld,
@@ -17,8 +18,8 @@ enum class RadialMotion {
   // weight. With no load, as held.
   kQuasiStatic,
   // The part floats: its weight and the rendered radial force move the mass m = |load| / g
-  // (semi-implicit Euler, the contact stiffness taken implicitly; part_motion.cc). With no load
-  // (before the entrance, where the robot carries the part), as held.
+  // (semi-implicit Euler, the contact stiffness taken implicitly; framework/runtime/part_motion.h).
+  // With no load (before the entrance, where the robot carries the part), as held.
   kDynamic,
 };
 
