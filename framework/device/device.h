@@ -46,6 +46,12 @@ struct DeviceState {
   Eigen::Vector2d load{0.0, 0.0};
 };
 
+// A contact stiffness handed over per tick (N/m) as its users take it: what is not a finite,
+// non-negative stiffness is none (0).
+inline double SanitizedStiffness(double stiffness) noexcept {
+  return stiffness >= 0.0 && stiffness < 1e300 ? stiffness : 0.0;
+}
+
 // Who calls the tick: the framework's scheduler, or the device vendor's servo thread.
 enum class ClockOwner { kFramework, kDevice };
 
@@ -70,7 +76,7 @@ class FITFEEL_API Device {
   // integrates the contact implicitly with it (a press fit is far stiffer than an explicit step at
   // 1 kHz can hold); hardware ignores it.
   void SetEnvironmentStiffness(double stiffness) noexcept {
-    DoSetEnvironmentStiffness(stiffness >= 0.0 && stiffness < 1e300 ? stiffness : 0.0);
+    DoSetEnvironmentStiffness(SanitizedStiffness(stiffness));
   }
   // The device's limits. A device that measures them (hardware) knows them only after Start.
   virtual DeviceSpec spec() const = 0;

@@ -1,7 +1,6 @@
 #include "framework/plot/render.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>

@@ -15,7 +15,8 @@ PartMotion::PartMotion(const PartMotionSettings& settings, double period)
   if (!(std::isfinite(period) && period > 0.0 && period <= 1.0)) {
     throw UserError("part motion: the period must be in (0, 1] s, not " + MessageNumber(period));
   }
-  if (!(std::isfinite(settings.damping) && settings.damping >= 0.0 && settings.damping <= 1e6)) {
+  if (!(std::isfinite(settings.damping) && settings.damping >= 0.0 &&
+        settings.damping <= kMaxPartDamping)) {
     throw UserError("part motion: damping must be in [0, 1e6] N*s/m, not " +
                     MessageNumber(settings.damping));
   }
@@ -61,9 +62,7 @@ void PartMotion::Step(const DeviceState& device, const Wrench& wrench,
   const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());
   const Eigen::Vector2d x = s.position;
   Eigen::Vector2d v = s.velocity;
-  // Sanitised as Device::SetEnvironmentStiffness does: what is not a stiffness is none.
-  const double stiffness =
-      feedback.stiffness >= 0.0 && feedback.stiffness < 1e300 ? feedback.stiffness : 0.0;
+  const double stiffness = SanitizedStiffness(feedback.stiffness);
   const double gap = feedback.gap >= 0.0 ? feedback.gap : 0.0;
   // At a kink of the piecewise-linear contact force (an assembly-space vertex, a row entering)
   // the stage's 1 nm probe can read a fraction of the stiffness for a tick. Too soft a slope

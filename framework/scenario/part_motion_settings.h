@@ -23,6 +23,10 @@ enum class RadialMotion {
   kDynamic,
 };
 
+// The largest radial damping a scene may give, N*s/m: it stops a 1 kg part within a microsecond,
+// beyond which nothing moves.
+inline constexpr double kMaxPartDamping = 1e6;
+
 struct PartMotionSettings {
   RadialMotion radial = RadialMotion::kQuasiStatic;
   double damping = 0.0;  // viscous damping of the part's radial motion, N*s/m (dynamic)

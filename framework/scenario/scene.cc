@@ -270,9 +270,8 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
                     : name == "quasi_static" ? RadialMotion::kQuasiStatic
                                              : RadialMotion::kDynamic;
   }
-  // 1e6 N*s/m stops a 1 kg part within a microsecond: beyond it nothing moves.
   if (std::optional<ConfigNode> damping = node.Find("damping")) {
-    motion.damping = damping->AsQuantityIn(Dimension::kDamping, 0.0, 1e6);
+    motion.damping = damping->AsQuantityIn(Dimension::kDamping, 0.0, kMaxPartDamping);
   }
   return motion;
 }

@@ -231,14 +231,14 @@ nlohmann::json SummaryPhysics(nlohmann::json summary) {
 // How the part moves under the device's load (the scene's part_motion): quasi_static (the
 // default: the stage settles the part where the contact carries the weight) or dynamic (the
 // framework integrates the part's radial motion).
-std::string PartMotion(const std::string& radial) {
+std::string PartMotionYaml(const std::string& radial) {
   return "part_motion:\n  radial: " + radial + "\n";
 }
 
 // The paper's robot: 10 mm/s, the shaft's 2 N weight, with the part's radial motion.
 std::string SimulatedDevice(const std::string& radial = "quasi_static") {
   return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n  radial_load: 2 N\n" +
-         PartMotion(radial);
+         PartMotionYaml(radial);
 }
 
 // A simulated run whose device stream the replay plays back, and its recording.
@@ -263,7 +263,7 @@ const Recorded& SimulatedRecording(const std::string& radial) {
 std::string ReplayDevice(const std::string& radial) {
   return "device:\n  plugin: fitfeel.device.replay\n  file: '" +
          SimulatedRecording(radial).recording.string() + "'\n  model: PHANTOM Desktop\n" +
-         PartMotion(radial);
+         PartMotionYaml(radial);
 }
 
 // Runs each case once; the tests below read the same run.
@@ -362,7 +362,7 @@ TEST_P(ReplayTest, ReproducesTheRecordedRunBitForBit) {
           "'\n  model: PHANTOM Desktop\n  spec: {max_force: 1e9 N, max_continuous_force: 1e9 N, "
           "max_stiffness: unlimited}\n"
           "safety:\n  coupling: direct\n" +
-          PartMotion(radial));
+          PartMotionYaml(radial));
   const DeviceRunResult replay = RunWithProbe(scene, 4.0);
   const auto& a = recorded.run.probe->samples();
   const auto& b = replay.probe->samples();
