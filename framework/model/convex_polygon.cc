@@ -131,6 +131,95 @@ double RayExtent(const Eigen::Vector2d* v, int count, const Eigen::Vector2d& dir
   return std::isfinite(extent) ? extent : 0.0;
 }
 
+bool FanAngles(const Eigen::Vector2d* v, int count, const Eigen::Vector2d& centre,
+               double* angles) noexcept {
+  if (count < 3) return false;
+  double area2 = 0.0, longest2 = 0.0;
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector2d e = v[(k + 1) % count] - v[k];
+    area2 += Cross(v[k] - v[0], v[(k + 1) % count] - v[0]);
+    longest2 = std::max(longest2, e.squaredNorm());
+    // Strictly inside: left of every edge that has a length, by more than rounding.
+    if (e.squaredNorm() > 0.0 && !(Cross(e, centre - v[k]) > 1e-12 * e.squaredNorm())) {
+      return false;
+    }
+  }
+  // As ProjectOntoPolygon: a polygon closed down to a point or a segment has no inside.
+  if (!(area2 > 1e-12 * longest2) || longest2 == 0.0) return false;
+  const double first = std::atan2(v[0].y() - centre.y(), v[0].x() - centre.x());
+  angles[0] = first;
+  for (int k = 1; k < count; ++k) {
+    double a = std::atan2(v[k].y() - centre.y(), v[k].x() - centre.x());
+    while (a < angles[k - 1]) a += 2.0 * M_PI;
+    angles[k] = a;
+  }
+  return angles[count - 1] < first + 2.0 * M_PI;
+}
+
+namespace {
+
+// The edge k (from vertex k to k + 1) whose wedge about the fan's centre holds `angle`.
+int WedgeOf(const double* angles, int count, double angle) noexcept {
+  double a = std::remainder(angle - angles[0], 2.0 * M_PI);
+  if (a < 0.0) a += 2.0 * M_PI;
+  a += angles[0];
+  const int k = static_cast<int>(std::upper_bound(angles, angles + count, a) - angles) - 1;
+  return std::clamp(k, 0, count - 1);
+}
+
+double SegmentDistance2(const Eigen::Vector2d* v, int count, int k, const Eigen::Vector2d& x,
+                        Eigen::Vector2d* nearest) noexcept {
+  const Eigen::Vector2d& a = v[k];
+  const Eigen::Vector2d e = v[(k + 1) % count] - a;
+  const double ee = e.squaredNorm();
+  const double t = ee > 0.0 ? std::clamp((x - a).dot(e) / ee, 0.0, 1.0) : 0.0;
+  *nearest = a + t * e;
+  return (x - *nearest).squaredNorm();
+}
+
+}  // namespace
+
+Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count, const PolygonFan& fan,
+                                   const Eigen::Vector2d& x) noexcept {
+  if (!fan.valid()) return ProjectOntoPolygon(v, count, x);
+  const Eigen::Vector2d r = x - fan.centre;
+  const int k = WedgeOf(fan.angles, count, std::atan2(r.y(), r.x()));
+  const Eigen::Vector2d e = v[(k + 1) % count] - v[k];
+  if (Cross(e, x - v[k]) >= 0.0) return x;  // on the inner side of the edge of its wedge: inside
+  Eigen::Vector2d best_point, point;
+  double best = SegmentDistance2(v, count, k, x, &best_point);
+  // Forwards while the distance falls, else backwards; a full turn bounds the walk.
+  // Coincident vertices (edges of no length) are stepped over: their distance is their end's.
+  auto walk = [&](int direction) {
+    bool moved = false;
+    int j = k;
+    for (int steps = 1; steps < count; ++steps) {
+      j = (j + direction + count) % count;
+      if (v[(j + 1) % count] == v[j]) continue;
+      const double d = SegmentDistance2(v, count, j, x, &point);
+      if (!(d < best)) break;
+      best = d;
+      best_point = point;
+      moved = true;
+    }
+    return moved;
+  };
+  if (!walk(+1)) walk(-1);
+  return best_point;
+}
+
+double RayExtent(const Eigen::Vector2d* v, int count, const PolygonFan& fan,
+                 const Eigen::Vector2d& direction) noexcept {
+  if (!fan.valid()) return RayExtent(v, count, direction);
+  const int k = WedgeOf(fan.angles, count, std::atan2(direction.y(), direction.x()));
+  const Eigen::Vector2d& a = v[k];
+  const Eigen::Vector2d e = v[(k + 1) % count] - a;
+  const Eigen::Vector2d normal(e.y(), -e.x());
+  const double along = normal.dot(direction);
+  if (!(along > 0.0)) return 0.0;
+  return normal.dot(a) / along;
+}
+
 Eigen::Vector2d PolygonCentroid(const Eigen::Vector2d* v, int count) noexcept {
   Eigen::Vector2d mean(0.0, 0.0);
   for (int k = 0; k < count; ++k) mean += v[k];

@@ -19,16 +19,42 @@ namespace fitfeel {
 // empty (interference); otherwise `vertices` holds it counter-clockwise (a single point may come
 // back as several coincident vertices).
 FITFEEL_API bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<double>& h,
-                         double bound, std::vector<Eigen::Vector2d>* vertices);
+                                     double bound, std::vector<Eigen::Vector2d>* vertices);
 
 // Nearest point of the polygon to x (x itself when inside). O(vertices), no allocation.
 FITFEEL_API Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* vertices, int count,
-                                   const Eigen::Vector2d& x) noexcept;
+                                               const Eigen::Vector2d& x) noexcept;
 
 // S_A(gamma): distance from the origin to the polygon's boundary along direction `direction`
 // (unit). Zero when the origin is not inside the polygon. O(vertices), no allocation.
 FITFEEL_API double RayExtent(const Eigen::Vector2d* vertices, int count,
-                 const Eigen::Vector2d& direction) noexcept;
+                             const Eigen::Vector2d& direction) noexcept;
+
+// Logarithmic queries for polygons the tick asks many times (one per depth step, prepared once):
+// the vertices' angles about a point strictly inside, increasing from the first vertex's, turn
+// "which edge faces x" into a binary search. Only for polygons with an interior.
+struct PolygonFan {
+  Eigen::Vector2d centre{0.0, 0.0};  // the reference point (inside)
+  const double* angles = nullptr;    // count values, angles[0] in (-pi, pi], non-decreasing
+  bool valid() const { return angles != nullptr; }
+};
+
+// Fills `angles` (count values) with the vertices' angles about `centre`, unwrapped; false, with
+// `angles` untouched, when the polygon has no interior or `centre` is not strictly inside it.
+FITFEEL_API bool FanAngles(const Eigen::Vector2d* vertices, int count,
+                           const Eigen::Vector2d& centre, double* angles) noexcept;
+
+// ProjectOntoPolygon with a fan about an interior point: the edge the segment centre-x crosses
+// faces x, and the distance to the boundary falls monotonically along the chain facing x to its
+// nearest point, so a walk from that edge finds it. O(log n + the walk), no allocation.
+FITFEEL_API Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* vertices, int count,
+                                               const PolygonFan& fan,
+                                               const Eigen::Vector2d& x) noexcept;
+
+// RayExtent with a fan about the origin (which must be inside: FanAngles refuses otherwise):
+// the ray leaves through the edge of its angle's wedge. O(log n), no allocation.
+FITFEEL_API double RayExtent(const Eigen::Vector2d* vertices, int count, const PolygonFan& fan,
+                             const Eigen::Vector2d& direction) noexcept;
 
 // Area centroid (vertex mean for a degenerate polygon): a point inside that tends to the single
 // remaining point as the polygon shrinks, which keeps forces continuous at the clearance /

@@ -4,8 +4,8 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include <Eigen/Dense>
@@ -27,11 +27,6 @@ constexpr double kAutoDepthSteps = 20000;
 // Half-width of the box that bounds an assembly space whose normals do not surround the origin;
 // clearances are micrometres, so one metre never binds.
 constexpr double kPolygonBound = 1.0;
-// Most columns of the elastic solve: its dense pivoting costs O(columns^3) per slice, and 120
-// columns resolve harmonics to 60 (1 mm waves at d = 20 mm).
-constexpr int kMaxElasticColumns = 120;
-// Fewest: below this, averaging loses the ovality-to-lobing range the model is about.
-constexpr int kMinElasticColumns = 24;
 
 Eigen::Vector2d Rotate(const Eigen::Vector2d& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -101,20 +96,21 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   double frame = 0.0;  // angle of the elastic solve's column 0
   if (elastic_) {
     for (int j = 0; j < n_; ++j) {
-      if (std::abs(std::remainder(angle_[static_cast<std::size_t>(j)] - angle_[0] -
-                                      2.0 * std::numbers::pi * j / n_,
-                                  2.0 * std::numbers::pi)) > 1e-9) {
+      if (std::abs(std::remainder(
+              angle_[static_cast<std::size_t>(j)] - angle_[0] - 2.0 * std::numbers::pi * j / n_,
+              2.0 * std::numbers::pi)) > 1e-9) {
         throw UserError("the elastic model needs equally spaced columns");
       }
     }
-    block_ = 1;
-    while (n_ / block_ > kMaxElasticColumns || n_ % block_ != 0 || (n_ / block_) % 2 != 0) {
-      ++block_;
-    }
-    if (n_ / block_ < kMinElasticColumns) block_ = 1;
-    const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
     const ElasticOptions options =
         settings.extra ? ParseElasticOptions(*settings.extra) : ElasticOptions{};
+    block_ = 1;
+    while (n_ / block_ > options.columns || n_ % block_ != 0 || (n_ / block_) % 2 != 0) {
+      ++block_;
+    }
+    // Fewer than this and averaging loses the ovality-to-lobing range the model is about.
+    if (n_ / block_ < ElasticOptions::kFewestColumns) block_ = 1;
+    const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
     PressFitSection section;
     section.d1 = d.d1;
     section.d2 = d.d2;
@@ -166,6 +162,11 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   vertex_begin_.assign(count, 0);
   vertex_count_.assign(count, 0);
   vertices_.clear();
+  centre_angles_.clear();
+  origin_angles_.clear();
+  centroid_.assign(count, Eigen::Vector2d::Zero());
+  centre_fan_.assign(count, 0);
+  origin_fan_.assign(count, 0);
   max_vertices_ = 0;
   newton_iterations_ = 0;
 
@@ -240,6 +241,13 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       vertex_count_[k] = static_cast<int>(polygon.size());
       max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
       anchor = PolygonCentroid(polygon.data(), static_cast<int>(polygon.size()));
+      centre_angles_.resize(vertices_.size(), 0.0);
+      origin_angles_.resize(vertices_.size(), 0.0);
+      centroid_[k] = anchor;
+      centre_fan_[k] = FanAngles(polygon.data(), vertex_count_[k], anchor,
+                                 centre_angles_.data() + vertex_begin_[k]);
+      origin_fan_[k] = FanAngles(polygon.data(), vertex_count_[k], Eigen::Vector2d::Zero(),
+                                 origin_angles_.data() + vertex_begin_[k]);
       warm = anchor;
     } else if (elastic_) {
       empty_[k] = 1;
@@ -254,8 +262,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         sec.y = pos + 0.5 * slices[sl].length - middle;
         pos += slices[sl].length;
         for (std::size_t j = 0; j < n; ++j) {
-          elastic_gap[sl * ne + j / static_cast<std::size_t>(block_)] +=
-              st[sl * n + j] / block_;
+          elastic_gap[sl * ne + j / static_cast<std::size_t>(block_)] += st[sl * n + j] / block_;
         }
         sec.cell_area = w[sl * n] * block_;  // equal cells along a slice
       }
@@ -364,7 +371,9 @@ Eigen::Vector2d CylinderContactAnalyzer::AnchorAt(std::size_t k,
                                                   const Eigen::Vector2d& x) const noexcept {
   if (unconstrained_[k]) return x;
   if (empty_[k]) return anchor_[k];
-  return ProjectOntoPolygon(vertices_.data() + vertex_begin_[k], vertex_count_[k], x);
+  PolygonFan fan;
+  if (centre_fan_[k]) fan = {centroid_[k], centre_angles_.data() + vertex_begin_[k]};
+  return ProjectOntoPolygon(vertices_.data() + vertex_begin_[k], vertex_count_[k], fan, x);
 }
 
 void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
@@ -391,8 +400,12 @@ void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* o
   out->interference = empty_[nearest] != 0;
   if (!out->interference && !unconstrained_[nearest]) {
     const Eigen::Vector2d dir(std::cos(out->offset_angle), std::sin(out->offset_angle));
+    PolygonFan fan;
+    if (origin_fan_[nearest]) {
+      fan = {Eigen::Vector2d::Zero(), origin_angles_.data() + vertex_begin_[nearest]};
+    }
     out->assembly_extent =
-        RayExtent(vertices_.data() + vertex_begin_[nearest], vertex_count_[nearest], dir);
+        RayExtent(vertices_.data() + vertex_begin_[nearest], vertex_count_[nearest], fan, dir);
   }
   out->interference_volume = s * volume_[k] + t * volume_[k + 1];
   out->max_interference = s * max_delta_[k] + t * max_delta_[k + 1];
@@ -433,8 +446,7 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
-bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose,
-                                          Eigen::VectorXd* pressure) const {
+bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const {
   if (!elastic_ || pressure == nullptr) return false;
   if (!pose.offset.allFinite()) throw UserError("pressure map of a non-finite axis offset");
   pressure->setZero(static_cast<Eigen::Index>(shaft_rows_) * n_);

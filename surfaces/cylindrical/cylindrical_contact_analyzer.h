@@ -110,16 +110,22 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   std::vector<char> empty_, unconstrained_;
   std::vector<int> vertex_begin_, vertex_count_;
   std::vector<Eigen::Vector2d> vertices_;
+  // Per depth step, the polygon's fans (convex_polygon.h) about its centroid (for the anchor)
+  // and about the origin (for the assembly extent); angles indexed as vertices_, NaN-free only
+  // where the fan is valid.
+  std::vector<double> centre_angles_, origin_angles_;
+  std::vector<Eigen::Vector2d> centroid_;
+  std::vector<char> centre_fan_, origin_fan_;
   int max_vertices_ = 0;
   int newton_iterations_ = 0;
 
   // Elastic model.
   bool elastic_ = false;
-  int block_ = 1;            // grid columns averaged into one column of the elastic solve
-  double smoothing_ = 0.0;   // m, added to every gap
+  int block_ = 1;           // grid columns averaged into one column of the elastic solve
+  double smoothing_ = 0.0;  // m, added to every gap
   PressFitSection section_;
   RigidFreedom freedom_;
-  double frame_ = 0.0;       // angle of the elastic solve's column 0
+  double frame_ = 0.0;  // angle of the elastic solve's column 0
   std::vector<double> normal_;
   std::vector<Eigen::Vector2d> tilt_;
 };

@@ -10,10 +10,19 @@ namespace fitfeel::cylindrical {
 // The elastic model's keys under `model.options` (law `elastic`):
 //   tilt: free | fixed | <holder's angular stiffness, N*m/rad>   (default free)
 //   section: plane_stress | plane_strain                          (default plane_stress)
+//   columns: <most columns of the elastic solve, even, 24..1440>  (default 120)
 struct ElasticOptions {
+  // The grid's columns are averaged in blocks to at most this many for the elastic solve. Its
+  // pivoting costs O(columns^3) per slice; 120 resolve harmonics to 60 (1 mm waves at d = 20 mm).
+  // A feature narrower than about two solve columns is averaged away (a 0.5 mm bump at d = 20 mm
+  // needs 240: docs/contact-mechanics.md).
+  static constexpr int kDefaultColumns = 120;
+  static constexpr int kFewestColumns = 24;
+  static constexpr int kMostColumns = 1440;
   bool tilt = true;             // the moving part may tilt (4 DOF) or not (2 DOF)
   double tilt_stiffness = 0.0;  // what holds its tilt, N*m/rad (0 = nothing)
   bool plane_strain = false;
+  int columns = kDefaultColumns;
 };
 
 inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
@@ -23,12 +32,19 @@ inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
     if (text == "fixed") {
       o.tilt = false;
     } else if (text != "free") {
-      o.tilt_stiffness = node->AsQuantityIn(Dimension::kAngularStiffness, 0.0,
-                                            std::numeric_limits<double>::max());
+      o.tilt_stiffness =
+          node->AsQuantityIn(Dimension::kAngularStiffness, 0.0, std::numeric_limits<double>::max());
     }
   }
   if (auto node = options.Find("section")) {
     o.plane_strain = node->AsOneOf({"plane_stress", "plane_strain"}) == "plane_strain";
+  }
+  if (auto node = options.Find("columns")) {
+    o.columns = static_cast<int>(
+        node->AsInteger(ElasticOptions::kFewestColumns, ElasticOptions::kMostColumns));
+    if (o.columns % 2 != 0) {
+      node->Fail("an even number of columns", node->Describe());
+    }
   }
   return o;
 }

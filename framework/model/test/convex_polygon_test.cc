@@ -127,6 +127,56 @@ TEST(AssemblyPolygon, AgreesWithClippingOverManySeeds) {
   EXPECT_GT(nonempties, 20);
 }
 
+TEST(AssemblyPolygon, FanQueriesAgreeWithTheLinearScans) {
+  // The tick's logarithmic queries against the O(n) scans they replace, on the assembly spaces
+  // the analyzers build (noisy, shifted, sometimes without the origin) and on points near and
+  // far: the same distance to the polygon, the same extent along every ray.
+  int fans = 0, origin_fans = 0;
+  for (int seed = 0; seed < 400; ++seed) {
+    std::mt19937_64 rng(seed);
+    const int n = 3 + seed % 120;
+    // A clearance of 0.5-10 um with form noise of up to 1 um, the axis shifted by a few um.
+    const double clearance = std::uniform_real_distribution<double>(0.5e-6, 10e-6)(rng);
+    std::uniform_real_distribution<double> noise(-1e-6, 1e-6);
+    std::normal_distribution<double> shift(0.0, 4e-6);
+    const Eigen::Vector2d o(shift(rng), shift(rng));
+    std::vector<double> angle = Angles(n), h(n);
+    for (int j = 0; j < n; ++j) {
+      h[j] =
+          clearance + noise(rng) + o.dot(Eigen::Vector2d(std::cos(angle[j]), std::sin(angle[j])));
+    }
+    Poly v;
+    if (!IntersectHalfPlanes(angle, h, 1.0, &v)) continue;
+    const int count = static_cast<int>(v.size());
+    std::vector<double> a(v.size()), b(v.size());
+    const Eigen::Vector2d centre = PolygonCentroid(v.data(), count);
+    if (!FanAngles(v.data(), count, centre, a.data())) continue;
+    ++fans;
+    const PolygonFan fan{centre, a.data()};
+    const bool has_origin = FanAngles(v.data(), count, Eigen::Vector2d::Zero(), b.data());
+    origin_fans += has_origin;
+    const PolygonFan at_origin{Eigen::Vector2d::Zero(), b.data()};
+    for (double reach : {3e-6, 3e-5, 1e-3}) {
+      std::uniform_real_distribution<double> q(-reach, reach);
+      for (int trial = 0; trial < 25; ++trial) {
+        const Eigen::Vector2d x = centre + Eigen::Vector2d(q(rng), q(rng));
+        const Eigen::Vector2d linear = ProjectOntoPolygon(v.data(), count, x);
+        const Eigen::Vector2d fast = ProjectOntoPolygon(v.data(), count, fan, x);
+        EXPECT_NEAR((x - fast).norm(), (x - linear).norm(), 1e-12 * (x - linear).norm() + 1e-20)
+            << "seed " << seed << " reach " << reach;
+        if (has_origin) {
+          const Eigen::Vector2d d = x.normalized();
+          EXPECT_NEAR(RayExtent(v.data(), count, at_origin, d), RayExtent(v.data(), count, d),
+                      1e-12 * RayExtent(v.data(), count, d))
+              << "seed " << seed;
+        }
+      }
+    }
+  }
+  EXPECT_GT(fans, 300);
+  EXPECT_GT(origin_fans, 100);
+}
+
 TEST(AssemblyPolygon, ClosedToAPointStillPushesBack) {
   // Line-to-line fit: every h_j = 0, the polygon is the origin (several coincident vertices).
   for (int n : {3, 8, 36}) {
