@@ -5,6 +5,8 @@
 #include <limits>
 #include <memory>
 
+#include <Eigen/Eigenvalues>
+
 #include "framework/core/error.h"
 #include "framework/runtime/positioning_stage.h"
 
@@ -12,8 +14,8 @@ namespace fitfeel {
 namespace {
 
 struct ConstrainedState final : StageState {
-  // Where the last settled tick left the part: the next settle's starting point.
-  Eigen::Vector2d last_settled{0.0, 0.0};
+  // Where the last settled tick left the part (the next settle's starting point), and its slope.
+  ConstrainedStage::SettleMemory settle;
   // The law's state (friction junctions), advanced once per tick at the rendered pose.
   LawState law;
   // The god object's offset and mating depth (Options::proxy_stiffness finite).
@@ -97,7 +99,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   // later re-entry forms its contact afresh rather than at a stale anchor.
   if (!out->contact.engaged) run->law = LawState{};
   if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
-  if (settle && Settle(device.load, motion, &run->last_settled, &run->law, out)) {
+  if (settle && Settle(device.load, motion, &run->settle, &run->law, out)) {
     // Settled: nothing integrates the part's radial motion, so neither stiffness nor gap is needed.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();
@@ -126,24 +128,40 @@ void ConstrainedStage::SetGap(StageOutput* out) noexcept {
 
 bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                                   double target, double tolerance, const MatingMotion& motion,
-                                  StageOutput* work, double* solution,
-                                  double spring) const noexcept {
+                                  StageOutput* work, double* solution, double spring,
+                                  const RootSearchHint& hint) const noexcept {
   // Support the contact gives along -axis with the part at origin + s * axis, minus the target:
   // negative while the part would move further along the axis. The laws' radial force grows
   // monotonically with the offset into a wall (eq. 9's spring, eqs. 10-12's interference), so
   // the root is unique up to a flat stretch of free motion, where any point is an equilibrium.
+  double last_s[2] = {0.0, 0.0}, last_r[2] = {0.0, 0.0};
+  int evaluated = 0;
   auto residual = [&](double s) {
     work->pose.offset = origin + s * axis;
     analyzer_.Evaluate(work->pose, &work->contact);
     work->wrench.SetZero();
     law_.Evaluate(work->contact, motion, &work->wrench);
-    return -(work->wrench.force.x() * axis.x() + work->wrench.force.z() * axis.y()) -
-           (target - spring * s);
+    const double r = -(work->wrench.force.x() * axis.x() + work->wrench.force.z() * axis.y()) -
+                     (target - spring * s);
+    last_s[0] = last_s[1];
+    last_r[0] = last_r[1];
+    last_s[1] = s;
+    last_r[1] = r;
+    ++evaluated;
+    return r;
+  };
+  // The secant of the last two evaluations, where it is a slope the next search can start from.
+  auto learn = [&] {
+    if (hint.slope == nullptr || evaluated < 2 || last_s[1] == last_s[0]) return;
+    const double slope = (last_r[1] - last_r[0]) / (last_s[1] - last_s[0]);
+    if (slope > 0.0 && std::isfinite(slope)) *hint.slope = slope;
   };
   // The root is usually within a few um of the origin (the previous tick's equilibrium): check
-  // the origin first, then bracket on the side the residual points to, starting 1 um away and
-  // widening eightfold up to 1 mm: beyond every fit's clearance and interference (ISO 286 limits
-  // of parts up to 500 mm stay below 1 mm) and within every bore this framework models.
+  // the origin first, then (with a slope from the last search) take a Newton step, exact on a
+  // linear spring; then bracket on the side the residual points to, starting 1 um away (or eight
+  // Newton steps) and widening eightfold up to 1 mm: beyond every fit's clearance and
+  // interference (ISO 286 limits of parts up to 500 mm stay below 1 mm) and within every bore
+  // this framework models.
   const double r0 = residual(0.0);
   if (std::abs(r0) <= tolerance) {
     *solution = 0.0;
@@ -151,8 +169,36 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   }
   double lo = 0.0, hi = 0.0, r_lo = r0, r_hi = r0;
   bool bracketed = false;
-  for (double reach = 1e-6; reach <= 1.1e-3 && !bracketed; reach *= 8.0) {
+  double reach = 1e-6;
+  if (hint.slope != nullptr && *hint.slope > 0.0) {
+    const double s1 = -r0 / *hint.slope;
+    if (std::isfinite(s1) && s1 != 0.0 && std::abs(s1) <= 1.1e-3) {
+      const double r1 = residual(s1);
+      if (std::abs(r1) <= tolerance) {
+        *solution = s1;
+        learn();
+        return true;
+      }
+      if ((r1 > 0.0) == (r0 < 0.0)) {
+        bracketed = true;
+        if (r0 < 0.0) {
+          hi = s1;
+          r_hi = r1;
+        } else {
+          lo = s1;
+          r_lo = r1;
+        }
+      } else {
+        // Short of the root: widen from there.
+        (r0 < 0.0 ? lo : hi) = s1;
+        (r0 < 0.0 ? r_lo : r_hi) = r1;
+        reach = 8.0 * std::abs(s1);
+      }
+    }
+  }
+  for (; reach <= 1.1e-3 && !bracketed; reach *= 8.0) {
     if (r0 < 0.0) {
+      if (reach <= lo) continue;
       hi = reach;
       r_hi = residual(hi);
       bracketed = r_hi > 0.0;
@@ -161,6 +207,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
         r_lo = r_hi;
       }
     } else {
+      if (-reach >= hi) continue;
       lo = -reach;
       r_lo = residual(lo);
       bracketed = r_lo < 0.0;
@@ -173,11 +220,12 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   if (!bracketed) return false;
   // 60 steps bound the tick's cost.
   *solution = IllinoisRoot(residual, lo, hi, r_lo, r_hi, tolerance, 60);
+  learn();
   return true;
 }
 
 bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-                              Eigen::Vector2d* last_settled, LawState* law_state,
+                              SettleMemory* memory, LawState* law_state,
                               StageOutput* out) const noexcept {
   const double weight = load.norm();
   if (!std::isfinite(weight)) return false;
@@ -197,9 +245,11 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // is below tan(pi/n) of the load anyway, so clearance fits need no sideways solve at all.
   const double along_tolerance = 1e-6 * weight;
   const double across_tolerance = 1e-2 * weight;
-  Eigen::Vector2d at = *last_settled;
+  // Along the load the first probe is a Newton step from the last settle's slope.
+  const RootSearchHint along{&memory->along_slope};
+  Eigen::Vector2d at = memory->offset;
   double s = 0.0;
-  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) {
+  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
     // which the planar model leaves out), but the part still floats sideways to where the walls
     // it touches balance, rather than being held off that balance by the device.
@@ -213,11 +263,72 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   } else {
     at += s * down;
   }
-  for (int sweep = 0; sweep < 4; ++sweep) {
+  // Then both directions at once: Newton's method on the contact's 2x2 stiffness (by
+  // differences), which brings a part resting on an inclined wall to its balance in a step or two
+  // where alternating sweeps along and across zig-zag down the wall (tens of evaluations, the
+  // tick's worst case); a direction without stiffness (a flat wall the part may slide along) is a
+  // 1-D search along it to the next wall. The sweeps stay as the fallback.
+  auto force_at = [&](const Eigen::Vector2d& x) {
+    work.pose.offset = x;
+    analyzer_.Evaluate(work.pose, &work.contact);
+    work.wrench.SetZero();
+    law_.Evaluate(work.contact, motion, &work.wrench);
+    return Eigen::Vector2d(work.wrench.force.x(), work.wrench.force.z());
+  };
+  // Along the load the searches stop at 1 pm of position where the tolerance is finer than a
+  // picometre of the wall's travel (k h ~ 1e-3 N for kN/um walls): balanced is 1e-3 of the load
+  // there, still far below what a hand resolves.
+  auto balanced = [&](const Eigen::Vector2d& r) {
+    return std::abs(r.dot(down)) <= 1e-3 * weight && std::abs(r.dot(across)) <= across_tolerance;
+  };
+  Eigen::Vector2d residual = force_at(at) + load;  // the unbalanced force on the part
+  for (int step = 0; step < kSettleNewtonSteps && !balanced(residual); ++step) {
+    // 10 pm: far inside the nanometre penetrations a load of newtons makes against kN/um walls,
+    // far above rounding (k h ~ 1e-2 N against forces of 1 N).
+    constexpr double kProbe = 1e-11;
+    Eigen::Matrix2d d;  // d(force)/d(along, across)
+    d.col(0) = (force_at(at + kProbe * down) + load - residual) / kProbe;
+    d.col(1) = (force_at(at + kProbe * across) + load - residual) / kProbe;
+    Eigen::Matrix2d basis;
+    basis.col(0) = down;
+    basis.col(1) = across;
+    const Eigen::Matrix2d k = -d * basis.transpose();  // stiffness, -d(force)/d(offset)
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(0.5 * (k + k.transpose()));
+    const double largest = eig.eigenvalues().maxCoeff();
+    if (!(largest > 0.0) || !std::isfinite(largest)) break;  // nothing holds: the sweeps
+    Eigen::Vector2d move(0.0, 0.0), free(0.0, 0.0);
+    for (int i = 0; i < 2; ++i) {
+      const Eigen::Vector2d v = eig.eigenvectors().col(i);
+      const double lambda = eig.eigenvalues()[i];
+      if (lambda > 1e-6 * largest) {
+        move += (v.dot(residual) / lambda) * v;
+      } else {
+        free = v;
+      }
+    }
+    at += move;
+    const double slide = free.dot(residual);
+    if (free.squaredNorm() > 0.0 && std::abs(slide) > along_tolerance) {
+      // Along the wall the unbalanced force moves the part until the next wall takes it.
+      const Eigen::Vector2d axis = slide > 0.0 ? free : Eigen::Vector2d(-free);
+      const double tolerance =
+          std::max(along_tolerance, across_tolerance * std::abs(axis.dot(across)));
+      double t = 0.0;
+      if (SolveAlong(at, axis, load.dot(axis), tolerance, motion, &work, &t)) at += t * axis;
+    }
+    residual = force_at(at) + load;
+  }
+  for (int sweep = 0; sweep < 4 && !balanced(residual); ++sweep) {
     double t = 0.0;
     if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) break;
     at += t * across;
-    if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s)) break;
+    if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) break;
+    at += s * down;
+  }
+  // The Newton steps stop at 1e-3 of the load along it; where a picometre allows finer, the
+  // along search (a Newton step from its slope, usually one evaluation) finishes to 1e-6.
+  if (std::abs(residual.dot(down)) > along_tolerance &&
+      SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
     at += s * down;
   }
   // Leave pose, contact and wrench consistent at the settled offset.
@@ -229,7 +340,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;
-  *last_settled = at;
+  memory->offset = at;
   return true;
 }
 
@@ -313,8 +424,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     if (magnitude > 1.01 * pull + 1e-4 && std::isfinite(magnitude)) {
       const Eigen::Vector2d wall = -push / magnitude;
       double t = 0.0;
-      if (SolveAlong(part, wall, pull, std::max(1e-4, 1e-3 * pull), motion, &work, &t) &&
-          t < 0.0) {
+      if (SolveAlong(part, wall, pull, std::max(1e-4, 1e-3 * pull), motion, &work, &t) && t < 0.0) {
         part += t * wall;
       }
     }

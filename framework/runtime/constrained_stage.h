@@ -9,6 +9,12 @@
 
 namespace fitfeel {
 
+// A root search's memory in the constrained stage: the slope it starts from and learns (null:
+// none, the search brackets from 1 um).
+struct RootSearchHint {
+  double* slope = nullptr;
+};
+
 // Mating under constraint (paper section 3): the device pose becomes a MatingPose in the fixed
 // part's mating frame (see positioning_stage.h for the frame convention), the contact analyzer
 // answers from its prepared tables and the law turns the contact state into the wrench on the
@@ -43,6 +49,18 @@ class FITFEEL_API ConstrainedStage final : public Stage {
 
   StageId id() const override { return StageId::kConstrained; }
 
+  // Newton steps of a settle's two-dimensional balance before it falls back to sweeps along and
+  // across the load (each step three contact evaluations, plus a slide along a flat wall).
+  static constexpr int kSettleNewtonSteps = 6;
+
+  // What a settle carries from one tick to the next (in the run's state): where it left the
+  // part, and the slope of its last root along the load, from which the next tick's first probe
+  // is a Newton step (exact on a linear spring, the laws' radial force).
+  struct SettleMemory {
+    Eigen::Vector2d offset{0.0, 0.0};
+    double along_slope = 0.0;  // d(residual)/ds, N/m; 0 = not known yet
+  };
+
  protected:
   std::unique_ptr<StageState> DoMakeState() const override;
   void DoEvaluate(const DeviceState& device, StageState* state,
@@ -57,20 +75,21 @@ class FITFEEL_API ConstrainedStage final : public Stage {
                          const Wrench& wrench) const noexcept;
 
   // Quasi-static placement (DeviceState::load): finds the offset along the load where the
-  // rendered radial force balances it, starting from and updating `*last_settled` (the previous
-  // settled offset), and leaves pose, contact and wrench there, the wrench from the law with the
-  // run's `*law_state` (advanced once, at the settled pose). Returns false (outputs, state and
-  // `*last_settled` untouched) where nothing can carry the load, e.g. before the surfaces overlap.
-  bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion,
-              Eigen::Vector2d* last_settled, LawState* law_state,
-              StageOutput* out) const noexcept;
+  // rendered radial force balances it, starting from and updating `*memory` (the previous
+  // settled offset and slope), and leaves pose, contact and wrench there, the wrench from the
+  // law with the run's `*law_state` (advanced once, at the settled pose). Returns false (outputs,
+  // state and `*memory` untouched) where nothing can carry the load, e.g. before the surfaces
+  // overlap.
+  bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion, SettleMemory* memory,
+              LawState* law_state, StageOutput* out) const noexcept;
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
   // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
   // With `spring` > 0 the target falls as the part moves: target - spring * s (the coupling
   // spring of a god object whose device lies at s = target / spring).
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
-                  double tolerance, const MatingMotion& motion, StageOutput* work,
-                  double* solution, double spring = 0.0) const noexcept;
+                  double tolerance, const MatingMotion& motion, StageOutput* work, double* solution,
+                  double spring = 0.0,
+                  const RootSearchHint& hint = RootSearchHint{}) const noexcept;
   // The god object (Options::proxy_stiffness): moves the part from where it was (in `state`)
   // towards the device's pose (out->pose on entry) until the contact's push balances the
   // spring across the axis, and the law's resistance balances it along the axis; leaves the
