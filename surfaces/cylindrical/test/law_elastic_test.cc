@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "framework/core/error.h"
 #include "framework/model/harmonic_compliance.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/elastic_options.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
@@ -145,6 +147,28 @@ TEST(ElasticLaw, TiltedBoreWithinTheClearanceCarriesNothing) {
       EXPECT_GT(OutcomeAt(held.analyzer, held.law, 30e-3, AnchorNear(held.analyzer, 30e-3))
                     .state.normal_force,
                 10.0);
+    }
+  }
+}
+
+TEST(ElasticLaw, ColumnsOptionSetsTheSolveResolution) {
+  // 240 grid columns: averaged in pairs to 120 by default, solved on all of them with
+  // columns: 240; an odd count or one outside 24..1440 is refused where it is written.
+  auto columns_of = [](const char* options) {
+    ModelSettings s = Elastic(TextureMode::kSampled);
+    if (options != nullptr) s.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+    ElasticPair p([](int, int) { return 2 * kUm; }, [](int, int) { return 0.0; }, s, 240);
+    return p.analyzer.elastic_columns();
+  };
+  EXPECT_EQ(columns_of(nullptr), 120);
+  EXPECT_EQ(columns_of("{columns: 240}"), 240);
+  EXPECT_EQ(columns_of("{columns: 60}"), 60);
+  for (const char* bad : {"{columns: 121}", "{columns: 12}", "{columns: 2000}", "{columns: x}"}) {
+    try {
+      ParseElasticOptions(ConfigNode::Parse(bad, "scene.yaml", "model.options"));
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find("model.options.columns"), std::string::npos) << e.what();
     }
   }
 }
