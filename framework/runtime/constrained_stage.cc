@@ -126,35 +126,38 @@ void ConstrainedStage::SetGap(StageOutput* out) noexcept {
   }
 }
 
+Eigen::Vector2d ConstrainedStage::ProbeAt(const Eigen::Vector2d& offset, const MatingMotion& motion,
+                                          StageOutput* work) const noexcept {
+  work->pose.offset = offset;
+  analyzer_.Evaluate(work->pose, &work->contact);
+  work->wrench.SetZero();
+  law_.Evaluate(work->contact, motion, &work->wrench);
+  return {work->wrench.force.x(), work->wrench.force.z()};
+}
+
 bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                                   double target, double tolerance, const MatingMotion& motion,
                                   StageOutput* work, double* solution, double spring,
-                                  const RootSearchHint& hint) const noexcept {
+                                  double* slope) const noexcept {
   // Support the contact gives along -axis with the part at origin + s * axis, minus the target:
   // negative while the part would move further along the axis. The laws' radial force grows
   // monotonically with the offset into a wall (eq. 9's spring, eqs. 10-12's interference), so
   // the root is unique up to a flat stretch of free motion, where any point is an equilibrium.
+  // The last two evaluations (both at s = 0 until a second one is made).
   double last_s[2] = {0.0, 0.0}, last_r[2] = {0.0, 0.0};
-  int evaluated = 0;
   auto residual = [&](double s) {
-    work->pose.offset = origin + s * axis;
-    analyzer_.Evaluate(work->pose, &work->contact);
-    work->wrench.SetZero();
-    law_.Evaluate(work->contact, motion, &work->wrench);
-    const double r = -(work->wrench.force.x() * axis.x() + work->wrench.force.z() * axis.y()) -
-                     (target - spring * s);
+    const double r = -ProbeAt(origin + s * axis, motion, work).dot(axis) - (target - spring * s);
     last_s[0] = last_s[1];
     last_r[0] = last_r[1];
     last_s[1] = s;
     last_r[1] = r;
-    ++evaluated;
     return r;
   };
   // The secant of the last two evaluations, where it is a slope the next search can start from.
   auto learn = [&] {
-    if (hint.slope == nullptr || evaluated < 2 || last_s[1] == last_s[0]) return;
-    const double slope = (last_r[1] - last_r[0]) / (last_s[1] - last_s[0]);
-    if (slope > 0.0 && std::isfinite(slope)) *hint.slope = slope;
+    if (slope == nullptr || last_s[1] == last_s[0]) return;
+    const double secant = (last_r[1] - last_r[0]) / (last_s[1] - last_s[0]);
+    if (secant > 0.0 && std::isfinite(secant)) *slope = secant;
   };
   // The root is usually within a few um of the origin (the previous tick's equilibrium): check
   // the origin first, then (with a slope from the last search) take a Newton step, exact on a
@@ -170,8 +173,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   double lo = 0.0, hi = 0.0, r_lo = r0, r_hi = r0;
   bool bracketed = false;
   double reach = 1e-6;
-  if (hint.slope != nullptr && *hint.slope > 0.0) {
-    const double s1 = -r0 / *hint.slope;
+  if (slope != nullptr && *slope > 0.0) {
+    const double s1 = -r0 / *slope;
     if (std::isfinite(s1) && s1 != 0.0 && std::abs(s1) <= 1.1e-3) {
       const double r1 = residual(s1);
       if (std::abs(r1) <= tolerance) {
@@ -235,9 +238,8 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // The part floats in both directions across the axis, as a shaft pressed by a compliant
   // gripper does: it sinks along the load until the contact carries it, then slides sideways to
   // where the contact pushes it no further (towards the assembly space's lowest corner, or the
-  // energy-minimising axis of an interference fit), and sinks again. Under interference the
-  // force is a spring about that axis and one sweep is exact; in clearance a few sweeps bring a
-  // part resting on a wall to its corner.
+  // energy-minimising axis of an interference fit), and sinks again (below: a Newton balance of
+  // both directions, the sweeps as its fallback).
   // Starts from the previous tick's equilibrium: the part moves little between ticks.
   // Along the load the balance is solved to 1e-6 of the load. Sideways a push below 1 % of the
   // load is left: far under the ~7-10 % just-noticeable difference of force (haptics literature),
@@ -246,7 +248,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   const double along_tolerance = 1e-6 * weight;
   const double across_tolerance = 1e-2 * weight;
   // Along the load the first probe is a Newton step from the last settle's slope.
-  const RootSearchHint along{&memory->along_slope};
+  double* const along = &memory->along_slope;
   Eigen::Vector2d at = memory->offset;
   double s = 0.0;
   if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
@@ -268,13 +270,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // where alternating sweeps along and across zig-zag down the wall (tens of evaluations, the
   // tick's worst case); a direction without stiffness (a flat wall the part may slide along) is a
   // 1-D search along it to the next wall. The sweeps stay as the fallback.
-  auto force_at = [&](const Eigen::Vector2d& x) {
-    work.pose.offset = x;
-    analyzer_.Evaluate(work.pose, &work.contact);
-    work.wrench.SetZero();
-    law_.Evaluate(work.contact, motion, &work.wrench);
-    return Eigen::Vector2d(work.wrench.force.x(), work.wrench.force.z());
-  };
+  auto force_at = [&](const Eigen::Vector2d& x) { return ProbeAt(x, motion, &work); };
   // Along the load the searches stop at 1 pm of position where the tolerance is finer than a
   // picometre of the wall's travel (k h ~ 1e-3 N for kN/um walls): balanced is 1e-3 of the load
   // there, still far below what a hand resolves.
@@ -412,12 +408,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // the pull: the wall carries what the hand presses, no more.
     // The solve's last evaluation is usually at the part already (at this depth: every
     // evaluation above was).
-    if (work.pose.offset != part) {
-      work.pose.offset = part;
-      analyzer_.Evaluate(work.pose, &work.contact);
-      work.wrench.SetZero();
-      law_.Evaluate(work.contact, motion, &work.wrench);
-    }
+    if (work.pose.offset != part) ProbeAt(part, motion, &work);
     const Eigen::Vector2d push(work.wrench.force.x(), work.wrench.force.z());
     const double pull = k * (held - part).norm();
     const double magnitude = push.norm();

@@ -9,12 +9,6 @@
 
 namespace fitfeel {
 
-// A root search's memory in the constrained stage: the slope it starts from and learns (null:
-// none, the search brackets from 1 um).
-struct RootSearchHint {
-  double* slope = nullptr;
-};
-
 // Mating under constraint (paper section 3): the device pose becomes a MatingPose in the fixed
 // part's mating frame (see positioning_stage.h for the frame convention), the contact analyzer
 // answers from its prepared tables and the law turns the contact state into the wrench on the
@@ -85,11 +79,16 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)
   // at origin + s * axis, evaluating into `work`; false if no such point lies within reach.
   // With `spring` > 0 the target falls as the part moves: target - spring * s (the coupling
-  // spring of a god object whose device lies at s = target / spring).
+  // spring of a god object whose device lies at s = target / spring). `slope`, when given, is
+  // the residual's slope at the last root (N/m; 0 = unknown): the search's first probe is a
+  // Newton step from it, and it learns the slope of this root.
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
                   double tolerance, const MatingMotion& motion, StageOutput* work, double* solution,
-                  double spring = 0.0,
-                  const RootSearchHint& hint = RootSearchHint{}) const noexcept;
+                  double spring = 0.0, double* slope = nullptr) const noexcept;
+  // The contact and the law's wrench (without history) with the part at `offset`, left in
+  // `work`; returns the radial force (x, z).
+  Eigen::Vector2d ProbeAt(const Eigen::Vector2d& offset, const MatingMotion& motion,
+                          StageOutput* work) const noexcept;
   // The god object (Options::proxy_stiffness): moves the part from where it was (in `state`)
   // towards the device's pose (out->pose on entry) until the contact's push balances the
   // spring across the axis, and the law's resistance balances it along the axis; leaves the

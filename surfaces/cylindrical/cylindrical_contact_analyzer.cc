@@ -164,7 +164,6 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   vertices_.clear();
   centre_angles_.clear();
   origin_angles_.clear();
-  centroid_.assign(count, Eigen::Vector2d::Zero());
   centre_fan_.assign(count, 0);
   origin_fan_.assign(count, 0);
   max_vertices_ = 0;
@@ -243,7 +242,6 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       anchor = PolygonCentroid(polygon.data(), static_cast<int>(polygon.size()));
       centre_angles_.resize(vertices_.size(), 0.0);
       origin_angles_.resize(vertices_.size(), 0.0);
-      centroid_[k] = anchor;
       centre_fan_[k] = FanAngles(polygon.data(), vertex_count_[k], anchor,
                                  centre_angles_.data() + vertex_begin_[k]);
       origin_fan_[k] = FanAngles(polygon.data(), vertex_count_[k], Eigen::Vector2d::Zero(),
@@ -372,7 +370,7 @@ Eigen::Vector2d CylinderContactAnalyzer::AnchorAt(std::size_t k,
   if (unconstrained_[k]) return x;
   if (empty_[k]) return anchor_[k];
   PolygonFan fan;
-  if (centre_fan_[k]) fan = {centroid_[k], centre_angles_.data() + vertex_begin_[k]};
+  if (centre_fan_[k]) fan = {anchor_[k], centre_angles_.data() + vertex_begin_[k]};
   return ProjectOntoPolygon(vertices_.data() + vertex_begin_[k], vertex_count_[k], fan, x);
 }
 

@@ -110,11 +110,10 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   std::vector<char> empty_, unconstrained_;
   std::vector<int> vertex_begin_, vertex_count_;
   std::vector<Eigen::Vector2d> vertices_;
-  // Per depth step, the polygon's fans (convex_polygon.h) about its centroid (for the anchor)
-  // and about the origin (for the assembly extent); angles indexed as vertices_, NaN-free only
-  // where the fan is valid.
+  // Per depth step, the polygon's fans (convex_polygon.h) about its centroid, anchor_[k] (for
+  // the anchor), and about the origin (for the assembly extent); angles indexed as vertices_,
+  // meaningful only where the step's flag says the fan is valid.
   std::vector<double> centre_angles_, origin_angles_;
-  std::vector<Eigen::Vector2d> centroid_;
   std::vector<char> centre_fan_, origin_fan_;
   int max_vertices_ = 0;
   int newton_iterations_ = 0;

@@ -315,8 +315,7 @@ def normal_force(disp, rim):
     whole (the 0.5 mm bump summed to 72 N/mm against 11.7 N/mm from the displacements, with a
     net force of 59 N/mm on a floating shaft)."""
     a = D1 / 2
-    ur = np.array([disp[nid][0] * math.cos(th) + disp[nid][1] * math.sin(th) for nid, th in rim])
-    p0 = -float(ur.mean()) * E / (a * (1.0 - NU))
+    p0 = -radial_harmonic(disp, rim, 0) * E / (a * (1.0 - NU))
     return 2.0 * math.pi * a * p0 * THICKNESS
 
 
