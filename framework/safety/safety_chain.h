@@ -1,10 +1,8 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
 
-#include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/core/wrench.h"
 #include "framework/device/device.h"
@@ -57,8 +55,6 @@ class FITFEEL_API SafetyChain {
  public:
   // Throws UserError when the spec is invalid or the settings' coupling gains break the bound.
   void Configure(const SafetySettings& settings, const DeviceSpec& spec, double period);
-  // Parses the scenario's `safety` section (absent: defaults) and configures.
-  void Configure(const std::optional<ConfigNode>& safety, const DeviceSpec& spec, double period);
 
   // Starts a run at this device state: proxy at the handle, energy and counters at zero. Apply
   // calls it on its first tick if nobody did.

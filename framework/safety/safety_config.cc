@@ -50,17 +50,6 @@ SafetySettings ParseSafetySettings(const ConfigNode& node) {
   return settings;
 }
 
-}  // namespace fitfeel
-
-#include "framework/safety/safety_chain.h"
-
-namespace fitfeel {
-
-void SafetyChain::Configure(const std::optional<ConfigNode>& safety, const DeviceSpec& spec,
-                            double period) {
-  Configure(safety ? ParseSafetySettings(*safety) : SafetySettings{}, spec, period);
-}
-
 SafetySection ParseSafetySection(const ConfigNode& node) {
   SafetySection section;
   section.settings = ParseSafetySettings(node);

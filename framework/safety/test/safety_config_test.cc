@@ -33,7 +33,7 @@ TEST(SafetyConfig, EmptySectionGivesDefaults) {
   EXPECT_DOUBLE_EQ(s.force_scale, 1.0);
   EXPECT_EQ(s.coupling, CouplingMode::kSpringDamper);
   SafetyChain chain;
-  chain.Configure(std::optional<ConfigNode>{}, LookupDeviceSpec("Touch"), 1e-3);
+  chain.Configure(SafetySettings{}, LookupDeviceSpec("Touch"), 1e-3);
   EXPECT_DOUBLE_EQ(chain.report().coupling_gains.stiffness, 320.0);
 }
 
