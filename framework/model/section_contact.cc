@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include <Eigen/Dense>
 
@@ -66,6 +67,12 @@ bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse
   return true;
 }
 
+namespace {
+constexpr const char* kNotDefinite =
+    "section contact: a principal submatrix of the compliance is not positive definite (to "
+    "rounding); the compliance spectrum must be positive";
+}  // namespace
+
 int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active,
                             const double* full, Factorization* workspace) {
   Factorization& ws = workspace != nullptr ? *workspace : own_;
@@ -114,10 +121,11 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
     if (ws.dual) {
       if (!ws.Holds(f, true)) {
         ws.hnn = g_inv_(ws.gaps, ws.gaps);  // principal submatrix (Eigen's indexed view)
-        ws.llt_dual.compute(ws.hnn);
+        if (!ws.llt_dual.Compute(ws.hnn)) throw UserError(kNotDefinite);
         ws.Remember(f, true);
       }
-      const Eigen::VectorXd z = ws.llt_dual.solve(full_(ws.gaps));
+      Eigen::VectorXd z = full_(ws.gaps);
+      ws.llt_dual.SolveInPlace(z);
       for (int c : ws.index) {
         double s = full_[c];
         // G^-1 is symmetric: read column c (contiguous) instead of row c.
@@ -129,11 +137,11 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       if (m > 0) {
         if (!ws.Holds(f, false)) {
           ws.gff = g_(ws.index, ws.index);
-          ws.llt.compute(ws.gff);
+          if (!ws.llt.Compute(ws.gff)) throw UserError(kNotDefinite);
           ws.Remember(f, false);
         }
-        const Eigen::VectorXd pf =
-            ws.llt.solve(Eigen::Map<const Eigen::VectorXd>(delta, n)(ws.index));
+        Eigen::VectorXd pf = Eigen::Map<const Eigen::VectorXd>(delta, n)(ws.index);
+        ws.llt.SolveInPlace(pf);
         for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
       }
       for (int j : ws.gaps) {
@@ -178,17 +186,16 @@ Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
     const int k = static_cast<int>(ws.gaps.size());
     Eigen::MatrixX2d a(k, 2);
     for (int r = 0; r < k; ++r) a.row(r) = g_inv_u_.row(ws.gaps[static_cast<std::size_t>(r)]);
-    return full_stiffness_ - a.transpose() * ws.llt_dual.solve(a);
+    return full_stiffness_ - ws.llt_dual.InverseForm(std::move(a));
   }
   const int m = static_cast<int>(ws.index.size());
   if (m == 0) return Eigen::Matrix2d::Zero();
-  Eigen::MatrixXd u(m, 2);
+  Eigen::MatrixX2d u(m, 2);
   for (int a = 0; a < m; ++a) {
     u(a, 0) = cos_[static_cast<std::size_t>(ws.index[static_cast<std::size_t>(a)])];
     u(a, 1) = sin_[static_cast<std::size_t>(ws.index[static_cast<std::size_t>(a)])];
   }
-  const Eigen::MatrixXd x = ws.llt.solve(u);
-  return u.transpose() * x;
+  return ws.llt.InverseForm(std::move(u));
 }
 
 RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_columns)
@@ -203,8 +210,7 @@ RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_c
 
 double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
                                      const RigidFreedom& freedom, const Eigen::Vector4d& q,
-                                     bool derivatives, Eigen::Vector4d* grad,
-                                     Eigen::Matrix4d* hess) {
+                                     Eigen::Vector4d* grad, Eigen::Matrix4d* hess) {
   const int n = contact_.columns();
   const auto nn = static_cast<std::size_t>(n);
   delta_.resize(nn);
@@ -213,10 +219,8 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
   if (active_.size() != sections.size()) active_.assign(sections.size(), std::vector<char>(nn, 0));
   const Eigen::Vector2d e0 = q.head<2>(), t = q.tail<2>();
   double phi = 0.0;
-  if (derivatives) {
-    grad->setZero();
-    hess->setZero();
-  }
+  grad->setZero();
+  hess->setZero();
   for (std::size_t s = 0; s < sections.size(); ++s) {
     const ContactSection& sec = sections[s];
     const Eigen::Vector2d e = freedom.tilt ? Eigen::Vector2d(e0 + sec.y * t) : e0;
@@ -244,27 +248,23 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
       f += p[j] * Eigen::Vector2d(cos_[j], sin_[j]);
     }
     phi += 0.5 * sec.cell_area * energy;
-    if (derivatives) {
-      f *= sec.cell_area;
-      const Eigen::Matrix2d k = sec.cell_area * contact_.OffsetStiffness();
-      grad->head<2>() += f;
-      hess->topLeftCorner<2, 2>() += k;
-      if (freedom.tilt) {
-        grad->tail<2>() += sec.y * f;
-        hess->topRightCorner<2, 2>() += sec.y * k;
-        hess->bottomLeftCorner<2, 2>() += sec.y * k;
-        hess->bottomRightCorner<2, 2>() += sec.y * sec.y * k;
-      }
+    f *= sec.cell_area;
+    const Eigen::Matrix2d k = sec.cell_area * contact_.OffsetStiffness();
+    grad->head<2>() += f;
+    hess->topLeftCorner<2, 2>() += k;
+    if (freedom.tilt) {
+      grad->tail<2>() += sec.y * f;
+      hess->topRightCorner<2, 2>() += sec.y * k;
+      hess->bottomLeftCorner<2, 2>() += sec.y * k;
+      hess->bottomRightCorner<2, 2>() += sec.y * sec.y * k;
     }
   }
   phi -= freedom.force.dot(e0);
   if (freedom.tilt) phi += 0.5 * freedom.tilt_stiffness * t.squaredNorm() - freedom.moment.dot(t);
-  if (derivatives) {
-    grad->head<2>() -= freedom.force;
-    if (freedom.tilt) {
-      grad->tail<2>() += freedom.tilt_stiffness * t - freedom.moment;
-      hess->bottomRightCorner<2, 2>() += freedom.tilt_stiffness * Eigen::Matrix2d::Identity();
-    }
+  grad->head<2>() -= freedom.force;
+  if (freedom.tilt) {
+    grad->tail<2>() += freedom.tilt_stiffness * t - freedom.moment;
+    hess->bottomRightCorner<2, 2>() += freedom.tilt_stiffness * Eigen::Matrix2d::Identity();
   }
   return phi;
 }
@@ -280,8 +280,7 @@ const double* RigidSectionContact::InverseGap(const ContactSection& section, std
 }
 
 double RigidSectionContact::DistanceToContact(std::span<const ContactSection> sections,
-                                              const RigidFreedom& freedom,
-                                              const Eigen::Vector4d& q,
+                                              const RigidFreedom& freedom, const Eigen::Vector4d& q,
                                               const Eigen::Vector4d& dir) const {
   double reach = std::numeric_limits<double>::infinity();
   for (const ContactSection& sec : sections) {
@@ -301,29 +300,42 @@ double RigidSectionContact::DistanceToContact(std::span<const ContactSection> se
 RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> sections,
                                               const RigidFreedom& freedom,
                                               const Eigen::Vector4d& warm) {
-  active_.assign(sections.size(), std::vector<char>(static_cast<std::size_t>(columns()), 0));
-  inverse_gap_.resize(sections.size() * static_cast<std::size_t>(columns()));
+  const auto nn = static_cast<std::size_t>(columns());
+  Eigen::Vector4d q = warm;
+  if (!freedom.tilt) q.tail<2>().setZero();
+  active_.resize(sections.size());
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    const char* w = sections[s].warm_contact;
+    active_[s].assign(nn, 0);
+    if (w == nullptr) continue;
+    const double y = freedom.tilt ? sections[s].y : 0.0;
+    const Eigen::Vector2d e = q.head<2>() + y * q.tail<2>();
+    for (std::size_t j = 0; j < nn; ++j) {
+      const bool interferes = e.x() * cos_[j] + e.y() * sin_[j] > sections[s].gap[j];
+      active_[s][j] = w[j] && interferes;
+    }
+  }
+  inverse_gap_.resize(sections.size() * nn);
   inverse_gap_ready_.assign(sections.size(), 0);
   factors_.resize(sections.size());
   for (CirculantContact::Factorization& f : factors_) f.valid = false;
   double length = 0.0;
   for (const ContactSection& s : sections) length = std::max(length, std::abs(s.y));
   length = std::max(length, 1e-6);
-  Eigen::Vector4d q = warm;
-  if (!freedom.tilt) q.tail<2>().setZero();
   RigidContactResult r;
-  Eigen::Vector4d grad;
-  Eigen::Matrix4d hess;
+  // Every evaluation computes the derivatives too, so that a line search's accepted point is the
+  // next Newton iterate without a second evaluation there (the LCPs are most of the cost).
+  Eigen::Vector4d grad, trial_grad;
+  Eigen::Matrix4d hess, trial_hess;
+  double phi = Evaluate(sections, freedom, q, &grad, &hess);
+  bool evaluated_at_q = true;  // pressure_ and active_ belong to q
   for (int it = 0; it < 60; ++it) {
     ++r.newton_iterations;
-    const double phi = Evaluate(sections, freedom, q, true, &grad, &hess);
     // Force scale of the problem: what the sections carry and what is applied.
     double load = freedom.force.norm() + freedom.moment.norm() / length;
     for (std::size_t s = 0; s < sections.size(); ++s) {
       double sum = 0.0;
-      for (int j = 0; j < columns(); ++j) {
-        sum += pressure_[s * static_cast<std::size_t>(columns()) + static_cast<std::size_t>(j)];
-      }
+      for (std::size_t j = 0; j < nn; ++j) sum += pressure_[s * nn + j];
       load += sum * sections[s].cell_area;
     }
     Eigen::Vector4d scaled = grad;
@@ -345,6 +357,7 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
       Eigen::Vector4d unit = dir;
       unit.tail<2>() *= length;
       q += (reach + 1e-12 / unit.norm()) * dir;
+      phi = Evaluate(sections, freedom, q, &grad, &hess);
       continue;
     }
     const Eigen::VectorXd step = -h.completeOrthogonalDecomposition().solve(grad.head(dofs));
@@ -353,22 +366,30 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
     const double slope = grad.dot(dir);
     if (!(slope < 0.0)) break;
     double alpha = 1.0;
-    Eigen::Vector4d dummy_g;
-    Eigen::Matrix4d dummy_h;
-    while (alpha > 1e-12 &&
-           Evaluate(sections, freedom, q + alpha * dir, false, &dummy_g, &dummy_h) >
-               phi + 1e-4 * alpha * slope) {
+    bool accepted = false;
+    while (alpha > 1e-12) {
+      const double trial = Evaluate(sections, freedom, q + alpha * dir, &trial_grad, &trial_hess);
+      if (trial <= phi + 1e-4 * alpha * slope) {
+        phi = trial;
+        accepted = true;
+        break;
+      }
       alpha *= 0.5;
     }
+    if (!accepted) {
+      evaluated_at_q = false;  // the last evaluation was a rejected trial
+      break;
+    }
+    grad = trial_grad;
+    hess = trial_hess;
     q += alpha * dir;
     Eigen::Vector4d moved = alpha * dir;
     moved.tail<2>() *= length;
     if (moved.norm() < 1e-15) break;  // a femtometre: converged to rounding
   }
-  Evaluate(sections, freedom, q, false, &grad, &hess);
+  if (!evaluated_at_q) Evaluate(sections, freedom, q, &grad, &hess);
   r.offset = q.head<2>();
   r.tilt = freedom.tilt ? Eigen::Vector2d(q.tail<2>()) : Eigen::Vector2d::Zero();
-  const auto nn = static_cast<std::size_t>(columns());
   for (std::size_t s = 0; s < sections.size(); ++s) {
     for (std::size_t j = 0; j < nn; ++j) {
       const double p = pressure_[s * nn + j];

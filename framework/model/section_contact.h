@@ -4,9 +4,9 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/Cholesky>
 
 #include "framework/core/export.h"
+#include "framework/model/dense_cholesky.h"
 #include "framework/model/harmonic_compliance.h"
 
 namespace fitfeel {
@@ -32,7 +32,7 @@ class FITFEEL_API CirculantContact {
     bool valid = false;            // llt or llt_dual factors the set `set`
     std::vector<char> set;
     Eigen::MatrixXd gff, hnn;
-    Eigen::LLT<Eigen::MatrixXd> llt, llt_dual;
+    DenseCholesky llt, llt_dual;
     bool Holds(const std::vector<char>& f, bool d) const { return valid && dual == d && set == f; }
     void Remember(const std::vector<char>& f, bool d) {
       set = f;
@@ -50,8 +50,8 @@ class FITFEEL_API CirculantContact {
   // contact set on exit. Returns the number of pivoting steps; throws if it fails to terminate.
   // `full`, when given, is G^-1 delta (every pressure of full contact, some negative: the caller
   // has tried SolveFull); otherwise Solve computes it and returns at once if it is feasible.
-  int Solve(const double* delta, double* p, std::vector<char>* active,
-            const double* full = nullptr, Factorization* workspace = nullptr);
+  int Solve(const double* delta, double* p, std::vector<char>* active, const double* full = nullptr,
+            Factorization* workspace = nullptr);
   // The closed form of full contact for delta = U e - gap (U the columns' unit vectors) from
   // inverse_gap = G^-1 gap (InverseTimes): p = (G^-1 U) e - G^-1 gap, O(n) instead of O(n^2), so a
   // Newton search that moves e over fixed gaps pays the n^2 product once. p receives G^-1 delta
@@ -75,7 +75,7 @@ class FITFEEL_API CirculantContact {
   Eigen::MatrixX2d g_inv_u_;  // G^-1 U
   Eigen::Matrix2d full_stiffness_;
   Eigen::VectorXd full_;
-  Factorization own_;                  // without a caller's workspace
+  Factorization own_;  // without a caller's workspace
   // The last solve's workspace, for OffsetStiffness; null: own_. A copy of this object made
   // between a solve and its OffsetStiffness would point at the original's; nobody does that.
   const Factorization* last_ = nullptr;
@@ -86,22 +86,25 @@ struct ContactSection {
   const double* gap = nullptr;  // rigid gap per column (S_T), m; positive = clearance
   double cell_area = 0.0;       // area of one column's cell in this slice, m^2
   double y = 0.0;               // axial position of the slice from the reference point, m
+  // Optional warm start: the contact set (one flag per column) this section is expected to have,
+  // e.g. that of the same bore row one depth step earlier. Only speed depends on it.
+  const char* warm_contact = nullptr;
 };
 
 // How the moving part may move against the fixed one, and what holds it.
 struct RigidFreedom {
-  bool tilt = false;            // 4 DOF (offset and tilt) instead of 2 (offset)
-  double tilt_stiffness = 0.0;  // holder's rotational stiffness, N*m/rad (0 = free)
+  bool tilt = false;                 // 4 DOF (offset and tilt) instead of 2 (offset)
+  double tilt_stiffness = 0.0;       // holder's rotational stiffness, N*m/rad (0 = free)
   Eigen::Vector2d force{0.0, 0.0};   // external radial load on the part (x, z), N
   Eigen::Vector2d moment{0.0, 0.0};  // its first moment about the reference point, N*m
 };
 
 struct RigidContactResult {
-  Eigen::Vector2d offset{0.0, 0.0};  // axis offset at the reference point, m
-  Eigen::Vector2d tilt{0.0, 0.0};    // axis slope (dx/dy, dz/dy), rad
-  double normal_force = 0.0;         // sum p * A, N
+  Eigen::Vector2d offset{0.0, 0.0};     // axis offset at the reference point, m
+  Eigen::Vector2d tilt{0.0, 0.0};       // axis slope (dx/dy, dz/dy), rad
+  double normal_force = 0.0;            // sum p * A, N
   Eigen::Vector2d resultant{0.0, 0.0};  // sum p * A * u_j, N
-  double max_pressure = 0.0;         // Pa
+  double max_pressure = 0.0;            // Pa
   int newton_iterations = 0;
 };
 
@@ -119,15 +122,16 @@ class FITFEEL_API RigidSectionContact {
   const CirculantContact& contact() const { return contact_; }
   // Pressures of every section of the last Solve, section-major (Pa).
   const std::vector<double>& pressures() const { return pressure_; }
+  // Contact set of every section of the last Solve (one flag per column), for warm starts.
+  const std::vector<std::vector<char>>& contact_sets() const { return active_; }
 
   RigidContactResult Solve(std::span<const ContactSection> sections, const RigidFreedom& freedom,
                            const Eigen::Vector4d& warm);
 
  private:
-  // Potential, gradient and Hessian at q (gradient and Hessian only if `derivatives`).
+  // Potential, gradient and Hessian at q; leaves every section's pressures and contact set at q.
   double Evaluate(std::span<const ContactSection> sections, const RigidFreedom& freedom,
-                  const Eigen::Vector4d& q, bool derivatives, Eigen::Vector4d* grad,
-                  Eigen::Matrix4d* hess);
+                  const Eigen::Vector4d& q, Eigen::Vector4d* grad, Eigen::Matrix4d* hess);
 
   // Step length along dir (4-vector in q) at which the first column touches; inf if none.
   double DistanceToContact(std::span<const ContactSection> sections, const RigidFreedom& freedom,

@@ -177,6 +177,11 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
   std::vector<double> elastic_gap;
   std::vector<ContactSection> sections;
+  // The contact set each bore row had at the last depth step that engaged it: one step deeper the
+  // row meets the same or the next shaft row a fraction of a row further on, and its contact set
+  // is mostly the same, so the section's LCP starts there instead of from the interference set.
+  std::vector<std::vector<char>> row_contact(static_cast<std::size_t>(bushing_rows_));
+  std::vector<std::size_t> row_contact_step(static_cast<std::size_t>(bushing_rows_), count);
 
   // Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
   auto energy = [&](const Eigen::Vector2d& p, bool moments) {
@@ -263,8 +268,15 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
           elastic_gap[sl * ne + j / static_cast<std::size_t>(block_)] += st[sl * n + j] / block_;
         }
         sec.cell_area = w[sl * n] * block_;  // equal cells along a slice
+        const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
+        sec.warm_contact = row_contact_step[row] + 1 == k ? row_contact[row].data() : nullptr;
       }
       const RigidContactResult r = solver->Solve(sections, freedom, elastic_warm);
+      for (std::size_t sl = 0; sl < slices.size(); ++sl) {
+        const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
+        row_contact[row] = solver->contact_sets()[sl];
+        row_contact_step[row] = k;
+      }
       elastic_warm << r.offset, r.tilt;
       anchor = Rotate(r.offset, frame);
       tilt_[k] = Rotate(r.tilt, frame);
