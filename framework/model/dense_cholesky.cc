@@ -1,22 +1,80 @@
 #include "framework/model/dense_cholesky.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
 namespace fitfeel {
 
 bool DenseCholesky::Compute(const Eigen::MatrixXd& a) {
-  llt_.compute(a);
-  return llt_.info() == Eigen::Success;
+  const Eigen::LLT<Eigen::MatrixXd> llt(a);
+  if (llt.info() != Eigen::Success) return false;
+  size_ = a.rows();
+  if (l_.rows() < size_) l_.resize(size_, size_);
+  l_.topLeftCorner(size_, size_).triangularView<Eigen::Lower>() = llt.matrixLLT();
+  return true;
 }
 
-void DenseCholesky::SolveInPlace(Eigen::Ref<Eigen::VectorXd> x) const { llt_.solveInPlace(x); }
+bool DenseCholesky::Append(const Eigen::Ref<const Eigen::VectorXd>& column, double diagonal) {
+  const Eigen::Index s = size_;
+  // The new row r of L solves L r = column; its diagonal is what is left of A's.
+  Eigen::VectorXd r = column;
+  const auto l = l_.topLeftCorner(s, s);
+  for (Eigen::Index j = 0; j < s; ++j) {
+    r[j] /= l(j, j);
+    r.tail(s - j - 1) -= r[j] * l.col(j).tail(s - j - 1);
+  }
+  const double rest = diagonal - r.squaredNorm();
+  // A pivot of less than 1e-8 of the diagonal has lost most of its digits to cancellation.
+  if (!(rest > 1e-8 * diagonal)) return false;
+  if (l_.rows() <= s)
+    l_.conservativeResize(std::max<Eigen::Index>(2 * s, 8), std::max<Eigen::Index>(2 * s, 8));
+  l_.row(s).head(s) = r.transpose();
+  l_(s, s) = std::sqrt(rest);
+  size_ = s + 1;
+  return true;
+}
+
+void DenseCholesky::Remove(Eigen::Index position) {
+  const Eigen::Index s = size_;
+  const Eigen::Index p = position;
+  // Rows below p lose their entry x in column p: the trailing factor T must become T' with
+  // T' T'^T = T T^T + x x^T, a rank-one update by Givens-like steps down T's columns.
+  Eigen::VectorXd x = l_.col(p).segment(p + 1, s - p - 1);
+  for (Eigen::Index k = p + 1; k < s; ++k) {
+    const Eigen::Index i = k - p - 1;  // x's index of row k
+    const double lkk = l_(k, k);
+    const double r = std::hypot(lkk, x[i]);
+    const double c = r / lkk, sn = x[i] / lkk;
+    l_(k, k) = r;
+    const Eigen::Index below = s - k - 1;
+    auto lower = l_.col(k).segment(k + 1, below);
+    auto rest = x.segment(i + 1, below);
+    lower = (lower + sn * rest) / c;
+    rest = c * rest - sn * lower;
+  }
+  // Close the gap: columns after p move left and rows after p move up by one.
+  for (Eigen::Index j = 0; j < s - 1; ++j) {
+    const Eigen::Index from_col = j < p ? j : j + 1;
+    for (Eigen::Index i = std::max(j, p); i < s - 1; ++i) l_(i, j) = l_(i + 1, from_col);
+  }
+  size_ = s - 1;
+}
+
+void DenseCholesky::SolveInPlace(Eigen::Ref<Eigen::VectorXd> x) const {
+  const auto l = l_.topLeftCorner(size_, size_);
+  l.triangularView<Eigen::Lower>().solveInPlace(x);
+  l.triangularView<Eigen::Lower>().transpose().solveInPlace(x);
+}
 
 Eigen::Matrix2d DenseCholesky::InverseForm(Eigen::MatrixX2d b) const {
-  const Eigen::MatrixXd& l = llt_.matrixLLT();  // L in the lower triangle
-  const Eigen::Index m = l.rows();
+  const Eigen::Index m = size_;
   for (Eigen::Index j = 0; j < m; ++j) {
-    b.row(j) /= l(j, j);
-    const Eigen::Index below = m - j - 1;
-    b.col(0).tail(below) -= b(j, 0) * l.col(j).tail(below);
-    b.col(1).tail(below) -= b(j, 1) * l.col(j).tail(below);
+    b.row(j) /= l_(j, j);
+    const auto column = l_.col(j).segment(j + 1, m - j - 1);
+    b.col(0).tail(m - j - 1) -= b(j, 0) * column;
+    b.col(1).tail(m - j - 1) -= b(j, 1) * column;
   }
   return b.transpose() * b;
 }

@@ -73,6 +73,52 @@ constexpr const char* kNotDefinite =
     "rounding); the compliance spectrum must be positive";
 }  // namespace
 
+void CirculantContact::Refactor(const Eigen::MatrixXd& a, std::vector<int>* target,
+                                Factorization::Factor* factor, std::vector<char>* mark) const {
+  std::vector<int>& held = factor->columns;
+  DenseCholesky& chol = factor->cholesky;
+  if (factor->valid) {
+    // What leaves and what joins, by membership flags over the n columns.
+    mark->assign(static_cast<std::size_t>(n_), 0);
+    for (int c : *target) (*mark)[static_cast<std::size_t>(c)] = 1;
+    int leaving = 0;
+    for (int c : held) leaving += (*mark)[static_cast<std::size_t>(c)] ? 0 : 1;
+    const int joining =
+        static_cast<int>(target->size()) - (static_cast<int>(held.size()) - leaving);
+    // Row updates cost about 2 m^2 each against m^3 / 3 for a new factor.
+    if (6 * (leaving + joining) <= static_cast<int>(target->size())) {
+      bool ok = true;
+      for (int pos = static_cast<int>(held.size()) - 1; pos >= 0 && leaving > 0; --pos) {
+        if (!(*mark)[static_cast<std::size_t>(held[static_cast<std::size_t>(pos)])]) {
+          chol.Remove(pos);
+          held.erase(held.begin() + pos);
+          --leaving;
+        }
+      }
+      for (int c : held) (*mark)[static_cast<std::size_t>(c)] = 2;  // held and wanted
+      Eigen::VectorXd column;
+      for (int c : *target) {
+        if ((*mark)[static_cast<std::size_t>(c)] == 2) continue;
+        column.resize(static_cast<Eigen::Index>(held.size()));
+        for (std::size_t r = 0; r < held.size(); ++r)
+          column[static_cast<Eigen::Index>(r)] = a(held[r], c);
+        if (!chol.Append(column, a(c, c))) {
+          ok = false;
+          break;
+        }
+        held.push_back(c);
+      }
+      if (ok) {
+        *target = held;
+        return;
+      }
+    }
+  }
+  held = *target;
+  factor->valid = chol.Compute(a(held, held));  // principal submatrix (Eigen's indexed view)
+  if (!factor->valid) throw UserError(kNotDefinite);
+}
+
 int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* active,
                             const double* full, Factorization* workspace) {
   Factorization& ws = workspace != nullptr ? *workspace : own_;
@@ -119,13 +165,9 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
     // same solution (block inverse of G), found at a cost set by the fewer of contacts and gaps.
     ws.dual = k < m;
     if (ws.dual) {
-      if (!ws.Holds(f, true)) {
-        ws.hnn = g_inv_(ws.gaps, ws.gaps);  // principal submatrix (Eigen's indexed view)
-        if (!ws.llt_dual.Compute(ws.hnn)) throw UserError(kNotDefinite);
-        ws.Remember(f, true);
-      }
+      Refactor(g_inv_, &ws.gaps, &ws.dual_factor, &ws.mark);
       Eigen::VectorXd z = full_(ws.gaps);
-      ws.llt_dual.SolveInPlace(z);
+      ws.dual_factor.cholesky.SolveInPlace(z);
       for (int c : ws.index) {
         double s = full_[c];
         // G^-1 is symmetric: read column c (contiguous) instead of row c.
@@ -135,13 +177,9 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       for (int a = 0; a < k; ++a) w[ws.gaps[static_cast<std::size_t>(a)]] = -z[a];
     } else {
       if (m > 0) {
-        if (!ws.Holds(f, false)) {
-          ws.gff = g_(ws.index, ws.index);
-          if (!ws.llt.Compute(ws.gff)) throw UserError(kNotDefinite);
-          ws.Remember(f, false);
-        }
+        Refactor(g_, &ws.index, &ws.primal, &ws.mark);
         Eigen::VectorXd pf = Eigen::Map<const Eigen::VectorXd>(delta, n)(ws.index);
-        ws.llt.SolveInPlace(pf);
+        ws.primal.cholesky.SolveInPlace(pf);
         for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
       }
       for (int j : ws.gaps) {
@@ -186,7 +224,7 @@ Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
     const int k = static_cast<int>(ws.gaps.size());
     Eigen::MatrixX2d a(k, 2);
     for (int r = 0; r < k; ++r) a.row(r) = g_inv_u_.row(ws.gaps[static_cast<std::size_t>(r)]);
-    return full_stiffness_ - ws.llt_dual.InverseForm(std::move(a));
+    return full_stiffness_ - ws.dual_factor.cholesky.InverseForm(std::move(a));
   }
   const int m = static_cast<int>(ws.index.size());
   if (m == 0) return Eigen::Matrix2d::Zero();
@@ -195,7 +233,7 @@ Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
     u(a, 0) = cos_[static_cast<std::size_t>(ws.index[static_cast<std::size_t>(a)])];
     u(a, 1) = sin_[static_cast<std::size_t>(ws.index[static_cast<std::size_t>(a)])];
   }
-  return ws.llt.InverseForm(std::move(u));
+  return ws.primal.cholesky.InverseForm(std::move(u));
 }
 
 RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_columns)
@@ -236,8 +274,10 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
       std::fill(p, p + n, 0.0);
       continue;
     }
-    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s], &factors_[s])) {
-      contact_.Solve(delta_.data(), p, &active_[s], full_.data(), &factors_[s]);
+    CirculantContact::Factorization* factors =
+        sec.factorization != nullptr ? sec.factorization : &factors_[s];
+    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s], factors)) {
+      contact_.Solve(delta_.data(), p, &active_[s], full_.data(), factors);
     } else {
       std::copy(full_.begin(), full_.end(), p);
     }
@@ -318,7 +358,7 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   inverse_gap_.resize(sections.size() * nn);
   inverse_gap_ready_.assign(sections.size(), 0);
   factors_.resize(sections.size());
-  for (CirculantContact::Factorization& f : factors_) f.valid = false;
+  for (CirculantContact::Factorization& f : factors_) f.Invalidate();
   double length = 0.0;
   for (const ContactSection& s : sections) length = std::max(length, std::abs(s.y));
   length = std::max(length, 1e-6);

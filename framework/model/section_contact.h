@@ -22,23 +22,23 @@ namespace fitfeel {
 // fallback that guarantees termination. Prepare-time only: it allocates.
 class FITFEEL_API CirculantContact {
  public:
-  // The factorization of one contact set, kept between solves: a section whose contact set has
-  // not changed since its last solve (the usual case late in a Newton search) solves with it in
-  // O(n m) instead of factoring again. One per section; Solve uses its own without one.
+  // The factorizations of one section, kept between solves: a section whose contact set has not
+  // changed since its last solve (the usual case late in a Newton search) solves with them in
+  // O(n m), and one whose set changed by a few columns updates them by rows in O(n m) per column
+  // instead of factoring anew. One per section; Solve uses its own without one.
   struct Factorization {
+    // The columns of one factor, in the factor's order, and whether it is current.
+    struct Factor {
+      DenseCholesky cholesky;
+      std::vector<int> columns;
+      bool valid = false;
+    };
     std::vector<int> index, gaps;  // the contact set F and the gaps N of the last step
-    bool dual = false;             // solved on N with (G^-1)_NN (llt_dual), else on F with G_FF
+    bool dual = false;             // solved on N with (G^-1)_NN (dual), else on F with G_FF
     bool last_full = false;        // the last solve was full contact (closed form)
-    bool valid = false;            // llt or llt_dual factors the set `set`
-    std::vector<char> set;
-    Eigen::MatrixXd gff, hnn;
-    DenseCholesky llt, llt_dual;
-    bool Holds(const std::vector<char>& f, bool d) const { return valid && dual == d && set == f; }
-    void Remember(const std::vector<char>& f, bool d) {
-      set = f;
-      dual = d;
-      valid = true;
-    }
+    Factor primal, dual_factor;    // of G_FF and of (G^-1)_NN
+    std::vector<char> mark;        // scratch: membership flags for the update
+    void Invalidate() { primal.valid = dual_factor.valid = false; }
   };
 
   // compliance[k] for k = 0 .. n/2 (m/Pa); n even >= 4.
@@ -69,6 +69,11 @@ class FITFEEL_API CirculantContact {
   int n_;
   Eigen::MatrixXd g_;
   std::vector<double> cos_, sin_;
+  // Makes `factor` factor the principal submatrix a(target, target), by row updates from the
+  // set it holds when few columns differ, else anew; `target` receives the factor's order.
+  void Refactor(const Eigen::MatrixXd& a, std::vector<int>* target, Factorization::Factor* factor,
+                std::vector<char>* mark) const;
+
   // Full contact has a closed form, p = G^-1 delta (tried first: it is the common case of a press
   // fit), with a constant offset stiffness.
   Eigen::MatrixXd g_inv_;
@@ -89,6 +94,11 @@ struct ContactSection {
   // Optional warm start: the contact set (one flag per column) this section is expected to have,
   // e.g. that of the same bore row one depth step earlier. Only speed depends on it.
   const char* warm_contact = nullptr;
+  // Optional, kept by the caller between solves (e.g. per bore row over the depth steps): the
+  // factorizations of the section's contact set. They depend only on the set (the compliance is
+  // the solver's), so any earlier ones are valid starting points. Null: the solver's own, new
+  // for each Solve.
+  CirculantContact::Factorization* factorization = nullptr;
 };
 
 // How the moving part may move against the fixed one, and what holds it.

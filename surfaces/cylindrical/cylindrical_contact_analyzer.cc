@@ -182,6 +182,9 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   // is mostly the same, so the section's LCP starts there instead of from the interference set.
   std::vector<std::vector<char>> row_contact(static_cast<std::size_t>(bushing_rows_));
   std::vector<std::size_t> row_contact_step(static_cast<std::size_t>(bushing_rows_), count);
+  // And its factorizations: they depend only on the contact set, so the row's last ones are the
+  // cheapest start for its next (updated by rows where the set changed a little).
+  std::vector<CirculantContact::Factorization> row_factors(static_cast<std::size_t>(bushing_rows_));
 
   // Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
   auto energy = [&](const Eigen::Vector2d& p, bool moments) {
@@ -270,6 +273,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         sec.cell_area = w[sl * n] * block_;  // equal cells along a slice
         const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
         sec.warm_contact = row_contact_step[row] + 1 == k ? row_contact[row].data() : nullptr;
+        sec.factorization = &row_factors[row];
       }
       const RigidContactResult r = solver->Solve(sections, freedom, elastic_warm);
       for (std::size_t sl = 0; sl < slices.size(); ++sl) {

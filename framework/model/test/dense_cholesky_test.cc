@@ -1,6 +1,8 @@
 #include "framework/model/dense_cholesky.h"
 
+#include <cstddef>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
@@ -40,6 +42,65 @@ TEST(DenseCholesky, SolvesAndFormsAsEigensLltDoesForEverySize) {
     const Eigen::Matrix2d form = b.transpose() * reference.solve(b);
     EXPECT_LT((chol.InverseForm(b) - form).norm(), 1e-9 * form.norm()) << "m = " << m;
   }
+}
+
+// A factor kept through 300 random row removals and appends solves as a fresh factorization of
+// the same principal submatrix does.
+TEST(DenseCholesky, RowUpdatesSolveAsAFreshFactorization) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> normal;
+  const Eigen::Index n = 60;
+  const Eigen::MatrixXd a = RandomSpd(n, &rng);
+  std::vector<Eigen::Index> held, spare;
+  for (Eigen::Index i = 0; i < n; ++i) (i % 3 == 0 ? spare : held).push_back(i);
+  DenseCholesky chol;
+  ASSERT_TRUE(chol.Compute(a(held, held)));
+  for (int step = 0; step < 300; ++step) {
+    const bool remove =
+        !held.empty() && (spare.empty() || std::uniform_int_distribution<>(0, 1)(rng));
+    if (remove) {
+      const auto pos = std::uniform_int_distribution<std::size_t>(0, held.size() - 1)(rng);
+      chol.Remove(static_cast<Eigen::Index>(pos));
+      spare.push_back(held[pos]);
+      held.erase(held.begin() + static_cast<std::ptrdiff_t>(pos));
+    } else {
+      const auto pos = std::uniform_int_distribution<std::size_t>(0, spare.size() - 1)(rng);
+      const Eigen::Index c = spare[pos];
+      Eigen::VectorXd column(static_cast<Eigen::Index>(held.size()));
+      for (std::size_t r = 0; r < held.size(); ++r)
+        column[static_cast<Eigen::Index>(r)] = a(held[r], c);
+      ASSERT_TRUE(chol.Append(column, a(c, c)));
+      held.push_back(c);
+      spare.erase(spare.begin() + static_cast<std::ptrdiff_t>(pos));
+    }
+    ASSERT_EQ(chol.size(), static_cast<Eigen::Index>(held.size()));
+    if (held.empty()) continue;
+    const Eigen::MatrixXd sub = a(held, held);
+    const Eigen::LLT<Eigen::MatrixXd> reference(sub);
+    Eigen::VectorXd x(sub.rows());
+    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = normal(rng);
+    const Eigen::VectorXd expected = reference.solve(x);
+    chol.SolveInPlace(x);
+    ASSERT_LT((x - expected).norm(), 1e-8 * expected.norm()) << "step " << step;
+    Eigen::MatrixX2d b(sub.rows(), 2);
+    for (Eigen::Index i = 0; i < b.size(); ++i) b.data()[i] = normal(rng);
+    const Eigen::Matrix2d form = b.transpose() * reference.solve(b);
+    ASSERT_LT((chol.InverseForm(b) - form).norm(), 1e-8 * form.norm()) << "step " << step;
+  }
+}
+
+// Appending a column that makes the matrix singular is refused and leaves the factor as it was.
+TEST(DenseCholesky, RefusesAnAppendThatLosesDefiniteness) {
+  Eigen::Matrix2d a;
+  a << 4, 2, 2, 3;
+  DenseCholesky chol;
+  ASSERT_TRUE(chol.Compute(a));
+  EXPECT_FALSE(chol.Append(Eigen::Vector2d(4, 2), 4.0));  // a copy of the first column
+  EXPECT_EQ(chol.size(), 2);
+  Eigen::VectorXd x = Eigen::Vector2d(4, 2);
+  chol.SolveInPlace(x);
+  EXPECT_NEAR(x[0], 1.0, 1e-12);
+  EXPECT_NEAR(x[1], 0.0, 1e-12);
 }
 
 TEST(DenseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
