@@ -19,6 +19,10 @@ double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
+// The deque method over lines sorted by angle.
+bool IntersectSorted(const std::vector<Line>& lines, double bound,
+                     std::vector<Eigen::Vector2d>* vertices);
+
 Eigen::Vector2d Intersect(const Line& a, const Line& b) {
   const double det = Cross(a.u, b.u);
   return {(a.h * b.u.y() - b.h * a.u.y()) / det, (a.u.x() * b.h - b.u.x() * a.h) / det};
@@ -26,21 +30,47 @@ Eigen::Vector2d Intersect(const Line& a, const Line& b) {
 
 }  // namespace
 
-bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<double>& h,
-                         double bound, std::vector<Eigen::Vector2d>* vertices) {
-  vertices->clear();
+HalfPlanes::HalfPlanes(std::span<const double> angle, double bound) : bound_(bound) {
   std::vector<Line> lines;
   lines.reserve(angle.size() + 4);
   for (std::size_t j = 0; j < angle.size(); ++j) {
-    lines.push_back({{std::cos(angle[j]), std::sin(angle[j])}, h[j], 0.0});
+    lines.push_back({{std::cos(angle[j]), std::sin(angle[j])}, static_cast<double>(j), 0.0});
   }
   for (int q = 0; q < 4; ++q) {
     const double a = q * M_PI / 2;
-    lines.push_back({{std::cos(a), std::sin(a)}, bound, 0.0});
+    lines.push_back({{std::cos(a), std::sin(a)}, -1.0, 0.0});  // h = bound
   }
   for (Line& l : lines) l.angle = std::atan2(l.u.y(), l.u.x());
+  // The order depends on the angles alone (the comparator reads nothing else), so it is the
+  // order every intersection of these directions would sort its lines into.
   std::sort(lines.begin(), lines.end(),
             [](const Line& a, const Line& b) { return a.angle < b.angle; });
+  for (const Line& l : lines) {
+    normal_.push_back(l.u);
+    source_.push_back(static_cast<int>(l.h));
+  }
+}
+
+bool HalfPlanes::Intersect(std::span<const double> h,
+                           std::vector<Eigen::Vector2d>* vertices) const {
+  std::vector<Line> lines(normal_.size());
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const int j = source_[k];
+    lines[k] = {normal_[k], j >= 0 ? h[static_cast<std::size_t>(j)] : bound_, 0.0};
+  }
+  return IntersectSorted(lines, bound_, vertices);
+}
+
+bool IntersectHalfPlanes(std::span<const double> angle, std::span<const double> h, double bound,
+                         std::vector<Eigen::Vector2d>* vertices) {
+  return HalfPlanes(angle, bound).Intersect(h, vertices);
+}
+
+namespace {
+
+bool IntersectSorted(const std::vector<Line>& lines, double bound,
+                     std::vector<Eigen::Vector2d>* vertices) {
+  vertices->clear();
   // Lengths here are metres of micrometre scale: an absolute tolerance far below any clearance.
   const double eps = 1e-15 * std::max(1.0, bound);
   auto out = [eps](const Line& l, const Eigen::Vector2d& p) { return p.dot(l.u) > l.h + eps; };
@@ -85,6 +115,8 @@ bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<dou
   }
   return true;
 }
+
+}  // namespace
 
 Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count,
                                    const Eigen::Vector2d& x) noexcept {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,8 +19,23 @@ namespace fitfeel {
 // bounded when the normals do not surround the origin. Returns false when the intersection is
 // empty (interference); otherwise `vertices` holds it counter-clockwise (a single point may come
 // back as several coincident vertices).
-FITFEEL_API bool IntersectHalfPlanes(const std::vector<double>& angle, const std::vector<double>& h,
+FITFEEL_API bool IntersectHalfPlanes(std::span<const double> angle, std::span<const double> h,
                                      double bound, std::vector<Eigen::Vector2d>* vertices);
+
+// The same for many right-hand sides over fixed directions (a depth table's columns): the
+// directions' normals and their order by angle computed once. Intersect gives exactly what
+// IntersectHalfPlanes gives for these angles; it is const and safe to call from several threads.
+class FITFEEL_API HalfPlanes {
+ public:
+  HalfPlanes() = default;
+  HalfPlanes(std::span<const double> angle, double bound);
+  bool Intersect(std::span<const double> h, std::vector<Eigen::Vector2d>* vertices) const;
+
+ private:
+  double bound_ = 0.0;
+  std::vector<Eigen::Vector2d> normal_;  // sorted by angle, the bounding box's four included
+  std::vector<int> source_;              // index into h of each, -1: the box (h = bound)
+};
 
 // Nearest point of the polygon to x (x itself when inside). O(vertices), no allocation.
 FITFEEL_API Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* vertices, int count,

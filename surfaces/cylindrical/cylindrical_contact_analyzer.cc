@@ -12,6 +12,7 @@
 
 #include "framework/core/error.h"
 #include "framework/core/number_text.h"
+#include "framework/core/parallel.h"
 #include "framework/model/convex_polygon.h"
 #include "framework/model/grid_rows.h"
 #include "framework/model/section_contact.h"
@@ -27,6 +28,13 @@ constexpr double kAutoDepthSteps = 20000;
 // Half-width of the box that bounds an assembly space whose normals do not surround the origin;
 // clearances are micrometres, so one metre never binds.
 constexpr double kPolygonBound = 1.0;
+// Depth steps per chunk of the prepare's parallel loop: the warm starts run within a chunk, so the
+// tables depend on this and not on the thread count. 32 steps: four chunks at the shipped scenes'
+// 120 steps (two per thread), and a cold start (a few extra iterations) per 32 steps.
+constexpr std::size_t kChunkSteps = 32;
+// Steps whose per-column minima are computed together (ChunkMinima): 8 steps of 1000 columns keep
+// their minima and the rows they read (about 200 kB) in a core's level-2 cache.
+constexpr std::size_t kMinimaBlock = 8;
 
 Eigen::Vector2d Rotate(const Eigen::Vector2d& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -75,6 +83,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     cos_[static_cast<std::size_t>(j)] = std::cos(gs.column_angle[j]);
     sin_[static_cast<std::size_t>(j)] = std::sin(gs.column_angle[j]);
   }
+  half_planes_ = HalfPlanes(angle_, kPolygonBound);
   shaft_edges_ = RowEdges(inner, gs);
   bushing_edges_ = RowEdges(outer, gb);
   shaft_rows_ = gs.rows;
@@ -86,6 +95,11 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   v_shaft_ = inner_sms.variation;
   v_bushing_ = outer_sms.variation;
   shaft_area_ = gs.area;
+  shaft_row_area_.assign(static_cast<std::size_t>(shaft_rows_), 0.0);
+  for (int i = 0; i < shaft_rows_; ++i) {
+    for (int j = 0; j < n_; ++j)
+      shaft_row_area_[static_cast<std::size_t>(i)] += shaft_area_[i * n_ + j];
+  }
 
   elastic_ = settings.law == "elastic";
   smoothing_ = settings.texture == TextureMode::kDin7190
@@ -169,175 +183,243 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   max_vertices_ = 0;
   newton_iterations_ = 0;
 
-  const std::size_t n = static_cast<std::size_t>(n_);
-  std::vector<Slice> slices;
-  std::vector<double> st, w, h(n), col_a(n), col_b(n), proj(n);
-  std::vector<Eigen::Vector2d> polygon;
-  Eigen::Vector2d warm(0.0, 0.0);
-  Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
-  std::vector<double> elastic_gap;
-  std::vector<ContactSection> sections;
-  // The contact set each bore row had at the last depth step that engaged it: one step deeper the
-  // row meets the same or the next shaft row a fraction of a row further on, and its contact set
-  // is mostly the same, so the section's LCP starts there instead of from the interference set.
-  std::vector<std::vector<char>> row_contact(static_cast<std::size_t>(bushing_rows_));
-  std::vector<std::size_t> row_contact_step(static_cast<std::size_t>(bushing_rows_), count);
-  // And its factorizations: they depend only on the contact set, so the row's last ones are the
-  // cheapest start for its next (updated by rows where the set changed a little).
-  std::vector<CirculantContact::Factorization> row_factors(static_cast<std::size_t>(bushing_rows_));
-
-  // Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
-  auto energy = [&](const Eigen::Vector2d& p, bool moments) {
-    double e = 0.0;
-    if (moments) {
-      std::fill(col_a.begin(), col_a.end(), 0.0);
-      std::fill(col_b.begin(), col_b.end(), 0.0);
+  // Depth steps in chunks of kChunkSteps, each chunk on one thread from its own cold start (the
+  // warm starts below run within a chunk only), so the tables are the same whatever the thread
+  // count. Every step writes its own entries; polygons are joined in step order at the end.
+  const std::size_t chunks = (count + kChunkSteps - 1) / kChunkSteps;
+  std::vector<StepPolygon> polygons(count);
+  std::vector<int> chunk_newton(chunks, 0);
+  ParallelFor(static_cast<int>(chunks), [&](int chunk_begin, int chunk_end) {
+    StepScratch scratch;
+    for (auto c = static_cast<std::size_t>(chunk_begin); c < static_cast<std::size_t>(chunk_end);
+         ++c) {
+      scratch.Restart(static_cast<std::size_t>(n_), static_cast<std::size_t>(bushing_rows_));
+      if (solver && !scratch.solver) scratch.solver = solver;  // a copy per thread: it keeps state
+      const std::size_t first = c * kChunkSteps, end = std::min(count, first + kChunkSteps);
+      ChunkMinima(first, end, &scratch);
+      for (std::size_t k = first; k < end; ++k) PrepareStep(k, k - first, &scratch, &polygons[k]);
+      chunk_newton[c] = scratch.newton_iterations;
     }
-    for (std::size_t j = 0; j < n; ++j) proj[j] = p.x() * cos_[j] + p.y() * sin_[j];
-    const std::size_t rows = st.size() / n;
-    for (std::size_t r = 0; r < rows; ++r) {
-      const double* g = st.data() + r * n;
-      const double* a = w.data() + r * n;
-      for (std::size_t j = 0; j < n; ++j) {
-        const double d = std::max(0.0, proj[j] - g[j]);
-        e += a[j] * d * d;
-        if (moments) {
-          col_a[j] += a[j] * d;
-          col_b[j] += d > 0.0 ? a[j] : 0.0;
-        }
-      }
-    }
-    return e;
-  };
+  });
 
   for (std::size_t k = 0; k < count; ++k) {
-    const double depth = static_cast<double>(k) * step_;
-    depth_[k] = depth;
+    const StepPolygon& p = polygons[k];
     vertex_begin_[k] = static_cast<int>(vertices_.size());
-    SlicesAt(depth, &slices);
-    if (slices.empty()) {
-      unconstrained_[k] = 1;
-      continue;
-    }
-    st.resize(slices.size() * n);
-    w.resize(slices.size() * n);
-    std::fill(h.begin(), h.end(), std::numeric_limits<double>::infinity());
-    double length = 0.0, area = 0.0;
-    for (std::size_t s = 0; s < slices.size(); ++s) {
-      const Slice& sl = slices[s];
-      const auto i = static_cast<std::size_t>(sl.shaft_row);
-      const double share = sl.length / (shaft_edges_[i + 1] - shaft_edges_[i]);
-      const Eigen::Index rs = static_cast<Eigen::Index>(sl.shaft_row) * n_;
-      const Eigen::Index rb = static_cast<Eigen::Index>(sl.bushing_row) * n_;
-      length += sl.length;
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto jj = static_cast<Eigen::Index>(j);
-        const double gap = v_bushing_[rb + jj] - v_shaft_[rs + jj] + smoothing_;  // eq. 8
-        st[s * n + j] = gap;
-        w[s * n + j] = shaft_area_[rs + jj] * share;
-        area += w[s * n + j];
-        h[j] = std::min(h[j], gap);
-      }
-    }
-    length_[k] = length;
-    area_[k] = area;
+    vertex_count_[k] = static_cast<int>(p.vertices.size());
+    max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
+    vertices_.insert(vertices_.end(), p.vertices.begin(), p.vertices.end());
+    centre_angles_.insert(centre_angles_.end(), p.centre_angles.begin(), p.centre_angles.end());
+    origin_angles_.insert(origin_angles_.end(), p.origin_angles.begin(), p.origin_angles.end());
+  }
+  for (int c : chunk_newton) newton_iterations_ += c;
+}
 
-    Eigen::Vector2d anchor;
-    if (IntersectHalfPlanes(angle_, h, kPolygonBound, &polygon)) {
-      vertices_.insert(vertices_.end(), polygon.begin(), polygon.end());
-      vertex_count_[k] = static_cast<int>(polygon.size());
-      max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
-      anchor = PolygonCentroid(polygon.data(), static_cast<int>(polygon.size()));
-      centre_angles_.resize(vertices_.size(), 0.0);
-      origin_angles_.resize(vertices_.size(), 0.0);
-      centre_fan_[k] = FanAngles(polygon.data(), vertex_count_[k], anchor,
-                                 centre_angles_.data() + vertex_begin_[k]);
-      origin_fan_[k] = FanAngles(polygon.data(), vertex_count_[k], Eigen::Vector2d::Zero(),
-                                 origin_angles_.data() + vertex_begin_[k]);
-      warm = anchor;
-    } else if (elastic_) {
-      empty_[k] = 1;
-      const std::size_t ne = n / static_cast<std::size_t>(block_);
-      elastic_gap.assign(slices.size() * ne, 0.0);
-      sections.assign(slices.size(), ContactSection{});
-      const double lo = std::max(depth - shaft_length_, 0.0);
-      double pos = lo, middle = lo + 0.5 * length;
-      for (std::size_t sl = 0; sl < slices.size(); ++sl) {
-        ContactSection& sec = sections[sl];
-        sec.gap = elastic_gap.data() + sl * ne;
-        sec.y = pos + 0.5 * slices[sl].length - middle;
-        pos += slices[sl].length;
-        for (std::size_t j = 0; j < n; ++j) {
-          elastic_gap[sl * ne + j / static_cast<std::size_t>(block_)] += st[sl * n + j] / block_;
-        }
-        sec.cell_area = w[sl * n] * block_;  // equal cells along a slice
-        const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
-        sec.warm_contact = row_contact_step[row] + 1 == k ? row_contact[row].data() : nullptr;
-        sec.factorization = &row_factors[row];
-      }
-      const RigidContactResult r = solver->Solve(sections, freedom, elastic_warm);
-      for (std::size_t sl = 0; sl < slices.size(); ++sl) {
-        const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
-        row_contact[row] = solver->contact_sets()[sl];
-        row_contact_step[row] = k;
-      }
-      elastic_warm << r.offset, r.tilt;
-      anchor = Rotate(r.offset, frame);
-      tilt_[k] = Rotate(r.tilt, frame);
-      normal_[k] = r.normal_force;
-      warm = anchor;
-    } else {
-      empty_[k] = 1;
-      // Newton on the convex piecewise-quadratic energy, Armijo backtracking.
-      Eigen::Vector2d p = warm;
-      for (int it = 0; it < 100; ++it) {
-        ++newton_iterations_;
-        const double e0 = energy(p, true);
-        Eigen::Vector2d grad(0.0, 0.0);
-        Eigen::Matrix2d hess = Eigen::Matrix2d::Zero();
-        for (std::size_t j = 0; j < n; ++j) {
-          const Eigen::Vector2d u(cos_[j], sin_[j]);
-          grad += 2.0 * col_a[j] * u;
-          hess += 2.0 * col_b[j] * u * u.transpose();
-        }
-        const double trace = hess.trace();
-        if (!(trace > 0.0)) break;  // no cell interferes: p is already a minimiser
-        hess += 1e-12 * trace * Eigen::Matrix2d::Identity();
-        const Eigen::Vector2d dir = -hess.ldlt().solve(grad);
-        double alpha = 1.0;
-        const double slope = grad.dot(dir);
-        while (alpha > 1e-12 && energy(p + alpha * dir, false) > e0 + 1e-4 * alpha * slope) {
-          alpha *= 0.5;
-        }
-        p += alpha * dir;
-        // A picometre-scale step on micrometre interferences: converged.
-        if ((alpha * dir).norm() < 1e-13) break;
-      }
-      anchor = p;
-      warm = p;
-    }
-    anchor_[k] = anchor;
+void CylinderContactAnalyzer::StepScratch::Restart(std::size_t columns, std::size_t bore_rows) {
+  col_a.resize(columns);
+  col_b.resize(columns);
+  proj.resize(columns);
+  warm = Eigen::Vector2d::Zero();
+  elastic_warm = Eigen::Vector4d::Zero();
+  row_contact.assign(bore_rows, {});
+  row_contact_step.assign(bore_rows, std::numeric_limits<std::size_t>::max());
+  row_factors.assign(bore_rows, {});
+  newton_iterations = 0;
+}
 
-    // Interference at the anchor: none is possible with a sharp contact inside the polygon.
-    if (empty_[k] || !texture_.sharp()) {
-      double volume = 0.0, max_delta = 0.0;
-      Eigen::Vector2d resultant(0.0, 0.0);
-      for (std::size_t j = 0; j < n; ++j) proj[j] = anchor.x() * cos_[j] + anchor.y() * sin_[j];
-      std::fill(col_a.begin(), col_a.end(), 0.0);
-      for (std::size_t c = 0; c < st.size(); ++c) {
-        const std::size_t j = c - (c / n) * n;
-        const double d = texture_(st[c] - proj[j]);
-        col_a[j] += w[c] * d;
-        max_delta = std::max(max_delta, d);
+// Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
+double CylinderContactAnalyzer::Energy(const Eigen::Vector2d& p, bool moments,
+                                       StepScratch* s) const {
+  const std::size_t n = static_cast<std::size_t>(n_);
+  double e = 0.0;
+  if (moments) {
+    std::fill(s->col_a.begin(), s->col_a.end(), 0.0);
+    std::fill(s->col_b.begin(), s->col_b.end(), 0.0);
+  }
+  for (std::size_t j = 0; j < n; ++j) s->proj[j] = p.x() * cos_[j] + p.y() * sin_[j];
+  const std::size_t rows = s->st.size() / n;
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double* g = s->st.data() + r * n;
+    const double* a = s->w.data() + r * n;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double d = std::max(0.0, s->proj[j] - g[j]);
+      e += a[j] * d * d;
+      if (moments) {
+        s->col_a[j] += a[j] * d;
+        s->col_b[j] += d > 0.0 ? a[j] : 0.0;
       }
-      for (std::size_t j = 0; j < n; ++j) {
-        volume += col_a[j];
-        resultant += col_a[j] * Eigen::Vector2d(cos_[j], sin_[j]);
-      }
-      volume_[k] = volume;
-      max_delta_[k] = max_delta;
-      resultant_[k] = resultant;
     }
+  }
+  return e;
+}
+
+void CylinderContactAnalyzer::ChunkMinima(std::size_t first, std::size_t end,
+                                          StepScratch* s) const {
+  const std::size_t n = static_cast<std::size_t>(n_);
+  const std::size_t steps = end - first;
+  s->chunk_slices.resize(std::max(s->chunk_slices.size(), steps));
+  s->chunk_h.assign(steps * n, std::numeric_limits<double>::infinity());
+  s->pairs.clear();
+  for (std::size_t t = 0; t < steps; ++t) {
+    SlicesAt(static_cast<double>(first + t) * step_, &s->chunk_slices[t]);
+    for (const Slice& sl : s->chunk_slices[t]) {
+      s->pairs.push_back(
+          {static_cast<int>(t / kMinimaBlock), sl.shaft_row, static_cast<int>(t), sl.bushing_row});
+    }
+  }
+  // Shaft row by shaft row within blocks of kMinimaBlock steps: each row is read from memory
+  // once per block, and the bore rows it meets (consecutive from step to step) and the block's
+  // minima stay in cache. At 10^6 cells the two shapes are 12 MB and a step reads 8 MB of them,
+  // so a step at a time is bound by memory bandwidth. The minimum is exact: the order changes
+  // nothing.
+  std::sort(s->pairs.begin(), s->pairs.end());
+  // Locals, so that the compiler sees that h aliases neither the rows nor the smoothing and
+  // vectorises the loop.
+  const double smoothing = smoothing_;
+  for (const RowPair& p : s->pairs) {
+    const double* __restrict vs = v_shaft_.data() + static_cast<Eigen::Index>(p.shaft_row) * n_;
+    const double* __restrict vb = v_bushing_.data() + static_cast<Eigen::Index>(p.bushing_row) * n_;
+    double* __restrict h = s->chunk_h.data() + static_cast<std::size_t>(p.step) * n;
+    for (std::size_t j = 0; j < n; ++j) h[j] = std::min(h[j], vb[j] - vs[j] + smoothing);
+  }
+}
+
+void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScratch* s,
+                                          StepPolygon* out) {
+  const std::size_t n = static_cast<std::size_t>(n_);
+  const double depth = static_cast<double>(k) * step_;
+  depth_[k] = depth;
+  const std::vector<Slice>& slices = s->chunk_slices[t];
+  if (slices.empty()) {
+    unconstrained_[k] = 1;
+    return;
+  }
+  // First only what the assembly space needs: the smallest gap per column over the slices (eq. 8,
+  // ChunkMinima) and the engaged length and area. The per-cell gaps and weights are filled below
+  // only for the steps that use them (interference, or a texture that is not sharp).
+  const std::span<const double> h(s->chunk_h.data() + t * n, n);
+  double length = 0.0, area = 0.0;
+  for (const Slice& sl : slices) {
+    const auto i = static_cast<std::size_t>(sl.shaft_row);
+    length += sl.length;
+    area += shaft_row_area_[i] * sl.length / (shaft_edges_[i + 1] - shaft_edges_[i]);
+  }
+  length_[k] = length;
+  area_[k] = area;
+  auto fill_cells = [&] {
+    s->st.resize(slices.size() * n);
+    s->w.resize(slices.size() * n);
+    for (std::size_t sl = 0; sl < slices.size(); ++sl) {
+      const auto i = static_cast<std::size_t>(slices[sl].shaft_row);
+      const double share = slices[sl].length / (shaft_edges_[i + 1] - shaft_edges_[i]);
+      const double* vs = v_shaft_.data() + static_cast<Eigen::Index>(slices[sl].shaft_row) * n_;
+      const double* vb = v_bushing_.data() + static_cast<Eigen::Index>(slices[sl].bushing_row) * n_;
+      const double* a = shaft_area_.data() + static_cast<Eigen::Index>(slices[sl].shaft_row) * n_;
+      for (std::size_t j = 0; j < n; ++j) {
+        s->st[sl * n + j] = vb[j] - vs[j] + smoothing_;
+        s->w[sl * n + j] = a[j] * share;
+      }
+    }
+  };
+
+  Eigen::Vector2d anchor;
+  std::vector<Eigen::Vector2d>& polygon = out->vertices;
+  if (half_planes_.Intersect(h, &polygon)) {
+    const int size = static_cast<int>(polygon.size());
+    anchor = PolygonCentroid(polygon.data(), size);
+    out->centre_angles.assign(polygon.size(), 0.0);
+    out->origin_angles.assign(polygon.size(), 0.0);
+    centre_fan_[k] = FanAngles(polygon.data(), size, anchor, out->centre_angles.data());
+    origin_fan_[k] =
+        FanAngles(polygon.data(), size, Eigen::Vector2d::Zero(), out->origin_angles.data());
+    s->warm = anchor;
+    if (!texture_.sharp()) fill_cells();
+  } else if (elastic_) {
+    polygon.clear();
+    fill_cells();
+    empty_[k] = 1;
+    const std::size_t ne = n / static_cast<std::size_t>(block_);
+    s->elastic_gap.assign(slices.size() * ne, 0.0);
+    s->sections.assign(slices.size(), ContactSection{});
+    const double lo = std::max(depth - shaft_length_, 0.0);
+    double pos = lo, middle = lo + 0.5 * length;
+    for (std::size_t sl = 0; sl < slices.size(); ++sl) {
+      ContactSection& sec = s->sections[sl];
+      sec.gap = s->elastic_gap.data() + sl * ne;
+      sec.y = pos + 0.5 * slices[sl].length - middle;
+      pos += slices[sl].length;
+      for (std::size_t j = 0; j < n; ++j) {
+        s->elastic_gap[sl * ne + j / static_cast<std::size_t>(block_)] +=
+            s->st[sl * n + j] / block_;
+      }
+      sec.cell_area = s->w[sl * n] * block_;  // equal cells along a slice
+      const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
+      sec.warm_contact = s->row_contact_step[row] + 1 == k ? s->row_contact[row].data() : nullptr;
+      sec.factorization = &s->row_factors[row];
+    }
+    const RigidContactResult r = s->solver->Solve(s->sections, freedom_, s->elastic_warm);
+    for (std::size_t sl = 0; sl < slices.size(); ++sl) {
+      const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
+      s->row_contact[row] = s->solver->contact_sets()[sl];
+      s->row_contact_step[row] = k;
+    }
+    s->elastic_warm << r.offset, r.tilt;
+    anchor = Rotate(r.offset, frame_);
+    tilt_[k] = Rotate(r.tilt, frame_);
+    normal_[k] = r.normal_force;
+    s->warm = anchor;
+  } else {
+    polygon.clear();
+    fill_cells();
+    empty_[k] = 1;
+    // Newton on the convex piecewise-quadratic energy, Armijo backtracking.
+    Eigen::Vector2d p = s->warm;
+    for (int it = 0; it < 100; ++it) {
+      ++s->newton_iterations;
+      const double e0 = Energy(p, true, s);
+      Eigen::Vector2d grad(0.0, 0.0);
+      Eigen::Matrix2d hess = Eigen::Matrix2d::Zero();
+      for (std::size_t j = 0; j < n; ++j) {
+        const Eigen::Vector2d u(cos_[j], sin_[j]);
+        grad += 2.0 * s->col_a[j] * u;
+        hess += 2.0 * s->col_b[j] * u * u.transpose();
+      }
+      const double trace = hess.trace();
+      if (!(trace > 0.0)) break;  // no cell interferes: p is already a minimiser
+      hess += 1e-12 * trace * Eigen::Matrix2d::Identity();
+      const Eigen::Vector2d dir = -hess.ldlt().solve(grad);
+      double alpha = 1.0;
+      const double slope = grad.dot(dir);
+      while (alpha > 1e-12 && Energy(p + alpha * dir, false, s) > e0 + 1e-4 * alpha * slope) {
+        alpha *= 0.5;
+      }
+      p += alpha * dir;
+      // A picometre-scale step on micrometre interferences: converged.
+      if ((alpha * dir).norm() < 1e-13) break;
+    }
+    anchor = p;
+    s->warm = p;
+  }
+  anchor_[k] = anchor;
+
+  // Interference at the anchor: none is possible with a sharp contact inside the polygon.
+  if (empty_[k] || !texture_.sharp()) {
+    double volume = 0.0, max_delta = 0.0;
+    Eigen::Vector2d resultant(0.0, 0.0);
+    for (std::size_t j = 0; j < n; ++j) s->proj[j] = anchor.x() * cos_[j] + anchor.y() * sin_[j];
+    std::fill(s->col_a.begin(), s->col_a.end(), 0.0);
+    for (std::size_t c = 0; c < s->st.size(); ++c) {
+      const std::size_t j = c - (c / n) * n;
+      const double d = texture_(s->st[c] - s->proj[j]);
+      s->col_a[j] += s->w[c] * d;
+      max_delta = std::max(max_delta, d);
+    }
+    for (std::size_t j = 0; j < n; ++j) {
+      volume += s->col_a[j];
+      resultant += s->col_a[j] * Eigen::Vector2d(cos_[j], sin_[j]);
+    }
+    volume_[k] = volume;
+    max_delta_[k] = max_delta;
+    resultant_[k] = resultant;
   }
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/convex_polygon.h"
 #include "framework/model/section_contact.h"
 #include "framework/model/texture_contact.h"
 
@@ -87,6 +89,45 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     double length;
   };
   void SlicesAt(double depth, std::vector<Slice>* slices) const;
+  // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
+  struct RowPair {
+    int block, shaft_row, step, bushing_row;  // step: index within the chunk; block: step / 8
+    auto operator<=>(const RowPair&) const = default;
+  };
+  struct StepScratch {
+    std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
+    std::vector<double> chunk_h;  // per step of the chunk: the smallest gap of each column
+    std::vector<RowPair> pairs;
+    std::vector<double> st, w, col_a, col_b, proj, elastic_gap;
+    std::vector<ContactSection> sections;
+    Eigen::Vector2d warm{0.0, 0.0};
+    Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
+    std::optional<RigidSectionContact> solver;
+    // The contact set each bore row had at the last depth step that engaged it: one step deeper
+    // the row meets the same or the next shaft row a fraction of a row further on, and its
+    // contact set is mostly the same, so the section's LCP starts there instead of from the
+    // interference set. And its factorizations: they depend only on the contact set, so the
+    // row's last ones are the cheapest start for its next (updated by rows where the set changed
+    // a little).
+    std::vector<std::vector<char>> row_contact;
+    std::vector<std::size_t> row_contact_step;
+    std::vector<CirculantContact::Factorization> row_factors;
+    int newton_iterations = 0;
+    // A chunk's cold start: no warm starts, buffers sized for `columns`.
+    void Restart(std::size_t columns, std::size_t bore_rows);
+  };
+  // One step's assembly-space polygon and its fans' angles, joined in step order after the loop.
+  struct StepPolygon {
+    std::vector<Eigen::Vector2d> vertices;
+    std::vector<double> centre_angles, origin_angles;
+  };
+  // The slices and per-column smallest gaps of steps [first, end) into the scratch.
+  void ChunkMinima(std::size_t first, std::size_t end, StepScratch* scratch) const;
+  // Fills every table entry of depth step k, step t of the scratch's chunk (distinct entries per
+  // step: safe across threads).
+  void PrepareStep(std::size_t k, std::size_t t, StepScratch* scratch, StepPolygon* polygon);
+  // The sharp-contact energy of the GPS law's equilibrium at offset p over the step's cells.
+  double Energy(const Eigen::Vector2d& p, bool moments, StepScratch* scratch) const;
   // Anchor of step k for an axis at x: where the spring of eq. 9 / 12 pulls it.
   Eigen::Vector2d AnchorAt(std::size_t k, const Eigen::Vector2d& x) const noexcept;
   // Interpolation position of a depth: step index k (< K) and weight t of step k + 1.
@@ -99,8 +140,10 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   std::vector<double> bushing_edges_;  // c_k: row boundaries from the bushing's entrance, m
   double shaft_length_ = 0.0, bushing_length_ = 0.0;
   Eigen::VectorXd v_shaft_, v_bushing_, shaft_area_;
-  Eigen::VectorXd shaft_row_centre_;  // from the shaft's trailing end, m
+  std::vector<double> shaft_row_area_;  // sum of each shaft row's cell areas, m^2
+  Eigen::VectorXd shaft_row_centre_;    // from the shaft's trailing end, m
   std::vector<double> cos_, sin_, angle_;
+  HalfPlanes half_planes_;  // the columns' constraints of the assembly space (eq. 8)
   ExpectedInterferenceTable texture_;
 
   // Tables, one entry per depth step.
