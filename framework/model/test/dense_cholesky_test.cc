@@ -10,16 +10,13 @@
 namespace fitfeel {
 namespace {
 
-// A random SPD matrix with a condition number of about 1e4, as the compliance's submatrices.
+// A random SPD matrix B B^T / m + 1e-3 I: condition numbers of 1e3 to 1e4, as the compliance's
+// submatrices.
 Eigen::MatrixXd RandomSpd(Eigen::Index m, std::mt19937_64* rng) {
   std::normal_distribution<double> normal;
-  Eigen::MatrixXd q(m, m);
-  for (Eigen::Index i = 0; i < q.size(); ++i) q.data()[i] = normal(*rng);
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(q);
-  const Eigen::MatrixXd basis = qr.householderQ();
-  Eigen::VectorXd eig(m);
-  for (Eigen::Index i = 0; i < m; ++i) eig[i] = std::pow(1e4, -static_cast<double>(i) / m);
-  return basis * eig.asDiagonal() * basis.transpose();
+  Eigen::MatrixXd b(m, m);
+  for (Eigen::Index i = 0; i < b.size(); ++i) b.data()[i] = normal(*rng);
+  return b * b.transpose() / static_cast<double>(m) + 1e-3 * Eigen::MatrixXd::Identity(m, m);
 }
 
 TEST(DenseCholesky, SolvesAndFormsAsEigensLltDoesForEverySize) {
