@@ -178,12 +178,17 @@ struct FormCheck {
   double tolerance;
 };
 
+// True when `form` meets every check; then `widths` (when given) holds each check's zone width,
+// in the order of `checks`.
 bool MeetsForm(const std::vector<FormCheck>& checks, double radius, const SurfaceGrid& g,
-               const Eigen::VectorXd& form) {
+               const Eigen::VectorXd& form, std::vector<double>* widths = nullptr) {
+  if (widths != nullptr) widths->clear();
   if (checks.empty()) return true;
   const metrology::CylinderSamples s = metrology::SamplesFromGrid(radius, g, form);
   for (const auto& c : checks) {
-    if (metrology::EvaluateCylinderForm(c.characteristic, s) > c.tolerance) return false;
+    const double w = metrology::EvaluateCylinderForm(c.characteristic, s);
+    if (w > c.tolerance) return false;
+    if (widths != nullptr) widths->push_back(w);
   }
   return true;
 }
@@ -300,16 +305,24 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
   SkinModelShape sms;
   sms.grid = grid;
   Eigen::VectorXd form = Eigen::VectorXd::Zero(grid.size());
+  // The zone widths of `form` as it stands (one per check), when the check that accepted it
+  // measured them: the next component's budget and the process's scaling read them instead of
+  // evaluating the same form again (a minimum-zone evaluation is most of a shape's drawing).
+  std::vector<double> widths, trial_widths;
+  bool widths_current = false;
   auto integrate = [&](const std::function<Eigen::VectorXd()>& draw) {
     Eigen::VectorXd component;
     for (int attempt = 0; attempt <= options_.max_regenerations; ++attempt) {
       if (attempt > 0) ++sms.regenerations;
       component = draw();
-      if (MeetsForm(checks, radius, grid, form + component)) {
+      if (MeetsForm(checks, radius, grid, form + component, &trial_widths)) {
         form += component;
+        widths.swap(trial_widths);
+        widths_current = true;
         return;
       }
     }
+    widths_current = false;
     // Last resort: scale the last draw back. Every zone width is a convex function of the data,
     // so the k that pass form an interval from 0 (where the accumulated form passed): bisection.
     double good = 0.0, bad = 1.0;
@@ -329,16 +342,23 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
     FormCharacteristic characteristic;
     double gain;  // the component adds at most gain * B to it
   };
+  // The zone width of the current form for a specified characteristic (every one is checked).
+  auto width_of = [&](FormCharacteristic c) {
+    if (widths_current) {
+      for (std::size_t k = 0; k < checks.size(); ++k) {
+        if (checks[k].characteristic == c) return widths[k];
+      }
+    }
+    return metrology::EvaluateCylinderForm(c, metrology::SamplesFromGrid(radius, grid, form));
+  };
   auto remaining = [&](double own, std::initializer_list<Touch> touched) {
     double bound = own;
     if (bound <= 0.0) return 0.0;
     const bool flat = form.cwiseAbs().maxCoeff() == 0.0;
-    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
     for (const Touch& touch : touched) {
       const auto it = part.form.tolerance.find(touch.characteristic);
       if (it == part.form.tolerance.end()) continue;
-      const double used =
-          flat ? 0.0 : metrology::EvaluateCylinderForm(touch.characteristic, samples);
+      const double used = flat ? 0.0 : width_of(touch.characteristic);
       bound = std::min(bound, (it->second - used) / touch.gain);
     }
     return std::max(bound, 0.0);
@@ -372,11 +392,10 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
   // scale with the data, so every other characteristic stays within its own fraction).
   const ProcessSpec& process = part.process;
   if (process.kind == ProcessKind::kStatistical && form.cwiseAbs().maxCoeff() > 0.0) {
-    const metrology::CylinderSamples samples = metrology::SamplesFromGrid(radius, grid, form);
     double k = std::numeric_limits<double>::infinity();
     for (const auto& [c, t] : part.form.tolerance) {
       const double r = DrawFormUtilisation(process, rng, &sms.rejections);
-      const double w = metrology::EvaluateCylinderForm(c, samples);
+      const double w = width_of(c);
       if (t > 0.0 && w > 0.0) k = std::min(k, r * t / w);
     }
     if (std::isfinite(k)) form *= k;
