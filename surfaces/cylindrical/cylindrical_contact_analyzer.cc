@@ -353,7 +353,9 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       }
       sec.cell_area = s->w[sl * n] * block_;  // equal cells along a slice
       const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
-      sec.warm_contact = s->row_contact_step[row] + 1 == k ? s->row_contact[row].data() : nullptr;
+      // Only from the step just before (the row's set of older steps is no guide).
+      const bool last_step = k > 0 && s->row_contact_step[row] == k - 1;
+      sec.warm_contact = last_step ? s->row_contact[row].data() : nullptr;
       sec.factorization = &s->row_factors[row];
     }
     const RigidContactResult r = s->solver->Solve(s->sections, freedom_, s->elastic_warm);
