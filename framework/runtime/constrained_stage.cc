@@ -221,6 +221,31 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
     }
   }
   if (!bracketed) return false;
+  // A bracket often straddles the foot of a wall: flat (free motion along an edge of the assembly
+  // space, or nothing touching yet) up to it, then the law's steep linear rise (eq. 9's spring,
+  // kN/um). False position crawls along the flat side there (each step a probe); a Newton step
+  // from the wall side, on the wall's slope by a 10 pm difference, lands on a linear wall's root
+  // in one. Kept only when it improves the bracket.
+  constexpr double kWallProbe = 1e-11;
+  if (hi - lo > 2.0 * kWallProbe) {
+    const double r_in = residual(hi - kWallProbe);
+    const double wall = (r_hi - r_in) / kWallProbe;
+    if (r_in > 0.0 && r_in < r_hi) {
+      hi -= kWallProbe;
+      r_hi = r_in;
+    }
+    const double step = hi - r_hi / wall;
+    if (wall > 0.0 && std::isfinite(step) && step > lo && step < hi) {
+      const double r = residual(step);
+      if (std::abs(r) <= tolerance) {
+        *solution = step;
+        learn();
+        return true;
+      }
+      (r < 0.0 ? lo : hi) = step;
+      (r < 0.0 ? r_lo : r_hi) = r;
+    }
+  }
   // 60 steps bound the tick's cost.
   *solution = IllinoisRoot(residual, lo, hi, r_lo, r_hi, tolerance, 60);
   learn();
