@@ -7,9 +7,10 @@
 #include <string>
 #include <utility>
 
-#include <Eigen/Dense>
+#include <Eigen/Cholesky>
 
 #include "framework/core/error.h"
+#include "framework/core/least_norm.h"
 
 namespace fitfeel {
 
@@ -400,7 +401,7 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
       phi = Evaluate(sections, freedom, q, &grad, &hess);
       continue;
     }
-    const Eigen::VectorXd step = -h.completeOrthogonalDecomposition().solve(grad.head(dofs));
+    const Eigen::VectorXd step = -LeastNormSolve(h, grad.head(dofs));
     Eigen::Vector4d dir = Eigen::Vector4d::Zero();
     dir.head(dofs) = step;
     const double slope = grad.dot(dir);

@@ -5,9 +5,10 @@
 #include <random>
 #include <string>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 
 #include "framework/core/error.h"
+#include "framework/core/least_norm.h"
 #include "surfaces/thread/thread_geometry.h"
 
 namespace fitfeel::thread {
@@ -24,8 +25,7 @@ double FlankSign(int column, int columns) { return column < columns / 2 ? 1.0 : 
 
 }  // namespace
 
-GridShape HelicoidDiscretizer::DoShape(const PartSpec& part,
-                                       const Resolution& resolution) const {
+GridShape HelicoidDiscretizer::DoShape(const PartSpec& part, const Resolution& resolution) const {
   const HelicoidGeometry& g = HelicoidGeometryOf(part);
   int rows = 0, strips = 0;
   if (resolution.is_auto()) {
@@ -152,7 +152,7 @@ std::vector<CharacteristicCheck> EvaluateHelicoidCharacteristics(const PartSpec&
       }
     }
     // With one row or one strip a coefficient is not observable: least norm.
-    const Eigen::Vector3d x = a.completeOrthogonalDecomposition().solve(v);
+    const Eigen::Vector3d x = LeastNormSolve(a, v);
     constant[f] = x[0];
     slope_theta[f] = x[1];
     slope_r[f] = x[2];
