@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -305,24 +306,26 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
   SkinModelShape sms;
   sms.grid = grid;
   Eigen::VectorXd form = Eigen::VectorXd::Zero(grid.size());
-  // The zone widths of `form` as it stands (one per check), when the check that accepted it
-  // measured them: the next component's budget and the process's scaling read them instead of
+  // The zone widths of `form` as it stands, one per check (NaN: not measured yet), and its
+  // samples once a width had to be measured: the check that accepted a component measured them
+  // all, so the next component's budget and the process's scaling read them instead of
   // evaluating the same form again (a minimum-zone evaluation is most of a shape's drawing).
-  std::vector<double> widths, trial_widths;
-  bool widths_current = false;
+  constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> widths(checks.size(), kUnknown), trial_widths;
+  std::optional<metrology::CylinderSamples> samples;
   auto integrate = [&](const std::function<Eigen::VectorXd()>& draw) {
     Eigen::VectorXd component;
+    samples.reset();
     for (int attempt = 0; attempt <= options_.max_regenerations; ++attempt) {
       if (attempt > 0) ++sms.regenerations;
       component = draw();
       if (MeetsForm(checks, radius, grid, form + component, &trial_widths)) {
         form += component;
         widths.swap(trial_widths);
-        widths_current = true;
         return;
       }
     }
-    widths_current = false;
+    std::fill(widths.begin(), widths.end(), kUnknown);
     // Last resort: scale the last draw back. Every zone width is a convex function of the data,
     // so the k that pass form an interval from 0 (where the accumulated form passed): bisection.
     double good = 0.0, bad = 1.0;
@@ -344,12 +347,13 @@ SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,
   };
   // The zone width of the current form for a specified characteristic (every one is checked).
   auto width_of = [&](FormCharacteristic c) {
-    if (widths_current) {
-      for (std::size_t k = 0; k < checks.size(); ++k) {
-        if (checks[k].characteristic == c) return widths[k];
-      }
+    std::size_t k = 0;
+    while (checks[k].characteristic != c) ++k;
+    if (std::isnan(widths[k])) {
+      if (!samples) samples = metrology::SamplesFromGrid(radius, grid, form);
+      widths[k] = metrology::EvaluateCylinderForm(c, *samples);
     }
-    return metrology::EvaluateCylinderForm(c, metrology::SamplesFromGrid(radius, grid, form));
+    return widths[k];
   };
   auto remaining = [&](double own, std::initializer_list<Touch> touched) {
     double bound = own;
