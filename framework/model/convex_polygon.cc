@@ -11,7 +11,6 @@ namespace {
 struct Line {
   Eigen::Vector2d u;  // outward normal; inside is p . u <= h
   double h;
-  double angle;
   Eigen::Vector2d dir() const { return {-u.y(), u.x()}; }  // inside lies on the left
 };
 
@@ -19,55 +18,12 @@ double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-// The deque method over lines sorted by angle.
-bool IntersectSorted(const std::vector<Line>& lines, double bound,
-                     std::vector<Eigen::Vector2d>* vertices);
-
 Eigen::Vector2d Intersect(const Line& a, const Line& b) {
   const double det = Cross(a.u, b.u);
   return {(a.h * b.u.y() - b.h * a.u.y()) / det, (a.u.x() * b.h - b.u.x() * a.h) / det};
 }
 
-}  // namespace
-
-HalfPlanes::HalfPlanes(std::span<const double> angle, double bound) : bound_(bound) {
-  std::vector<Line> lines;
-  lines.reserve(angle.size() + 4);
-  for (std::size_t j = 0; j < angle.size(); ++j) {
-    lines.push_back({{std::cos(angle[j]), std::sin(angle[j])}, static_cast<double>(j), 0.0});
-  }
-  for (int q = 0; q < 4; ++q) {
-    const double a = q * M_PI / 2;
-    lines.push_back({{std::cos(a), std::sin(a)}, -1.0, 0.0});  // h = bound
-  }
-  for (Line& l : lines) l.angle = std::atan2(l.u.y(), l.u.x());
-  // The order depends on the angles alone (the comparator reads nothing else), so it is the
-  // order every intersection of these directions would sort its lines into.
-  std::sort(lines.begin(), lines.end(),
-            [](const Line& a, const Line& b) { return a.angle < b.angle; });
-  for (const Line& l : lines) {
-    normal_.push_back(l.u);
-    source_.push_back(static_cast<int>(l.h));
-  }
-}
-
-bool HalfPlanes::Intersect(std::span<const double> h,
-                           std::vector<Eigen::Vector2d>* vertices) const {
-  std::vector<Line> lines(normal_.size());
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    const int j = source_[k];
-    lines[k] = {normal_[k], j >= 0 ? h[static_cast<std::size_t>(j)] : bound_, 0.0};
-  }
-  return IntersectSorted(lines, bound_, vertices);
-}
-
-bool IntersectHalfPlanes(std::span<const double> angle, std::span<const double> h, double bound,
-                         std::vector<Eigen::Vector2d>* vertices) {
-  return HalfPlanes(angle, bound).Intersect(h, vertices);
-}
-
-namespace {
-
+// The deque method over lines sorted by angle.
 bool IntersectSorted(const std::vector<Line>& lines, double bound,
                      std::vector<Eigen::Vector2d>* vertices) {
   vertices->clear();
@@ -117,6 +73,42 @@ bool IntersectSorted(const std::vector<Line>& lines, double bound,
 }
 
 }  // namespace
+
+HalfPlanes::HalfPlanes(std::span<const double> angle, double bound) : bound_(bound) {
+  // The columns' normals, then the bounding box's four (source -1: h = bound).
+  std::vector<Eigen::Vector2d> normal;
+  normal.reserve(angle.size() + 4);
+  for (double a : angle) normal.emplace_back(std::cos(a), std::sin(a));
+  for (int q = 0; q < 4; ++q) normal.emplace_back(std::cos(q * M_PI / 2), std::sin(q * M_PI / 2));
+  std::vector<double> order_angle(normal.size());
+  std::vector<int> order(normal.size());
+  for (std::size_t k = 0; k < normal.size(); ++k) {
+    order_angle[k] = std::atan2(normal[k].y(), normal[k].x());
+    order[k] = static_cast<int>(k);
+  }
+  // By angle alone, once: the order every intersection of these directions needs.
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return order_angle[a] < order_angle[b]; });
+  for (int k : order) {
+    normal_.push_back(normal[static_cast<std::size_t>(k)]);
+    source_.push_back(k < static_cast<int>(angle.size()) ? k : -1);
+  }
+}
+
+bool HalfPlanes::Intersect(std::span<const double> h,
+                           std::vector<Eigen::Vector2d>* vertices) const {
+  std::vector<Line> lines(normal_.size());
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const int j = source_[k];
+    lines[k] = {normal_[k], j >= 0 ? h[static_cast<std::size_t>(j)] : bound_};
+  }
+  return IntersectSorted(lines, bound_, vertices);
+}
+
+bool IntersectHalfPlanes(std::span<const double> angle, std::span<const double> h, double bound,
+                         std::vector<Eigen::Vector2d>* vertices) {
+  return HalfPlanes(angle, bound).Intersect(h, vertices);
+}
 
 Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count,
                                    const Eigen::Vector2d& x) noexcept {

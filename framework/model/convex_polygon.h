@@ -55,8 +55,8 @@ struct PolygonFan {
   bool valid() const { return angles != nullptr; }
 };
 
-// Fills `angles` (count values) with the vertices' angles about `centre`, unwrapped; false, with
-// `angles` untouched, when the polygon has no interior or `centre` is not strictly inside it.
+// Fills `angles` (count values) with the vertices' angles about `centre`, unwrapped; false when
+// the polygon has no interior or `centre` is not strictly inside it (`angles` is then no fan).
 FITFEEL_API bool FanAngles(const Eigen::Vector2d* vertices, int count,
                            const Eigen::Vector2d& centre, double* angles) noexcept;
 

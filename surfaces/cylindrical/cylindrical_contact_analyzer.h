@@ -89,11 +89,12 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     double length;
   };
   void SlicesAt(double depth, std::vector<Slice>* slices) const;
-  // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
+  // A shaft row meeting a bore row at one step of a chunk, ordered for ChunkMinima's pass.
   struct RowPair {
-    int block, shaft_row, step, bushing_row;  // step: index within the chunk; block: step / 8
+    int block, shaft_row, step, bushing_row;  // step: index within the chunk; block: its group
     auto operator<=>(const RowPair&) const = default;
   };
+  // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
     std::vector<double> chunk_h;  // per step of the chunk: the smallest gap of each column
