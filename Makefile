@@ -79,6 +79,8 @@ fem-check: fem-deps
 	/usr/bin/python3 tools/fem/fem.py all "$$tmp" && \
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/harmonic.csv" tools/fem/data/harmonic.csv && \
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/contact.csv" tools/fem/data/contact.csv && \
+	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/axisymmetric.csv" \
+	  tools/fem/data/axisymmetric.csv && \
 	echo "fem-check: CalculiX reproduces tools/fem/data within 0.5 %"
 
 # Not part of `make test`: a sanitized build of everything takes about as long again as the

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vector>
 
-
 namespace fitfeel::spherical {
 
 void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,

@@ -7,8 +7,7 @@
 
 namespace fitfeel::spherical {
 
-GridShape SphericalDiscretizer::DoShape(const PartSpec& part,
-                                        const Resolution& resolution) const {
+GridShape SphericalDiscretizer::DoShape(const PartSpec& part, const Resolution& resolution) const {
   const SphericalGeometry& geometry = GeometryOf(part);
   revolution::AutoResolution automatic;
   automatic.row_pitch = 1e-3;

@@ -23,6 +23,9 @@ std::string SphericalGeometry::Describe() const {
   if (role_ == Role::kOuter) {
     text += " ring D=" + FormatQuantity(outer_diameter_, Dimension::kLength);
   }
+  if (bore_diameter_ > 0.0) {
+    text += " bore d=" + FormatQuantity(bore_diameter_, Dimension::kLength);
+  }
   return text;
 }
 
@@ -33,7 +36,7 @@ std::shared_ptr<const SphericalGeometry> ParseSphericalGeometry(const PartSpec& 
   if (outer) {
     node.ExpectOnlyKeys({"width", "outer_diameter"});
   } else {
-    node.ExpectOnlyKeys({"width"});
+    node.ExpectOnlyKeys({"width", "bore_diameter"});
   }
   const double d = part.size.nominal;
   // A band as wide as the sphere would be the whole sphere, which no ring is (it must be
@@ -51,7 +54,20 @@ std::shared_ptr<const SphericalGeometry> ParseSphericalGeometry(const PartSpec& 
                 ring.Describe());
     }
   }
-  return std::make_shared<SphericalGeometry>(part.role, d, width, outer_diameter);
+  double bore_diameter = 0.0;
+  if (auto bore = node.Find("bore_diameter")) {
+    bore_diameter = bore->AsQuantityIn(Dimension::kLength, 0.0, d);
+    // The inner ring's wall is thinnest at its band's edges, where the sphere's radius from the
+    // axis is sqrt(a^2 - (B/2)^2): the bore must stay inside it.
+    const double a = 0.5 * d, h = 0.5 * width;
+    const double edge = 2.0 * std::sqrt(a * a - h * h);
+    if (!(bore_diameter < edge)) {
+      bore->Fail("a bore diameter below the band edge's diameter " +
+                     FormatQuantity(edge, Dimension::kLength) + " (dk and width leave no wall)",
+                 bore->Describe());
+    }
+  }
+  return std::make_shared<SphericalGeometry>(part.role, d, width, outer_diameter, bore_diameter);
 }
 
 const SphericalGeometry& GeometryOf(const PartSpec& part) {

@@ -25,15 +25,45 @@ double ThickShellPressurePerInterference(double a, double b, const Material& bal
 }
 
 double RingPressurePerInterference(double dk, double outer_diameter, const Material& ball,
-                                   const Material& ring) {
+                                   const Material& ring, double ball_bore) {
   if (!(dk > 0.0) || !(outer_diameter > dk)) throw UserError("ring pressure needs 0 < dk < D");
+  if (!(ball_bore >= 0.0) || !(ball_bore < dk)) throw UserError("ring pressure needs 0 <= d < dk");
   if (!(ball.youngs_modulus > 0.0) || !(ring.youngs_modulus > 0.0)) {
     throw UserError("ring pressure needs positive Young's moduli");
   }
-  const double d2 = outer_diameter * outer_diameter, d1 = dk * dk;
+  const double d2 = outer_diameter * outer_diameter, d1 = dk * dk, di = ball_bore * ball_bore;
   const double ring_term = ((d2 + d1) / (d2 - d1) + ring.poisson) / ring.youngs_modulus;
-  const double ball_term = (1.0 - ball.poisson) / ball.youngs_modulus;
+  const double ball_term = ((d1 + di) / (d1 - di) - ball.poisson) / ball.youngs_modulus;
   return (2.0 / dk) / (ball_term + ring_term);
+}
+
+double BandPressurePerInterference(double dk, double band_width, double outer_diameter,
+                                   double ball_bore, const Material& ball, const Material& ring) {
+  const double a = 0.5 * dk, h = 0.5 * band_width;
+  if (!(h > 0.0) || !(h < a)) throw UserError("band pressure needs 0 < width < dk");
+  if (!(ball_bore < 2.0 * std::sqrt(a * a - h * h))) {
+    throw UserError("band pressure needs the ball's bore inside the band's edge");
+  }
+  // Composite 4-point Gauss-Legendre over the band; the integrands are smooth (r >= its value at
+  // the band's edge), so 32 panels reach double precision.
+  constexpr double kNodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                                0.8611363115940526};
+  constexpr double kWeights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                                  0.3478548451374538};
+  constexpr int kPanels = 32;
+  const double panel = band_width / kPanels;
+  double pressure = 0.0, radius = 0.0;
+  for (int k = 0; k < kPanels; ++k) {
+    const double centre = -h + (k + 0.5) * panel;
+    for (int g = 0; g < 4; ++g) {
+      const double y = centre + 0.5 * panel * kNodes[g];
+      const double r = std::sqrt(a * a - y * y);
+      pressure +=
+          kWeights[g] * RingPressurePerInterference(2.0 * r, outer_diameter, ball, ring, ball_bore);
+      radius += kWeights[g] * r;
+    }
+  }
+  return a * pressure / radius;
 }
 
 double ContactModulus(const Material& a, const Material& b) {
@@ -54,21 +84,23 @@ HertzContact ConformalHertz(double ball_radius, double clearance, double approac
 
 void KnuckleBearingLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
                                   const ModelSettings& settings) {
-  GeometryOf(inner);
+  const SphericalGeometry& ball = GeometryOf(inner);
   const SphericalGeometry& socket = GeometryOf(outer);
   friction_ = StickSlipFriction(FrictionOf(settings));
   arm_ = socket.mean_axis_distance();
   radius_ = socket.radius();
   const double dk = 2.0 * socket.radius();
   pressure_per_interference_ =
-      RingPressurePerInterference(dk, socket.outer_diameter(), inner.material, outer.material);
+      BandPressurePerInterference(dk, socket.width(), socket.outer_diameter(), ball.bore_diameter(),
+                                  inner.material, outer.material);
   contact_modulus_ = ContactModulus(inner.material, outer.material);
   const double ring_re = outer.material.yield_strength, ball_re = inner.material.yield_strength;
-  ring_yield_pressure_ = ring_re > 0.0 ? HubYieldPressure(dk, socket.outer_diameter(), ring_re)
-                                       : 0.0;
-  ball_yield_pressure_ = ball_re > 0.0 ? ShaftYieldPressure(dk, 0.0, ball_re) : 0.0;
-  const double weaker = ring_re > 0.0 && ball_re > 0.0 ? std::min(ring_re, ball_re)
-                                                       : std::max(ring_re, ball_re);
+  ring_yield_pressure_ =
+      ring_re > 0.0 ? HubYieldPressure(dk, socket.outer_diameter(), ring_re) : 0.0;
+  ball_yield_pressure_ =
+      ball_re > 0.0 ? ShaftYieldPressure(dk, ball.bore_diameter(), ball_re) : 0.0;
+  const double weaker =
+      ring_re > 0.0 && ball_re > 0.0 ? std::min(ring_re, ball_re) : std::max(ring_re, ball_re);
   hertz_yield_pressure_ = weaker > 0.0 ? HertzYieldPeakPressure(weaker) : 0.0;
   hertz_yield_part_ = weaker == ring_re ? 1 : 2;
 }
@@ -78,9 +110,9 @@ HertzContact LocalContact(double ball_radius, double clearance, double approach,
   HertzContact h;
   if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
   // Hertz's R = R1 R2 / c, held to the radius that keeps a = sqrt(R delta) at 0.3 R1.
-  const double r = std::min(ball_radius * (ball_radius + clearance) / clearance,
-                            kHertzMaxSpread * kHertzMaxSpread * ball_radius * ball_radius /
-                                approach);
+  const double r =
+      std::min(ball_radius * (ball_radius + clearance) / clearance,
+               kHertzMaxSpread * kHertzMaxSpread * ball_radius * ball_radius / approach);
   h.radius = std::sqrt(r * approach);
   h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach) *
            std::min(1.0, clearance / approach);
@@ -118,9 +150,8 @@ void KnuckleBearingLaw::DoEvaluate(const ContactState& contact, const MatingMoti
       friction_.Smoothed({motion.angular_velocity.y() * arm_, 0.0}, normal).x() * arm_;
 }
 
-void KnuckleBearingLaw::DoEvaluateWithState(const ContactState& contact,
-                                            const MatingMotion& motion, LawState* state,
-                                            Wrench* out) const noexcept {
+void KnuckleBearingLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                            LawState* state, Wrench* out) const noexcept {
   HertzContact hertz;
   const double normal = Normal(contact, out, &hertz);
   out->torque.y() = friction_.Step({motion.angle * arm_, 0.0}, normal, &state->friction).x() * arm_;

@@ -15,15 +15,30 @@ namespace fitfeel::spherical {
 double ThickShellPressurePerInterference(double a, double b, const Material& ball,
                                          const Material& shell);
 
-// The outer ring of a spherical plain bearing is a ring of width C, not a shell around the whole
-// ball: under a uniform interference its band expands like a thick-walled cylinder of bore dk and
-// outer diameter D (Lame, plane stress), with the ball's compliance (1 - nu1)/E1 of a solid
-// cylinder under the band's pressure. Pa/m:
-//   P_ring = (2 / dk) / ( (1 - nu1)/E1 + ((D^2 + dk^2)/(D^2 - dk^2) + nu2)/E2 )
-// For GE 20 E (dk 29 mm, D 35 mm, steel) 2.27 MPa/um, 2.62 times softer than the thick shell of
-// radii 14.5 and 17.5 mm (5.95 MPa/um), which assumes material all round the ball.
+// One plane slice of a spherical plain bearing: a disc of diameter dk (with a bore ball_bore,
+// 0 for a solid ball) in a ring of bore dk and outer diameter D, Lame's thick-walled cylinders in
+// plane stress, Pa/m of radial interference in the slice's plane:
+//   P = (2 / dk) / ( ((dk^2 + d^2)/(dk^2 - d^2) - nu1)/E1 + ((D^2 + dk^2)/(D^2 - dk^2) + nu2)/E2 )
+// (the ball's term is 1 - nu1 for d = 0). For GE 20 E's equator (dk 29 mm, D 35 mm, steel, solid)
+// 2.27 MPa/um, 2.62 times softer than the thick shell of radii 14.5 and 17.5 mm (5.95 MPa/um),
+// which assumes material all round the ball.
 double RingPressurePerInterference(double dk, double outer_diameter, const Material& ball,
-                                   const Material& ring);
+                                   const Material& ring, double ball_bore = 0.0);
+
+// The outer ring of width C around the ball's band, cut into plane slices normal to the bearing
+// axis (docs/contact-mechanics.md, section 8). The slice at height y has radius r = sqrt(a^2 - y^2)
+// from the axis, so its wall is thicker towards the band's edges; a normal interference delta
+// of the spheres is a radial interference delta a / r in the slice's plane, and the slice's
+// radial traction is the sphere's normal pressure. A uniform interference thus gives the bursting
+// force 2 pi a delta * integral of P_slice(2 r(y)) dy over the band; the coefficient returned,
+//   P_band = a * integral P_slice(2 r(y)) dy / integral r(y) dy,
+// gives the same when every socket cell carries P_band * delta (the radial stiffness under an
+// offset and the normal force differ from the slices' by under 1 % for GE 20 E). GE 20 E: 2.72
+// MPa/um with a solid ball, 1.98 with the inner ring's 20 mm bore; CalculiX (axisymmetric, the
+// ball's 16 mm band in the ring's 12 mm) 2.81 and 2.15: the slices leave out the ball's wider band
+// and the ring's axial continuity, 3 and 8 % (tools/fem/data/axisymmetric.csv, tested).
+double BandPressurePerInterference(double dk, double band_width, double outer_diameter,
+                                   double ball_bore, const Material& ball, const Material& ring);
 
 // A loaded plain bearing with radial clearance c = R2 - R1 touches over a small patch: a
 // conformal Hertz contact of the two spheres (Johnson, Contact Mechanics, 1985, section 4.2),
@@ -50,14 +65,14 @@ double ContactModulus(const Material& a, const Material& b);  // E*, Pa
 // Knuckle (spherical plain) bearing. Two contact regimes, each carried by the closed form that
 // holds there:
 //  - interference all round (ball larger than the socket) or a contact wrapped round the ball:
-//    each socket cell's pressure is p = P_ring * delta (the ring above), so
+//    each socket cell's pressure is p = P_ring * delta (P_ring the band's coefficient above), so
 //    sum p ds = P_ring * interference_volume and the radial force is -P_ring * sum(delta ds n);
 //  - the ball pushed across the clearance onto one side (a loaded plain bearing): the local
 //    (conformal Hertz) load W of the approach delta = the largest interference, with the
 //    clearance there c = e - delta (e the centre's offset), along minus the resultant's
 //    direction; normal force W. A local patch is carried by the material under it, not by the
 //    ring's breathing: Hertz is stiffer than the per-cell bed there (GE 20 E at 1 um of
-//    approach: 288 N against 96 N).
+//    approach: 288 N against about 84 N).
 // The larger of the two loads is taken: both grow with the offset, so the support stays monotone
 // (the settling search needs that) and continuous; as c -> 0 the local load fades (LocalContact)
 // and the bed remains.
@@ -67,7 +82,8 @@ double ContactModulus(const Material& a, const Material& b);  // E*, Pa
 // mu * integral of p * (distance from the axis) ds (a cell's arm is a cos(latitude), not a, so
 // mu * sum p ds * a would overstate the torque by 3 % for GE 20 E's outer ring).
 // Elastic limit: per cell P_ring * delta against the ring's bore (DIN 7190 hub form with
-// Q = dk / D) and the ball's; a Hertz contact's p0 against 1.61 R_e (elastic_limit.h).
+// Q = dk / D) and the ball's (a hollow shaft with the inner ring's bore); a Hertz contact's p0
+// against 1.61 R_e (elastic_limit.h).
 // Tilting (omega_x, omega_z) and the axial force are not modelled: the bearing's mating motion is
 // the rotation about its axis, and the ball is captive along it.
 class KnuckleBearingLaw final : public ResistanceLaw {
@@ -82,8 +98,8 @@ class KnuckleBearingLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
-  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                           LawState* state, Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
+                           Wrench* out) const noexcept override;
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
 
  private:
@@ -94,7 +110,7 @@ class KnuckleBearingLaw final : public ResistanceLaw {
   StickSlipFriction friction_;
   double radius_ = 0.0;
   double contact_modulus_ = 0.0;
-  double ring_yield_pressure_ = 0.0;   // 0: no yield strength given
+  double ring_yield_pressure_ = 0.0;  // 0: no yield strength given
   double ball_yield_pressure_ = 0.0;
   double hertz_yield_pressure_ = 0.0;
   int hertz_yield_part_ = 1;  // the part of the lower yield strength (ElasticLimitCheck::part)

@@ -13,11 +13,12 @@
 namespace fitfeel::spherical {
 
 void SphericalScanAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
-                                         const PartSpec& outer, const SkinModelShape& outer_sms,
-                                         const ModelSettings& settings) {
+                                      const PartSpec& outer, const SkinModelShape& outer_sms,
+                                      const ModelSettings& settings) {
   if (settings.texture == TextureMode::kDin7190) {
-    throw UserError("texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
-                    "the cylindrical surface only; use expected or sampled here");
+    throw UserError(
+        "texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
+        "the cylindrical surface only; use expected or sampled here");
   }
   texture_ = settings.texture == TextureMode::kExpected
                  ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
@@ -116,8 +117,7 @@ void SphericalScanAnalyzer::ColumnCells(double angle, int j, std::vector<ColumnC
   }
 }
 
-void SphericalScanAnalyzer::DoEvaluate(const MatingPose& pose,
-                                          ContactState* out) const noexcept {
+void SphericalScanAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
   *out = ContactState{};
   // A non-finite pose (a device glitch) is no contact rather than NaN forces.
   if (!std::isfinite(pose.angle) || !pose.offset.allFinite()) return;
@@ -137,7 +137,7 @@ void SphericalScanAnalyzer::DoEvaluate(const MatingPose& pose,
 }
 
 void SphericalScanAnalyzer::DoInterferenceMap(const MatingPose& pose,
-                                                 Eigen::VectorXd* delta) const {
+                                              Eigen::VectorXd* delta) const {
   const int ball_rows = static_cast<int>(ball_v_.rows());
   delta->setZero(static_cast<Eigen::Index>(ball_rows) * columns_);
   if (!std::isfinite(pose.angle) || !pose.offset.allFinite()) {

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -249,6 +250,66 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
     }
   }
   if (table) std::fclose(table);
+}
+
+// tools/fem/data/axisymmetric.csv: CalculiX in axisymmetry, the paper's pair (shaft 20 mm in a
+// hub 20 mm long, outer diameter 30 mm, steel) with a uniform radial interference of 5 um, no
+// texture, frictionless; the normal force B of each case.
+double AxisymmetricFem(const std::string& name) {
+  std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/axisymmetric.csv");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(name + ",", 0) == 0) return std::stod(line.substr(name.size() + 1));
+  }
+  ADD_FAILURE() << "no case " << name << " in tools/fem/data/axisymmetric.csv";
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The elastic model's normal force with the shaft `shaft_length` long at `depth`.
+double UniformNormalForce(double shaft_length, double depth, const std::string& options) {
+  const PartSpec shaft = MakeShaft(0.020, shaft_length), bushing = MakeBushing(0.020, 0.020, 0.030);
+  ModelSettings settings = Elastic(TextureMode::kSampled);
+  settings.extra = ConfigNode::Parse(options, "test", "model.options");
+  CylinderContactAnalyzer analyzer;
+  ElasticLaw law;
+  const int rows = static_cast<int>(std::lround(shaft_length / 0.5e-3));
+  analyzer.Prepare(
+      shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), [](int, int) { return 5 * kUm; }),
+      bushing, MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }), settings);
+  EXPECT_EQ(analyzer.smoothing(), 0.0);
+  law.Prepare(shaft, bushing, settings);
+  return OutcomeAt(analyzer, law, depth, {0, 0}).state.normal_force;
+}
+
+// Plane sections against a finite hub: exact in plane strain (the FEM's slice held between
+// planes), and within 2 % for the free hub with the shaft flush with it or running through it
+// (the hub's free ends and the shaft's continuation nearly cancel).
+TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
+  struct Case {
+    const char* name;
+    double shaft_length, depth;
+    const char* options;
+  };
+  for (const Case& c :
+       {Case{"cylinder-plane-strain", 0.020, 0.020, "{section: plane_strain}"},
+        Case{"cylinder-flush", 0.020, 0.020, "{}"}, Case{"cylinder-through", 0.040, 0.030, "{}"}}) {
+    const double fem = AxisymmetricFem(c.name);
+    const double model = UniformNormalForce(c.shaft_length, c.depth, c.options);
+    std::printf("%-22s FEM %8.1f N  elastic model %8.1f N  %+.2f %%\n", c.name, fem, model,
+                100 * (model / fem - 1));
+    EXPECT_LT(std::abs(model / fem - 1.0), 0.10) << c.name;
+  }
+}
+
+// Not met yet: with the shaft half way in (10 of the hub's 20 mm), the hub's unloaded half
+// stiffens the loaded one (a thick shell's bending carries the load past the shaft's end over a
+// few wall thicknesses) and the FEM's force is 21.2 kN where plane sections give 18.3 kN (-13 %).
+// The model has no axial coupling between its sections; this test is the check for it.
+TEST(ElasticLaw, DISABLED_AgreesWithCalculixOnAHalfEngagedHub) {
+  const double fem = AxisymmetricFem("cylinder-half-engaged");
+  const double model = UniformNormalForce(0.020, 0.010, "{}");
+  std::printf("half engaged: FEM %.1f N  elastic model %.1f N  %+.2f %%\n", fem, model,
+              100 * (model / fem - 1));
+  EXPECT_LT(std::abs(model / fem - 1.0), 0.10);
 }
 
 }  // namespace

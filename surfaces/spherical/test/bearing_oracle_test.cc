@@ -2,10 +2,14 @@
 // delta = 1 um -> p = 14.07 MPa) through the analyzer and law with zero form and texture and a
 // uniform interference, and the friction torque against its integral.
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "framework/core/error.h"
 #include "framework/core/wrench.h"
 #include "surfaces/spherical/spherical_contact_analyzer.h"
 #include "surfaces/spherical/spherical_discretizer.h"
@@ -19,6 +23,24 @@ namespace {
 constexpr double kMu = 0.1;
 constexpr double kA = 10e-3;
 constexpr double kB = 10e-3;  // socket band width
+
+// The band's ring coefficient written out independently of the law (midpoint rule over slices
+// of the band, each slice Lame's disc in a ring at radius r = sqrt(a^2 - y^2), steel):
+// a * integral P(r) dy / integral r dy, with a ball bore d (0: solid).
+double BandCoefficient(double a, double band, double ring_diameter, double bore = 0.0) {
+  const double E = 210e9, nu = 0.3, b = 0.5 * ring_diameter, c = 0.5 * bore;
+  const int steps = 100000;
+  double pressure = 0.0, radius = 0.0;
+  for (int s = 0; s < steps; ++s) {
+    const double y = -band / 2 + (s + 0.5) * band / steps;
+    const double r = std::sqrt(a * a - y * y);
+    const double ball = (r * r + c * c) / (r * r - c * c) - nu;
+    const double ring = (b * b + r * r) / (b * b - r * r) + nu;
+    pressure += (1.0 / r) / ((ball + ring) / E);
+    radius += r;
+  }
+  return a * pressure / radius;
+}
 
 struct Model {
   SphericalContactAnalyzer analyzer;
@@ -79,10 +101,13 @@ TEST(KnuckleBearing, UniformInterferenceGivesTheShellPressureOverTheBand) {
   EXPECT_NEAR(contact.interference_volume, 1e-6 * band, 1e-12 * band * 1e-6);
   EXPECT_NEAR(contact.max_interference, 1e-6, 1e-18);
   // Sum p ds = p * 2 pi a B; symmetric: no radial force, and no torque at rest.
-  // The ring of bore 20 mm and outer diameter 30 mm around a solid ball's band: Lame's
-  // cylinder, the oracle's 5.8333 MPa per um (d1 = 20 mm, d2 = 30 mm, steel).
+  // The ring of outer diameter 30 mm around a solid ball's 10 mm band, slice by slice: at the
+  // equator Lame's cylinder, the oracle's 5.8333 MPa per um (d1 = 20 mm, d2 = 30 mm, steel);
+  // towards the band's edges the ring's wall thickens, 6.3 MPa per um over the band.
+  EXPECT_NEAR(RingPressurePerInterference(2.0 * kA, 30e-3, test::Steel(), test::Steel()) * 1e-12,
+              5.8333, 0.0005);
   const double p = model.law.pressure_per_interference() * 1e-6;
-  EXPECT_NEAR(p * 1e-6, 5.8333, 0.0005);
+  EXPECT_NEAR(p, BandCoefficient(kA, kB, 30e-3) * 1e-6, 1e-8 * p);
   EXPECT_NEAR(w.force.norm(), 0.0, 1e-9 * p * band);
   EXPECT_EQ(w.torque.y(), 0.0);
 }
@@ -90,13 +115,10 @@ TEST(KnuckleBearing, UniformInterferenceGivesTheShellPressureOverTheBand) {
 TEST(KnuckleBearing, ReportsTheRingCoefficientOfItsForcesForPressureMaps) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
-  // Closed form: Lame's thick-walled cylinder d1 = 2a = 20 mm, d2 = 30 mm with a solid inner
-  // part, the oracle's 5.8333 MPa per um; the thick shell of radii 10 and 15 mm would give 14.07.
-  const double d1 = 2.0 * kA, d2 = 30e-3, E = 210e9, nu = 0.3;
-  const double expected =
-      (2.0 / d1) / ((1.0 - nu) / E + ((d2 * d2 + d1 * d1) / (d2 * d2 - d1 * d1) + nu) / E);
-  EXPECT_NEAR(model.law.PressurePerInterference(), expected, 1e-9 * expected);
-  EXPECT_NEAR(model.law.PressurePerInterference() * 1e-12, 5.8333, 0.0005);
+  // The band's slices of Lame cylinders (BandCoefficient); the thick shell of radii 10 and 15 mm
+  // would give 14.07 MPa per um.
+  const double expected = BandCoefficient(kA, kB, 30e-3);
+  EXPECT_NEAR(model.law.PressurePerInterference(), expected, 1e-8 * expected);
   // The coefficient is the one behind the forces: the ball offset by e in the uniform 1 um
   // interference is pushed back by P * sum(delta ds n), the analyzer's resultant.
   ContactState contact;
@@ -109,8 +131,7 @@ TEST(KnuckleBearing, ReportsTheRingCoefficientOfItsForcesForPressureMaps) {
 TEST(KnuckleBearing, FrictionTorqueIsMuTimesThePressureMoment) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
-  const double p =
-      RingPressurePerInterference(2.0 * kA, 30e-3, test::Steel(), test::Steel()) * 1e-6;
+  const double p = BandCoefficient(kA, kB, 30e-3) * 1e-6;
   // mu * integral over the band of p * (distance from the axis) dA, dA = 2 pi a dy, numerically.
   double moment = 0.0;
   const int steps = 200000;
@@ -197,8 +218,8 @@ namespace fitfeel::spherical {
 namespace {
 
 TEST(KnuckleTexture, ExpectedInterferenceIsTheTruncatedGaussianOracle) {
-  // Only the socket is rough (Rz = 6 um: sigma = 1 um, limits +-3 sigma, docs/oracles.md's truncated
-  // N(0,1)); a ball of actual size nominal - 2 g um leaves the uniform gap g.
+  // Only the socket is rough (Rz = 6 um: sigma = 1 um, limits +-3 sigma, docs/oracles.md's
+  // truncated N(0,1)); a ball of actual size nominal - 2 g um leaves the uniform gap g.
   PartSpec socket = test::Socket();
   socket.texture.rz = 6e-6;
   const double table[][2] = {{-1.0, 1.080451}, {0.0, 0.395578}, {1.0, 0.080451}, {2.0, 0.006777}};
@@ -331,6 +352,61 @@ TEST(KnuckleBearing, RingOfTheBearingIsSofterThanTheShell) {
   EXPECT_NEAR(shell / ring, 2.620, 0.001);
 }
 
+// The GE 20 E outer ring's band (C = 12 mm) slice by slice, solid ball and the inner ring's 20 mm
+// bore, against the independent midpoint sums: 2.720 and 1.980 MPa/um (the equator's 2.270 and
+// 1.767).
+TEST(KnuckleBearing, BandCoefficientOfGe20EWithAndWithoutTheInnerRingsBore) {
+  const Material steel = test::Steel();
+  const double solid = BandPressurePerInterference(29e-3, 12e-3, 35e-3, 0.0, steel, steel);
+  const double bored = BandPressurePerInterference(29e-3, 12e-3, 35e-3, 20e-3, steel, steel);
+  EXPECT_NEAR(solid, BandCoefficient(14.5e-3, 12e-3, 35e-3), 1e-8 * solid);
+  EXPECT_NEAR(bored, BandCoefficient(14.5e-3, 12e-3, 35e-3, 20e-3), 1e-8 * bored);
+  EXPECT_NEAR(solid * 1e-12, 2.7199, 0.0005);
+  EXPECT_NEAR(bored * 1e-12, 1.9804, 0.0005);
+  EXPECT_NEAR(RingPressurePerInterference(29e-3, 35e-3, steel, steel, 20e-3) * 1e-12, 1.7674,
+              0.0005);
+  EXPECT_THROW(BandPressurePerInterference(29e-3, 12e-3, 35e-3, 27e-3, steel, steel), UserError);
+}
+
+// tools/fem/data/axisymmetric.csv: CalculiX, GE 20 E in axisymmetry (the ball's 16 mm band in the
+// ring's 12 mm one, 1 um radial interference), its bursting force B = integral of p n_r dA. The
+// model's pressure is P_band * delta on every socket cell, so its B is the normal force from the
+// analyzer and law times rho / a (n_r = cos(latitude), rho the band's mean axis distance).
+double FemBurstingForce(const std::string& name) {
+  std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/axisymmetric.csv");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(name + ",", 0) == 0) return std::stod(line.substr(name.size() + 1));
+  }
+  ADD_FAILURE() << "no case " << name << " in tools/fem/data/axisymmetric.csv";
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+TEST(KnuckleBearing, RingBandAgreesWithCalculixWithinTenPercent) {
+  for (const double bore : {0.0, 20e-3}) {
+    PartSpec ball = test::Ball(16e-3), socket = test::Socket(12e-3, 35e-3);
+    ball.size.nominal = socket.size.nominal = 29e-3;
+    ball.geometry = std::make_shared<SphericalGeometry>(Role::kInner, 29e-3, 16e-3, 0.0, bore);
+    socket.geometry = std::make_shared<SphericalGeometry>(Role::kOuter, 29e-3, 12e-3, 35e-3);
+    Model model;
+    Prepare(&model, ball, socket, Resolution{24, 72}, 1e-6);
+    ContactState contact;
+    Evaluate(model, 0.0, 0.0, Eigen::Vector2d::Zero(), &contact);
+    const double normal = model.law.pressure_per_interference() * contact.interference_volume;
+    const double a = 14.5e-3, rho = GeometryOf(socket).mean_axis_distance();
+    const double model_b = normal * rho / a;
+    const double fem = FemBurstingForce(bore > 0.0 ? "ball-bore" : "ball-solid");
+    // The equator's Lame ring, what the law used before the band's slices.
+    const double equator = RingPressurePerInterference(29e-3, 35e-3, test::Steel(), test::Steel()) *
+                           contact.interference_volume * rho / a;
+    std::printf(
+        "bore %.0f mm: FEM %.1f N, band slices %.1f N (%+.1f %%), equator ring %.1f N "
+        "(%+.1f %%)\n",
+        bore * 1e3, fem, model_b, 100 * (model_b / fem - 1), equator, 100 * (equator / fem - 1));
+    EXPECT_LT(std::abs(model_b / fem - 1.0), 0.10) << "bore " << bore;
+  }
+}
+
 // Conformal Hertz (Johnson 1985, 4.2) with independent numbers: R1 = 10 mm, c = 30 um, so
 // R = 10 * 10.03 / 0.03 mm = 3.3433 m; E* = E / (2 (1 - nu^2)) = 115.38 GPa; at delta = 1 um:
 // W = 4/3 E* sqrt(R) delta^1.5 = 281.3 N, a = sqrt(R delta) = 1.828 mm, p0 = 3W/(2 pi a^2)
@@ -358,10 +434,10 @@ TEST(KnuckleBearing, LoadedPlainBearingIsAConformalHertzContact) {
   const Wrench w = Evaluate(model, 0.0, 10.0, Eigen::Vector2d(0.0, -31e-6), &contact);
   // Cell centres sit half a column (0.5 deg) and half a row off the load line: delta = 0.999 um.
   EXPECT_NEAR(contact.max_interference, 1e-6, 3e-9);
-  const double load = ConformalHertz(10e-3, 31e-6 - contact.max_interference,
-                                     contact.max_interference,
-                                     ContactModulus(test::Steel(), test::Steel()))
-                          .load;
+  const double load =
+      ConformalHertz(10e-3, 31e-6 - contact.max_interference, contact.max_interference,
+                     ContactModulus(test::Steel(), test::Steel()))
+          .load;
   EXPECT_NEAR(load, 281.3, 1.5);
   EXPECT_NEAR(w.force.norm(), load, 1e-9 * load);
   EXPECT_NEAR(w.force.z(), load, 1e-3 * load);  // along the offset, back

@@ -77,6 +77,16 @@ TEST(SphericalGeometry, ParsesAndRefusesAtTheKey) {
   expect_error(ball, "{width: 12 mm, outer_diameter: 35 mm}", "outer_diameter");
   expect_error(socket, "{width: 12 mm}", "outer_diameter");
   expect_error(socket, "{width: 12 mm, outer_diameter: 19 mm}", "outer_diameter");
+  // The inner ring's bore: optional on the ball, inside the band's edge (dk 20 mm, band 12 mm:
+  // 2 sqrt(10^2 - 6^2) = 16 mm), not on the socket.
+  EXPECT_DOUBLE_EQ(
+      ParseSphericalGeometry(ball, Node("{width: 12 mm, bore_diameter: 15 mm}"))->bore_diameter(),
+      15e-3);
+  EXPECT_EQ(ParseSphericalGeometry(ball, Node("{width: 12 mm}"))->bore_diameter(), 0.0);
+  expect_error(ball, "{width: 12 mm, bore_diameter: 16 mm}", "bore_diameter");
+  expect_error(ball, "{width: 12 mm, bore_diameter: -1 mm}", "bore_diameter");
+  expect_error(socket, "{width: 12 mm, outer_diameter: 35 mm, bore_diameter: 5 mm}",
+               "bore_diameter");
 }
 
 TEST(SphericalGeometry, RefusesUnusableResolutions) {
@@ -91,10 +101,11 @@ namespace fitfeel::spherical {
 namespace {
 
 TEST(SphericalSurface, CheckPairRefusesAnotherSphereOrANarrowBall) {
-  const ConfigNode parts = ConfigNode::Parse("{ball: {size: 20 mm h7, geometry: {width: 8 mm}}, socket: "
-                                    "{size: 22 mm H7, geometry: {width: 10 mm, outer_diameter: "
-                                    "30 mm}}}",
-                         "test.yaml", "parts");
+  const ConfigNode parts = ConfigNode::Parse(
+      "{ball: {size: 20 mm h7, geometry: {width: 8 mm}}, socket: "
+      "{size: 22 mm H7, geometry: {width: 10 mm, outer_diameter: "
+      "30 mm}}}",
+      "test.yaml", "parts");
   const SphericalSurface surface;
   EXPECT_TRUE(surface.rotational());
   EXPECT_NO_THROW(surface.CheckPair(test::Ball(), test::Socket(), parts));
