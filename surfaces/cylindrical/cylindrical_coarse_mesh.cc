@@ -52,7 +52,8 @@ CoarseMeshes MakeCylindricalCoarseMeshes(const PartSpec& inner, const PartSpec& 
   const Chamfer& entrance = hole.chamfer();
   if (entrance.length > 0.0) {
     // In front of the mating surface, as the lead-in has it (MakeCylindricalLeadIn).
-    meshes.outer = MakeTaperedTube(bore + entrance.width(), bore, hub, -entrance.length, 0.0, facets);
+    meshes.outer =
+        MakeTaperedTube(bore + entrance.width(), bore, hub, -entrance.length, 0.0, facets);
     AppendMesh(MakeTube(bore, hub, 0.0, hole.length(), facets), &meshes.outer);
   } else {
     meshes.outer = MakeTube(bore, hub, 0.0, hole.length(), facets);

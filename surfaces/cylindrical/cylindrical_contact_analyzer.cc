@@ -133,6 +133,20 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     section.hub = outer.material;
     section.plane_strain = options.plane_strain;
     solver.emplace(section, n_ / block_);
+    breathing_stiffness_ = 1.0 / HarmonicCompliance(section, 0);
+    coupling_ = HubAxialCoupling();
+    if (options.axial_coupling) {
+      // The coupling's difference stencil assumes equal bore rows (what the discretizer makes).
+      const double pitch = bushing_length_ / bushing_rows_;
+      for (int i = 0; i < bushing_rows_; ++i) {
+        if (std::abs(bushing_edges_[i + 1] - bushing_edges_[i] - pitch) > 1e-9 * pitch) {
+          throw UserError(
+              "the elastic model's axial coupling needs the bore's rows equally "
+              "long; set model.options.axial_coupling: false for this grid");
+        }
+      }
+      coupling_ = HubAxialCoupling(section, pitch, bushing_rows_);
+    }
     freedom.tilt = options.tilt;
     freedom.tilt_stiffness = options.tilt_stiffness;
     frame = angle_[0] + std::numbers::pi * (block_ - 1) / n_;
@@ -223,6 +237,7 @@ void CylinderContactAnalyzer::StepScratch::Restart(std::size_t columns, std::siz
   row_contact.assign(bore_rows, {});
   row_contact_step.assign(bore_rows, std::numeric_limits<std::size_t>::max());
   row_factors.assign(bore_rows, {});
+  coupling = CouplingScratch{};
   newton_iterations = 0;
 }
 
@@ -340,6 +355,8 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
     const std::size_t ne = n / static_cast<std::size_t>(block_);
     s->elastic_gap.assign(slices.size() * ne, 0.0);
     s->sections.assign(slices.size(), ContactSection{});
+    s->section_row.resize(slices.size());
+    s->section_length.resize(slices.size());
     const double lo = std::max(depth - shaft_length_, 0.0);
     double pos = lo, middle = lo + 0.5 * length;
     for (std::size_t sl = 0; sl < slices.size(); ++sl) {
@@ -357,8 +374,12 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       const bool last_step = k > 0 && s->row_contact_step[row] == k - 1;
       sec.warm_contact = last_step ? s->row_contact[row].data() : nullptr;
       sec.factorization = &s->row_factors[row];
+      s->section_row[sl] = slices[sl].bushing_row;
+      s->section_length[sl] = slices[sl].length;
     }
-    const RigidContactResult r = s->solver->Solve(s->sections, freedom_, s->elastic_warm);
+    const RigidContactResult r =
+        SolveSections(&*s->solver, s->sections, s->section_row, s->section_length,
+                      s->elastic_gap.data(), s->elastic_warm, &s->coupling);
     for (std::size_t sl = 0; sl < slices.size(); ++sl) {
       const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
       s->row_contact[row] = s->solver->contact_sets()[sl];
@@ -544,6 +565,116 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
+RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* solver,
+                                                          std::span<ContactSection> sections,
+                                                          std::span<const int> bore_row,
+                                                          std::span<const double> length,
+                                                          double* gaps, const Eigen::Vector4d& warm,
+                                                          CouplingScratch* scratch) const {
+  const auto ne = static_cast<std::size_t>(solver->columns());
+  const auto rows = static_cast<std::size_t>(bushing_rows_);
+  const auto m = static_cast<Eigen::Index>(rows);
+  const double pitch = bushing_length_ / bushing_rows_;
+  CouplingScratch& c = *scratch;
+  // Start from the shifts the rows settled at one depth step earlier (the engaged pattern has
+  // moved by a step: most rows' shifts barely change); rows without one start unshifted.
+  c.row_shift.resize(rows, 0.0);
+  if (!coupling_.empty()) {
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+      const double x = c.row_shift[static_cast<std::size_t>(bore_row[s])];
+      for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += x;
+    }
+  }
+  RigidContactResult r = solver->Solve(sections, freedom_, warm);
+  if (coupling_.empty() || sections.empty()) return r;
+  c.row_pressure.resize(rows);
+  c.row_target.resize(rows);
+  c.row_stiffness.resize(rows);
+  c.section_contact.resize(sections.size());
+  c.step.setZero(m);
+  // The iteration contracts (see below); this bounds a pathological step's cost.
+  constexpr int kMaxCouplingSolves = 20;
+  c.row_previous.assign(rows, 0.0);
+  c.row_full.resize(rows);
+  double last_change = std::numeric_limits<double>::infinity();
+  bool secants = true;
+  for (int solve = 0;; ++solve) {
+    c.row_previous.swap(c.row_pressure);
+    std::fill(c.row_pressure.begin(), c.row_pressure.end(), 0.0);
+    std::fill(c.row_stiffness.begin(), c.row_stiffness.end(), 0.0);
+    std::fill(c.row_full.begin(), c.row_full.end(), 0.0);
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+      const double* p = solver->pressures().data() + s * ne;
+      const std::vector<char>& set = solver->contact_sets()[s];
+      double mean = 0.0, touching = 0.0;
+      for (std::size_t j = 0; j < ne; ++j) {
+        mean += p[j];
+        touching += set[j] ? 1.0 : 0.0;
+      }
+      const auto row = static_cast<std::size_t>(bore_row[s]);
+      const double share = length[s] / pitch / static_cast<double>(ne);
+      c.row_pressure[row] += mean * share;
+      c.row_stiffness[row] += breathing_stiffness_ * touching * share;
+      c.row_full[row] += breathing_stiffness_ * static_cast<double>(ne) * share;
+    }
+    // After a shifted solve, each row's measured response to its shift (a secant), held between
+    // the touching columns' stiffness and full contact's: it counts the columns the shift closed.
+    if (solve > 0 && secants) {
+      for (std::size_t i = 0; i < rows; ++i) {
+        const double dx = c.step[static_cast<Eigen::Index>(i)];
+        if (dx == 0.0) continue;
+        const double secant = -(c.row_pressure[i] - c.row_previous[i]) / dx;
+        c.row_stiffness[i] = std::clamp(secant, c.row_stiffness[i], c.row_full[i]);
+      }
+    }
+    coupling_.ExtraDisplacement(c.row_pressure.data(), c.row_target.data());
+    // Only the rows a section lies in take a shift (the others bend, but nothing meets them).
+    double change = 0.0, size = 0.0;
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+      const auto i = static_cast<std::size_t>(bore_row[s]);
+      change = std::max(change, std::abs(c.row_target[i] - c.row_shift[i]));
+      size = std::max(size, std::abs(c.row_target[i]));
+    }
+    // A thousandth of the shift: a nanometre on micrometre shifts, below what the tables resolve.
+    if (change <= 1e-3 * size + 1e-13 || solve == kMaxCouplingSolves) break;
+    // A secant that made things worse (a rigid-body jump between two contact sets) is no guide:
+    // the touching columns' stiffness from here on, which cannot overshoot.
+    if (change > last_change) secants = false;
+    last_change = change;
+    // Quasi-Newton on x = X pbar(x), pbar(x) ~ pbar(x_k) - K (x - x_k) with K each row's breathing
+    // stiffness over its touching columns: (I + X K) dx = X pbar(x_k) - x_k. Why it converges:
+    // X is negative semidefinite with X >= -I / k (bending only stiffens the hub) and a row's
+    // true response to a shift lies between 0 and the section's P0 < k (the shaft in series), so
+    // the plain iteration x <- X pbar(x) contracts by at most P0 / k (0.8 for the paper's hub);
+    // K taken from the touching columns underestimates the response (a shift closes more of
+    // them) and keeps each step short of the root, never past it.
+    c.system = coupling_.matrix() *
+               Eigen::Map<const Eigen::VectorXd>(c.row_stiffness.data(), m).asDiagonal();
+    c.system.diagonal().array() += 1.0;
+    c.step =
+        c.system.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(c.row_target.data(), m) -
+                                      Eigen::Map<const Eigen::VectorXd>(c.row_shift.data(), m));
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+      const double dx = c.step[bore_row[s]];
+      for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += dx;
+      c.section_contact[s] = solver->contact_sets()[s];
+      sections[s].warm_contact = c.section_contact[s].data();
+    }
+    for (std::size_t i = 0; i < rows; ++i) c.row_shift[i] += c.step[static_cast<Eigen::Index>(i)];
+    Eigen::Vector4d from;
+    from << r.offset, r.tilt;
+    r = solver->Solve(sections, freedom_, from);
+  }
+  // What the next depth step starts from: this step's shifts where sections lay, none elsewhere.
+  std::fill(c.row_target.begin(), c.row_target.end(), 0.0);
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    const auto i = static_cast<std::size_t>(bore_row[s]);
+    c.row_target[i] = c.row_shift[i];
+  }
+  c.row_shift.swap(c.row_target);
+  return r;
+}
+
 bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const {
   if (!elastic_ || pressure == nullptr) return false;
   if (!pose.offset.allFinite()) throw UserError("pressure map of a non-finite axis offset");
@@ -554,8 +685,8 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   const std::size_t n = static_cast<std::size_t>(n_), ne = n / static_cast<std::size_t>(block_);
   const double shift = pose.depth - shaft_length_;
   const double lo = std::max(shift, 0.0), hi = std::min(pose.depth, bushing_length_);
-  std::vector<int> rows;
-  std::vector<double> gaps;
+  std::vector<int> rows, bore_rows;
+  std::vector<double> gaps, lengths;
   for (int i = 0; i < shaft_rows_; ++i) {
     const double pos = shaft_row_centre_[i] + shift;
     if (pos < 0.0 || pos >= bushing_length_) continue;
@@ -564,6 +695,8 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
             1;
     b = std::clamp(b, 0, bushing_rows_ - 1);
     rows.push_back(i);
+    bore_rows.push_back(b);
+    lengths.push_back(shaft_edges_[i + 1] - shaft_edges_[i]);
     gaps.resize(rows.size() * ne, 0.0);
     for (std::size_t j = 0; j < n; ++j) {
       const double gap = v_bushing_[b * n_ + static_cast<Eigen::Index>(j)] -
@@ -582,7 +715,8 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   Eigen::Vector4d warm;
   warm << Rotate(anchor_[nearest], -frame_), Rotate(tilt_[nearest], -frame_);
   RigidSectionContact solver(section_, static_cast<int>(ne));
-  solver.Solve(sections, freedom_, warm);
+  CouplingScratch coupling;
+  SolveSections(&solver, sections, bore_rows, lengths, gaps.data(), warm, &coupling);
   for (std::size_t s = 0; s < rows.size(); ++s) {
     for (std::size_t j = 0; j < n; ++j) {
       (*pressure)[rows[s] * n_ + static_cast<Eigen::Index>(j)] =

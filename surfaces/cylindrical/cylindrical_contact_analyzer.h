@@ -1,12 +1,14 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/convex_polygon.h"
+#include "framework/model/hub_axial_coupling.h"
 #include "framework/model/section_contact.h"
 #include "framework/model/texture_contact.h"
 
@@ -95,12 +97,31 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     auto operator<=>(const RowPair&) const = default;
   };
   // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
+  // The hub's axial coupling of one solve: per bore row the mean pressure, the gap shift applied
+  // and the breathing stiffness the update assumes; per section the contact set to restart from.
+  struct CouplingScratch {
+    std::vector<double> row_pressure, row_previous, row_shift, row_target, row_stiffness, row_full;
+    std::vector<std::vector<char>> section_contact;
+    Eigen::MatrixXd system;
+    Eigen::VectorXd step;
+  };
+  // The sections' solve with the hub's axial coupling (coupling_ set): each section's gaps (`gaps`,
+  // section-major, the solver's columns each) are shifted by its bore row's extra displacement for
+  // the rows' mean pressures until they agree (a quasi-Newton iteration on the breathing mode: in
+  // full contact the second solve is the answer). bore_row and length per section.
+  RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
+                                   std::span<const int> bore_row, std::span<const double> length,
+                                   double* gaps, const Eigen::Vector4d& warm,
+                                   CouplingScratch* scratch) const;
+
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
     std::vector<double> chunk_h;  // per step of the chunk: the smallest gap of each column
     std::vector<RowPair> pairs;
     std::vector<double> st, w, col_a, col_b, proj, elastic_gap;
     std::vector<ContactSection> sections;
+    std::vector<int> section_row;
+    std::vector<double> section_length;
     Eigen::Vector2d warm{0.0, 0.0};
     Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
     std::optional<RigidSectionContact> solver;
@@ -114,6 +135,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<std::size_t> row_contact_step;
     std::vector<CirculantContact::Factorization> row_factors;
     int newton_iterations = 0;
+    CouplingScratch coupling;
     // A chunk's cold start: no warm starts, buffers sized for `columns`.
     void Restart(std::size_t columns, std::size_t bore_rows);
   };
@@ -167,6 +189,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   int block_ = 1;           // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;  // m, added to every gap
   PressFitSection section_;
+  HubAxialCoupling coupling_;         // empty: plane sections
+  double breathing_stiffness_ = 0.0;  // 1 / C_0 of the section, Pa/m
   RigidFreedom freedom_;
   double frame_ = 0.0;  // angle of the elastic solve's column 0
   std::vector<double> normal_;

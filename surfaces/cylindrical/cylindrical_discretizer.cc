@@ -30,7 +30,7 @@ Resolution CylindricalDiscretizer::AutoResolution(const CylindricalGeometry& geo
 }
 
 GridShape CylindricalDiscretizer::DoShape(const PartSpec& part,
-                                         const Resolution& resolution) const {
+                                          const Resolution& resolution) const {
   const CylindricalGeometry& geometry = AsCylinder(part);
   const Resolution r = resolution.is_auto() ? AutoResolution(geometry) : resolution;
   if (r.rows < 1 || r.columns < 4 || r.columns % 2 != 0) {

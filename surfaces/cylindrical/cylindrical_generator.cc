@@ -246,7 +246,8 @@ std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g,
 }  // namespace
 
 void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
-  options.ExpectOnlyKeys({"size_draw", "size_limit", "tilt", "section", "columns"});
+  options.ExpectOnlyKeys(
+      {"size_draw", "size_limit", "tilt", "section", "columns", "axial_coupling"});
   ParseElasticOptions(options);  // the elastic law's keys, checked here so that validate sees them
   if (auto node = options.Find("size_draw")) {
     options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart

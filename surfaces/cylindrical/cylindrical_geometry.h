@@ -10,7 +10,6 @@
 
 namespace fitfeel::cylindrical {
 
-
 // Nominal geometry of one cylindrical mating surface. The mating diameter is the part's nominal
 // size (PartSpec::size.nominal); the rest comes from the part's `geometry` node.
 class CylindricalGeometry final : public Geometry {

@@ -46,8 +46,8 @@ class GpsLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
-  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                           LawState* state, Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
+                           Wrench* out) const noexcept override;
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
   double DoPressurePerInterference() const override { return pressure_per_interference_; }
 
@@ -56,7 +56,7 @@ class GpsLaw final : public ResistanceLaw {
   double Normal(const ContactState& contact, Wrench* out) const noexcept;
 
   StickSlipFriction friction_;
-  double hub_yield_pressure_ = 0.0;    // 0: no yield strength given
+  double hub_yield_pressure_ = 0.0;  // 0: no yield strength given
   double shaft_yield_pressure_ = 0.0;
   double stiffness_ = 0.0;  // 0: Lame stiffness of the engaged length
   double d1_ = 0.0;
@@ -80,8 +80,8 @@ class ElasticLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
-  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                           LawState* state, Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
+                           Wrench* out) const noexcept override;
   double DoPressurePerInterference() const override { return pressure_per_interference_; }
 
  private:
@@ -104,8 +104,8 @@ class Ve1Law final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
-  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                           LawState* state, Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
+                           Wrench* out) const noexcept override;
 
  private:
   double Normal(const ContactState& contact, Wrench* out) const noexcept;

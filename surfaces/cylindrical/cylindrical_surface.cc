@@ -7,8 +7,8 @@
 #include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
-#include "surfaces/cylindrical/cylindrical_geometry.h"
 #include "surfaces/cylindrical/cylindrical_generator.h"
+#include "surfaces/cylindrical/cylindrical_geometry.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
 
 namespace fitfeel::cylindrical {
@@ -34,7 +34,7 @@ std::unique_ptr<ContactAnalyzer> CylindricalSurface::MakeContactAnalyzer() const
 }
 
 CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
-                                                const PartSpec& outer) const {
+                                                  const PartSpec& outer) const {
   return MakeCylindricalCoarseMeshes(inner, outer);
 }
 

@@ -11,6 +11,7 @@ namespace fitfeel::cylindrical {
 //   tilt: free | fixed | <holder's angular stiffness, N*m/rad>   (default free)
 //   section: plane_stress | plane_strain                          (default plane_stress)
 //   columns: <most columns of the elastic solve, even, 24..1440>  (default 120)
+//   axial_coupling: true | false                                  (default true)
 struct ElasticOptions {
   // The grid's columns are averaged in blocks to at most this many for the elastic solve. Its
   // pivoting costs O(columns^3) per slice; 120 resolve harmonics to 60 (1 mm waves at d = 20 mm).
@@ -23,6 +24,9 @@ struct ElasticOptions {
   double tilt_stiffness = 0.0;  // what holds its tilt, N*m/rad (0 = nothing)
   bool plane_strain = false;
   int columns = kDefaultColumns;
+  // The hub's breathing mode coupled along its axis (framework/model/hub_axial_coupling.h); false
+  // leaves every section on its own (plane sections), for comparison.
+  bool axial_coupling = true;
 };
 
 inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
@@ -46,6 +50,7 @@ inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
       node->Fail("an even number of columns", node->Describe());
     }
   }
+  if (auto node = options.Find("axial_coupling")) o.axial_coupling = node->AsBool();
   return o;
 }
 

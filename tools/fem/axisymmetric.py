@@ -206,10 +206,11 @@ def merge(*parts):
 CYL_A, CYL_B, CYL_L, CYL_DELTA = 10.0, 15.0, 20.0, 5e-3
 
 
-def cylinder_case(run_ccx, shaft_from, shaft_to, plane_strain=False):
-    """Shaft over y in [shaft_from, shaft_to], hub over [0, L]. Axial stations are graded towards
-    the hub's faces and the shaft's end, where the pressure concentrates."""
-    a, b, length, delta = CYL_A, CYL_B, CYL_L, CYL_DELTA
+def cylinder_case(run_ccx, shaft_from, shaft_to, plane_strain=False, hub_diameter=2 * CYL_B):
+    """Shaft over y in [shaft_from, shaft_to], hub over [0, L] with outer diameter hub_diameter.
+    Axial stations are graded towards the hub's faces and the shaft's end, where the pressure
+    concentrates."""
+    a, b, length, delta = CYL_A, hub_diameter / 2, CYL_L, CYL_DELTA
     hub_y = stations(length, 80, 1.8, 1.8)
     shaft_parts = [hub_y[(hub_y >= shaft_from - 1e-12) & (hub_y <= shaft_to + 1e-12)]]
     if shaft_from < 0.0:
@@ -217,8 +218,9 @@ def cylinder_case(run_ccx, shaft_from, shaft_to, plane_strain=False):
     if shaft_to > length:
         shaft_parts.append(stations(shaft_to - length, 16, 1.8, 1.0, length))
     if 0.0 < shaft_to < length:  # the shaft ends inside the hub: grade the hub towards it too
-        hub_y = merge(stations(shaft_to, 60, 1.8, 1.8), stations(length - shaft_to, 40, 1.8, 1.8,
-                                                                  shaft_to))
+        inside = max(20, int(round(100 * shaft_to / length)))
+        hub_y = merge(stations(shaft_to, inside, 1.8, 1.8),
+                      stations(length - shaft_to, max(20, 100 - inside), 1.8, 1.8, shaft_to))
         shaft_parts = [hub_y[hub_y <= shaft_to + 1e-12]]
     shaft_y = merge(*shaft_parts)
     inner = Block(lambda y: 0.0, lambda y: a + delta, shaft_y, graded(16, 1.0, 1.6), 1, 1)
@@ -289,6 +291,15 @@ def cases():
         ("cylinder-flush", lambda r: cylinder_case(r, 0.0, CYL_L)),
         ("cylinder-through", lambda r: cylinder_case(r, -10.0, CYL_L + 10.0)),
         ("cylinder-half-engaged", lambda r: cylinder_case(r, 0.0, CYL_L / 2)),
+        ("cylinder-entry-0.5mm", lambda r: cylinder_case(r, 0.0, 0.5)),
+        ("cylinder-entry-1mm", lambda r: cylinder_case(r, 0.0, 1.0)),
+        ("cylinder-entry-2mm", lambda r: cylinder_case(r, 0.0, 2.0)),
+        ("cylinder-quarter-engaged", lambda r: cylinder_case(r, 0.0, CYL_L / 4)),
+        ("cylinder-three-quarters-engaged", lambda r: cylinder_case(r, 0.0, 3 * CYL_L / 4)),
+        ("cylinder-thin-hub-half-engaged",
+         lambda r: cylinder_case(r, 0.0, CYL_L / 2, hub_diameter=24.0)),
+        ("cylinder-thick-hub-half-engaged",
+         lambda r: cylinder_case(r, 0.0, CYL_L / 2, hub_diameter=40.0)),
         ("taper", taper_case),
         ("ball-solid", lambda r: ball_case(r, bore=False)),
         ("ball-bore", lambda r: ball_case(r, bore=True)),

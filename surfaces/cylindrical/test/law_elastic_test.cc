@@ -264,9 +264,12 @@ double AxisymmetricFem(const std::string& name) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-// The elastic model's normal force with the shaft `shaft_length` long at `depth`.
-double UniformNormalForce(double shaft_length, double depth, const std::string& options) {
-  const PartSpec shaft = MakeShaft(0.020, shaft_length), bushing = MakeBushing(0.020, 0.020, 0.030);
+// The elastic model's normal force with the shaft `shaft_length` long at `depth`, in a hub of
+// outer diameter `hub_diameter`.
+double UniformNormalForce(double shaft_length, double depth, const std::string& options,
+                          double hub_diameter = 0.030) {
+  const PartSpec shaft = MakeShaft(0.020, shaft_length);
+  const PartSpec bushing = MakeBushing(0.020, 0.020, hub_diameter);
   ModelSettings settings = Elastic(TextureMode::kSampled);
   settings.extra = ConfigNode::Parse(options, "test", "model.options");
   CylinderContactAnalyzer analyzer;
@@ -282,7 +285,8 @@ double UniformNormalForce(double shaft_length, double depth, const std::string& 
 
 // Plane sections against a finite hub: exact in plane strain (the FEM's slice held between
 // planes), and within 2 % for the free hub with the shaft flush with it or running through it
-// (the hub's free ends and the shaft's continuation nearly cancel).
+// (the hub's free ends and the shaft's continuation nearly cancel). The hub's axial coupling
+// changes nothing there: a uniform load bends nothing.
 TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
   struct Case {
     const char* name;
@@ -297,19 +301,52 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
     std::printf("%-22s FEM %8.1f N  elastic model %8.1f N  %+.2f %%\n", c.name, fem, model,
                 100 * (model / fem - 1));
     EXPECT_LT(std::abs(model / fem - 1.0), 0.10) << c.name;
+    const std::string plane = std::string(c.options).substr(0, std::string(c.options).size() - 1) +
+                              (std::string(c.options) == "{}" ? "" : ", ") +
+                              "axial_coupling: false}";
+    EXPECT_NEAR(UniformNormalForce(c.shaft_length, c.depth, plane), model, 1e-6 * model);
   }
 }
 
-// Not met yet: with the shaft half way in (10 of the hub's 20 mm), the hub's unloaded half
-// stiffens the loaded one (a thick shell's bending carries the load past the shaft's end over a
-// few wall thicknesses) and the FEM's force is 21.2 kN where plane sections give 18.3 kN (-13 %).
-// The model has no axial coupling between its sections; this test is the check for it.
-TEST(ElasticLaw, DISABLED_AgreesWithCalculixOnAHalfEngagedHub) {
-  const double fem = AxisymmetricFem("cylinder-half-engaged");
-  const double model = UniformNormalForce(0.020, 0.010, "{}");
-  std::printf("half engaged: FEM %.1f N  elastic model %.1f N  %+.2f %%\n", fem, model,
-              100 * (model / fem - 1));
-  EXPECT_LT(std::abs(model / fem - 1.0), 0.10);
+// The shaft part way in: the hub's unloaded length stiffens the loaded one. Plane sections give
+// 9 to 40 % too little; with the hub's axial coupling (hub_axial_coupling.h) the model is within
+// -0.2 to +7.1 % (2 mm, a quarter, half and three quarters of the 20 mm hub; walls of 2, 5 and
+// 10 mm). Asserted: the 10 %.
+struct PartlyEngaged {
+  const char* name;
+  double depth, hub_diameter;
+};
+
+void ExpectWithinOfCalculix(const PartlyEngaged& c, double tolerance) {
+  const double fem = AxisymmetricFem(c.name);
+  const double coupled = UniformNormalForce(0.020, c.depth, "{}", c.hub_diameter);
+  const double plane =
+      UniformNormalForce(0.020, c.depth, "{axial_coupling: false}", c.hub_diameter);
+  std::printf("%-32s FEM %8.1f N  coupled %8.1f N %+6.2f %%  plane sections %8.1f N %+6.2f %%\n",
+              c.name, fem, coupled, 100 * (coupled / fem - 1), plane, 100 * (plane / fem - 1));
+  EXPECT_LT(std::abs(coupled / fem - 1.0), tolerance) << c.name;
+  EXPECT_LT(plane, fem) << c.name;  // what the coupling is for
+}
+
+TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {
+  for (const PartlyEngaged& c : {PartlyEngaged{"cylinder-entry-2mm", 0.002, 0.030},
+                                 PartlyEngaged{"cylinder-quarter-engaged", 0.005, 0.030},
+                                 PartlyEngaged{"cylinder-half-engaged", 0.010, 0.030},
+                                 PartlyEngaged{"cylinder-three-quarters-engaged", 0.015, 0.030},
+                                 PartlyEngaged{"cylinder-thin-hub-half-engaged", 0.010, 0.024},
+                                 PartlyEngaged{"cylinder-thick-hub-half-engaged", 0.010, 0.040}}) {
+    ExpectWithinOfCalculix(c, 0.10);
+  }
+}
+
+// Not met yet: in the first millimetre the coupled model is 10 to 11 % high (the FEM: 2642 N at
+// 0.5 mm, 4046 N at 1 mm; plane sections 916 and 1833 N). There the shaft's free end, which
+// plane sections keep as stiff as its middle, is softer; the coupling models the hub only.
+TEST(ElasticLaw, DISABLED_AgreesWithCalculixInTheFirstMillimetre) {
+  for (const PartlyEngaged& c : {PartlyEngaged{"cylinder-entry-0.5mm", 0.0005, 0.030},
+                                 PartlyEngaged{"cylinder-entry-1mm", 0.001, 0.030}}) {
+    ExpectWithinOfCalculix(c, 0.10);
+  }
 }
 
 }  // namespace
