@@ -264,6 +264,19 @@ double AxisymmetricFem(const std::string& name) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+// The accuracy chart's rows of the axisymmetric cases (docs/figures/regenerate.sh sets the
+// variable and writes the header): case, FEM, elastic model, its error, plane sections (the paper
+// law's per-cell Lame for a uniform interference), their error.
+void ChartRow(const char* name, double fem, double model, double plane) {
+  const char* path = std::getenv("FITFEEL_FEM_AXISYMMETRIC_CSV");
+  if (path == nullptr) return;
+  std::FILE* f = std::fopen(path, "a");
+  ASSERT_NE(f, nullptr) << path;
+  std::fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, fem, model, model / fem - 1.0, plane,
+               plane / fem - 1.0);
+  std::fclose(f);
+}
+
 // The elastic model's normal force with the shaft `shaft_length` long at `depth`, in a hub of
 // outer diameter `hub_diameter`.
 double UniformNormalForce(double shaft_length, double depth, const std::string& options,
@@ -305,6 +318,7 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
                               (std::string(c.options) == "{}" ? "" : ", ") +
                               "axial_coupling: false}";
     EXPECT_NEAR(UniformNormalForce(c.shaft_length, c.depth, plane), model, 1e-6 * model);
+    ChartRow(c.name, fem, model, model);
   }
 }
 
@@ -326,6 +340,7 @@ void ExpectWithinOfCalculix(const PartlyEngaged& c, double tolerance) {
               c.name, fem, coupled, 100 * (coupled / fem - 1), plane, 100 * (plane / fem - 1));
   EXPECT_LT(std::abs(coupled / fem - 1.0), tolerance) << c.name;
   EXPECT_LT(plane, fem) << c.name;  // what the coupling is for
+  ChartRow(c.name, fem, coupled, plane);
 }
 
 TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {
