@@ -442,4 +442,29 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   return r;
 }
 
+bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> sections,
+                                           std::span<const double> dp, RigidContactResult* result) {
+  const auto nn = static_cast<std::size_t>(columns());
+  if (sections.size() != active_.size() || dp.size() != sections.size() ||
+      pressure_.size() != sections.size() * nn) {
+    return false;
+  }
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    for (std::size_t j = 0; j < nn; ++j) {
+      if (!active_[s][j] || !(pressure_[s * nn + j] + dp[s] >= 0.0)) return false;
+    }
+  }
+  result->normal_force = 0.0;
+  result->max_pressure = 0.0;
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    for (std::size_t j = 0; j < nn; ++j) {
+      double& p = pressure_[s * nn + j];
+      p += dp[s];
+      result->normal_force += p * sections[s].cell_area;
+      result->max_pressure = std::max(result->max_pressure, p);
+    }
+  }
+  return true;
+}
+
 }  // namespace fitfeel

@@ -135,6 +135,13 @@ class FITFEEL_API RigidSectionContact {
   const std::vector<double>& pressures() const { return pressure_; }
   // Contact set of every section of the last Solve (one flag per column), for warm starts.
   const std::vector<std::vector<char>>& contact_sets() const { return active_; }
+  // Moves the last Solve's pressures of every section that is in contact all round by a uniform
+  // dp[s] (Pa): the exact answer when that section's gaps all grow by -dp[s] / P0 (P0 = 1 / C_0:
+  // a uniform closure is the breathing mode alone, no net force, so the part's offset and tilt
+  // stay). Returns false, changing nothing, if a section is not in contact all round or a
+  // pressure would turn negative. The result's normal force and largest pressure follow.
+  bool ShiftFullContact(std::span<const ContactSection> sections, std::span<const double> dp,
+                        RigidContactResult* result);
 
   RigidContactResult Solve(std::span<const ContactSection> sections, const RigidFreedom& freedom,
                            const Eigen::Vector4d& warm);

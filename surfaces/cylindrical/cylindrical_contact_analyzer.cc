@@ -603,6 +603,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     std::fill(c.row_pressure.begin(), c.row_pressure.end(), 0.0);
     std::fill(c.row_stiffness.begin(), c.row_stiffness.end(), 0.0);
     std::fill(c.row_full.begin(), c.row_full.end(), 0.0);
+    bool all_round = true;  // every section in contact all round
     for (std::size_t s = 0; s < sections.size(); ++s) {
       const double* p = solver->pressures().data() + s * ne;
       const std::vector<char>& set = solver->contact_sets()[s];
@@ -611,6 +612,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
         mean += p[j];
         touching += set[j] ? 1.0 : 0.0;
       }
+      all_round = all_round && touching == static_cast<double>(ne);
       const auto row = static_cast<std::size_t>(bore_row[s]);
       const double share = length[s] / pitch / static_cast<double>(ne);
       c.row_pressure[row] += mean * share;
@@ -657,10 +659,22 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     for (std::size_t s = 0; s < sections.size(); ++s) {
       const double dx = c.step[bore_row[s]];
       for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += dx;
+    }
+    for (std::size_t i = 0; i < rows; ++i) c.row_shift[i] += c.step[static_cast<Eigen::Index>(i)];
+    // In contact all round the step is exact (a uniform gap change is the breathing mode alone,
+    // P0 per unit, with no net force): the pressures move by -P0 dx without a solve, unless one
+    // would turn negative.
+    if (all_round) {
+      c.section_dp.resize(sections.size());
+      for (std::size_t s = 0; s < sections.size(); ++s) {
+        c.section_dp[s] = -breathing_stiffness_ * c.step[bore_row[s]];
+      }
+      if (solver->ShiftFullContact(sections, c.section_dp, &r)) break;
+    }
+    for (std::size_t s = 0; s < sections.size(); ++s) {
       c.section_contact[s] = solver->contact_sets()[s];
       sections[s].warm_contact = c.section_contact[s].data();
     }
-    for (std::size_t i = 0; i < rows; ++i) c.row_shift[i] += c.step[static_cast<Eigen::Index>(i)];
     Eigen::Vector4d from;
     from << r.offset, r.tilt;
     r = solver->Solve(sections, freedom_, from);

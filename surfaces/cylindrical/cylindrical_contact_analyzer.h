@@ -100,7 +100,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // The hub's axial coupling of one solve: per bore row the mean pressure, the gap shift applied
   // and the breathing stiffness the update assumes; per section the contact set to restart from.
   struct CouplingScratch {
-    std::vector<double> row_pressure, row_previous, row_shift, row_target, row_stiffness, row_full;
+    std::vector<double> row_pressure, row_previous, row_shift, row_target, row_stiffness, row_full,
+        section_dp;
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd system;
     Eigen::VectorXd step;

@@ -121,5 +121,49 @@ TEST(RigidSectionContact, WeightIsCarriedInClearance) {
   EXPECT_NEAR(r.offset.y(), -5e-6, 1e-7);
 }
 
+// A uniform gap change of a section in contact all round moves its pressures by -P0 per unit
+// (the breathing mode alone) and leaves the part where it was: ShiftFullContact against a solve
+// of the shifted gaps, and its refusals.
+TEST(RigidSectionContact, ShiftFullContactIsTheSolveOfUniformlyShiftedGaps) {
+  const int n = 48, rows = 6;
+  const double l = 0.012, p0 = 1.0 / HarmonicCompliance(SteelPair(), 0);
+  std::vector<std::vector<double>> gaps(rows, std::vector<double>(n)), shifted = gaps;
+  std::vector<ContactSection> before, after;
+  std::vector<double> dx(rows), dp(rows);
+  for (int i = 0; i < rows; ++i) {
+    dx[i] = 0.1e-6 * (i - 2);  // some grow, some shrink
+    dp[i] = -p0 * dx[i];
+    for (int j = 0; j < n; ++j) {
+      gaps[i][j] = -4e-6 + 1e-6 * std::cos(3 * 2 * kPi * j / n) + 0.2e-6 * i;
+      shifted[i][j] = gaps[i][j] + dx[i];
+    }
+    ContactSection s = Slice(gaps[i], l / rows);
+    s.y = (i + 0.5) * l / rows - l / 2;
+    before.push_back(s);
+    s.gap = shifted[i].data();
+    after.push_back(s);
+  }
+  RigidFreedom freedom;
+  freedom.tilt = true;
+  RigidSectionContact solver(SteelPair(), n), reference(SteelPair(), n);
+  RigidContactResult r = solver.Solve(before, freedom, Eigen::Vector4d::Zero());
+  ASSERT_TRUE(solver.ShiftFullContact(before, dp, &r));
+  const RigidContactResult expected = reference.Solve(after, freedom, Eigen::Vector4d::Zero());
+  EXPECT_NEAR(r.normal_force, expected.normal_force, 1e-9 * expected.normal_force);
+  EXPECT_NEAR(r.max_pressure, expected.max_pressure, 1e-9 * expected.max_pressure);
+  EXPECT_LT((r.offset - expected.offset).norm(), 1e-15);
+  for (std::size_t k = 0; k < solver.pressures().size(); ++k) {
+    EXPECT_NEAR(solver.pressures()[k], reference.pressures()[k], 1e-6 * expected.max_pressure);
+  }
+  // A pressure that would turn negative, or a section not in contact all round: refused, unchanged.
+  const std::vector<double> kept = solver.pressures();
+  std::vector<double> too_much(rows, -2.0 * expected.max_pressure);
+  EXPECT_FALSE(solver.ShiftFullContact(before, too_much, &r));
+  EXPECT_EQ(solver.pressures(), kept);
+  for (int j = 0; j < n; ++j) gaps[0][j] += 10e-6 * std::cos(2 * kPi * j / n) + 3e-6;
+  solver.Solve(before, freedom, Eigen::Vector4d::Zero());
+  EXPECT_FALSE(solver.ShiftFullContact(before, dp, &r));
+}
+
 }  // namespace
 }  // namespace fitfeel
