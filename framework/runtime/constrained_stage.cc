@@ -21,6 +21,14 @@ struct ConstrainedState final : StageState {
   // The god object's offset and mating depth (Options::proxy_stiffness finite).
   Eigen::Vector2d part{0.0, 0.0};
   double part_depth = 0.0;
+  // The god object's last balance across the axis on a Winkler bed (the cone's, the sphere's):
+  // its slope (the wall's stiffness plus the spring's, N/m; 0 = not known yet) and where it lay
+  // from the device (m; NaN = not known yet). The next tick's search starts around that root.
+  double across_slope = 0.0;
+  double across_root = std::numeric_limits<double>::quiet_NaN();
+  // The same for the step back out of the wall along the push (where the push exceeds the pull).
+  double back_slope = 0.0;
+  double back_root = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Illinois false position on a bracket [lo, hi] whose residuals f_lo and f_hi have opposite
@@ -137,8 +145,8 @@ Eigen::Vector2d ConstrainedStage::ProbeAt(const Eigen::Vector2d& offset, const M
 
 bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                                   double target, double tolerance, const MatingMotion& motion,
-                                  StageOutput* work, double* solution, double spring,
-                                  double* slope) const noexcept {
+                                  StageOutput* work, double* solution, double spring, double* slope,
+                                  const double* hint) const noexcept {
   // Support the contact gives along -axis with the part at origin + s * axis, minus the target:
   // negative while the part would move further along the axis. The laws' radial force grows
   // monotonically with the offset into a wall (eq. 9's spring, eqs. 10-12's interference), so
@@ -173,7 +181,44 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   double lo = 0.0, hi = 0.0, r_lo = r0, r_hi = r0;
   bool bracketed = false;
   double reach = 1e-6;
-  if (slope != nullptr && *slope > 0.0) {
+  // Around the last root: from 10 nm, widening eightfold, on the side its residual points to
+  // (the residual rises with s), at most to the origin, whose residual is known.
+  if (hint != nullptr && std::isfinite(*hint) && *hint != 0.0 && std::abs(*hint) <= 1.1e-3) {
+    const double s1 = *hint;
+    const double r1 = residual(s1);
+    if (std::abs(r1) <= tolerance) {
+      *solution = s1;
+      return true;
+    }
+    const double toward = r1 > 0.0 ? -1.0 : 1.0;  // where the root lies from s1
+    double a = s1, r_a = r1;
+    // With a slope from the last root the first step is Newton's (the root moves with the device,
+    // a fraction of a micrometre per tick), and the widening continues from there.
+    double base = s1;
+    if (slope != nullptr && *slope > 0.0) {
+      const double newton = -r1 / *slope;
+      if (std::isfinite(newton) && std::abs(newton) <= 1e-4) base = s1 + 1.01 * newton;
+    }
+    for (double step = base == s1 ? 1e-8 : 0.0; step <= 1.1e-3 && !bracketed;
+         step = step == 0.0 ? 1e-8 : 8.0 * step) {
+      double b = base + toward * step;
+      const bool past_origin = (b - 0.0) * (s1 - 0.0) <= 0.0;
+      const double r_b = past_origin ? r0 : residual(b);
+      if (past_origin) b = 0.0;
+      if ((r_b > 0.0) != (r1 > 0.0)) {
+        bracketed = true;
+        lo = std::min(a, b);
+        hi = std::max(a, b);
+        r_lo = lo == a ? r_a : r_b;
+        r_hi = hi == a ? r_a : r_b;
+      } else if (past_origin) {
+        break;
+      }
+      a = b;
+      r_a = r_b;
+    }
+  }
+  if (!bracketed && slope != nullptr && *slope > 0.0) {
     const double s1 = -r0 / *slope;
     if (std::isfinite(s1) && s1 != 0.0 && std::abs(s1) <= 1.1e-3) {
       const double r1 = residual(s1);
@@ -392,7 +437,8 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     motion.depth = depth;
     Eigen::Vector2d edge = anchor_of(held);
     Eigen::Vector2d part = held;
-    if (edge == held) {
+    const bool bed = edge == held;
+    if (bed) {
       // No assembly space in the analyzer's answer (a Winkler bed of cells, as the cone's and the
       // sphere's): free if the law does not push, else balanced along its push, from the device
       // outwards, where the push falls and the spring's pull rises.
@@ -403,9 +449,11 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       if (!(magnitude > 0.0) || !std::isfinite(magnitude)) return held;  // free: it follows
       const Eigen::Vector2d into = -push / magnitude;
       double s = 0.0;
-      if (!SolveAlong(held, into, 0.0, std::max(1e-4, 1e-6 * magnitude), motion, &work, &s, k)) {
+      if (!SolveAlong(held, into, 0.0, std::max(1e-4, 1e-6 * magnitude), motion, &work, &s, k,
+                      &run->across_slope, &run->across_root)) {
         return held;
       }
+      run->across_root = s;
       part = held + std::min(s, 0.0) * into;
     } else {
       for (int i = 0; i < 8; ++i) {
@@ -420,6 +468,8 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       const Eigen::Vector2d into = way / reach;
       const double tolerance = std::max(1e-4, 1e-6 * k * reach);
       double s = 0.0;
+      // (No memory here: the edge moves with the device and the root with it, so neither the last
+      // root nor its slope is a better start than the bracket from the edge; measured.)
       if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k)) return edge;
       // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
       // the part has barely entered (it blends the free entrance with the first row's space).
@@ -440,8 +490,12 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     if (magnitude > 1.01 * pull + 1e-4 && std::isfinite(magnitude)) {
       const Eigen::Vector2d wall = -push / magnitude;
       double t = 0.0;
-      if (SolveAlong(part, wall, pull, std::max(1e-4, 1e-3 * pull), motion, &work, &t) && t < 0.0) {
-        part += t * wall;
+      // With the memory only on a Winkler bed (as above; on a polygon's edge it costs more than
+      // it saves, measured).
+      if (SolveAlong(part, wall, pull, std::max(1e-4, 1e-3 * pull), motion, &work, &t, 0.0,
+                     bed ? &run->back_slope : nullptr, bed ? &run->back_root : nullptr)) {
+        if (bed) run->back_root = t;
+        if (t < 0.0) part += t * wall;
       }
     }
     return part;

@@ -81,10 +81,14 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   // With `spring` > 0 the target falls as the part moves: target - spring * s (the coupling
   // spring of a god object whose device lies at s = target / spring). `slope`, when given, is
   // the residual's slope at the last root (N/m; 0 = unknown): the search's first probe is a
-  // Newton step from it, and it learns the slope of this root.
+  // Newton step from it, and it learns the slope of this root. `hint`, when given and finite, is
+  // where the root lay last time (s from this origin): the search first brackets the root in a
+  // few nanometres around it (a root at the foot of a convex wall, where neither a slope nor a
+  // bracket from the origin helps: the texture's smooth onset of contact).
   bool SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis, double target,
                   double tolerance, const MatingMotion& motion, StageOutput* work, double* solution,
-                  double spring = 0.0, double* slope = nullptr) const noexcept;
+                  double spring = 0.0, double* slope = nullptr,
+                  const double* hint = nullptr) const noexcept;
   // The contact and the law's wrench (without history) with the part at `offset`, left in
   // `work`; returns the radial force (x, z).
   Eigen::Vector2d ProbeAt(const Eigen::Vector2d& offset, const MatingMotion& motion,
