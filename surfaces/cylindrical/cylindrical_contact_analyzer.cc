@@ -649,7 +649,9 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     // true response to a shift lies between 0 and the section's P0 < k (the shaft in series), so
     // the plain iteration x <- X pbar(x) contracts by at most P0 / k (0.8 for the paper's hub);
     // K taken from the touching columns underestimates the response (a shift closes more of
-    // them) and keeps each step short of the root, never past it.
+    // them) and keeps each step short of the root, never past it. The measured secants (held
+    // below full contact's K) reach the root in two or three solves where the contact set grows
+    // with the shift, and are dropped once they make things worse.
     c.system = coupling_.matrix() *
                Eigen::Map<const Eigen::VectorXd>(c.row_stiffness.data(), m).asDiagonal();
     c.system.diagonal().array() += 1.0;
