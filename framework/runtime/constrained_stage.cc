@@ -340,7 +340,13 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // where alternating sweeps along and across zig-zag down the wall (tens of evaluations, the
   // tick's worst case); a direction without stiffness (a flat wall the part may slide along) is a
   // 1-D search along it to the next wall. The sweeps stay as the fallback.
-  auto force_at = [&](const Eigen::Vector2d& x) { return ProbeAt(x, motion, &work); };
+  // `work` always holds the contact and the law's push (without history) at work.pose: from the
+  // caller (the search's start) and from every probe since. A probe where the last one was (a
+  // root the 1-D search ended on) is answered from it, the same numbers without an evaluation.
+  auto force_at = [&](const Eigen::Vector2d& x) {
+    if (work.pose.offset == x) return Eigen::Vector2d(work.wrench.force.x(), work.wrench.force.z());
+    return ProbeAt(x, motion, &work);
+  };
   // Along the load the searches stop at 1 pm of position where the tolerance is finer than a
   // picometre of the wall's travel (k h ~ 1e-3 N for kN/um walls): balanced is 1e-3 of the load
   // there, still far below what a hand resolves.
@@ -397,9 +403,12 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
       SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
     at += s * down;
   }
-  // Leave pose, contact and wrench consistent at the settled offset.
-  work.pose.offset = at;
-  analyzer_.Evaluate(work.pose, &work.contact);
+  // Leave pose, contact and wrench consistent at the settled offset (the contact is usually the
+  // last probe's already).
+  if (work.pose.offset != at) {
+    work.pose.offset = at;
+    analyzer_.Evaluate(work.pose, &work.contact);
+  }
   work.wrench.SetZero();
   law_.Evaluate(work.contact, motion, law_state, &work.wrench);
   out->elastic = law_.CheckElasticLimit(work.contact);
@@ -541,7 +550,12 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
   out->pose.offset = at;
   out->pose.depth = depth;
   motion.depth = depth;
-  analyzer_.Evaluate(out->pose, &out->contact);
+  // The last probe's contact where it was taken at the part's pose (the same numbers).
+  if (work.pose.offset == at && work.pose.depth == depth && work.pose.angle == out->pose.angle) {
+    out->contact = work.contact;
+  } else {
+    analyzer_.Evaluate(out->pose, &out->contact);
+  }
   // Out of engagement (withdrawn) the junctions let go, as in the rigid case.
   if (!out->contact.engaged) run->law = LawState{};
   out->wrench.SetZero();
