@@ -365,6 +365,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     basis.col(0) = down;
     basis.col(1) = across;
     const Eigen::Matrix2d k = -d * basis.transpose();  // stiffness, -d(force)/d(offset)
+    memory->stiffness = k;
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(0.5 * (k + k.transpose()));
     const double largest = eig.eigenvalues().maxCoeff();
     if (!(largest > 0.0) || !std::isfinite(largest)) break;  // nothing holds: the sweeps
@@ -405,9 +406,24 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   }
   // Leave pose, contact and wrench consistent at the settled offset (the contact is usually the
   // last probe's already).
-  if (work.pose.offset != at) {
-    work.pose.offset = at;
-    analyzer_.Evaluate(work.pose, &work.contact);
+  if (work.pose.offset != at) ProbeAt(at, motion, &work);
+  // The next tick's start: one Newton step on the last known stiffness from here, on what is
+  // left unbalanced (within the tolerances, so at most a fraction of a nanometre to a few).
+  Eigen::Vector2d next = at;
+  if (memory->stiffness != Eigen::Matrix2d::Zero()) {
+    const Eigen::Vector2d left =
+        Eigen::Vector2d(work.wrench.force.x(), work.wrench.force.z()) + load;
+    const Eigen::Matrix2d k = 0.5 * (memory->stiffness + memory->stiffness.transpose());
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(k);
+    const double largest = eig.eigenvalues().maxCoeff();
+    if (largest > 0.0 && std::isfinite(largest)) {
+      for (int i = 0; i < 2; ++i) {
+        const double lambda = eig.eigenvalues()[i];
+        if (lambda > 1e-6 * largest) {
+          next += (eig.eigenvectors().col(i).dot(left) / lambda) * eig.eigenvectors().col(i);
+        }
+      }
+    }
   }
   work.wrench.SetZero();
   law_.Evaluate(work.contact, motion, law_state, &work.wrench);
@@ -415,7 +431,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;
-  memory->offset = at;
+  memory->offset = next;
   return true;
 }
 

@@ -53,6 +53,11 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   struct SettleMemory {
     Eigen::Vector2d offset{0.0, 0.0};
     double along_slope = 0.0;  // d(residual)/ds, N/m; 0 = not known yet
+    // The contact's 2x2 stiffness (-dF/d(offset), N/m) of the last two-dimensional step; zero =
+    // not known yet. The settle leaves the next tick's start one Newton step on it from where it
+    // left the part, so that the sideways push a rotating or advancing contact builds up tick by
+    // tick is taken off as it grows, not in a burst once it passes the tolerance.
+    Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
   };
 
  protected:
