@@ -279,16 +279,28 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
       hi -= kWallProbe;
       r_hi = r_in;
     }
-    const double step = hi - r_hi / wall;
-    if (wall > 0.0 && std::isfinite(step) && step > lo && step < hi) {
+    double step = hi - r_hi / wall;
+    // Where that step lands on the wall again (the wall bends: a second edge of the assembly
+    // space, or a kink of the texture's onset), secants through the last two points on the wall
+    // follow it down; the first landing on the flat side ends them with a tight bracket.
+    double wall_s = hi, wall_r = r_hi;
+    for (int k = 0; k < 4 && wall > 0.0 && std::isfinite(step) && step > lo && step < hi; ++k) {
       const double r = residual(step);
       if (std::abs(r) <= tolerance) {
         *solution = step;
         learn();
         return true;
       }
-      (r < 0.0 ? lo : hi) = step;
-      (r < 0.0 ? r_lo : r_hi) = r;
+      if (r < 0.0) {
+        lo = step;
+        r_lo = r;
+        break;
+      }
+      const double secant = (wall_r - r) / (wall_s - step);
+      wall_s = hi = step;
+      wall_r = r_hi = r;
+      if (!(secant > 0.0)) break;
+      step = hi - r_hi / secant;
     }
   }
   // 60 steps bound the tick's cost.
