@@ -10,7 +10,7 @@ namespace fitfeel {
 // What plane sections leave out of a hub's breathing (n = 0) mode: a thick-walled tube loaded
 // over part of its length carries the load past the loaded part's end by bending along its axis,
 // so it is stiffer there than its Lame sections say (CalculiX: a shaft half way into the paper's
-// hub, 20 mm long with a 5 mm wall, meets 15 % more force than plane sections give;
+// hub, 20 mm long with a 5 mm wall, meets 16 % more force than plane sections give;
 // docs/contact-mechanics.md, section 6).
 //
 // The hub's mean radial displacement w(y) along its bore rows is that of an axisymmetric

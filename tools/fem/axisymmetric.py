@@ -222,6 +222,8 @@ def cylinder_case(run_ccx, shaft_from, shaft_to, plane_strain=False, hub_diamete
         hub_y = merge(stations(shaft_to, inside, 1.8, 1.8),
                       stations(length - shaft_to, max(20, 100 - inside), 1.8, 1.8, shaft_to))
         shaft_parts = [hub_y[hub_y <= shaft_to + 1e-12]]
+        if shaft_from < 0.0:  # and runs on outside the entrance, as a shaft being pressed in does
+            shaft_parts.append(stations(-shaft_from, 16, 1.0, 1.8, shaft_from))
     shaft_y = merge(*shaft_parts)
     inner = Block(lambda y: 0.0, lambda y: a + delta, shaft_y, graded(16, 1.0, 1.6), 1, 1)
     outer = Block(lambda y: a, lambda y: b, hub_y, graded(12, 1.6, 1.0), inner.next_node,
@@ -290,16 +292,17 @@ def cases():
         ("cylinder-plane-strain", lambda r: cylinder_case(r, 0.0, CYL_L, plane_strain=True)),
         ("cylinder-flush", lambda r: cylinder_case(r, 0.0, CYL_L)),
         ("cylinder-through", lambda r: cylinder_case(r, -10.0, CYL_L + 10.0)),
-        ("cylinder-half-engaged", lambda r: cylinder_case(r, 0.0, CYL_L / 2)),
-        ("cylinder-entry-0.5mm", lambda r: cylinder_case(r, 0.0, 0.5)),
-        ("cylinder-entry-1mm", lambda r: cylinder_case(r, 0.0, 1.0)),
-        ("cylinder-entry-2mm", lambda r: cylinder_case(r, 0.0, 2.0)),
-        ("cylinder-quarter-engaged", lambda r: cylinder_case(r, 0.0, CYL_L / 4)),
-        ("cylinder-three-quarters-engaged", lambda r: cylinder_case(r, 0.0, 3 * CYL_L / 4)),
+        # A shaft 20 mm long pressed in part way: the rest of it still outside the entrance.
+        ("cylinder-half-engaged", lambda r: cylinder_case(r, -10.0, 10.0)),
+        ("cylinder-entry-0.5mm", lambda r: cylinder_case(r, -19.5, 0.5)),
+        ("cylinder-entry-1mm", lambda r: cylinder_case(r, -19.0, 1.0)),
+        ("cylinder-entry-2mm", lambda r: cylinder_case(r, -18.0, 2.0)),
+        ("cylinder-quarter-engaged", lambda r: cylinder_case(r, -15.0, 5.0)),
+        ("cylinder-three-quarters-engaged", lambda r: cylinder_case(r, -5.0, 15.0)),
         ("cylinder-thin-hub-half-engaged",
-         lambda r: cylinder_case(r, 0.0, CYL_L / 2, hub_diameter=24.0)),
+         lambda r: cylinder_case(r, -10.0, 10.0, hub_diameter=24.0)),
         ("cylinder-thick-hub-half-engaged",
-         lambda r: cylinder_case(r, 0.0, CYL_L / 2, hub_diameter=40.0)),
+         lambda r: cylinder_case(r, -10.0, 10.0, hub_diameter=40.0)),
         ("taper", taper_case),
         ("ball-solid", lambda r: ball_case(r, bore=False)),
         ("ball-bore", lambda r: ball_case(r, bore=True)),
