@@ -3,13 +3,12 @@
 // interference a * C / 2 (diametral a * C) over the hole's whole length.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
-#include <string>
 
 #include <gtest/gtest.h>
 
 #include "framework/core/wrench.h"
+#include "framework/testing/fem_data.h"
 #include "surfaces/conical/conical_contact_analyzer.h"
 #include "surfaces/conical/conical_discretizer.h"
 #include "surfaces/conical/conical_generator.h"
@@ -145,13 +144,7 @@ TEST(ConicalPressFit, ReportsTheLameCoefficientOfItsForcesForPressureMaps) {
 // diameter carries it within 10 % (-1.4 %; the FEM's pin runs on 20 mm beyond the hole's
 // entrance, which stiffens the joint there).
 TEST(ConicalPressFit, AgreesWithCalculixWithinTenPercent) {
-  std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/axisymmetric.csv");
-  ASSERT_TRUE(in) << "tools/fem/data/axisymmetric.csv";
-  double fem = std::numeric_limits<double>::quiet_NaN();
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("taper,", 0) == 0) fem = std::stod(line.substr(6));
-  }
-  ASSERT_TRUE(std::isfinite(fem)) << "no taper case in tools/fem/data/axisymmetric.csv";
+  const double fem = test_support::AxisymmetricFemForce("taper");
   PressFitModel model;
   Prepare(&model, test::Pin(), test::Hole(), Resolution{40, 36});
   MatingPose pose;

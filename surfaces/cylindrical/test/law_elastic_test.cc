@@ -2,7 +2,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -10,6 +9,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/harmonic_compliance.h"
+#include "framework/testing/fem_data.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/elastic_options.h"
@@ -277,17 +277,9 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
   if (table) std::fclose(table);
 }
 
-// tools/fem/data/axisymmetric.csv: CalculiX in axisymmetry, the paper's pair (shaft 20 mm in a
-// hub 20 mm long, outer diameter 30 mm, steel) with a uniform radial interference of 5 um, no
-// texture, frictionless; the normal force B of each case.
-double AxisymmetricFem(const std::string& name) {
-  std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/axisymmetric.csv");
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind(name + ",", 0) == 0) return std::stod(line.substr(name.size() + 1));
-  }
-  ADD_FAILURE() << "no case " << name << " in tools/fem/data/axisymmetric.csv";
-  return std::numeric_limits<double>::quiet_NaN();
-}
+// tools/fem/data/axisymmetric.csv (AxisymmetricFemForce): CalculiX in axisymmetry, the paper's
+// pair (shaft 20 mm in a hub 20 mm long, outer diameter 30 mm, steel) with a uniform radial
+// interference of 5 um, no texture, frictionless; the normal force B of each case.
 
 // The accuracy chart's rows of the axisymmetric cases (docs/figures/regenerate.sh sets the
 // variable and writes the header): case, FEM, elastic model, its error, plane sections (the paper
@@ -329,20 +321,19 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
   struct Case {
     const char* name;
     double shaft_length, depth;
-    const char* options;
+    const char* options;        // the model's
+    const char* plane_options;  // the same without the axial coupling
   };
-  for (const Case& c :
-       {Case{"cylinder-plane-strain", 0.020, 0.020, "{section: plane_strain}"},
-        Case{"cylinder-flush", 0.020, 0.020, "{}"}, Case{"cylinder-through", 0.040, 0.030, "{}"}}) {
-    const double fem = AxisymmetricFem(c.name);
+  for (const Case& c : {Case{"cylinder-plane-strain", 0.020, 0.020, "{section: plane_strain}",
+                             "{section: plane_strain, axial_coupling: false}"},
+                        Case{"cylinder-flush", 0.020, 0.020, "{}", "{axial_coupling: false}"},
+                        Case{"cylinder-through", 0.040, 0.030, "{}", "{axial_coupling: false}"}}) {
+    const double fem = test_support::AxisymmetricFemForce(c.name);
     const double model = UniformNormalForce(c.shaft_length, c.depth, c.options);
     std::printf("%-22s FEM %8.1f N  elastic model %8.1f N  %+.2f %%\n", c.name, fem, model,
                 100 * (model / fem - 1));
     EXPECT_LT(std::abs(model / fem - 1.0), 0.10) << c.name;
-    const std::string plane = std::string(c.options).substr(0, std::string(c.options).size() - 1) +
-                              (std::string(c.options) == "{}" ? "" : ", ") +
-                              "axial_coupling: false}";
-    EXPECT_NEAR(UniformNormalForce(c.shaft_length, c.depth, plane), model, 1e-6 * model);
+    EXPECT_NEAR(UniformNormalForce(c.shaft_length, c.depth, c.plane_options), model, 1e-6 * model);
     ChartRow(c.name, fem, model, model);
   }
 }
@@ -357,7 +348,7 @@ struct PartlyEngaged {
 };
 
 void ExpectWithinOfCalculix(const PartlyEngaged& c, double tolerance) {
-  const double fem = AxisymmetricFem(c.name);
+  const double fem = test_support::AxisymmetricFemForce(c.name);
   const double coupled = UniformNormalForce(0.020, c.depth, "{}", c.hub_diameter);
   const double plane =
       UniformNormalForce(0.020, c.depth, "{axial_coupling: false}", c.hub_diameter);

@@ -3,14 +3,13 @@
 // uniform interference, and the friction torque against its integral.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
-#include <string>
 
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
 #include "framework/core/wrench.h"
+#include "framework/testing/fem_data.h"
 #include "surfaces/spherical/spherical_contact_analyzer.h"
 #include "surfaces/spherical/spherical_discretizer.h"
 #include "surfaces/spherical/spherical_generator.h"
@@ -368,20 +367,11 @@ TEST(KnuckleBearing, BandCoefficientOfGe20EWithAndWithoutTheInnerRingsBore) {
   EXPECT_THROW(BandPressurePerInterference(29e-3, 12e-3, 35e-3, 27e-3, steel, steel), UserError);
 }
 
-// tools/fem/data/axisymmetric.csv: CalculiX, GE 20 E in axisymmetry (the ball's 16 mm band in the
-// ring's 12 mm one, 1 um radial interference), its bursting force B = integral of p n_r dA. The
-// model's pressure is P_band * delta on every socket cell, so its B is the normal force from the
-// analyzer and law times rho / a (n_r = cos(latitude), rho the band's mean axis distance).
-double FemBurstingForce(const std::string& name) {
-  std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/axisymmetric.csv");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind(name + ",", 0) == 0) return std::stod(line.substr(name.size() + 1));
-  }
-  ADD_FAILURE() << "no case " << name << " in tools/fem/data/axisymmetric.csv";
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
+// tools/fem/data/axisymmetric.csv (AxisymmetricFemForce): CalculiX, GE 20 E in axisymmetry (the
+// ball's 16 mm band in the ring's 12 mm one, 1 um radial interference), its bursting force B =
+// integral of p n_r dA. The model's pressure is P_band * delta on every socket cell, so its B is
+// the normal force from the analyzer and law times rho / a (n_r = cos(latitude), rho the band's
+// mean axis distance).
 TEST(KnuckleBearing, RingBandAgreesWithCalculixWithinTenPercent) {
   for (const double bore : {0.0, 20e-3}) {
     PartSpec ball = test::Ball(16e-3), socket = test::Socket(12e-3, 35e-3);
@@ -395,7 +385,7 @@ TEST(KnuckleBearing, RingBandAgreesWithCalculixWithinTenPercent) {
     const double normal = model.law.pressure_per_interference() * contact.interference_volume;
     const double a = 14.5e-3, rho = GeometryOf(socket).mean_axis_distance();
     const double model_b = normal * rho / a;
-    const double fem = FemBurstingForce(bore > 0.0 ? "ball-bore" : "ball-solid");
+    const double fem = test_support::AxisymmetricFemForce(bore > 0.0 ? "ball-bore" : "ball-solid");
     // The equator's Lame ring, what the law used before the band's slices.
     const double equator = RingPressurePerInterference(29e-3, 35e-3, test::Steel(), test::Steel()) *
                            contact.interference_volume * rho / a;
