@@ -59,6 +59,29 @@ double IllinoisRoot(const Residual& f, double lo, double hi, double f_lo, double
   return x;
 }
 
+// The Newton step of a 2x2 contact stiffness k (-dF/d(offset), symmetrised) against the
+// unbalanced force `residual`, one term per eigen-direction that has stiffness (an eigenvalue
+// above 1e-6 of the largest; zero for a direction without, which `free` receives, zero if none).
+// False, with nothing written, when nothing holds the part (no positive finite eigenvalue).
+bool StiffNewtonTerms(const Eigen::Matrix2d& k, const Eigen::Vector2d& residual,
+                      Eigen::Vector2d term[2], Eigen::Vector2d* free) noexcept {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(0.5 * (k + k.transpose()));
+  const double largest = eig.eigenvalues().maxCoeff();
+  if (!(largest > 0.0) || !std::isfinite(largest)) return false;
+  free->setZero();
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Vector2d v = eig.eigenvectors().col(i);
+    const double lambda = eig.eigenvalues()[i];
+    term[i].setZero();
+    if (lambda > 1e-6 * largest) {
+      term[i] = (v.dot(residual) / lambda) * v;
+    } else {
+      *free = v;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law)
@@ -378,19 +401,9 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     basis.col(1) = across;
     const Eigen::Matrix2d k = -d * basis.transpose();  // stiffness, -d(force)/d(offset)
     memory->stiffness = k;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(0.5 * (k + k.transpose()));
-    const double largest = eig.eigenvalues().maxCoeff();
-    if (!(largest > 0.0) || !std::isfinite(largest)) break;  // nothing holds: the sweeps
-    Eigen::Vector2d move(0.0, 0.0), free(0.0, 0.0);
-    for (int i = 0; i < 2; ++i) {
-      const Eigen::Vector2d v = eig.eigenvectors().col(i);
-      const double lambda = eig.eigenvalues()[i];
-      if (lambda > 1e-6 * largest) {
-        move += (v.dot(residual) / lambda) * v;
-      } else {
-        free = v;
-      }
-    }
+    Eigen::Vector2d term[2], free;
+    if (!StiffNewtonTerms(k, residual, term, &free)) break;  // nothing holds: the sweeps
+    const Eigen::Vector2d move = term[0] + term[1];
     at += move;
     const double slide = free.dot(residual);
     if (free.squaredNorm() > 0.0 && std::abs(slide) > along_tolerance) {
@@ -425,16 +438,10 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   if (memory->stiffness != Eigen::Matrix2d::Zero()) {
     const Eigen::Vector2d left =
         Eigen::Vector2d(work.wrench.force.x(), work.wrench.force.z()) + load;
-    const Eigen::Matrix2d k = 0.5 * (memory->stiffness + memory->stiffness.transpose());
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(k);
-    const double largest = eig.eigenvalues().maxCoeff();
-    if (largest > 0.0 && std::isfinite(largest)) {
-      for (int i = 0; i < 2; ++i) {
-        const double lambda = eig.eigenvalues()[i];
-        if (lambda > 1e-6 * largest) {
-          next += (eig.eigenvectors().col(i).dot(left) / lambda) * eig.eigenvectors().col(i);
-        }
-      }
+    Eigen::Vector2d term[2], free;
+    if (StiffNewtonTerms(memory->stiffness, left, term, &free)) {
+      next += term[0];
+      next += term[1];
     }
   }
   work.wrench.SetZero();
