@@ -125,9 +125,10 @@ def write_block(f, block, elset):
         f.write(f"{eid}, " + ", ".join(str(v) for v in n) + "\n")
 
 
-def hoop_integral(dat, block, elset_first, areas):
-    """2 pi * integral of sigma_theta over the block's meridian section, from the integration
-    point stresses of *EL PRINT (the mean of a CAX8R's points times its area)."""
+def hoop_integral(dat, elset, areas):
+    """2 pi * integral of sigma_theta over the meridian section of the elements in `areas` (the
+    elset's), from the integration point stresses of *EL PRINT (the mean of a CAX8R's points
+    times its area)."""
     stresses = {}
     for line in dat.splitlines():
         parts = line.split()
@@ -142,7 +143,7 @@ def hoop_integral(dat, block, elset_first, areas):
             stresses.setdefault(eid, []).append(vals[2])  # szz: the hoop component
     missing = set(areas) - set(stresses)
     if missing:
-        raise RuntimeError(f"no stresses printed for {len(missing)} elements of {elset_first}")
+        raise RuntimeError(f"no stresses printed for {len(missing)} elements of {elset}")
     return 2.0 * math.pi * sum(float(np.mean(stresses[e])) * areas[e] for e in areas)
 
 
@@ -188,8 +189,8 @@ def run_pair(run_ccx, inner, outer, holds, name):
     deck = pair_deck(inner, outer, holds, f"fitfeel axisymmetric case {name}")
     with tempfile.TemporaryDirectory() as work:
         dat = run_ccx(deck, work, "axisym")
-    b_outer = hoop_integral(dat, outer, "OUTER", outer.areas())
-    b_inner = -hoop_integral(dat, inner, "INNER", inner.areas())
+    b_outer = hoop_integral(dat, "OUTER", outer.areas())
+    b_inner = -hoop_integral(dat, "INNER", inner.areas())
     return b_outer, b_inner
 
 
@@ -280,14 +281,12 @@ def ball_case(run_ccx, bore):
     inner_hold = inner.nodes_where(lambda x, y: abs(y + BALL_B / 2) < 1e-12)[0]
     outer_hold = outer.nodes_where(lambda x, y: abs(x - RING_D / 2) < 1e-12 and
                                    abs(y + RING_C / 2) < 1e-12)[0]
-    holds = [(n, 1) for n in inner.nodes_where(lambda x, y: x == 0.0)]
-    holds += [(inner_hold, 2), (outer_hold, 2)]
-    return run_pair(run_ccx, inner, outer, holds, "ball")
+    return run_pair(run_ccx, inner, outer, holds_for(inner, outer, inner_hold, outer_hold), "ball")
 
 
 def cases():
-    """(name, what the C++ test builds, callable(run_ccx) -> (B from the outer part, from the
-    inner part)). Geometry in the name's row of the CSV, mm and um."""
+    """(name, callable(run_ccx) -> (B from the outer part, from the inner part)); the C++ tests
+    build the same geometry from the name (docs/contact-mechanics.md, section 6)."""
     return [
         ("cylinder-plane-strain", lambda r: cylinder_case(r, 0.0, CYL_L, plane_strain=True)),
         ("cylinder-flush", lambda r: cylinder_case(r, 0.0, CYL_L)),
