@@ -579,12 +579,14 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
   // Start from the shifts the rows settled at one depth step earlier (the engaged pattern has
   // moved by a step: most rows' shifts barely change); rows without one start unshifted.
   c.row_shift.resize(rows, 0.0);
-  if (!coupling_.empty()) {
+  // Moves every section's gaps by its bore row's entry of `by_row` (the breathing mode: uniform).
+  auto shift_gaps = [&](const auto& by_row) {
     for (std::size_t s = 0; s < sections.size(); ++s) {
-      const double x = c.row_shift[static_cast<std::size_t>(bore_row[s])];
+      const double x = by_row[bore_row[s]];
       for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += x;
     }
-  }
+  };
+  if (!coupling_.empty()) shift_gaps(c.row_shift);
   RigidContactResult r = solver->Solve(sections, freedom_, warm);
   if (coupling_.empty() || sections.empty()) return r;
   c.row_pressure.resize(rows);
@@ -658,10 +660,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     c.step =
         c.system.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(c.row_target.data(), m) -
                                       Eigen::Map<const Eigen::VectorXd>(c.row_shift.data(), m));
-    for (std::size_t s = 0; s < sections.size(); ++s) {
-      const double dx = c.step[bore_row[s]];
-      for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += dx;
-    }
+    shift_gaps(c.step);
     for (std::size_t i = 0; i < rows; ++i) c.row_shift[i] += c.step[static_cast<Eigen::Index>(i)];
     // In contact all round the step is exact (a uniform gap change is the breathing mode alone,
     // P0 per unit, with no net force): the pressures move by -P0 dx without a solve, unless one
