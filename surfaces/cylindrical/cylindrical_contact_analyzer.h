@@ -118,7 +118,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
     std::vector<double> chunk_h;  // per step of the chunk: the smallest gap of each column
-    std::vector<RowPair> pairs;
+    std::vector<RowPair> pairs, sorted_pairs;
+    std::vector<std::size_t> bucket;
     std::vector<double> st, w, col_a, col_b, proj, elastic_gap;
     std::vector<ContactSection> sections;
     std::vector<int> section_row;
