@@ -123,13 +123,10 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
     FollowDevice(motion, state, out);
     return;
   }
-  analyzer_.Evaluate(out->pose, &out->contact);
   out->wrench.SetZero();
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
-  // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
-  // later re-entry forms its contact afresh rather than at a stale anchor.
-  if (!out->contact.engaged) run->law = LawState{};
-  if (settle) law_.Evaluate(out->contact, motion, &out->wrench);  // the search's start
+  // The settle starts where the last one left the part, not at the device's pose: the contact
+  // there is evaluated only when nothing carries the load.
   if (settle && Settle(device.load, motion, &run->settle, &run->law, out)) {
     // Settled: nothing integrates the part's radial motion, so neither stiffness nor gap is needed.
     out->stiffness = 0.0;
@@ -137,7 +134,10 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
     out->gap_direction.setZero();
     return;
   }
-  out->wrench.SetZero();
+  analyzer_.Evaluate(out->pose, &out->contact);
+  // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
+  // later re-entry forms its contact afresh rather than at a stale anchor.
+  if (!out->contact.engaged) run->law = LawState{};
   law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
   out->elastic = law_.CheckElasticLimit(out->contact);
   out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
@@ -340,6 +340,8 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   const Eigen::Vector2d down = load / weight;
   const Eigen::Vector2d across(-down.y(), down.x());
   StageOutput work = *out;
+  // Nothing evaluated yet: no offset equals NaN, so the first probe anywhere evaluates.
+  work.pose.offset.setConstant(std::numeric_limits<double>::quiet_NaN());
   // The part floats in both directions across the axis, as a shaft pressed by a compliant
   // gripper does: it sinks along the load until the contact carries it, then slides sideways to
   // where the contact pushes it no further (towards the assembly space's lowest corner, or the
@@ -445,6 +447,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     }
   }
   work.wrench.SetZero();
+  if (!work.contact.engaged) *law_state = LawState{};  // as DoEvaluate does unsettled
   law_.Evaluate(work.contact, motion, law_state, &work.wrench);
   out->elastic = law_.CheckElasticLimit(work.contact);
   out->pose = work.pose;
