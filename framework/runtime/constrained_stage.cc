@@ -357,6 +357,14 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // Along the load the first probe is a Newton step from the last settle's slope.
   double* const along = &memory->along_slope;
   Eigen::Vector2d at = memory->offset;
+  // Along the path by this tick's advance, where it continues the last one (the same direction,
+  // at most four times as far: a robot's constant feed, a hand's smooth push); NaN before the
+  // first settle compares false.
+  const double advance = motion.depth - memory->depth;
+  if (memory->smooth && advance * memory->depth_change > 0.0 &&
+      std::abs(advance) <= 4.0 * std::abs(memory->depth_change)) {
+    at += advance * memory->path;
+  }
   double s = 0.0;
   if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
@@ -454,6 +462,14 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->contact = work.contact;
   out->wrench = work.wrench;
   memory->offset = next;
+  if (advance != 0.0 && std::isfinite(advance)) {
+    const Eigen::Vector2d path = (at - memory->root) / advance;
+    memory->smooth = (path - memory->path).norm() <= 0.5 * path.norm();
+    memory->path = path;
+    memory->depth_change = advance;
+  }
+  memory->root = at;
+  memory->depth = motion.depth;
   return true;
 }
 

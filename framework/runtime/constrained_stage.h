@@ -58,6 +58,17 @@ class FITFEEL_API ConstrainedStage final : public Stage {
     // left the part, so that the sideways push a rotating or advancing contact builds up tick by
     // tick is taken off as it grows, not in a burst once it passes the tolerance.
     Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
+    // The balance is a path over depth (a taper's part rides up as the bore narrows, an
+    // interference fit's axis follows the parts' form): where the last root lay and at which
+    // depth, and the path's slope d(root)/d(depth) between the last two roots with the depth
+    // change between them. Where the last two slopes agree (a smooth path, not a clearance fit's
+    // jump from one corner of the assembly space to the next at a table step), the next tick
+    // starts extrapolated along it by its own advance.
+    double depth = std::numeric_limits<double>::quiet_NaN();
+    double depth_change = 0.0;
+    Eigen::Vector2d root{0.0, 0.0};
+    Eigen::Vector2d path{0.0, 0.0};
+    bool smooth = false;
   };
 
  protected:

@@ -1,6 +1,7 @@
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/runtime/constrained_stage.h"
@@ -141,6 +142,56 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_EQ(out.pose.offset, Eigen::Vector2d(0.0, 0.0));
   EXPECT_EQ(out.wrench.force.z(), 0.0);
+}
+
+// A bore narrowing with depth (a taper's clearance, 1 um per mm of depth from 20 um), counting
+// its evaluations: the settled offset follows a straight path over depth.
+class NarrowingAnalyzer final : public ContactAnalyzer {
+ public:
+  static double Clearance(double depth) { return 20e-6 - 1e-3 * depth; }
+  int evaluations() const { return evaluations_; }
+
+ protected:
+  void DoPrepare(const PartSpec&, const SkinModelShape&, const PartSpec&, const SkinModelShape&,
+                 const ModelSettings&) override {}
+  void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override {
+    ++evaluations_;
+    out->engaged = pose.depth > 0.0;
+    out->engaged_length = std::max(0.0, pose.depth);
+    out->offset_distance = pose.offset.norm();
+    out->offset_angle = std::atan2(pose.offset.y(), pose.offset.x());
+    out->assembly_extent = Clearance(pose.depth);
+    out->penetration = std::max(0.0, out->offset_distance - out->assembly_extent);
+  }
+
+ private:
+  mutable int evaluations_ = 0;  // a test's count; the stage only reads the analyzer
+};
+
+TEST(ConstrainedStageTest, SettlingFollowsTheBalancesPathOverDepth) {
+  PreparedScene prepared = Prepare(testing::MakeFakeScene(3));
+  NarrowingAnalyzer analyzer;
+  analyzer.Prepare(PartSpec{}, *prepared.inner_sms, PartSpec{}, *prepared.outer_sms,
+                   ModelSettings{});
+  const ConstrainedStage stage(analyzer, *prepared.law);
+  const std::unique_ptr<StageState> stage_run = stage.MakeState();
+  StageOutput out;
+  // A robot's feed of 10 um per tick with a 2 N load along -z: the part rests on the narrowing
+  // wall, rising 10 nm per tick (far beyond the settle's tolerance of 2e-11 m on this spring).
+  DeviceState s = At(0.0, 5e-3, 0.0);
+  s.load = Eigen::Vector2d(0.0, -2.0);
+  std::vector<int> per_tick;
+  for (int tick = 0; tick < 20; ++tick) {
+    s.position.y() = 5e-3 + 1e-5 * tick;
+    const int before = analyzer.evaluations();
+    stage.Evaluate(s, stage_run.get(), &out);
+    per_tick.push_back(analyzer.evaluations() - before);
+    EXPECT_NEAR(out.pose.offset.y(), -(NarrowingAnalyzer::Clearance(out.pose.depth) + 2.0 / 1e5),
+                3e-11);
+  }
+  // From the third tick on (two roots give the path's slope) the start lands on the balance:
+  // one evaluation, where the last tick's root would need a second (a Newton step).
+  for (std::size_t tick = 3; tick < per_tick.size(); ++tick) EXPECT_EQ(per_tick[tick], 1) << tick;
 }
 
 }  // namespace
