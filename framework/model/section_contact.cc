@@ -13,6 +13,25 @@
 #include "framework/core/least_norm.h"
 
 namespace fitfeel {
+namespace {
+
+// sum = sum over a < count of coeff[a] * column cols[a] (or column a without cols) of the
+// column-major n x n `matrix`: the solver's products with whole contiguous columns. Compiled also
+// for AVX2 and AVX-512, chosen at load time; the same sums in the same order on every path (no
+// contraction into fused multiply-adds: -ffp-contract is off for these clones).
+__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
+AddScaledColumns(double* __restrict sum, const double* __restrict matrix, const int* cols,
+                 const double* __restrict coeff, int count, int n) {
+  for (int j = 0; j < n; ++j) sum[j] = 0.0;
+  for (int a = 0; a < count; ++a) {
+    const double* __restrict column =
+        matrix + static_cast<std::ptrdiff_t>(cols != nullptr ? cols[a] : a) * n;
+    const double c = coeff[a];
+    for (int j = 0; j < n; ++j) sum[j] += c * column[j];
+  }
+}
+
+}  // namespace
 
 CirculantContact::CirculantContact(const std::vector<double>& compliance, int n) : n_(n) {
   if (n < 4 || n % 2 != 0 || compliance.size() != static_cast<std::size_t>(n / 2 + 1)) {
@@ -45,13 +64,13 @@ CirculantContact::CirculantContact(const std::vector<double>& compliance, int n)
     u(j, 1) = sin_[static_cast<std::size_t>(j)];
   }
   g_inv_ = g_.llt().solve(Eigen::MatrixXd::Identity(n, n));
+  inverse_ones_ = g_inv_.rowwise().sum();
   g_inv_u_ = g_inv_ * u;
   full_stiffness_ = u.transpose() * g_inv_u_;
 }
 
 void CirculantContact::InverseTimes(const double* x, double* out) const {
-  Eigen::Map<Eigen::VectorXd>(out, n_).noalias() =
-      g_inv_ * Eigen::Map<const Eigen::VectorXd>(x, n_);
+  AddScaledColumns(out, g_inv_.data(), nullptr, x, n_, n_);
 }
 
 bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
@@ -134,7 +153,7 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   const double tol_w = 1e-12 * scale + 1e-300;
   const double tol_p = tol_w / g_(0, 0);
   int best = n + 1, chances = 3, steps = 0;
-  Eigen::VectorXd w(n);
+  w_.resize(n);
   ws.last_full = false;
   // y = G^-1 delta: the pressures of full contact, and the right-hand side of the dual step.
   if (full == nullptr) {
@@ -167,15 +186,13 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
     ws.dual = k < m;
     if (ws.dual) {
       Refactor(g_inv_, &ws.gaps, &ws.dual_factor, &ws.mark);
-      Eigen::VectorXd z = full_(ws.gaps);
-      ws.dual_factor.cholesky.SolveInPlace(z);
-      for (int c : ws.index) {
-        double s = full_[c];
-        // G^-1 is symmetric: read column c (contiguous) instead of row c.
-        for (int a = 0; a < k; ++a) s -= g_inv_(ws.gaps[static_cast<std::size_t>(a)], c) * z[a];
-        p[c] = s;
-      }
-      for (int a = 0; a < k; ++a) w[ws.gaps[static_cast<std::size_t>(a)]] = -z[a];
+      z_ = full_(ws.gaps);
+      ws.dual_factor.cholesky.SolveInPlace(z_);
+      // H_FN z as whole columns of H (contiguous, vectorised) over all n rows, read on F.
+      sum_.resize(n);
+      AddScaledColumns(sum_.data(), g_inv_.data(), ws.gaps.data(), z_.data(), k, n);
+      for (int c : ws.index) p[c] = full_[c] - sum_[c];
+      for (int a = 0; a < k; ++a) w_[ws.gaps[static_cast<std::size_t>(a)]] = -z_[a];
     } else {
       if (m > 0) {
         Refactor(g_, &ws.index, &ws.primal, &ws.mark);
@@ -183,15 +200,16 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
         ws.primal.cholesky.SolveInPlace(pf);
         for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
       }
-      for (int j : ws.gaps) {
-        double closure = 0.0;
-        for (int a : ws.index) closure += g_(a, j) * p[a];  // symmetric: column j, contiguous
-        w[j] = closure - delta[j];
-      }
+      // G_NF p_F as whole columns of G over all n rows, read on N.
+      coeff_.resize(m);
+      for (int a = 0; a < m; ++a) coeff_[a] = p[ws.index[static_cast<std::size_t>(a)]];
+      sum_.resize(n);
+      AddScaledColumns(sum_.data(), g_.data(), ws.index.data(), coeff_.data(), m, n);
+      for (int j : ws.gaps) w_[j] = sum_[j] - delta[j];
     }
     int infeasible = 0, last = -1;
     for (int j = 0; j < n; ++j) {
-      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w[j] < -tol_w;
+      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w_[j] < -tol_w;
       if (bad) {
         ++infeasible;
         last = j;
@@ -209,7 +227,7 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       continue;
     }
     for (int j = 0; j < n; ++j) {
-      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w[j] < -tol_w;
+      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w_[j] < -tol_w;
       if (bad) f[static_cast<std::size_t>(j)] = !f[static_cast<std::size_t>(j)];
     }
   }
@@ -340,7 +358,8 @@ double RigidSectionContact::DistanceToContact(std::span<const ContactSection> se
 
 RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> sections,
                                               const RigidFreedom& freedom,
-                                              const Eigen::Vector4d& warm) {
+                                              const Eigen::Vector4d& warm,
+                                              std::span<const double> gap_shift) {
   const auto nn = static_cast<std::size_t>(columns());
   Eigen::Vector4d q = warm;
   if (!freedom.tilt) q.tail<2>().setZero();
@@ -356,8 +375,21 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
       active_[s][j] = w[j] && interferes;
     }
   }
-  inverse_gap_.resize(sections.size() * nn);
-  inverse_gap_ready_.assign(sections.size(), 0);
+  if (!gap_shift.empty() && gap_shift.size() == sections.size() &&
+      inverse_gap_ready_.size() == sections.size()) {
+    // The same sections with every gap of section s grown by gap_shift[s]: G^-1 is linear, so
+    // the products known from the last Solve move by gap_shift[s] G^-1 1 (O(n), not O(n^2)).
+    const Eigen::VectorXd& ones = contact_.inverse_ones();
+    for (std::size_t s = 0; s < sections.size(); ++s) {
+      if (!inverse_gap_ready_[s]) continue;
+      double* out = inverse_gap_.data() + s * nn;
+      for (std::size_t j = 0; j < nn; ++j)
+        out[j] += gap_shift[s] * ones[static_cast<Eigen::Index>(j)];
+    }
+  } else {
+    inverse_gap_.resize(sections.size() * nn);
+    inverse_gap_ready_.assign(sections.size(), 0);
+  }
   factors_.resize(sections.size());
   for (CirculantContact::Factorization& f : factors_) f.Invalidate();
   double length = 0.0;

@@ -61,6 +61,8 @@ class FITFEEL_API CirculantContact {
                  std::vector<char>* active, Factorization* workspace = nullptr);
   // out = G^-1 x (n values each).
   void InverseTimes(const double* x, double* out) const;
+  // G^-1 1: what a uniform unit gap adds to InverseTimes (the breathing mode alone).
+  const Eigen::VectorXd& inverse_ones() const { return inverse_ones_; }
   // After Solve: d(sum_j p_j u_j)/d(offset), the section's 2x2 radial contact stiffness per unit
   // cell area (Pa/m), for the rigid-body Newton step.
   Eigen::Matrix2d OffsetStiffness() const;
@@ -78,9 +80,11 @@ class FITFEEL_API CirculantContact {
   // fit), with a constant offset stiffness.
   Eigen::MatrixXd g_inv_;
   Eigen::MatrixX2d g_inv_u_;  // G^-1 U
+  Eigen::VectorXd inverse_ones_;
   Eigen::Matrix2d full_stiffness_;
   Eigen::VectorXd full_;
-  Factorization own_;  // without a caller's workspace
+  Eigen::VectorXd w_, z_, sum_, coeff_;  // Solve's scratch: closures, dual unknowns, products
+  Factorization own_;                    // without a caller's workspace
   // The last solve's workspace, for OffsetStiffness; null: own_. A copy of this object made
   // between a solve and its OffsetStiffness would point at the original's; nobody does that.
   const Factorization* last_ = nullptr;
@@ -143,8 +147,11 @@ class FITFEEL_API RigidSectionContact {
   bool ShiftFullContact(std::span<const ContactSection> sections, std::span<const double> dp,
                         RigidContactResult* result);
 
+  // `gap_shift`, when given (one value per section): the sections are the last Solve's with every
+  // gap of section s grown since by gap_shift[s] (the caller's axial coupling), so that the
+  // products of the gaps it keeps are updated instead of computed anew.
   RigidContactResult Solve(std::span<const ContactSection> sections, const RigidFreedom& freedom,
-                           const Eigen::Vector4d& warm);
+                           const Eigen::Vector4d& warm, std::span<const double> gap_shift = {});
 
  private:
   // Potential, gradient and Hessian at q; leaves every section's pressures and contact set at q.

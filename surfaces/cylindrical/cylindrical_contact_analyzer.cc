@@ -716,7 +716,9 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     }
     Eigen::Vector4d from;
     from << r.offset, r.tilt;
-    r = solver->Solve(sections, freedom_, from);
+    c.section_shift.resize(sections.size());
+    for (std::size_t s = 0; s < sections.size(); ++s) c.section_shift[s] = c.step[bore_row[s]];
+    r = solver->Solve(sections, freedom_, from, c.section_shift);
   }
   // What the next depth step starts from: this step's shifts where sections lay, none elsewhere.
   std::fill(c.row_target.begin(), c.row_target.end(), 0.0);

@@ -101,7 +101,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // and the breathing stiffness the update assumes; per section the contact set to restart from.
   struct CouplingScratch {
     std::vector<double> row_pressure, row_previous, row_shift, row_target, row_stiffness, row_full,
-        section_dp;
+        section_dp, section_shift;
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd system;
     Eigen::VectorXd step;
