@@ -196,7 +196,12 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   // Newton steps) and widening eightfold up to 1 mm: beyond every fit's clearance and
   // interference (ISO 286 limits of parts up to 500 mm stay below 1 mm) and within every bore
   // this framework models.
-  const double r0 = residual(0.0);
+  // Where the last probe was (a settle's next search from its last root), its numbers stand.
+  const double r0 =
+      work->pose.offset == origin
+          ? -Eigen::Vector2d(work->wrench.force.x(), work->wrench.force.z()).dot(axis) - target
+          : residual(0.0);
+  last_r[1] = r0;  // as if evaluated: the secants start from it
   if (std::abs(r0) <= tolerance) {
     *solution = 0.0;
     return true;
@@ -525,6 +530,8 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
         edge = next;
         if (settled) break;
       }
+      // Those evaluations took the contact only, not the law's push: no probe to reuse.
+      work.pose.offset.setConstant(std::numeric_limits<double>::quiet_NaN());
       const Eigen::Vector2d way = held - edge;
       const double reach = way.norm();
       if (!(reach > 0.0) || !std::isfinite(reach)) return held;
