@@ -408,14 +408,22 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     // 10 pm: far inside the nanometre penetrations a load of newtons makes against kN/um walls,
     // far above rounding (k h ~ 1e-2 N against forces of 1 N).
     constexpr double kProbe = 1e-11;
-    Eigen::Matrix2d d;  // d(force)/d(along, across)
-    d.col(0) = (force_at(at + kProbe * down) + load - residual) / kProbe;
-    d.col(1) = (force_at(at + kProbe * across) + load - residual) / kProbe;
-    Eigen::Matrix2d basis;
-    basis.col(0) = down;
-    basis.col(1) = across;
-    const Eigen::Matrix2d k = -d * basis.transpose();  // stiffness, -d(force)/d(offset)
-    memory->stiffness = k;
+    Eigen::Matrix2d k = memory->stiffness;  // stiffness, -d(force)/d(offset)
+    // The first step on the last tick's stiffness where the parts interfere and it holds the
+    // part in both directions (a press fit: it changes little from tick to tick); by differences
+    // in clearance (the part rests on one wall or in a corner of the assembly space, and which
+    // changes from tick to tick), where a direction is nearly free, and on later steps.
+    const double det = k.determinant(), trace = k.trace();
+    if (step > 0 || !work.contact.interference || !(trace > 0.0) || !(det > 1e-2 * trace * trace)) {
+      Eigen::Matrix2d d;  // d(force)/d(along, across)
+      d.col(0) = (force_at(at + kProbe * down) + load - residual) / kProbe;
+      d.col(1) = (force_at(at + kProbe * across) + load - residual) / kProbe;
+      Eigen::Matrix2d basis;
+      basis.col(0) = down;
+      basis.col(1) = across;
+      k = -d * basis.transpose();
+      memory->stiffness = k;
+    }
     Eigen::Vector2d term[2], free;
     if (!StiffNewtonTerms(k, residual, term, &free)) break;  // nothing holds: the sweeps
     const Eigen::Vector2d move = term[0] + term[1];
