@@ -29,6 +29,9 @@ struct ConstrainedState final : StageState {
   // The same for the step back out of the wall along the push (where the push exceeds the pull).
   double back_slope = 0.0;
   double back_root = std::numeric_limits<double>::quiet_NaN();
+  // On an assembly space's edge: the slope of the last balance on the line from the edge to the
+  // device (the wall's stiffness along it plus the spring's, N/m; 0 = not known yet).
+  double line_slope = 0.0;
 };
 
 // Illinois false position on a bracket [lo, hi] whose residuals f_lo and f_hi have opposite
@@ -561,9 +564,12 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       const Eigen::Vector2d into = way / reach;
       const double tolerance = std::max(1e-4, 1e-6 * k * reach);
       double s = 0.0;
-      // (No memory here: the edge moves with the device and the root with it, so neither the last
-      // root nor its slope is a better start than the bracket from the edge; measured.)
-      if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k)) return edge;
+      // The root lies nanometres into the wall from the edge, where the wall's stiffness along
+      // the line changes little from tick to tick: a Newton step on the last balance's slope
+      // lands on it (the last root itself is no start: the edge moves with the device).
+      if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k, &run->line_slope)) {
+        return edge;
+      }
       // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
       // the part has barely entered (it blends the free entrance with the first row's space).
       part = edge + std::min(s, reach) * into;
