@@ -5,16 +5,18 @@
 
 #include <Eigen/Cholesky>
 
+#include "framework/core/simd_clones.h"
+
 namespace fitfeel {
 namespace {
 
 // b0, b1 <- L^-1 b0, L^-1 b1 for the leading m x m block of the lower-triangular, column-major l
-// (leading dimension ld): the section solver's most frequent product. Compiled also for AVX2
-// and AVX-512, chosen at load time; the same operations in the same order on every path (a
-// product, then a difference: no fused multiply-adds).
-__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
-ForwardSubstituteTwo(const double* __restrict l, Eigen::Index ld, Eigen::Index m,
-                     double* __restrict b0, double* __restrict b1) {
+// (leading dimension ld): the section solver's most frequent product, compiled also for AVX2 and
+// AVX-512 (framework/core/simd_clones.h).
+FITFEEL_SIMD_CLONES void ForwardSubstituteTwo(const double* __restrict l, Eigen::Index ld,
+                                              Eigen::Index m, double* __restrict b0,
+                                              double* __restrict b1) {
+  FITFEEL_NO_FP_CONTRACT
   for (Eigen::Index j = 0; j < m; ++j) {
     const double* __restrict column = l + j * ld;
     const double x0 = b0[j] / column[j];
@@ -31,9 +33,9 @@ ForwardSubstituteTwo(const double* __restrict l, Eigen::Index ld, Eigen::Index m
 // x <- (L L^T)^-1 x for the same block of l: L y = x column by column, then L^T x = y row by row
 // of L^T (a column of L, contiguous), each row's sum kept in eight fixed lanes combined in a fixed
 // order, so that every instruction set's vectors add the same numbers in the same order.
-__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
-SolveLowerThenTransposed(const double* __restrict l, Eigen::Index ld, Eigen::Index m,
-                         double* __restrict x) {
+FITFEEL_SIMD_CLONES void SolveLowerThenTransposed(const double* __restrict l, Eigen::Index ld,
+                                                  Eigen::Index m, double* __restrict x) {
+  FITFEEL_NO_FP_CONTRACT
   for (Eigen::Index j = 0; j < m; ++j) {
     const double* __restrict column = l + j * ld;
     const double y = x[j] / column[j];

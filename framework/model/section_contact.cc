@@ -11,17 +11,18 @@
 
 #include "framework/core/error.h"
 #include "framework/core/least_norm.h"
+#include "framework/core/simd_clones.h"
 
 namespace fitfeel {
 namespace {
 
 // sum = sum over a < count of coeff[a] * column cols[a] (or column a without cols) of the
-// column-major n x n `matrix`: the solver's products with whole contiguous columns. Compiled also
-// for AVX2 and AVX-512, chosen at load time; the same sums in the same order on every path (no
-// contraction into fused multiply-adds: -ffp-contract is off for these clones).
-__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off"))) void
-AddScaledColumns(double* __restrict sum, const double* __restrict matrix, const int* cols,
-                 const double* __restrict coeff, int count, int n) {
+// column-major n x n `matrix`: the solver's products with whole contiguous columns, compiled
+// also for AVX2 and AVX-512 (framework/core/simd_clones.h; each sum[j] adds in the order of a).
+FITFEEL_SIMD_CLONES void AddScaledColumns(double* __restrict sum, const double* __restrict matrix,
+                                          const int* cols, const double* __restrict coeff,
+                                          int count, int n) {
+  FITFEEL_NO_FP_CONTRACT
   for (int j = 0; j < n; ++j) sum[j] = 0.0;
   for (int a = 0; a < count; ++a) {
     const double* __restrict column =

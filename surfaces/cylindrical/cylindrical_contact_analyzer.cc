@@ -13,6 +13,7 @@
 #include "framework/core/error.h"
 #include "framework/core/number_text.h"
 #include "framework/core/parallel.h"
+#include "framework/core/simd_clones.h"
 #include "framework/model/convex_polygon.h"
 #include "framework/model/grid_rows.h"
 #include "framework/model/section_contact.h"
@@ -37,20 +38,21 @@ constexpr std::size_t kChunkSteps = 32;
 constexpr std::size_t kMinimaBlock = 8;
 
 // h = min(h, vb - vs + smoothing) over n columns: ChunkMinima's inner loop, most of a fine grid's
-// prepare. Compiled also for AVX2 and chosen at load time by the processor (the baseline x86-64
-// has two doubles per instruction, AVX2 four); the result is the same bit for bit (a difference
-// and a minimum, no contraction).
-__attribute__((target_clones("avx512f", "avx2", "default"))) void MinOfDifference(
-    double* __restrict h, const double* __restrict vb, const double* __restrict vs,
-    double smoothing, std::size_t n) {
+// prepare, compiled also for AVX2 and AVX-512 (framework/core/simd_clones.h: the baseline
+// x86-64 has two doubles per instruction, AVX2 four, AVX-512 eight).
+FITFEEL_SIMD_CLONES void MinOfDifference(double* __restrict h, const double* __restrict vb,
+                                         const double* __restrict vs, double smoothing,
+                                         std::size_t n) {
+  FITFEEL_NO_FP_CONTRACT
   for (std::size_t j = 0; j < n; ++j) h[j] = std::min(h[j], vb[j] - vs[j] + smoothing);
 }
 
 // The same for two bore rows facing one shaft row at one step (the common case: bore rows are
 // shorter than the shaft's, or straddle a boundary): h is read and written once for both.
-__attribute__((target_clones("avx512f", "avx2", "default"))) void MinOfDifference2(
-    double* __restrict h, const double* __restrict vb0, const double* __restrict vb1,
-    const double* __restrict vs, double smoothing, std::size_t n) {
+FITFEEL_SIMD_CLONES void MinOfDifference2(double* __restrict h, const double* __restrict vb0,
+                                          const double* __restrict vb1, const double* __restrict vs,
+                                          double smoothing, std::size_t n) {
+  FITFEEL_NO_FP_CONTRACT
   for (std::size_t j = 0; j < n; ++j) {
     h[j] = std::min(h[j], std::min(vb0[j] - vs[j] + smoothing, vb1[j] - vs[j] + smoothing));
   }

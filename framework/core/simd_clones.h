@@ -1,0 +1,20 @@
+#pragma once
+
+// Prepare-time loops compiled for the baseline x86-64 and again for AVX2 and AVX-512, the widest
+// the processor has chosen at load time (the compilers' target_clones; elsewhere one plain
+// function). Every clone must give the same numbers bit for bit, or a scene would render
+// differently on another machine: no contraction of a product and a sum into a fused
+// multiply-add (AVX-512 has them, the baseline has not), and no reduction whose order depends
+// on the vector width (write sums in fixed lanes). GCC takes the first through the attribute,
+// Clang through FITFEEL_NO_FP_CONTRACT, which opens the body of every such function.
+#if defined(__x86_64__) && defined(__clang__)
+#define FITFEEL_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#define FITFEEL_NO_FP_CONTRACT _Pragma("clang fp contract(off)")
+#elif defined(__x86_64__) && defined(__GNUC__)
+#define FITFEEL_SIMD_CLONES \
+  __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
+#define FITFEEL_NO_FP_CONTRACT
+#else
+#define FITFEEL_SIMD_CLONES
+#define FITFEEL_NO_FP_CONTRACT
+#endif
