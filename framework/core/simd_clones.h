@@ -7,7 +7,22 @@
 // multiply-add (AVX-512 has them, the baseline has not), and no reduction whose order depends
 // on the vector width (write sums in fixed lanes). GCC takes the first through the attribute,
 // Clang through FITFEEL_NO_FP_CONTRACT, which opens the body of every such function.
-#if defined(__x86_64__) && defined(__clang__)
+//
+// Not under the sanitizers (their builds check behaviour, not speed): the load-time choice runs
+// before ThreadSanitizer's runtime is up and crashes it.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define FITFEEL_SANITIZED 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define FITFEEL_SANITIZED 1
+#endif
+
+#if defined(FITFEEL_SANITIZED)
+#define FITFEEL_SIMD_CLONES
+#define FITFEEL_NO_FP_CONTRACT
+#elif defined(__x86_64__) && defined(__clang__)
 #define FITFEEL_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #define FITFEEL_NO_FP_CONTRACT _Pragma("clang fp contract(off)")
 #elif defined(__x86_64__) && defined(__GNUC__)
