@@ -71,6 +71,7 @@ void Stage::Evaluate(const DeviceState& device, StageState* state,
                      StageOutput* out) const noexcept {
   FITFEEL_DEMAND(out != nullptr);
   FITFEEL_DEMAND(state != nullptr && state->owner() == this);
+  out->contact_evaluations = 0;
   DoEvaluate(device, state, out);
   out->stage = id();
 }

@@ -36,6 +36,9 @@ struct StageOutput {
   // entry a stage reads the previous tick's: another stage's means a hand-over, whose pose is
   // where the part was, and the moving part continues from there.
   StageId stage = StageId::kPositioning;
+  // The contact analyzer's evaluations this tick (Stage::Evaluate counts from 0): the tick's
+  // cost in its own unit, the same on every machine, where its time is the machine's.
+  int contact_evaluations = 0;
 };
 
 class Stage;

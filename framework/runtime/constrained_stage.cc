@@ -138,12 +138,13 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
     return;
   }
   analyzer_.Evaluate(out->pose, &out->contact);
+  ++out->contact_evaluations;
   // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
   // later re-entry forms its contact afresh rather than at a stale anchor.
   if (!out->contact.engaged) run->law = LawState{};
   law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
   out->elastic = law_.CheckElasticLimit(out->contact);
-  out->stiffness = RadialStiffness(out->pose, motion, out->wrench);
+  out->stiffness = RadialStiffness(out->pose, motion, out->wrench, &out->contact_evaluations);
   SetGap(out);
 }
 
@@ -164,6 +165,7 @@ Eigen::Vector2d ConstrainedStage::ProbeAt(const Eigen::Vector2d& offset, const M
                                           StageOutput* work) const noexcept {
   work->pose.offset = offset;
   analyzer_.Evaluate(work->pose, &work->contact);
+  ++work->contact_evaluations;
   work->wrench.SetZero();
   law_.Evaluate(work->contact, motion, &work->wrench);
   return {work->wrench.force.x(), work->wrench.force.z()};
@@ -382,6 +384,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     at = out->pose.offset;
     double t = 0.0;
     if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) {
+      out->contact_evaluations = work.contact_evaluations;  // what the attempt cost
       return false;
     }
     at += t * across;
@@ -477,6 +480,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   out->pose = work.pose;
   out->contact = work.contact;
   out->wrench = work.wrench;
+  out->contact_evaluations = work.contact_evaluations;
   memory->offset = next;
   if (advance != 0.0 && std::isfinite(advance)) {
     const Eigen::Vector2d path = (at - memory->root) / advance;
@@ -509,6 +513,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
   auto anchor_of = [&](const Eigen::Vector2d& offset) {
     work.pose.offset = offset;
     analyzer_.Evaluate(work.pose, &work.contact);
+    ++work.contact_evaluations;
     return Eigen::Vector2d(offset - work.contact.penetration * work.contact.penetration_direction);
   };
   auto across = [&](double depth) {
@@ -614,6 +619,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     work.pose.offset = at;
     motion.depth = depth;
     analyzer_.Evaluate(work.pose, &work.contact);
+    ++work.contact_evaluations;
     LawState probe = run->law;
     if (!work.contact.engaged) probe = LawState{};
     work.wrench.SetZero();
@@ -641,10 +647,12 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
   out->pose.depth = depth;
   motion.depth = depth;
   // The last probe's contact where it was taken at the part's pose (the same numbers).
+  out->contact_evaluations = work.contact_evaluations;
   if (work.pose.offset == at && work.pose.depth == depth && work.pose.angle == out->pose.angle) {
     out->contact = work.contact;
   } else {
     analyzer_.Evaluate(out->pose, &out->contact);
+    ++out->contact_evaluations;
   }
   // Out of engagement (withdrawn) the junctions let go, as in the rigid case.
   if (!out->contact.engaged) run->law = LawState{};
@@ -662,7 +670,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
 }
 
 double ConstrainedStage::RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
-                                         const Wrench& wrench) const noexcept {
+                                         const Wrench& wrench, int* evaluations) const noexcept {
   const Eigen::Vector2d force(wrench.force.x(), wrench.force.z());
   const double magnitude = force.norm();
   if (!(magnitude > 0.0) || !std::isfinite(magnitude)) return 0.0;
@@ -675,6 +683,7 @@ double ConstrainedStage::RadialStiffness(const MatingPose& pose, const MatingMot
   probe.offset += kStep * into;
   ContactState contact;
   analyzer_.Evaluate(probe, &contact);
+  ++*evaluations;
   Wrench deeper;
   law_.Evaluate(contact, motion, &deeper);
   const Eigen::Vector2d deeper_force(deeper.force.x(), deeper.force.z());

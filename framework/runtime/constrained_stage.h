@@ -81,15 +81,16 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   static void SetGap(StageOutput* out) noexcept;
   // -dF/dx of the radial force along its own direction, by a second evaluation 1 nm deeper
   // (exact for the piecewise-linear laws of eqs. 9-12 away from a kink); 0 without contact.
-  double RadialStiffness(const MatingPose& pose, const MatingMotion& motion,
-                         const Wrench& wrench) const noexcept;
+  // Counts its evaluation in `*evaluations`.
+  double RadialStiffness(const MatingPose& pose, const MatingMotion& motion, const Wrench& wrench,
+                         int* evaluations) const noexcept;
 
   // Quasi-static placement (DeviceState::load): finds the offset along the load where the
   // rendered radial force balances it, starting from and updating `*memory` (the previous
   // settled offset and slope), and leaves pose, contact and wrench there, the wrench from the
   // law with the run's `*law_state` (advanced once, at the settled pose). Returns false (outputs,
-  // state and `*memory` untouched) where nothing can carry the load, e.g. before the surfaces
-  // overlap.
+  // state and `*memory` untouched but for the evaluations counted) where nothing can carry the
+  // load, e.g. before the surfaces overlap.
   bool Settle(const Eigen::Vector2d& load, const MatingMotion& motion, SettleMemory* memory,
               LawState* law_state, StageOutput* out) const noexcept;
   // Finds s with the contact's push-back along -axis equal to `target` (within `tolerance`, N)

@@ -145,6 +145,7 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   j["device_faults"] = stats.device_faults;
   j["dropped_rows"] = stats.dropped_rows;
   j["tick_us"] = ToJson(stats.compute_us);
+  j["contact_evaluations"] = ToJson(stats.contact_evaluations);
   if (stats.realtime) {
     j["period_jitter_us"] = ToJson(stats.jitter_us);
     j["wake_lateness_us"] = ToJson(stats.lateness_us);

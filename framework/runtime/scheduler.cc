@@ -7,11 +7,11 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <string>
-#include <chrono>
 #include <thread>
 
 #include "framework/core/error.h"
@@ -154,6 +154,7 @@ Scheduler::Scheduler(Device& device, const Stage& positioning, const Stage& cons
   MakeStageStates();
   // Sized (and its pages touched) here, so that the loop never allocates or faults them in.
   compute_us_.assign(planned_ticks_, 0.0);
+  evaluations_.assign(planned_ticks_, 0.0);
   if (settings.stream == nullptr) {
     trace_.resize(planned_ticks_);
     if (settings.record) recording_.resize(planned_ticks_);
@@ -264,6 +265,7 @@ bool Scheduler::Tick(double time) noexcept {
   record.guard_fault = fault;
   record.device_fault = device_fault;
   compute_us_[k] = record.compute_us;
+  evaluations_[k] = output.contact_evaluations;
   if (settings_.record) {
     RecordedSample& sample = streaming ? run.row.sample : recording_[k];
     sample.time = time;
@@ -372,9 +374,11 @@ RunStats Scheduler::StatsSoFar() const {
   s.device_faults = run_.device_faults;
   s.dropped_rows = run_.dropped_rows;
   s.overruns = run_.overrun.overruns();
-  const auto end = compute_us_.begin() + static_cast<std::ptrdiff_t>(std::min<std::uint64_t>(
-                                             n, compute_us_.size()));
-  s.compute_us = ComputePercentiles(std::vector<double>(compute_us_.begin(), end));
+  const auto done = static_cast<std::ptrdiff_t>(std::min<std::uint64_t>(n, compute_us_.size()));
+  s.compute_us =
+      ComputePercentiles(std::vector<double>(compute_us_.begin(), compute_us_.begin() + done));
+  s.contact_evaluations =
+      ComputePercentiles(std::vector<double>(evaluations_.begin(), evaluations_.begin() + done));
   return s;
 }
 

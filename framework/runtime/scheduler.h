@@ -65,9 +65,9 @@ FITFEEL_API SafetySettings RuntimeSafetySettings(const std::optional<SafetySecti
 struct RunState {
   std::array<std::unique_ptr<StageState>, 2> stages;  // indexed by StageId
   StageId current = StageId::kPositioning;
-  DeviceState device;     // as the device reported it
-  DeviceState part;       // the moving part: the device's state after PartMotion::Place
-  DeviceState law_state;  // where the stage is evaluated (the proxy when coupled)
+  DeviceState device;           // as the device reported it
+  DeviceState part;             // the moving part: the device's state after PartMotion::Place
+  DeviceState law_state;        // where the stage is evaluated (the proxy when coupled)
   PartMotionState part_motion;  // the part's radial dynamics
   StageOutput output;
   SafetyChain chain;
@@ -79,7 +79,7 @@ struct RunState {
   StreamRow row;                    // the tick's row when streaming
   OverrunGuard overrun;             // zero and ramp after a missed deadline (real time)
   double wake_lateness = 0.0;       // how late this tick woke after its deadline, s (real time)
-  double last_time = 0.0;  // the previous tick's time (a device's clock: measured)
+  double last_time = 0.0;           // the previous tick's time (a device's clock: measured)
 };
 
 // One scheduler for every device. Per tick: device Read, the current stage's Evaluate, the wrench
@@ -151,7 +151,8 @@ class FITFEEL_API Scheduler {
   RunState run_;
   std::vector<TickRecord> trace_;
   std::vector<RecordedSample> recording_;
-  std::vector<double> compute_us_;  // every tick's compute time, for the run's statistics
+  std::vector<double> compute_us_;   // every tick's compute time, for the run's statistics
+  std::vector<double> evaluations_;  // every tick's contact evaluations, likewise
   // Real time only (empty under the virtual clock, whose statistics need no stamps).
   std::vector<double> wake_ns_;  // real time: absolute wake-up of each tick, ns
   std::vector<double> deadline_ns_;

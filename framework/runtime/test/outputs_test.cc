@@ -60,6 +60,10 @@ TEST(OutputsTest, RunWritesTheContractsFilesAndNothingElse) {
   EXPECT_EQ(summary["ticks"], 500);
   EXPECT_EQ(summary["constrained_ticks"], 399);  // ticks 101..499
   EXPECT_TRUE(summary["tick_us"].contains("p99"));
+  // Unsettled constrained ticks (four in five here) evaluate the contact at the pose, and once
+  // more for the radial stiffness where the law pushes; positioning ticks none.
+  EXPECT_GE(summary["contact_evaluations"]["p50"].get<double>(), 1.0);
+  EXPECT_EQ(summary["contact_evaluations"]["max"], 2.0);
   const auto& axial = summary["axial_resistance_N"];
   EXPECT_LE(axial["min"].get<double>(), axial["mean"].get<double>());
   EXPECT_LE(axial["mean"].get<double>(), axial["max"].get<double>());

@@ -186,6 +186,7 @@ TEST(ConstrainedStageTest, SettlingFollowsTheBalancesPathOverDepth) {
     const int before = analyzer.evaluations();
     stage.Evaluate(s, stage_run.get(), &out);
     per_tick.push_back(analyzer.evaluations() - before);
+    EXPECT_EQ(out.contact_evaluations, per_tick.back());  // the stage counts what it evaluates
     EXPECT_NEAR(out.pose.offset.y(), -(NarrowingAnalyzer::Clearance(out.pose.depth) + 2.0 / 1e5),
                 3e-11);
   }
