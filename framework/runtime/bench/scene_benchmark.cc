@@ -6,7 +6,9 @@
 // One benchmark iteration is one whole run of a scenario (a fresh scene, prepare, every tick).
 // Counters: prepare_ms, CPU time of the process during Prepare (all threads: a parallel prepare
 // counts both cores' work); tick_p50_us, tick_p99_us, tick_max_us, thread CPU time of each
-// Scheduler::Tick, less the clock's own cost (measured once, the median of back-to-back reads).
+// Scheduler::Tick, less the clock's own cost (measured once, the median of back-to-back reads);
+// evaluations_p50, _p99, _max, the contact analyzer's evaluations per tick (the run's
+// statistics: the same on every machine, where the times are this one's).
 // Repetitions give the median of each counter. Scenes whose surface keeps its per-tick scan
 // (conical, spherical) run again with the scan analyzer in place of the tables ("/scan"), for
 // the ratio.
@@ -25,10 +27,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -114,9 +116,9 @@ double Percentile(std::vector<double>* v, double q) {
 fs::path HandVariant(const fs::path& file) {
   std::ifstream in(file);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const fs::path out = fs::temp_directory_path() /
-                       ("fitfeel-bench-hand-" + std::to_string(::getpid()) + "-" +
-                        file.filename().string());
+  const fs::path out =
+      fs::temp_directory_path() /
+      ("fitfeel-bench-hand-" + std::to_string(::getpid()) + "-" + file.filename().string());
   std::ofstream(out) << test_support::WithHand(text, 1e-3, test_support::kHandPushIn, 3.5);
   return out;
 }
@@ -154,6 +156,10 @@ void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
       if (!more) break;
     }
     scene.device->Stop();
+    const Percentiles evaluations = scheduler.StatsSoFar().contact_evaluations;
+    state.counters["evaluations_p50"] = evaluations.p50;
+    state.counters["evaluations_p99"] = evaluations.p99;
+    state.counters["evaluations_max"] = evaluations.max;
     ticks.resize(std::min(done + 1, ticks.size()));
     state.counters["prepare_ms"] = prepare * 1e3;
     state.counters["tick_max_us"] = *std::max_element(ticks.begin(), ticks.end());
@@ -185,16 +191,21 @@ class TableReporter final : public benchmark::ConsoleReporter {
       m.p50 = Counter(run, "tick_p50_us");
       m.p99 = Counter(run, "tick_p99_us");
       m.max = Counter(run, "tick_max_us");
+      m.evaluations_p50 = Counter(run, "evaluations_p50");
+      m.evaluations_p99 = Counter(run, "evaluations_p99");
+      m.evaluations_max = Counter(run, "evaluations_max");
     }
   }
   void Finalize() override {
     ConsoleReporter::Finalize();
     std::printf(
-        "\n| scenario | prepare (ms CPU) | tick p50 / p99 / max (us CPU) | per-tick scan p50 / p99 "
-        "(us CPU) | scan / table p99 |\n|---|---|---|---|---|\n");
+        "\n| scenario | prepare (ms CPU) | tick p50 / p99 / max (us CPU) | contact evaluations "
+        "p50 / p99 / max | per-tick scan p50 / p99 (us CPU) | scan / table p99 |\n"
+        "|---|---|---|---|---|---|\n");
     for (const auto& [name, row] : rows_) {
-      std::printf("| `%s` | %.1f | %.2f / %.2f / %.0f |", name.c_str(), row.table.prepare_ms,
-                  row.table.p50, row.table.p99, row.table.max);
+      std::printf("| `%s` | %.1f | %.2f / %.2f / %.0f | %.0f / %.0f / %.0f |", name.c_str(),
+                  row.table.prepare_ms, row.table.p50, row.table.p99, row.table.max,
+                  row.table.evaluations_p50, row.table.evaluations_p99, row.table.evaluations_max);
       if (row.scan.present) {
         std::printf(" %.1f / %.0f | %.0f |\n", row.scan.p50, row.scan.p99,
                     row.scan.p99 / row.table.p99);
@@ -209,6 +220,7 @@ class TableReporter final : public benchmark::ConsoleReporter {
   struct Medians {
     bool present = false;
     double prepare_ms = 0.0, p50 = 0.0, p99 = 0.0, max = 0.0;
+    double evaluations_p50 = 0.0, evaluations_p99 = 0.0, evaluations_max = 0.0;
   };
   struct Row {
     Medians table, scan;
