@@ -171,6 +171,12 @@ Eigen::Vector2d ConstrainedStage::ProbeAt(const Eigen::Vector2d& offset, const M
   return {work->wrench.force.x(), work->wrench.force.z()};
 }
 
+Eigen::Vector2d ConstrainedStage::ForceAt(const Eigen::Vector2d& offset, const MatingMotion& motion,
+                                          StageOutput* work) const noexcept {
+  if (work->pose.offset == offset) return {work->wrench.force.x(), work->wrench.force.z()};
+  return ProbeAt(offset, motion, work);
+}
+
 bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& axis,
                                   double target, double tolerance, const MatingMotion& motion,
                                   StageOutput* work, double* solution, double spring, double* slope,
@@ -182,7 +188,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   // The last two evaluations (both at s = 0 until a second one is made).
   double last_s[2] = {0.0, 0.0}, last_r[2] = {0.0, 0.0};
   auto residual = [&](double s) {
-    const double r = -ProbeAt(origin + s * axis, motion, work).dot(axis) - (target - spring * s);
+    const double r = -ForceAt(origin + s * axis, motion, work).dot(axis) - (target - spring * s);
     last_s[0] = last_s[1];
     last_r[0] = last_r[1];
     last_s[1] = s;
@@ -202,11 +208,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   // interference (ISO 286 limits of parts up to 500 mm stay below 1 mm) and within every bore
   // this framework models.
   // Where the last probe was (a settle's next search from its last root), its numbers stand.
-  const double r0 =
-      work->pose.offset == origin
-          ? -Eigen::Vector2d(work->wrench.force.x(), work->wrench.force.z()).dot(axis) - target
-          : residual(0.0);
-  last_r[1] = r0;  // as if evaluated: the secants start from it
+  const double r0 = residual(0.0);
   if (std::abs(r0) <= tolerance) {
     *solution = 0.0;
     return true;
@@ -396,13 +398,8 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // where alternating sweeps along and across zig-zag down the wall (tens of evaluations, the
   // tick's worst case); a direction without stiffness (a flat wall the part may slide along) is a
   // 1-D search along it to the next wall. The sweeps stay as the fallback.
-  // `work` always holds the contact and the law's push (without history) at work.pose: from the
-  // caller (the search's start) and from every probe since. A probe where the last one was (a
-  // root the 1-D search ended on) is answered from it, the same numbers without an evaluation.
-  auto force_at = [&](const Eigen::Vector2d& x) {
-    if (work.pose.offset == x) return Eigen::Vector2d(work.wrench.force.x(), work.wrench.force.z());
-    return ProbeAt(x, motion, &work);
-  };
+  // A probe where the last one was (a root the 1-D search ended on) is answered from it.
+  auto force_at = [&](const Eigen::Vector2d& x) { return ForceAt(x, motion, &work); };
   // Along the load the searches stop at 1 pm of position where the tolerance is finer than a
   // picometre of the wall's travel (k h ~ 1e-3 N for kN/um walls): balanced is 1e-3 of the load
   // there, still far below what a hand resolves.
@@ -460,7 +457,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   }
   // Leave pose, contact and wrench consistent at the settled offset (the contact is usually the
   // last probe's already).
-  if (work.pose.offset != at) ProbeAt(at, motion, &work);
+  ForceAt(at, motion, &work);
   // The next tick's start: one Newton step on the last known stiffness from here, on what is
   // left unbalanced (within the tolerances, so at most a fraction of a nanometre to a few).
   Eigen::Vector2d next = at;
@@ -587,7 +584,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // the pull: the wall carries what the hand presses, no more.
     // The solve's last evaluation is usually at the part already (at this depth: every
     // evaluation above was).
-    if (work.pose.offset != part) ProbeAt(part, motion, &work);
+    ForceAt(part, motion, &work);
     const Eigen::Vector2d push(work.wrench.force.x(), work.wrench.force.z());
     const double pull = k * (held - part).norm();
     const double magnitude = push.norm();

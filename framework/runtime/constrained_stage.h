@@ -110,6 +110,12 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   // `work`; returns the radial force (x, z).
   Eigen::Vector2d ProbeAt(const Eigen::Vector2d& offset, const MatingMotion& motion,
                           StageOutput* work) const noexcept;
+  // The same, answered from `work` where its last probe was taken at `offset`. The searches keep
+  // `work` holding the contact and the law's push (without history) at work->pose, or a pose
+  // that no offset equals (NaN) after evaluating anything else into it (the god object's axial
+  // balance, whose push has the run's history, is followed by a new anchor before any search).
+  Eigen::Vector2d ForceAt(const Eigen::Vector2d& offset, const MatingMotion& motion,
+                          StageOutput* work) const noexcept;
   // The god object (Options::proxy_stiffness): moves the part from where it was (in `state`)
   // towards the device's pose (out->pose on entry) until the contact's push balances the
   // spring across the axis, and the law's resistance balances it along the axis; leaves the
