@@ -619,10 +619,13 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
   // Start from the shifts the rows settled at one depth step earlier (the engaged pattern has
   // moved by a step: most rows' shifts barely change); rows without one start unshifted.
   c.row_shift.resize(rows, 0.0);
-  // Moves every section's gaps by its bore row's entry of `by_row` (the breathing mode: uniform).
+  // Moves every section's gaps by its bore row's entry of `by_row` (the breathing mode: uniform),
+  // each section's shift left in c.section_shift.
   auto shift_gaps = [&](const auto& by_row) {
+    c.section_shift.resize(sections.size());
     for (std::size_t s = 0; s < sections.size(); ++s) {
       const double x = by_row[bore_row[s]];
+      c.section_shift[s] = x;
       for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += x;
     }
   };
@@ -708,7 +711,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     if (all_round) {
       c.section_dp.resize(sections.size());
       for (std::size_t s = 0; s < sections.size(); ++s) {
-        c.section_dp[s] = -breathing_stiffness_ * c.step[bore_row[s]];
+        c.section_dp[s] = -breathing_stiffness_ * c.section_shift[s];
       }
       if (solver->ShiftFullContact(sections, c.section_dp, &r)) break;
     }
@@ -718,8 +721,6 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     }
     Eigen::Vector4d from;
     from << r.offset, r.tilt;
-    c.section_shift.resize(sections.size());
-    for (std::size_t s = 0; s < sections.size(); ++s) c.section_shift[s] = c.step[bore_row[s]];
     r = solver->Solve(sections, freedom_, from, c.section_shift);
   }
   // What the next depth step starts from: this step's shifts where sections lay, none elsewhere.
