@@ -158,7 +158,8 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   ws.last_full = false;
   // y = G^-1 delta: the pressures of full contact, and the right-hand side of the dual step.
   if (full == nullptr) {
-    full_.noalias() = g_inv_ * Eigen::Map<const Eigen::VectorXd>(delta, n);
+    full_.resize(n);
+    InverseTimes(delta, full_.data());
     if (full_.minCoeff() >= 0.0) {
       for (int j = 0; j < n; ++j) p[j] = full_[j];
       f.assign(static_cast<std::size_t>(n), 1);
