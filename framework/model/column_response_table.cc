@@ -18,11 +18,12 @@ ColumnResponseTable::ColumnResponseTable(int steps, int columns, int samples,
   }
   const auto entries = static_cast<std::size_t>(steps) * static_cast<std::size_t>(columns);
   entries_.assign(entries, Entry{});
+  touch_from_.assign(entries, std::numeric_limits<double>::infinity());
   values_.assign(entries * static_cast<std::size_t>(samples) * 3, 0.0);
 }
 
 std::size_t ColumnResponseTable::bytes() const {
-  return entries_.size() * sizeof(Entry) + values_.size() * sizeof(double);
+  return entries_.size() * sizeof(Entry) + (touch_from_.size() + values_.size()) * sizeof(double);
 }
 
 ColumnResponse ColumnResponseTable::Exact(std::span<const ColumnCell> cells,
@@ -44,6 +45,7 @@ void ColumnResponseTable::Fill(int step, int column, std::span<const ColumnCell>
   const std::size_t index = static_cast<std::size_t>(step) * columns_ + column;
   Entry& e = entries_[index];
   e = Entry{};
+  touch_from_[index] = std::numeric_limits<double>::infinity();
   if (cells.empty()) return;
   double x_lo = std::numeric_limits<double>::infinity();
   double x_hi = -std::numeric_limits<double>::infinity();
@@ -74,6 +76,7 @@ void ColumnResponseTable::Fill(int step, int column, std::span<const ColumnCell>
   }
   e.empty = false;
   e.x_lo = x_lo;
+  touch_from_[index] = x_lo;
   e.x_hi = x_hi;
   e.inv_dx = (samples_ - 1) / (x_hi - x_lo);
   double* v = &values_[index * static_cast<std::size_t>(samples_) * 3];
@@ -114,8 +117,14 @@ void ColumnResponseTable::FillAll(
 void ColumnResponseTable::Blend(int a, int b, double t, const Eigen::Matrix2Xd& directions,
                                 const Eigen::Vector2d& offset, double shift,
                                 ContactState* out) const noexcept {
+  // Most columns of a cone or a sphere touch nothing at a given pose (a settled part bears on one
+  // side): a pass over the two steps' contiguous thresholds skips them before At reads an entry.
+  // Skipped columns are those At answers with zeros for both steps, so the sums are unchanged.
+  const double* from_a = touch_from_.data() + static_cast<std::size_t>(a) * columns_;
+  const double* from_b = touch_from_.data() + static_cast<std::size_t>(b) * columns_;
   for (int j = 0; j < columns_; ++j) {
     const double x = offset.dot(directions.col(j)) - shift;
+    if (!(x > from_a[j]) && !(x > from_b[j])) continue;
     const ColumnResponse p = At(a, j, x);
     const ColumnResponse q = At(b, j, x);
     const double volume = p.volume + t * (q.volume - p.volume);
