@@ -272,10 +272,36 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
           r_lo = r1;
         }
       } else {
-        // Short of the root: widen from there.
-        (r0 < 0.0 ? lo : hi) = s1;
-        (r0 < 0.0 ? r_lo : r_hi) = r1;
-        reach = 8.0 * std::abs(s1);
+        // Short of the root (a wall that steepens as the part goes in: a texture's onset): the
+        // secant through the origin and s1, 10 % further, is past the root on a convex
+        // residual, a tight bracket where widening eightfold would jump far past; then widen
+        // from the furthest point short of the root.
+        double from = s1, r_from = r1;
+        const double secant = s1 - 1.1 * r1 * s1 / (r1 - r0);
+        if (r1 != r0 && std::isfinite(secant) && (secant - s1) * s1 > 0.0 &&
+            std::abs(secant) <= 8.0 * std::abs(s1)) {
+          const double r2 = residual(secant);
+          if (std::abs(r2) <= tolerance) {
+            *solution = secant;
+            learn();
+            return true;
+          }
+          if ((r2 > 0.0) == (r0 < 0.0)) {
+            bracketed = true;
+            lo = r0 < 0.0 ? s1 : secant;
+            hi = r0 < 0.0 ? secant : s1;
+            r_lo = r0 < 0.0 ? r1 : r2;
+            r_hi = r0 < 0.0 ? r2 : r1;
+          } else {
+            from = secant;
+            r_from = r2;
+          }
+        }
+        if (!bracketed) {
+          (r0 < 0.0 ? lo : hi) = from;
+          (r0 < 0.0 ? r_lo : r_hi) = r_from;
+          reach = 8.0 * std::abs(from);
+        }
       }
     }
   }
@@ -366,6 +392,11 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // is below tan(pi/n) of the load anyway, so clearance fits need no sideways solve at all.
   const double along_tolerance = 1e-6 * weight;
   const double across_tolerance = 1e-2 * weight;
+  // The searches along the load resolve a picometre of travel, no finer (their brackets end
+  // there): where the last root's slope makes a picometre's force larger than the tolerance (a
+  // press fit's kN/um against a load of a newton), that force is what they stop at.
+  constexpr double kPicometre = 1e-12;
+  const double along_search_tolerance = std::max(along_tolerance, kPicometre * memory->along_slope);
   // Along the load the first probe is a Newton step from the last settle's slope.
   double* const along = &memory->along_slope;
   Eigen::Vector2d at = memory->offset;
@@ -378,7 +409,20 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     at += advance * memory->path;
   }
   double s = 0.0;
-  if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
+  // Where the last settle ended in interference on a stiffness that holds the part both ways (a
+  // press fit) and the start is off balance sideways, the balance starts with the
+  // two-dimensional step on it: a search along the load first would only find the along balance
+  // that step moves off again (three evaluations). Balanced sideways, the search along the load
+  // (its first probe this one) is the shorter way.
+  const double k_det = memory->stiffness.determinant(), k_trace = memory->stiffness.trace();
+  bool stiff_start = memory->interference && k_trace > 0.0 && k_det > 1e-2 * k_trace * k_trace;
+  if (stiff_start) {
+    const Eigen::Vector2d start = ForceAt(at, motion, &work) + load;
+    stiff_start = std::abs(start.dot(across)) > across_tolerance;
+  }
+  if (stiff_start) {
+    // The Newton loop below starts here, from this evaluation.
+  } else if (!SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0, along)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
     // which the planar model leaves out), but the part still floats sideways to where the walls
     // it touches balance, rather than being held off that balance by the device.
@@ -406,18 +450,34 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   auto balanced = [&](const Eigen::Vector2d& r) {
     return std::abs(r.dot(down)) <= 1e-3 * weight && std::abs(r.dot(across)) <= across_tolerance;
   };
-  Eigen::Vector2d residual = force_at(at) + load;  // the unbalanced force on the part
+  Eigen::Vector2d residual = force_at(at) + load;            // the unbalanced force on the part
+  Eigen::Vector2d step_from = at, residual_from = residual;  // where the last step began
   for (int step = 0; step < kSettleNewtonSteps && !balanced(residual); ++step) {
     // 10 pm: far inside the nanometre penetrations a load of newtons makes against kN/um walls,
     // far above rounding (k h ~ 1e-2 N against forces of 1 N).
     constexpr double kProbe = 1e-11;
     Eigen::Matrix2d k = memory->stiffness;  // stiffness, -d(force)/d(offset)
+    // Where the parts interfere, later steps correct the stiffness by the last step's secant
+    // (Powell's symmetric update: the least change to k that is symmetric and maps the step to
+    // the change of force it made) instead of two differences: a press fit's stiffness grows a few
+    // per cent a tick as the interference does, and the step on the last tick's stiffness fell
+    // short by as much; the secant is what the step measured.
+    if (step > 0 && work.contact.interference) {
+      const Eigen::Vector2d sx = at - step_from;
+      const Eigen::Vector2d miss = -(residual - residual_from) - k * sx;  // (k_true - k) sx
+      const double ss = sx.squaredNorm();
+      if (ss > 0.0) {
+        k += (miss * sx.transpose() + sx * miss.transpose()) / ss -
+             (miss.dot(sx) / (ss * ss)) * (sx * sx.transpose());
+      }
+    }
     // The first step on the last tick's stiffness where the parts interfere and it holds the
     // part in both directions (a press fit: it changes little from tick to tick); by differences
     // in clearance (the part rests on one wall or in a corner of the assembly space, and which
-    // changes from tick to tick), where a direction is nearly free, and on later steps.
+    // changes from tick to tick), where a direction is nearly free, and on later steps without
+    // interference or where the secant leaves the stiffness ill-conditioned.
     const double det = k.determinant(), trace = k.trace();
-    if (step > 0 || !work.contact.interference || !(trace > 0.0) || !(det > 1e-2 * trace * trace)) {
+    if (!work.contact.interference || !(trace > 0.0) || !(det > 1e-2 * trace * trace)) {
       Eigen::Matrix2d d;  // d(force)/d(along, across)
       d.col(0) = (force_at(at + kProbe * down) + load - residual) / kProbe;
       d.col(1) = (force_at(at + kProbe * across) + load - residual) / kProbe;
@@ -425,11 +485,13 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
       basis.col(0) = down;
       basis.col(1) = across;
       k = -d * basis.transpose();
-      memory->stiffness = k;
     }
+    memory->stiffness = k;
     Eigen::Vector2d term[2], free;
     if (!StiffNewtonTerms(k, residual, term, &free)) break;  // nothing holds: the sweeps
     const Eigen::Vector2d move = term[0] + term[1];
+    step_from = at;
+    residual_from = residual;
     at += move;
     const double slide = free.dot(residual);
     if (free.squaredNorm() > 0.0 && std::abs(slide) > along_tolerance) {
@@ -446,13 +508,19 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     double t = 0.0;
     if (!SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) break;
     at += t * across;
-    if (!SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) break;
+    if (!SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0, along)) {
+      break;
+    }
     at += s * down;
   }
   // The Newton steps stop at 1e-3 of the load along it; where a picometre allows finer, the
-  // along search (a Newton step from its slope, usually one evaluation) finishes to 1e-6.
-  if (std::abs(residual.dot(down)) > along_tolerance &&
-      SolveAlong(at, down, weight, along_tolerance, motion, &work, &s, 0.0, along)) {
+  // along search (a Newton step from its slope, usually one evaluation) finishes to 1e-6. Where
+  // the force left is less than a picometre's travel on the last stiffness makes, the search
+  // could only probe within that picometre.
+  const double along_stiffness = down.dot(memory->stiffness * down);
+  if (std::abs(residual.dot(down)) >
+          std::max(along_search_tolerance, kPicometre * along_stiffness) &&
+      SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0, along)) {
     at += s * down;
   }
   // Leave pose, contact and wrench consistent at the settled offset (the contact is usually the
@@ -487,6 +555,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   }
   memory->root = at;
   memory->depth = motion.depth;
+  memory->interference = work.contact.interference;
   return true;
 }
 

@@ -58,6 +58,7 @@ class FITFEEL_API ConstrainedStage final : public Stage {
     // left the part, so that the sideways push a rotating or advancing contact builds up tick by
     // tick is taken off as it grows, not in a burst once it passes the tolerance.
     Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
+    bool interference = false;  // the last settle ended with the parts interfering
     // The balance is a path over depth (a taper's part rides up as the bore narrows, an
     // interference fit's axis follows the parts' form): where the last root lay and at which
     // depth, and the path's slope d(root)/d(depth) between the last two roots with the depth
