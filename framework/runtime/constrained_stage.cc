@@ -21,18 +21,17 @@ struct ConstrainedState final : StageState {
   // The god object's offset and mating depth (Options::proxy_stiffness finite).
   Eigen::Vector2d part{0.0, 0.0};
   double part_depth = 0.0;
-  // The god object's last balance across the axis on a Winkler bed (the cone's, the sphere's):
-  // its slope (the wall's stiffness plus the spring's, N/m; 0 = not known yet) and where it lay
-  // from the device (m; NaN = not known yet). The next tick's search starts around that root.
-  double across_slope = 0.0;
-  double across_root = std::numeric_limits<double>::quiet_NaN();
-  // The same for the step back out of the wall along the push (where the push exceeds the pull).
-  double back_slope = 0.0;
-  double back_root = std::numeric_limits<double>::quiet_NaN();
-  // On an assembly space's edge: the slope of the last balance on the line from the edge to the
-  // device (the wall's stiffness along it plus the spring's, N/m; 0 = not known yet).
-  double line_slope = 0.0;
+  // The god object's balances across the axis: at the device's depth, and at the part's own
+  // where it lags the device (a jammed part: both are solved every tick, each from its own
+  // memory; one shared memory warm-started each from the other's root, 10-12 evaluations each).
+  ConstrainedStage::AcrossMemory at_device;
+  ConstrainedStage::AcrossMemory at_part;
 };
+
+// The finest travel the 1-D searches resolve (IllinoisRoot's brackets end there). Where a
+// tolerance in force is finer than what a picometre of travel makes on the last root's slope, a
+// search stops at that force instead: it could only probe within the picometre.
+constexpr double kPicometre = 1e-12;
 
 // Illinois false position on a bracket [lo, hi] whose residuals f_lo and f_hi have opposite
 // signs: superlinear on the piecewise-linear laws, never leaves the bracket; stops at 1 pm of
@@ -332,8 +331,13 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   // kN/um). False position crawls along the flat side there (each step a probe); a Newton step
   // from the wall side, on the wall's slope by a 10 pm difference, lands on a linear wall's root
   // in one. Kept only when it improves the bracket.
+  // A search around a last root (the god object's on a Winkler bed, whose wall is smooth) whose
+  // bracket the contact pushes at both ends has no foot of a wall in it: false position from
+  // the start (on a polygon's edges, where a bracket's ends may lie on different edges, the
+  // Newton step from the wall side stays better: measured).
   constexpr double kWallProbe = 1e-11;
-  if (hi - lo > 2.0 * kWallProbe) {
+  const bool smooth = hint != nullptr && r_lo + (target - spring * lo) != 0.0;
+  if (!smooth && hi - lo > 2.0 * kWallProbe) {
     const double r_in = residual(hi - kWallProbe);
     const double wall = (r_hi - r_in) / kWallProbe;
     if (r_in > 0.0 && r_in < r_hi) {
@@ -395,7 +399,6 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // The searches along the load resolve a picometre of travel, no finer (their brackets end
   // there): where the last root's slope makes a picometre's force larger than the tolerance (a
   // press fit's kN/um against a load of a newton), that force is what they stop at.
-  constexpr double kPicometre = 1e-12;
   const double along_search_tolerance = std::max(along_tolerance, kPicometre * memory->along_slope);
   // Along the load the first probe is a Newton step from the last settle's slope.
   double* const along = &memory->along_slope;
@@ -582,7 +585,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     ++work.contact_evaluations;
     return Eigen::Vector2d(offset - work.contact.penetration * work.contact.penetration_direction);
   };
-  auto across = [&](double depth) {
+  auto across = [&](double depth, AcrossMemory* memory) {
     work.pose.depth = depth;
     motion.depth = depth;
     Eigen::Vector2d edge = anchor_of(held);
@@ -599,11 +602,13 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       if (!(magnitude > 0.0) || !std::isfinite(magnitude)) return held;  // free: it follows
       const Eigen::Vector2d into = -push / magnitude;
       double s = 0.0;
-      if (!SolveAlong(held, into, 0.0, std::max(1e-4, 1e-6 * magnitude), motion, &work, &s, k,
-                      &run->across_slope, &run->across_root)) {
+      const double tolerance =
+          std::max({1e-4, 1e-6 * magnitude, kPicometre * memory->across_slope});
+      if (!SolveAlong(held, into, 0.0, tolerance, motion, &work, &s, k, &memory->across_slope,
+                      &memory->across_root)) {
         return held;
       }
-      run->across_root = s;
+      memory->across_root = s;
       part = held + std::min(s, 0.0) * into;
     } else {
       // The repetition contracts by a near-constant factor (0.6-0.7 between two depth steps'
@@ -633,12 +638,13 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       const double reach = way.norm();
       if (!(reach > 0.0) || !std::isfinite(reach)) return held;
       const Eigen::Vector2d into = way / reach;
-      const double tolerance = std::max(1e-4, 1e-6 * k * reach);
+      const double tolerance = std::max({1e-4, 1e-6 * k * reach, kPicometre * memory->line_slope});
       double s = 0.0;
       // The root lies nanometres into the wall from the edge, where the wall's stiffness along
       // the line changes little from tick to tick: a Newton step on the last balance's slope
       // lands on it (the last root itself is no start: the edge moves with the device).
-      if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k, &run->line_slope)) {
+      if (!SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k,
+                      &memory->line_slope)) {
         return edge;
       }
       // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
@@ -662,9 +668,11 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       double t = 0.0;
       // With the memory only on a Winkler bed (as above; on a polygon's edge it costs more than
       // it saves, measured).
-      if (SolveAlong(part, wall, pull, std::max(1e-4, 1e-3 * pull), motion, &work, &t, 0.0,
-                     bed ? &run->back_slope : nullptr, bed ? &run->back_root : nullptr)) {
-        if (bed) run->back_root = t;
+      const double tolerance =
+          std::max({1e-4, 1e-3 * pull, bed ? kPicometre * memory->back_slope : 0.0});
+      if (SolveAlong(part, wall, pull, tolerance, motion, &work, &t, 0.0,
+                     bed ? &memory->back_slope : nullptr, bed ? &memory->back_root : nullptr)) {
+        if (bed) memory->back_root = t;
         if (t < 0.0) part += t * wall;
       }
     }
@@ -674,7 +682,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
   // part goes no deeper than the device, and where the bore narrows ahead that balance already
   // has it clear of the narrowing (a balance taken at the part's own depth would run it into
   // the step and hold it there as if it were jammed).
-  Eigen::Vector2d at = across(held_depth);
+  Eigen::Vector2d at = across(held_depth, &run->at_device);
   // Along the axis: where the law's resistance (stick-slip junctions, probed from the run's state
   // without advancing it) balances the spring k (held - y), the part at that balance across. The
   // resistance falls monotonically as the part goes deeper (a junction's spring, then the
@@ -705,7 +713,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     }
     // The balance across at the device's depth holds within 10 um of it (the spaces change over
     // rows of 0.5 mm and more): taken anew only where the part lags further.
-    if (std::abs(depth - held_depth) > 1e-5) at = across(depth);
+    if (std::abs(depth - held_depth) > 1e-5) at = across(depth, &run->at_part);
   }
   run->part = at;
   run->part_depth = depth;

@@ -72,6 +72,22 @@ class FITFEEL_API ConstrainedStage final : public Stage {
     bool smooth = false;
   };
 
+  // What the god object's balance across the axis at one depth carries from tick to tick.
+  struct AcrossMemory {
+    // On a Winkler bed (the cone's, the sphere's): the last balance's slope (the wall's
+    // stiffness plus the spring's, N/m; 0 = not known yet) and where it lay from the device (m;
+    // NaN = not known yet); the next tick's search starts around that root.
+    double across_slope = 0.0;
+    double across_root = std::numeric_limits<double>::quiet_NaN();
+    // The same for the step back out of the wall along the push (where the push exceeds the
+    // pull).
+    double back_slope = 0.0;
+    double back_root = std::numeric_limits<double>::quiet_NaN();
+    // On an assembly space's edge: the slope of the last balance on the line from the edge to
+    // the device (the wall's stiffness along it plus the spring's, N/m; 0 = not known yet).
+    double line_slope = 0.0;
+  };
+
  protected:
   std::unique_ptr<StageState> DoMakeState() const override;
   void DoEvaluate(const DeviceState& device, StageState* state,
