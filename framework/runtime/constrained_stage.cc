@@ -421,6 +421,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   bool stiff_start = memory->interference && k_trace > 0.0 && k_det > 1e-2 * k_trace * k_trace;
   if (stiff_start) {
     const Eigen::Vector2d start = ForceAt(at, motion, &work) + load;
+    // (A part pulled out since meets no sideways push: the search below finds nothing carries it.)
     stiff_start = std::abs(start.dot(across)) > across_tolerance;
   }
   if (stiff_start) {
