@@ -50,12 +50,25 @@ double Cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Ve
 
 }  // namespace
 
+Eigen::Matrix2Xd CylinderSamples::Directions() const {
+  Eigen::Matrix2Xd d(2, theta.size());
+  for (long j = 0; j < theta.size(); ++j) {
+    d(0, j) = std::cos(theta(j));
+    d(1, j) = std::sin(theta(j));
+  }
+  return d;
+}
+
 Eigen::Matrix2Xd CylinderSamples::SectionPoints(int row) const {
+  return SectionPoints(row, Directions());
+}
+
+Eigen::Matrix2Xd CylinderSamples::SectionPoints(int row, const Eigen::Matrix2Xd& directions) const {
   Eigen::Matrix2Xd p(2, theta.size());
   for (long j = 0; j < theta.size(); ++j) {
     const double r = nominal_radius + deviation(row, j);
-    p(0, j) = r * std::cos(theta(j));
-    p(1, j) = r * std::sin(theta(j));
+    p(0, j) = r * directions(0, j);
+    p(1, j) = r * directions(1, j);
   }
   return p;
 }
@@ -138,8 +151,9 @@ CylindricityResult MinimumZoneCylindricity(const CylinderSamples& s) {
 Eigen::Matrix2Xd SectionCentres(const CylinderSamples& s) {
   CheckSamples(s);
   Eigen::Matrix2Xd centres(2, s.y.size());
+  const Eigen::Matrix2Xd directions = s.Directions();
   for (long i = 0; i < s.y.size(); ++i) {
-    centres.col(i) = LeastSquaresCircle(s.SectionPoints(static_cast<int>(i))).centre;
+    centres.col(i) = LeastSquaresCircle(s.SectionPoints(static_cast<int>(i), directions)).centre;
   }
   return centres;
 }
@@ -162,11 +176,13 @@ double AxisStraightness(const Eigen::VectorXd& y, const Eigen::Matrix2Xd& centre
   double best = MaxDistance(y, centres, ls_p0, ls_t);
   // Minimum enclosing cylinder, a convex (second-order cone) program, solved by cutting planes:
   // each point's circle constraint |p_i - axis(y_i)| <= r is replaced by tangent half-planes
-  // (initially 16 directions, then one more per point at its current direction from the axis)
+  // (initially 4 directions, then one more per point at its current direction from the axis)
   // and the resulting linear program in (x0, bx, z0, bz, r), in units of `scale` about the
   // centroid, solved exactly. Its optimum is a lower bound of the minimum radius; the largest
-  // distance from its axis an upper bound; iterate until they agree to 1e-9.
-  constexpr int kInitialDirections = 16;
+  // distance from its axis an upper bound; iterate until they agree to 1e-9. The first cuts only
+  // start the iteration (the bounds hold whatever they are): 4 take 14-17 rounds on the shipped
+  // parts in a third fewer instructions than 16 (smaller programs each round).
+  constexpr int kInitialDirections = 4;
   std::vector<Eigen::Matrix<double, 1, 5>> rows;
   std::vector<double> rhs_list;
   Eigen::Matrix2Xd p(2, m);

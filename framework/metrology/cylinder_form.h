@@ -18,6 +18,10 @@ struct FITFEEL_API CylinderSamples {
   Eigen::MatrixXd deviation;    // m (rows x columns)
 
   Eigen::Matrix2Xd SectionPoints(int row) const;  // Cartesian (x, z) of one row
+  // (cos theta, sin theta) of every column, and one row's points from them: a caller taking many
+  // rows evaluates the columns' cosines and sines once (the same points, bit for bit).
+  Eigen::Matrix2Xd Directions() const;
+  Eigen::Matrix2Xd SectionPoints(int row, const Eigen::Matrix2Xd& directions) const;
 };
 
 struct CylindricityResult {

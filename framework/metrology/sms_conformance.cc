@@ -38,8 +38,10 @@ double EvaluateCylinderForm(FormCharacteristic characteristic, const CylinderSam
     case FormCharacteristic::kRoundness: {
       if (s.theta.size() < 4) return 0.0;
       double worst = 0.0;
+      const Eigen::Matrix2Xd directions = s.Directions();
       for (long i = 0; i < s.y.size(); ++i) {
-        worst = std::max(worst, MinimumZoneRoundness(s.SectionPoints(static_cast<int>(i))).value);
+        worst = std::max(
+            worst, MinimumZoneRoundness(s.SectionPoints(static_cast<int>(i), directions)).value);
       }
       return worst;
     }
