@@ -6,7 +6,9 @@
 // differently on another machine: no contraction of a product and a sum into a fused
 // multiply-add (AVX-512 has them, the baseline has not), and no reduction whose order depends
 // on the vector width (write sums in fixed lanes). GCC takes the first through the attribute,
-// Clang through FITFEEL_NO_FP_CONTRACT, which opens the body of every such function.
+// Clang through FITFEEL_NO_FP_CONTRACT, which opens the body of every such function. GCC also
+// takes no-trapping-math there: without it a comparison that selects a value (x > 0 ? a : 0)
+// stays a branch, the loop scalar; it changes no value, only which exceptions may be raised.
 //
 // Not under the sanitizers (their builds check behaviour, not speed): the load-time choice runs
 // before ThreadSanitizer's runtime is up and crashes it.
@@ -26,8 +28,9 @@
 #define FITFEEL_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #define FITFEEL_NO_FP_CONTRACT _Pragma("clang fp contract(off)")
 #elif defined(__x86_64__) && defined(__GNUC__)
-#define FITFEEL_SIMD_CLONES \
-  __attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
+#define FITFEEL_SIMD_CLONES                                   \
+  __attribute__((target_clones("avx512f", "avx2", "default"), \
+                 optimize("fp-contract=off", "no-trapping-math")))
 #define FITFEEL_NO_FP_CONTRACT
 #else
 #define FITFEEL_SIMD_CLONES

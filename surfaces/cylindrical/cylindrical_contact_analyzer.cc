@@ -58,6 +58,36 @@ FITFEEL_SIMD_CLONES void MinOfDifference2(double* __restrict h, const double* __
   }
 }
 
+// One slice's share of Energy, column by column with d = max(0, proj - g): the energy a d^2 and,
+// for the Newton step, the first and second moments a d and a [d > 0]. Sums per column, so
+// that no vector width changes their order (Energy adds the columns up in a fixed one).
+FITFEEL_SIMD_CLONES void EnergyMoments(double* __restrict energy, double* __restrict first,
+                                       double* __restrict second, const double* __restrict proj,
+                                       const double* __restrict g, const double* __restrict a,
+                                       std::size_t n) {
+  FITFEEL_NO_FP_CONTRACT
+  for (std::size_t j = 0; j < n; ++j) {
+    const double x = proj[j] - g[j];
+    const double touching = x > 0.0 ? 1.0 : 0.0;  // a select, not a branch: vectorised
+    const double d = x * touching;                // x > 0 or +-0 (the same in every sum)
+    energy[j] += a[j] * d * d;
+    first[j] += a[j] * d;
+    second[j] += a[j] * touching;
+  }
+}
+
+// The energy alone (a line search's trial).
+FITFEEL_SIMD_CLONES void EnergyOnly(double* __restrict energy, const double* __restrict proj,
+                                    const double* __restrict g, const double* __restrict a,
+                                    std::size_t n) {
+  FITFEEL_NO_FP_CONTRACT
+  for (std::size_t j = 0; j < n; ++j) {
+    const double x = proj[j] - g[j];
+    const double d = x * (x > 0.0 ? 1.0 : 0.0);
+    energy[j] += a[j] * d * d;
+  }
+}
+
 Eigen::Vector2d Rotate(const Eigen::Vector2d& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
@@ -267,25 +297,25 @@ void CylinderContactAnalyzer::StepScratch::Restart(std::size_t columns, std::siz
 double CylinderContactAnalyzer::Energy(const Eigen::Vector2d& p, bool moments,
                                        StepScratch* s) const {
   const std::size_t n = static_cast<std::size_t>(n_);
-  double e = 0.0;
   if (moments) {
     std::fill(s->col_a.begin(), s->col_a.end(), 0.0);
     std::fill(s->col_b.begin(), s->col_b.end(), 0.0);
   }
+  s->col_energy.assign(n, 0.0);
   for (std::size_t j = 0; j < n; ++j) s->proj[j] = p.x() * cos_[j] + p.y() * sin_[j];
   const std::size_t rows = s->st.size() / n;
   for (std::size_t r = 0; r < rows; ++r) {
     const double* g = s->st.data() + r * n;
     const double* a = s->w.data() + r * n;
-    for (std::size_t j = 0; j < n; ++j) {
-      const double d = std::max(0.0, s->proj[j] - g[j]);
-      e += a[j] * d * d;
-      if (moments) {
-        s->col_a[j] += a[j] * d;
-        s->col_b[j] += d > 0.0 ? a[j] : 0.0;
-      }
+    if (moments) {
+      EnergyMoments(s->col_energy.data(), s->col_a.data(), s->col_b.data(), s->proj.data(), g, a,
+                    n);
+    } else {
+      EnergyOnly(s->col_energy.data(), s->proj.data(), g, a, n);
     }
   }
+  double e = 0.0;
+  for (std::size_t j = 0; j < n; ++j) e += s->col_energy[j];
   return e;
 }
 

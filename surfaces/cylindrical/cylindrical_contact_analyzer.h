@@ -120,7 +120,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<double> chunk_h;  // per step of the chunk: the smallest gap of each column
     std::vector<RowPair> pairs, sorted_pairs;
     std::vector<std::size_t> bucket;
-    std::vector<double> st, w, col_a, col_b, proj, elastic_gap;
+    std::vector<double> st, w, col_a, col_b, col_energy, proj, elastic_gap;
     std::vector<ContactSection> sections;
     std::vector<int> section_row;
     std::vector<double> section_length;
