@@ -44,7 +44,8 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   StageId id() const override { return StageId::kConstrained; }
 
   // Newton steps of a settle's two-dimensional balance before it falls back to sweeps along and
-  // across the load (each step three contact evaluations, plus a slide along a flat wall).
+  // across the load (each step three contact evaluations, plus a slide along a flat wall; one
+  // where the parts interfere, the stiffness then corrected by the step's secant).
   static constexpr int kSettleNewtonSteps = 6;
 
   // What a settle carries from one tick to the next (in the run's state): where it left the
