@@ -1,5 +1,6 @@
 #include "framework/metrology/linear_program.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -13,19 +14,31 @@ namespace {
 
 // Revised simplex for min cost . y s.t. M y = r (r >= 0), y >= 0, over the columns of M plus d
 // artificial identity columns (indices N .. N+d-1). The basis inverse is recomputed from scratch
-// each pivot: with d <= ~8 that costs nothing next to pricing N columns.
+// each pivot: with d <= ~8 that costs nothing next to pricing N columns. The pivots' matrices and
+// vectors are members, sized once: a skin model's checks solve thousands of these programs.
 class DualSimplex {
  public:
-  DualSimplex(const Eigen::MatrixXd& M, const Eigen::VectorXd& r) : M_(M), r_(r) {
-    d_ = static_cast<int>(M.rows());
-    n_ = static_cast<int>(M.cols());
+  DualSimplex(const Eigen::MatrixXd& M, const Eigen::VectorXd& r)
+      : M_(M), r_(r), d_(static_cast<int>(M.rows())), n_(static_cast<int>(M.cols())) {
     basis_.resize(d_);
     for (int i = 0; i < d_; ++i) basis_[i] = n_ + i;
+    B_.resize(d_, d_);
+    cb_.resize(d_);
+    xb_.resize(d_);
+    w_.resize(d_);
+    column_.resize(d_);
+    in_basis_.assign(static_cast<std::size_t>(n_ + d_), 0);
   }
 
-  Eigen::VectorXd Column(int k) const {
-    if (k < n_) return M_.col(k);
-    return Eigen::VectorXd::Unit(d_, k - n_);
+  // Column k of [M I] into column_.
+  const Eigen::VectorXd& Column(int k) {
+    if (k < n_) {
+      column_ = M_.col(k);
+    } else {
+      column_.setZero();
+      column_(k - n_) = 1.0;
+    }
+    return column_;
   }
 
   // Runs simplex with the given costs (size n_ + d_); artificial columns may enter only if
@@ -35,25 +48,23 @@ class DualSimplex {
     int degenerate_run = 0;
     const long max_iterations = 50L * (n_ + d_) + 1000;
     for (long it = 0; it < max_iterations; ++it) {
-      Eigen::MatrixXd B(d_, d_);
-      Eigen::VectorXd cb(d_);
       for (int i = 0; i < d_; ++i) {
-        B.col(i) = Column(basis_[i]);
-        cb(i) = cost(basis_[i]);
+        B_.col(i) = Column(basis_[i]);
+        cb_(i) = cost(basis_[i]);
       }
-      Eigen::PartialPivLU<Eigen::MatrixXd> lu(B);
-      const Eigen::VectorXd xb = lu.solve(r_);
-      pi_ = lu.transpose().solve(cb);
+      lu_.compute(B_);
+      xb_ = lu_.solve(r_);
+      pi_ = lu_.transpose().solve(cb_);
       // Pricing: Dantzig (most negative reduced cost), or Bland (lowest index) to break cycles.
       const bool bland = degenerate_run > 20;
       int entering = -1;
       double best = -tol;
       const int limit = allow_artificial ? n_ + d_ : n_;
-      std::vector<char> in_basis(n_ + d_, 0);
-      for (int i = 0; i < d_; ++i) in_basis[basis_[i]] = 1;
+      std::fill(in_basis_.begin(), in_basis_.end(), 0);
+      for (int i = 0; i < d_; ++i) in_basis_[basis_[i]] = 1;
       reduced_.noalias() = cost.head(n_) - M_.transpose() * pi_;
       for (int k = 0; k < limit; ++k) {
-        if (in_basis[k]) continue;
+        if (in_basis_[k]) continue;
         const double reduced = k < n_ ? reduced_(k) : cost(k) - pi_(k - n_);
         if (reduced < best) {
           entering = k;
@@ -62,12 +73,12 @@ class DualSimplex {
         }
       }
       if (entering < 0) return true;
-      const Eigen::VectorXd w = lu.solve(Column(entering));
+      w_ = lu_.solve(Column(entering));
       int leaving = -1;
       double ratio = std::numeric_limits<double>::infinity();
       for (int i = 0; i < d_; ++i) {
-        if (w(i) > tol) {
-          const double q = std::max(0.0, xb(i)) / w(i);
+        if (w_(i) > tol) {
+          const double q = std::max(0.0, xb_(i)) / w_(i);
           if (q < ratio - 1e-14 ||
               (q <= ratio + 1e-14 && leaving >= 0 && bland && basis_[i] < basis_[leaving])) {
             ratio = q;
@@ -87,17 +98,17 @@ class DualSimplex {
   void DriveOutArtificials() {
     for (int i = 0; i < d_; ++i) {
       if (basis_[i] < n_) continue;
-      Eigen::MatrixXd B(d_, d_);
-      for (int q = 0; q < d_; ++q) B.col(q) = Column(basis_[q]);
-      Eigen::PartialPivLU<Eigen::MatrixXd> lu(B);
-      std::vector<char> in_basis(n_, 0);
+      for (int q = 0; q < d_; ++q) B_.col(q) = Column(basis_[q]);
+      lu_.compute(B_);
+      std::fill(in_basis_.begin(), in_basis_.end(), 0);
       for (int q = 0; q < d_; ++q)
-        if (basis_[q] < n_) in_basis[basis_[q]] = 1;
+        if (basis_[q] < n_) in_basis_[basis_[q]] = 1;
       int best = -1;
       double best_value = 1e-9;
       for (int k = 0; k < n_; ++k) {
-        if (in_basis[k]) continue;
-        const double v = std::abs(lu.solve(Column(k))(i));
+        if (in_basis_[k]) continue;
+        w_ = lu_.solve(Column(k));
+        const double v = std::abs(w_(i));
         if (v > best_value) {
           best_value = v;
           best = k;
@@ -119,6 +130,11 @@ class DualSimplex {
   std::vector<int> basis_;
   Eigen::VectorXd pi_;
   Eigen::VectorXd reduced_;
+  // Each pivot's work, sized in the constructor.
+  Eigen::MatrixXd B_;
+  Eigen::VectorXd cb_, xb_, w_, column_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  std::vector<char> in_basis_;
 };
 
 }  // namespace
