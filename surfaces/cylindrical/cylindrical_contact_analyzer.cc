@@ -500,11 +500,14 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
     Eigen::Vector2d resultant(0.0, 0.0);
     for (std::size_t j = 0; j < n; ++j) s->proj[j] = anchor.x() * cos_[j] + anchor.y() * sin_[j];
     std::fill(s->col_a.begin(), s->col_a.end(), 0.0);
-    for (std::size_t c = 0; c < s->st.size(); ++c) {
-      const std::size_t j = c - (c / n) * n;
-      const double d = texture_(s->st[c] - s->proj[j]);
-      s->col_a[j] += s->w[c] * d;
-      max_delta = std::max(max_delta, d);
+    for (std::size_t row = 0; row < s->st.size() / n; ++row) {
+      const double* g = s->st.data() + row * n;
+      const double* w = s->w.data() + row * n;
+      for (std::size_t j = 0; j < n; ++j) {
+        const double d = texture_(g[j] - s->proj[j]);
+        s->col_a[j] += w[j] * d;
+        max_delta = std::max(max_delta, d);
+      }
     }
     for (std::size_t j = 0; j < n; ++j) {
       volume += s->col_a[j];
