@@ -87,11 +87,8 @@ CylindricityResult MinimumZoneCylindricity(const CylinderSamples& s) {
   // optimum is then the full program's.
   Eigen::VectorXd u(m);
   for (long i = 0; i < m; ++i) u(i) = (s.y(i) - yc) / yh;
-  Eigen::VectorXd cs(n), sn(n);
-  for (long j = 0; j < n; ++j) {
-    cs(j) = std::cos(s.theta(j));
-    sn(j) = std::sin(s.theta(j));
-  }
+  const Eigen::Matrix2Xd directions = s.Directions();
+  const auto cs = directions.row(0), sn = directions.row(1);
   const Eigen::MatrixXd v = s.deviation / scale;
   std::vector<char> in_set(m * n, 0);
   std::vector<long> working;

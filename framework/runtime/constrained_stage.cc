@@ -61,6 +61,14 @@ double IllinoisRoot(const Residual& f, double lo, double hi, double f_lo, double
   return x;
 }
 
+// A 2x2 contact stiffness that holds the part in both directions, well enough conditioned to step
+// on without measuring it anew (det > 1e-2 trace^2: the softer direction at least ~1 % of the
+// stiffer).
+bool HoldsBothWays(const Eigen::Matrix2d& k) noexcept {
+  const double det = k.determinant(), trace = k.trace();
+  return trace > 0.0 && det > 1e-2 * trace * trace;
+}
+
 // The Newton step of a 2x2 contact stiffness k (-dF/d(offset), symmetrised) against the
 // unbalanced force `residual`, one term per eigen-direction that has stiffness (an eigenvalue
 // above 1e-6 of the largest; zero for a direction without, which `free` receives, zero if none).
@@ -215,6 +223,14 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   double lo = 0.0, hi = 0.0, r_lo = r0, r_hi = r0;
   bool bracketed = false;
   double reach = 1e-6;
+  // The bracket between two probes whose residuals lie either side of zero.
+  auto bracket = [&](double a, double r_a, double b, double r_b) {
+    bracketed = true;
+    lo = std::min(a, b);
+    hi = std::max(a, b);
+    r_lo = lo == a ? r_a : r_b;
+    r_hi = hi == a ? r_a : r_b;
+  };
   // Around the last root: from 10 nm, widening eightfold, on the side its residual points to
   // (the residual rises with s), at most to the origin, whose residual is known.
   if (hint != nullptr && std::isfinite(*hint) && *hint != 0.0 && std::abs(*hint) <= 1.1e-3) {
@@ -240,11 +256,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
       const double r_b = past_origin ? r0 : residual(b);
       if (past_origin) b = 0.0;
       if ((r_b > 0.0) != (r1 > 0.0)) {
-        bracketed = true;
-        lo = std::min(a, b);
-        hi = std::max(a, b);
-        r_lo = lo == a ? r_a : r_b;
-        r_hi = hi == a ? r_a : r_b;
+        bracket(a, r_a, b, r_b);
       } else if (past_origin) {
         break;
       }
@@ -262,14 +274,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
         return true;
       }
       if ((r1 > 0.0) == (r0 < 0.0)) {
-        bracketed = true;
-        if (r0 < 0.0) {
-          hi = s1;
-          r_hi = r1;
-        } else {
-          lo = s1;
-          r_lo = r1;
-        }
+        bracket(0.0, r0, s1, r1);
       } else {
         // Short of the root (a wall that steepens as the part goes in: a texture's onset): the
         // secant through the origin and s1, 10 % further, is past the root on a convex
@@ -286,11 +291,7 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
             return true;
           }
           if ((r2 > 0.0) == (r0 < 0.0)) {
-            bracketed = true;
-            lo = r0 < 0.0 ? s1 : secant;
-            hi = r0 < 0.0 ? secant : s1;
-            r_lo = r0 < 0.0 ? r1 : r2;
-            r_hi = r0 < 0.0 ? r2 : r1;
+            bracket(s1, r1, secant, r2);
           } else {
             from = secant;
             r_from = r2;
@@ -417,8 +418,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
   // two-dimensional step on it: a search along the load first would only find the along balance
   // that step moves off again (three evaluations). Balanced sideways, the search along the load
   // (its first probe this one) is the shorter way.
-  const double k_det = memory->stiffness.determinant(), k_trace = memory->stiffness.trace();
-  bool stiff_start = memory->interference && k_trace > 0.0 && k_det > 1e-2 * k_trace * k_trace;
+  bool stiff_start = memory->interference && HoldsBothWays(memory->stiffness);
   if (stiff_start) {
     const Eigen::Vector2d start = ForceAt(at, motion, &work) + load;
     // (A part pulled out since meets no sideways push: the search below finds nothing carries it.)
@@ -480,8 +480,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     // in clearance (the part rests on one wall or in a corner of the assembly space, and which
     // changes from tick to tick), where a direction is nearly free, and on later steps without
     // interference or where the secant leaves the stiffness ill-conditioned.
-    const double det = k.determinant(), trace = k.trace();
-    if (!work.contact.interference || !(trace > 0.0) || !(det > 1e-2 * trace * trace)) {
+    if (!work.contact.interference || !HoldsBothWays(k)) {
       Eigen::Matrix2d d;  // d(force)/d(along, across)
       d.col(0) = (force_at(at + kProbe * down) + load - residual) / kProbe;
       d.col(1) = (force_at(at + kProbe * across) + load - residual) / kProbe;
