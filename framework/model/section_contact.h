@@ -126,8 +126,8 @@ struct RigidContactResult {
 // minimises the convex potential sum_s phi_s(e_s) - load . q (+ the holder's tilt energy) with
 // e_s = offset + y_s tilt and phi_s the section's stored elastic energy at its LCP solution, by
 // Newton's method with backtracking (the gradient is the unbalanced force, the Hessian the
-// sections' contact stiffness). Each section deforms on its own (plane sections; the hub's
-// breathing mode along its axis is coupled by the caller, hub_axial_coupling.h, through the
+// sections' contact stiffness). Each section deforms on its own (plane sections; the parts'
+// breathing modes along their axes are coupled by the caller, axial_breathing.h, through the
 // sections' gaps). Prepare-time only.
 class FITFEEL_API RigidSectionContact {
  public:

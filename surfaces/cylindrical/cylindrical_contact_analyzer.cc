@@ -186,18 +186,22 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     section.plane_strain = options.plane_strain;
     solver.emplace(section, n_ / block_);
     breathing_stiffness_ = 1.0 / HarmonicCompliance(section, 0);
-    coupling_ = HubAxialCoupling();
+    hub_breathing_ = AxialBreathing();
+    shaft_breathing_ = AxialBreathing();
     if (options.axial_coupling) {
-      // The coupling's difference stencil assumes equal bore rows (what the discretizer makes).
-      const double pitch = bushing_length_ / bushing_rows_;
-      for (int i = 0; i < bushing_rows_; ++i) {
-        if (std::abs(bushing_edges_[i + 1] - bushing_edges_[i] - pitch) > 1e-9 * pitch) {
-          throw UserError(
-              "the elastic model's axial coupling needs the bore's rows equally "
-              "long; set model.options.axial_coupling: false for this grid");
-        }
-      }
-      coupling_ = HubAxialCoupling(section, pitch, bushing_rows_);
+      BreathingBody hub;
+      hub.inner_radius = 0.5 * d.d1;
+      hub.outer_radius = 0.5 * d.d2;
+      hub.loaded_inside = true;
+      hub.material = outer.material;
+      hub.held_faces = options.plane_strain;
+      BreathingBody shaft = hub;
+      shaft.inner_radius = 0.5 * d.di;
+      shaft.outer_radius = 0.5 * d.d1;
+      shaft.loaded_inside = false;
+      shaft.material = inner.material;
+      hub_breathing_ = AxialBreathing(hub, bushing_edges_);
+      shaft_breathing_ = AxialBreathing(shaft, shaft_edges_);
     }
     freedom.tilt = options.tilt;
     freedom.tilt_stiffness = options.tilt_stiffness;
@@ -426,6 +430,7 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
     s->elastic_gap.assign(slices.size() * ne, 0.0);
     s->sections.assign(slices.size(), ContactSection{});
     s->section_row.resize(slices.size());
+    s->section_shaft_row.resize(slices.size());
     s->section_length.resize(slices.size());
     const double lo = std::max(depth - shaft_length_, 0.0);
     double pos = lo, middle = lo + 0.5 * length;
@@ -445,11 +450,12 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       sec.warm_contact = last_step ? s->row_contact[row].data() : nullptr;
       sec.factorization = &s->row_factors[row];
       s->section_row[sl] = slices[sl].bushing_row;
+      s->section_shaft_row[sl] = slices[sl].shaft_row;
       s->section_length[sl] = slices[sl].length;
     }
     const RigidContactResult r =
-        SolveSections(&*s->solver, s->sections, s->section_row, s->section_length,
-                      s->elastic_gap.data(), s->elastic_warm, &s->coupling);
+        SolveSections(&*s->solver, s->sections, s->section_row, s->section_shaft_row,
+                      s->section_length, s->elastic_gap.data(), s->elastic_warm, &s->coupling);
     for (std::size_t sl = 0; sl < slices.size(); ++sl) {
       const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
       s->row_contact[row] = s->solver->contact_sets()[sl];
@@ -638,82 +644,97 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
-RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* solver,
-                                                          std::span<ContactSection> sections,
-                                                          std::span<const int> bore_row,
-                                                          std::span<const double> length,
-                                                          double* gaps, const Eigen::Vector4d& warm,
-                                                          CouplingScratch* scratch) const {
+RigidContactResult CylinderContactAnalyzer::SolveSections(
+    RigidSectionContact* solver, std::span<ContactSection> sections, std::span<const int> bore_row,
+    std::span<const int> shaft_row, std::span<const double> length, double* gaps,
+    const Eigen::Vector4d& warm, CouplingScratch* scratch) const {
+  if (hub_breathing_.empty() || sections.empty()) return solver->Solve(sections, freedom_, warm);
   const auto ne = static_cast<std::size_t>(solver->columns());
-  const auto rows = static_cast<std::size_t>(bushing_rows_);
-  const auto m = static_cast<Eigen::Index>(rows);
-  const double pitch = bushing_length_ / bushing_rows_;
+  const std::size_t count = sections.size();
+  const auto m = static_cast<Eigen::Index>(count);
   CouplingScratch& c = *scratch;
-  // Start from the shifts the rows settled at one depth step earlier (the engaged pattern has
-  // moved by a step: most rows' shifts barely change); rows without one start unshifted.
-  c.row_shift.resize(rows, 0.0);
-  // Moves every section's gaps by its bore row's entry of `by_row` (the breathing mode: uniform),
-  // each section's shift left in c.section_shift.
-  auto shift_gaps = [&](const auto& by_row) {
-    c.section_shift.resize(sections.size());
-    for (std::size_t s = 0; s < sections.size(); ++s) {
-      const double x = by_row[bore_row[s]];
+  // Rows keep the last solve's pressures (the last depth step's: the engaged pattern has moved
+  // by a step, most rows' pressures barely change); none at the start of a chunk.
+  c.bore_pressure.resize(static_cast<std::size_t>(bushing_rows_), 0.0);
+  c.shaft_pressure.resize(static_cast<std::size_t>(shaft_rows_), 0.0);
+  c.bore_extra.resize(c.bore_pressure.size());
+  c.shaft_extra.resize(c.shaft_pressure.size());
+  // Each section's share of its rows' mean pressures: length over the row's.
+  c.weight_bore.resize(count);
+  c.weight_shaft.resize(count);
+  for (std::size_t s = 0; s < count; ++s) {
+    const auto b = static_cast<std::size_t>(bore_row[s]),
+               h = static_cast<std::size_t>(shaft_row[s]);
+    c.weight_bore[s] = length[s] / (bushing_edges_[b + 1] - bushing_edges_[b]);
+    c.weight_shaft[s] = length[s] / (shaft_edges_[h + 1] - shaft_edges_[h]);
+  }
+  // The extra displacement the rows' pressures give each section: its bore row's plus its shaft
+  // row's.
+  auto extra_at_sections = [&](double* out) {
+    hub_breathing_.ExtraDisplacement(c.bore_pressure.data(), c.bore_extra.data());
+    shaft_breathing_.ExtraDisplacement(c.shaft_pressure.data(), c.shaft_extra.data());
+    for (std::size_t s = 0; s < count; ++s) {
+      out[s] = c.bore_extra[static_cast<std::size_t>(bore_row[s])] +
+               c.shaft_extra[static_cast<std::size_t>(shaft_row[s])];
+    }
+  };
+  // Moves every section's gaps by by_section[s] (the breathing mode: uniform), left in
+  // c.section_shift.
+  auto shift_gaps = [&](const auto& by_section) {
+    c.section_shift.resize(count);
+    for (std::size_t s = 0; s < count; ++s) {
+      const double x = by_section[static_cast<Eigen::Index>(s)];
       c.section_shift[s] = x;
       for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += x;
     }
   };
-  if (!coupling_.empty()) shift_gaps(c.row_shift);
+  c.shift.resize(count);
+  extra_at_sections(c.shift.data());
+  shift_gaps(Eigen::Map<const Eigen::VectorXd>(c.shift.data(), m));
   RigidContactResult r = solver->Solve(sections, freedom_, warm);
-  if (coupling_.empty() || sections.empty()) return r;
-  c.row_pressure.resize(rows);
-  c.row_target.resize(rows);
-  c.row_stiffness.resize(rows);
-  c.section_contact.resize(sections.size());
+  c.target.resize(count);
+  c.mean.assign(count, 0.0);
+  c.stiffness.resize(count);
+  c.section_contact.resize(count);
   c.step.setZero(m);
   // The iteration contracts (see below); this bounds a pathological step's cost.
   constexpr int kMaxCouplingSolves = 20;
-  c.row_previous.assign(rows, 0.0);
-  c.row_full.resize(rows);
   double last_change = std::numeric_limits<double>::infinity();
   bool secants = true;
   for (int solve = 0;; ++solve) {
-    c.row_previous.swap(c.row_pressure);
-    std::fill(c.row_pressure.begin(), c.row_pressure.end(), 0.0);
-    std::fill(c.row_stiffness.begin(), c.row_stiffness.end(), 0.0);
-    std::fill(c.row_full.begin(), c.row_full.end(), 0.0);
+    c.previous.swap(c.mean);
+    c.mean.resize(count);
+    std::fill(c.bore_pressure.begin(), c.bore_pressure.end(), 0.0);
+    std::fill(c.shaft_pressure.begin(), c.shaft_pressure.end(), 0.0);
     bool all_round = true;  // every section in contact all round
-    for (std::size_t s = 0; s < sections.size(); ++s) {
+    for (std::size_t s = 0; s < count; ++s) {
       const double* p = solver->pressures().data() + s * ne;
       const std::vector<char>& set = solver->contact_sets()[s];
-      double mean = 0.0, touching = 0.0;
+      double sum = 0.0, touching = 0.0;
       for (std::size_t j = 0; j < ne; ++j) {
-        mean += p[j];
+        sum += p[j];
         touching += set[j] ? 1.0 : 0.0;
       }
       all_round = all_round && touching == static_cast<double>(ne);
-      const auto row = static_cast<std::size_t>(bore_row[s]);
-      const double share = length[s] / pitch / static_cast<double>(ne);
-      c.row_pressure[row] += mean * share;
-      c.row_stiffness[row] += breathing_stiffness_ * touching * share;
-      c.row_full[row] += breathing_stiffness_ * static_cast<double>(ne) * share;
-    }
-    // After a shifted solve, each row's measured response to its shift (a secant), held between
-    // the touching columns' stiffness and full contact's: it counts the columns the shift closed.
-    if (solve > 0 && secants) {
-      for (std::size_t i = 0; i < rows; ++i) {
-        const double dx = c.step[static_cast<Eigen::Index>(i)];
-        if (dx == 0.0) continue;
-        const double secant = -(c.row_pressure[i] - c.row_previous[i]) / dx;
-        c.row_stiffness[i] = std::clamp(secant, c.row_stiffness[i], c.row_full[i]);
+      c.mean[s] = sum / static_cast<double>(ne);
+      c.bore_pressure[static_cast<std::size_t>(bore_row[s])] += c.mean[s] * c.weight_bore[s];
+      c.shaft_pressure[static_cast<std::size_t>(shaft_row[s])] += c.mean[s] * c.weight_shaft[s];
+      // The mean pressure's response to a uniform closure: P0 over the touching columns; after a
+      // shifted solve, the measured secant, held between that and full contact's P0 (it counts
+      // the columns the shift closed).
+      const double touching_stiffness = breathing_stiffness_ * touching / static_cast<double>(ne);
+      c.stiffness[s] = touching_stiffness;
+      const double dx = c.step[static_cast<Eigen::Index>(s)];
+      if (solve > 0 && secants && dx != 0.0) {
+        c.stiffness[s] =
+            std::clamp(-(c.mean[s] - c.previous[s]) / dx, touching_stiffness, breathing_stiffness_);
       }
     }
-    coupling_.ExtraDisplacement(c.row_pressure.data(), c.row_target.data());
-    // Only the rows a section lies in take a shift (the others bend, but nothing meets them).
+    extra_at_sections(c.target.data());
     double change = 0.0, size = 0.0;
-    for (std::size_t s = 0; s < sections.size(); ++s) {
-      const auto i = static_cast<std::size_t>(bore_row[s]);
-      change = std::max(change, std::abs(c.row_target[i] - c.row_shift[i]));
-      size = std::max(size, std::abs(c.row_target[i]));
+    for (std::size_t s = 0; s < count; ++s) {
+      change = std::max(change, std::abs(c.target[s] - c.shift[s]));
+      size = std::max(size, std::abs(c.target[s]));
     }
     // A thousandth of the shift: a nanometre on micrometre shifts, below what the tables resolve.
     if (change <= 1e-3 * size + 1e-13 || solve == kMaxCouplingSolves) break;
@@ -721,34 +742,51 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     // the touching columns' stiffness from here on, which cannot overshoot.
     if (change > last_change) secants = false;
     last_change = change;
-    // Quasi-Newton on x = X pbar(x), pbar(x) ~ pbar(x_k) - K (x - x_k) with K each row's breathing
-    // stiffness over its touching columns: (I + X K) dx = X pbar(x_k) - x_k. Why it converges:
-    // X is negative semidefinite with X >= -I / k (bending only stiffens the hub) and a row's
-    // true response to a shift lies between 0 and the section's P0 < k (the shaft in series), so
-    // the plain iteration x <- X pbar(x) contracts by at most P0 / k (0.8 for the paper's hub);
-    // K taken from the touching columns underestimates the response (a shift closes more of
-    // them) and keeps each step short of the root, never past it. The measured secants (held
-    // below full contact's K) reach the root in two or three solves where the contact set grows
-    // with the shift, and are dropped once they make things worse.
-    c.system = coupling_.matrix() *
-               Eigen::Map<const Eigen::VectorXd>(c.row_stiffness.data(), m).asDiagonal();
+    // Quasi-Newton on x = M pbar(x), pbar(x) ~ pbar(x_k) - K (x - x_k) with K each section's
+    // breathing stiffness over its touching columns: (I + M K) dx = M pbar(x_k) - x_k, where
+    // M(s, t) = X_bore(b_s, b_t) w_t + X_shaft(h_s, h_t) w'_t maps the sections' mean pressures
+    // to their extra displacement. Why it converges: with free faces X is negative semidefinite
+    // with X >= -F_0 (axial_breathing.h; the coupling only stiffens a part) and a section's true
+    // response to a shift lies between 0 and P0 (the other part in series), so the plain
+    // iteration x <- M pbar(x) contracts; K taken from the touching columns underestimates the
+    // response (a shift closes more of them) and keeps each step short of the root, never past
+    // it. The measured secants (held below full contact's P0) reach the root in two or three
+    // solves where the contact set grows with the shift, and are dropped once they make things
+    // worse.
+    c.system.resize(m, m);
+    for (Eigen::Index t = 0; t < m; ++t) {
+      const auto tu = static_cast<std::size_t>(t);
+      const double kb = c.weight_bore[tu] * c.stiffness[tu];
+      const double ks = c.weight_shaft[tu] * c.stiffness[tu];
+      for (Eigen::Index s = 0; s < m; ++s) {
+        c.system(s, t) = hub_breathing_.matrix()(bore_row[s], bore_row[t]) * kb +
+                         shaft_breathing_.matrix()(shaft_row[s], shaft_row[t]) * ks;
+      }
+    }
     c.system.diagonal().array() += 1.0;
-    c.step =
-        c.system.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(c.row_target.data(), m) -
-                                      Eigen::Map<const Eigen::VectorXd>(c.row_shift.data(), m));
+    c.step = c.system.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(c.target.data(), m) -
+                                           Eigen::Map<const Eigen::VectorXd>(c.shift.data(), m));
     shift_gaps(c.step);
-    for (std::size_t i = 0; i < rows; ++i) c.row_shift[i] += c.step[static_cast<Eigen::Index>(i)];
+    for (std::size_t s = 0; s < count; ++s) c.shift[s] += c.step[static_cast<Eigen::Index>(s)];
     // In contact all round the step is exact (a uniform gap change is the breathing mode alone,
     // P0 per unit, with no net force): the pressures move by -P0 dx without a solve, unless one
     // would turn negative.
     if (all_round) {
-      c.section_dp.resize(sections.size());
-      for (std::size_t s = 0; s < sections.size(); ++s) {
+      c.section_dp.resize(count);
+      for (std::size_t s = 0; s < count; ++s) {
         c.section_dp[s] = -breathing_stiffness_ * c.section_shift[s];
       }
-      if (solver->ShiftFullContact(sections, c.section_dp, &r)) break;
+      if (solver->ShiftFullContact(sections, c.section_dp, &r)) {
+        // The rows' pressures at the answer, for the next depth step's start.
+        for (std::size_t s = 0; s < count; ++s) {
+          const double dp = c.section_dp[s];
+          c.bore_pressure[static_cast<std::size_t>(bore_row[s])] += dp * c.weight_bore[s];
+          c.shaft_pressure[static_cast<std::size_t>(shaft_row[s])] += dp * c.weight_shaft[s];
+        }
+        break;
+      }
     }
-    for (std::size_t s = 0; s < sections.size(); ++s) {
+    for (std::size_t s = 0; s < count; ++s) {
       c.section_contact[s] = solver->contact_sets()[s];
       sections[s].warm_contact = c.section_contact[s].data();
     }
@@ -756,13 +794,6 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(RigidSectionContact* s
     from << r.offset, r.tilt;
     r = solver->Solve(sections, freedom_, from, c.section_shift);
   }
-  // What the next depth step starts from: this step's shifts where sections lay, none elsewhere.
-  std::fill(c.row_target.begin(), c.row_target.end(), 0.0);
-  for (std::size_t s = 0; s < sections.size(); ++s) {
-    const auto i = static_cast<std::size_t>(bore_row[s]);
-    c.row_target[i] = c.row_shift[i];
-  }
-  c.row_shift.swap(c.row_target);
   return r;
 }
 
@@ -773,45 +804,49 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   std::size_t k = 0;
   double t = 0.0;
   if (!Locate(pose.depth, &k, &t)) return true;
+  // The sections the tables solve: where a shaft row meets a bore row.
+  std::vector<Slice> slices;
+  SlicesAt(pose.depth, &slices);
+  if (slices.empty()) return true;
   const std::size_t n = static_cast<std::size_t>(n_), ne = n / static_cast<std::size_t>(block_);
-  const double shift = pose.depth - shaft_length_;
-  const double lo = std::max(shift, 0.0), hi = std::min(pose.depth, bushing_length_);
-  std::vector<int> rows, bore_rows;
-  std::vector<double> gaps, lengths;
-  for (int i = 0; i < shaft_rows_; ++i) {
-    const double pos = shaft_row_centre_[i] + shift;
-    if (pos < 0.0 || pos >= bushing_length_) continue;
-    int b = static_cast<int>(std::upper_bound(bushing_edges_.begin(), bushing_edges_.end(), pos) -
-                             bushing_edges_.begin()) -
-            1;
-    b = std::clamp(b, 0, bushing_rows_ - 1);
-    rows.push_back(i);
-    bore_rows.push_back(b);
-    lengths.push_back(shaft_edges_[i + 1] - shaft_edges_[i]);
-    gaps.resize(rows.size() * ne, 0.0);
+  const std::size_t count = slices.size();
+  std::vector<int> shaft_rows(count), bore_rows(count);
+  std::vector<double> gaps(count * ne, 0.0), lengths(count);
+  std::vector<ContactSection> sections(count);
+  const double lo = std::max(pose.depth - shaft_length_, 0.0);
+  double pos = lo, engaged = 0.0;
+  for (const Slice& sl : slices) engaged += sl.length;
+  for (std::size_t s = 0; s < count; ++s) {
+    const Slice& sl = slices[s];
+    shaft_rows[s] = sl.shaft_row;
+    bore_rows[s] = sl.bushing_row;
+    lengths[s] = sl.length;
+    const auto i = static_cast<std::size_t>(sl.shaft_row);
+    const double share = sl.length / (shaft_edges_[i + 1] - shaft_edges_[i]);
     for (std::size_t j = 0; j < n; ++j) {
-      const double gap = v_bushing_[b * n_ + static_cast<Eigen::Index>(j)] -
-                         v_shaft_[i * n_ + static_cast<Eigen::Index>(j)] + smoothing_;
-      gaps[(rows.size() - 1) * ne + j / static_cast<std::size_t>(block_)] += gap / block_;
+      const auto jj = static_cast<Eigen::Index>(j);
+      const double gap =
+          v_bushing_[sl.bushing_row * n_ + jj] - v_shaft_[sl.shaft_row * n_ + jj] + smoothing_;
+      gaps[s * ne + j / static_cast<std::size_t>(block_)] += gap / block_;
     }
-  }
-  if (rows.empty()) return true;
-  std::vector<ContactSection> sections(rows.size());
-  for (std::size_t s = 0; s < rows.size(); ++s) {
     sections[s].gap = gaps.data() + s * ne;
-    sections[s].cell_area = shaft_area_[rows[s] * n_] * block_;
-    sections[s].y = shaft_row_centre_[rows[s]] + shift - 0.5 * (lo + hi);
+    sections[s].cell_area = shaft_area_[sl.shaft_row * n_] * share * block_;
+    sections[s].y = pos + 0.5 * sl.length - (lo + 0.5 * engaged);
+    pos += sl.length;
   }
   const std::size_t nearest = t < 0.5 ? k : k + 1;
   Eigen::Vector4d warm;
   warm << Rotate(anchor_[nearest], -frame_), Rotate(tilt_[nearest], -frame_);
   RigidSectionContact solver(section_, static_cast<int>(ne));
   CouplingScratch coupling;
-  SolveSections(&solver, sections, bore_rows, lengths, gaps.data(), warm, &coupling);
-  for (std::size_t s = 0; s < rows.size(); ++s) {
+  SolveSections(&solver, sections, bore_rows, shaft_rows, lengths, gaps.data(), warm, &coupling);
+  // A shaft row's cells take the length-weighted mean of its sections' pressures.
+  for (std::size_t s = 0; s < count; ++s) {
+    const auto i = static_cast<std::size_t>(shaft_rows[s]);
+    const double share = lengths[s] / (shaft_edges_[i + 1] - shaft_edges_[i]);
     for (std::size_t j = 0; j < n; ++j) {
-      (*pressure)[rows[s] * n_ + static_cast<Eigen::Index>(j)] =
-          solver.pressures()[s * ne + j / static_cast<std::size_t>(block_)];
+      (*pressure)[shaft_rows[s] * n_ + static_cast<Eigen::Index>(j)] +=
+          share * solver.pressures()[s * ne + j / static_cast<std::size_t>(block_)];
     }
   }
   return true;

@@ -6,9 +6,9 @@
 
 #include <Eigen/Core>
 
+#include "framework/model/axial_breathing.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/convex_polygon.h"
-#include "framework/model/hub_axial_coupling.h"
 #include "framework/model/section_contact.h"
 #include "framework/model/texture_contact.h"
 
@@ -67,9 +67,11 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
   bool elastic() const { return elastic_; }
   // Not for the tick (allocates and solves): the elastic model's contact pressure (Pa) of every
-  // cell of the shaft's grid at the pose's depth, at the part's equilibrium: the shaft rows inside
-  // the bushing, each against the bushing row at its centre, each column block's pressure spread
-  // over its cells. False (nothing written) without the elastic model.
+  // cell of the shaft's grid at the pose's depth, at the part's equilibrium: the sections where a
+  // shaft row meets a bore row solved as the tables solve them, a row's cells taking the
+  // length-weighted mean of its sections' pressures (zero for the part of a row outside the bore)
+  // and each column block's pressure spread over its cells. False (nothing written) without the
+  // elastic model.
   bool PressureMap(const MatingPose& pose, Eigen::VectorXd* pressure) const;
   double normal_force(int k) const { return normal_[static_cast<std::size_t>(k)]; }
   Eigen::Vector2d tilt(int k) const { return tilt_[static_cast<std::size_t>(k)]; }
@@ -97,23 +99,27 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     auto operator<=>(const RowPair&) const = default;
   };
   // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
-  // The hub's axial coupling of one solve: per bore row the mean pressure, the gap shift applied
-  // and the breathing stiffness the update assumes; per section the contact set to restart from.
+  // The parts' axial coupling of one solve. Per row of either part the mean pressure (kept from
+  // the last solve: the next depth step starts from its extra displacement) and that
+  // displacement; per section the gap shift applied, its mean pressure, the breathing stiffness
+  // the update assumes and the contact set to restart from.
   struct CouplingScratch {
-    std::vector<double> row_pressure, row_previous, row_shift, row_target, row_stiffness, row_full,
+    std::vector<double> bore_pressure, shaft_pressure, bore_extra, shaft_extra;
+    std::vector<double> shift, target, mean, previous, stiffness, weight_bore, weight_shaft,
         section_dp, section_shift;
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd system;
     Eigen::VectorXd step;
   };
-  // The sections' solve with the hub's axial coupling (coupling_ set): each section's gaps (`gaps`,
-  // section-major, the solver's columns each) are shifted by its bore row's extra displacement for
-  // the rows' mean pressures until they agree (a quasi-Newton iteration on the breathing mode: in
-  // full contact the second solve is the answer). bore_row and length per section.
+  // The sections' solve with the parts' axial coupling (hub_breathing_ set): each section's gaps
+  // (`gaps`, section-major, the solver's columns each) are shifted by the extra displacement of
+  // its bore row and its shaft row for the rows' mean pressures until they agree (a quasi-Newton
+  // iteration on the breathing mode: in full contact the second solve is the answer). bore_row,
+  // shaft_row and length per section.
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
-                                   std::span<const int> bore_row, std::span<const double> length,
-                                   double* gaps, const Eigen::Vector4d& warm,
-                                   CouplingScratch* scratch) const;
+                                   std::span<const int> bore_row, std::span<const int> shaft_row,
+                                   std::span<const double> length, double* gaps,
+                                   const Eigen::Vector4d& warm, CouplingScratch* scratch) const;
 
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
@@ -122,7 +128,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<std::size_t> bucket;
     std::vector<double> st, w, col_a, col_b, col_energy, proj, elastic_gap;
     std::vector<ContactSection> sections;
-    std::vector<int> section_row;
+    std::vector<int> section_row, section_shaft_row;
     std::vector<double> section_length;
     Eigen::Vector2d warm{0.0, 0.0};
     Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
@@ -191,7 +197,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   int block_ = 1;           // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;  // m, added to every gap
   PressFitSection section_;
-  HubAxialCoupling coupling_;         // empty: plane sections
+  // The hub's and the shaft's breathing along their axes (empty: plane sections).
+  AxialBreathing hub_breathing_, shaft_breathing_;
   double breathing_stiffness_ = 0.0;  // 1 / C_0 of the section, Pa/m
   RigidFreedom freedom_;
   double frame_ = 0.0;  // angle of the elastic solve's column 0

@@ -24,8 +24,9 @@ struct ElasticOptions {
   double tilt_stiffness = 0.0;  // what holds its tilt, N*m/rad (0 = nothing)
   bool plane_strain = false;
   int columns = kDefaultColumns;
-  // The hub's breathing mode coupled along its axis (framework/model/hub_axial_coupling.h); false
-  // leaves every section on its own (plane sections), for comparison.
+  // The hub's and the shaft's breathing modes coupled along their axes
+  // (framework/model/axial_breathing.h); false leaves every section on its own (plane sections),
+  // for comparison.
   bool axial_coupling = true;
 };
 

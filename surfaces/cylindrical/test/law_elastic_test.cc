@@ -70,13 +70,27 @@ struct ElasticPair {
 
 TEST(ElasticLaw, Din7190SmoothingOfAUniformPressFit) {
   // 5 um radial over the full 20 mm engagement, mu = 0.15: 1099.6 N per um of what is left after
-  // smoothing 0.8 (1.6 + 1.6) um on the diameter, i.e. 1099.6 x (5 - 1.28) = 4090 N.
-  ElasticPair p([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; });
+  // smoothing 0.8 (1.6 + 1.6) um on the diameter, i.e. 1099.6 x (5 - 1.28) = 4090 N. That is
+  // DIN 7190's plane sections, which the model gives without its axial coupling.
+  ModelSettings plane = Elastic();
+  plane.extra = ConfigNode::Parse("{axial_coupling: false}", "test", "model.options");
+  ElasticPair p([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; }, plane);
+  ElasticPair coupled([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; });
   EXPECT_NEAR(p.analyzer.smoothing(), 1.28 * kUm, 1e-15);
   for (double depth : {20.5e-3, 30e-3, 39.5e-3}) {
     const Outcome r = OutcomeAt(p.analyzer, p.law, depth, {0, 0});
     EXPECT_NEAR(-r.wrench.force.y(), 4090.0, 0.01 * 4090.0) << depth;
     EXPECT_NEAR(r.state.normal_force, 4090.0 / 0.15, 0.01 * 4090.0 / 0.15);
+    // The shaft running on beyond the hub stiffens the engaged length (CalculiX: 1.6 % with 10 mm
+    // either side, the through case of tools/fem/data/axisymmetric.csv, whose 5 um scale to the
+    // 3.72 left here; the solids are linear and in contact all round).
+    const Outcome c = OutcomeAt(coupled.analyzer, coupled.law, depth, {0, 0});
+    EXPECT_GT(c.state.normal_force, r.state.normal_force) << depth;
+    EXPECT_LT(c.state.normal_force, 1.02 * r.state.normal_force) << depth;
+    if (depth == 30e-3) {
+      const double fem = test_support::AxisymmetricFemForce("cylinder-through") * 3.72 / 5.0;
+      EXPECT_NEAR(c.state.normal_force, fem, 0.01 * fem);
+    }
   }
   // The pressure map: Lame's 5.8333 MPa per um of the smoothed 3.72 um on every engaged cell.
   MatingPose pose;
@@ -90,6 +104,16 @@ TEST(ElasticLaw, Din7190SmoothingOfAUniformPressFit) {
     EXPECT_NEAR(p_map[c], 5.8333e6 * 3.72, 0.001 * 5.8333e6 * 3.72);
   }
   EXPECT_EQ(engaged, 20 * 72);  // the 20 shaft rows inside the bushing
+  // Coupled, the same cells carry the tables' normal force, more at the hub's faces than in its
+  // middle (the unloaded shaft beyond each face holds the loaded one).
+  ASSERT_TRUE(coupled.analyzer.PressureMap(pose, &p_map));
+  ContactState state;
+  coupled.analyzer.Evaluate(pose, &state);
+  const double cell_area = kPi * 0.020 * 0.040 / (40 * 72);  // the shaft's grid: equal cells
+  EXPECT_NEAR(p_map.sum() * cell_area, state.normal_force, 1e-3 * state.normal_force);
+  const int face_row = 10, middle_row = 20;  // the shaft's rows at the entrance and in the middle
+  EXPECT_GT(p_map[face_row * 72], 1.05 * p_map[middle_row * 72]);
+  EXPECT_GT(p_map[middle_row * 72], 0.0);
 }
 
 TEST(ElasticLaw, InterferenceBelowTheSmoothingLeavesOnlyTheWeight) {
@@ -111,14 +135,27 @@ TEST(ElasticLaw, InterferenceBelowTheSmoothingLeavesOnlyTheWeight) {
 
 TEST(ElasticLaw, OvalInterferenceCarriesOnlyItsMean) {
   // delta0 + delta2 cos 2 theta with delta0 >= 0.145 delta2: full contact, normal force exactly
-  // P0 delta0 pi d L (no roughness here, so nothing is smoothed).
+  // P0 delta0 pi d L on plane sections (no roughness here, so nothing is smoothed). With the axial
+  // coupling, exactly what the uniform delta0 gives: the ovality adds nothing to the breathing.
   const double p0 = 5.8333e12;
+  ModelSettings plane = Elastic(TextureMode::kSampled);
+  plane.extra = ConfigNode::Parse("{axial_coupling: false}", "test", "model.options");
   for (double ratio : {0.15, 0.3, 1.0}) {
     const double d2 = 4 * kUm, d0 = ratio * d2;
-    ElasticPair q([&](int, int j) { return d0 + d2 * std::cos(2 * 2 * kPi * j / 360); },
-                  [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), 360);
+    auto oval = [&](int, int j) { return d0 + d2 * std::cos(2 * 2 * kPi * j / 360); };
+    ElasticPair q(
+        oval, [](int, int) { return 0.0; }, plane, 360);
     const Outcome r = OutcomeAt(q.analyzer, q.law, 30e-3, {0, 0});
     EXPECT_NEAR(r.state.normal_force / (p0 * d0 * kPi * 0.020 * 0.020), 1.0, 1e-4) << ratio;
+    ElasticPair coupled(
+        oval, [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), 360);
+    ElasticPair uniform([&](int, int) { return d0; }, [](int, int) { return 0.0; },
+                        Elastic(TextureMode::kSampled), 360);
+    const double n_uniform =
+        OutcomeAt(uniform.analyzer, uniform.law, 30e-3, {0, 0}).state.normal_force;
+    EXPECT_NEAR(OutcomeAt(coupled.analyzer, coupled.law, 30e-3, {0, 0}).state.normal_force,
+                n_uniform, 1e-4 * n_uniform)
+        << ratio;
   }
 }
 
@@ -249,9 +286,12 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
   for (const FemCase& c : cases) {
     const int columns = 240;  // the FEM's elements around
     auto shaft = [&](int, int j) { return Interference(c, 2 * kPi * (j + 0.5) / columns) * kUm; };
-    // The elastic solve on every grid column: the 0.5 mm bump is two of them wide.
+    // The elastic solve on every grid column: the 0.5 mm bump is two of them wide. The FEM is a
+    // plane section: so is the model here (the shaft runs through the hub, whose ends its
+    // axial coupling would stiffen by 1.6 %, as the axisymmetric cases below check).
     ModelSettings fine = Elastic(TextureMode::kSampled);
-    fine.extra = ConfigNode::Parse("{columns: 240}", "test", "model.options");
+    fine.extra =
+        ConfigNode::Parse("{columns: 240, axial_coupling: false}", "test", "model.options");
     ElasticPair elastic(
         shaft, [](int, int) { return 0.0; }, fine, columns);
     elastic.shaft.texture = TextureSpec{};
@@ -313,10 +353,12 @@ double UniformNormalForce(double shaft_length, double depth, const std::string& 
   return OutcomeAt(analyzer, law, depth, {0, 0}).state.normal_force;
 }
 
-// Plane sections against a finite hub: exact in plane strain (the FEM's slice held between
-// planes), and within 2 % for the free hub with the shaft flush with it or running through it
-// (the hub's free ends and the shaft's continuation nearly cancel). The hub's axial coupling
-// changes nothing there: a uniform load bends nothing.
+// The fully engaged finite hub: plane sections are exact in plane strain (the FEM's slice held
+// between planes) and within 2 % for the free hub with the shaft flush with it or running through
+// it (the hub's free ends and the shaft's continuation nearly cancel). The axial coupling changes
+// nothing where both parts are loaded over their whole length (a uniform load bends nothing) and
+// takes the through shaft from -1.55 % to the FEM's force: its unloaded ends stiffen the loaded
+// middle. Asserted: 1 % (measured: within 0.02 %).
 TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
   struct Case {
     const char* name;
@@ -330,18 +372,24 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
                         Case{"cylinder-through", 0.040, 0.030, "{}", "{axial_coupling: false}"}}) {
     const double fem = test_support::AxisymmetricFemForce(c.name);
     const double model = UniformNormalForce(c.shaft_length, c.depth, c.options);
-    std::printf("%-22s FEM %8.1f N  elastic model %8.1f N  %+.2f %%\n", c.name, fem, model,
-                100 * (model / fem - 1));
-    EXPECT_LT(std::abs(model / fem - 1.0), 0.10) << c.name;
-    EXPECT_NEAR(UniformNormalForce(c.shaft_length, c.depth, c.plane_options), model, 1e-6 * model);
-    ChartRow(c.name, fem, model, model);
+    const double plane = UniformNormalForce(c.shaft_length, c.depth, c.plane_options);
+    std::printf("%-22s FEM %8.1f N  elastic model %8.1f N  %+.2f %%  plane sections %+.2f %%\n",
+                c.name, fem, model, 100 * (model / fem - 1), 100 * (plane / fem - 1));
+    EXPECT_LT(std::abs(model / fem - 1.0), 0.01) << c.name;
+    if (c.shaft_length == c.depth) {
+      EXPECT_NEAR(plane, model, 1e-6 * model) << c.name;
+    } else {
+      EXPECT_LT(std::abs(model / fem - 1.0), 0.1 * std::abs(plane / fem - 1.0)) << c.name;
+    }
+    ChartRow(c.name, fem, model, plane);
   }
 }
 
 // The shaft (20 mm long, the rest of it outside the entrance) part way in: the hub's unloaded
-// length stiffens the loaded one. Plane sections give 10 to 46 % too little; with the hub's axial
-// coupling (hub_axial_coupling.h) the model is within -3.0 to +3.5 % (2 mm, a quarter, half and
-// three quarters of the 20 mm hub; walls of 2, 5 and 10 mm). Asserted: the issue's 10 %.
+// length and the shaft's length still outside stiffen the loaded band. Plane sections give 10 to
+// 78 % too little; with both parts' axial coupling (axial_breathing.h) the model is within
+// +0.15 % (half a millimetre, 1 and 2 mm, a quarter, half and three quarters of the 20 mm hub;
+// walls of 2, 5 and 10 mm). Asserted: 1 % (the issue asks 10).
 struct PartlyEngaged {
   const char* name;
   double depth, hub_diameter;
@@ -366,18 +414,17 @@ TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {
                                  PartlyEngaged{"cylinder-three-quarters-engaged", 0.015, 0.030},
                                  PartlyEngaged{"cylinder-thin-hub-half-engaged", 0.010, 0.024},
                                  PartlyEngaged{"cylinder-thick-hub-half-engaged", 0.010, 0.040}}) {
-    ExpectWithinOfCalculix(c, 0.10);
+    ExpectWithinOfCalculix(c, 0.01);
   }
 }
 
-// Not met yet: in the first millimetre the coupled model is 29 % (0.5 mm) and 12.5 % (1 mm) low
-// (the FEM: 4154 and 5093 N; plane sections 916 and 1833 N). There the shaft's part still outside
-// the entrance stiffens the part inside, as the hub's unloaded length does; the coupling models
-// the hub only (a solid shaft is no shell).
-TEST(ElasticLaw, DISABLED_AgreesWithCalculixInTheFirstMillimetre) {
+// Where a press fit starts: half a millimetre in, the FEM's force is 4.5 times what plane sections
+// give (4154 against 916 N). A model of the hub's axial coupling alone (a shell on its Lame
+// foundation) was 29 % low here: the shaft's length outside the entrance stiffens it as much.
+TEST(ElasticLaw, AgreesWithCalculixInTheFirstMillimetre) {
   for (const PartlyEngaged& c : {PartlyEngaged{"cylinder-entry-0.5mm", 0.0005, 0.030},
                                  PartlyEngaged{"cylinder-entry-1mm", 0.001, 0.030}}) {
-    ExpectWithinOfCalculix(c, 0.10);
+    ExpectWithinOfCalculix(c, 0.01);
   }
 }
 

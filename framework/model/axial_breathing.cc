@@ -1,0 +1,203 @@
+#include "framework/model/axial_breathing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+// Axial elements per row: a row's mean displacement then averages a curved profile, not one
+// linear piece (measured against CalculiX half a millimetre in: 4.3 % high with one, 1.6 % with
+// two; layer growth 1.5 there).
+constexpr int kElementsPerRow = 2;
+// Growth of the radial layers away from the loaded face, where the load's edges concentrate the
+// strain (1.25 against 1.5: 1.1 % against 1.6 % from CalculiX half a millimetre in).
+constexpr double kLayerGrowth = 1.25;
+// At least this many layers through a wall: a thin hub carries its load by bending across it.
+constexpr int kFewestLayers = 4;
+
+// Radial stations from the loaded face into the body, first layer `first` thick.
+std::vector<double> RadialStations(const BreathingBody& body, double first) {
+  const double wall = body.outer_radius - body.inner_radius;
+  double step = std::min(first, wall / kFewestLayers);
+  std::vector<double> depth{0.0};
+  while (depth.back() + step < wall) {
+    depth.push_back(depth.back() + step);
+    step *= kLayerGrowth;
+  }
+  // A last layer thinner than half the one before it is merged into that one.
+  if (depth.size() > 1 && wall - depth.back() < 0.5 * (depth.back() - depth[depth.size() - 2])) {
+    depth.pop_back();
+  }
+  depth.push_back(wall);
+  std::vector<double> r(depth.size());
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    r[i] = body.loaded_inside ? body.inner_radius + depth[i]
+                              : body.outer_radius - depth[depth.size() - 1 - i];
+  }
+  return r;  // increasing
+}
+
+// The axisymmetric bilinear element's stiffness per radian (u_r, u_z at its four corners,
+// counterclockwise from (r0, z0)), 2 x 2 Gauss points. Strains (e_r, e_z, e_theta, g_rz).
+Eigen::Matrix<double, 8, 8> ElementStiffness(double r0, double r1, double z0, double z1,
+                                             const Eigen::Matrix4d& d) {
+  Eigen::Matrix<double, 8, 8> k = Eigen::Matrix<double, 8, 8>::Zero();
+  const double g = 1.0 / std::sqrt(3.0);
+  const double hr = 0.5 * (r1 - r0), hz = 0.5 * (z1 - z0);
+  const std::array<double, 4> xi{-1.0, 1.0, 1.0, -1.0}, eta{-1.0, -1.0, 1.0, 1.0};
+  for (double a : {-g, g}) {
+    for (double b : {-g, g}) {
+      const double r = r0 + hr * (1.0 + a);
+      Eigen::Matrix<double, 4, 8> bm = Eigen::Matrix<double, 4, 8>::Zero();
+      for (int n = 0; n < 4; ++n) {
+        const double shape = 0.25 * (1.0 + xi[n] * a) * (1.0 + eta[n] * b);
+        const double dr = 0.25 * xi[n] * (1.0 + eta[n] * b) / hr;
+        const double dz = 0.25 * eta[n] * (1.0 + xi[n] * a) / hz;
+        bm(0, 2 * n) = dr;
+        bm(1, 2 * n + 1) = dz;
+        bm(2, 2 * n) = shape / r;
+        bm(3, 2 * n) = dz;
+        bm(3, 2 * n + 1) = dr;
+      }
+      k += bm.transpose() * d * bm * (r * hr * hz);
+    }
+  }
+  return k;
+}
+
+}  // namespace
+
+AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double> row_edges) {
+  if (!(body.inner_radius >= 0.0) || !(body.outer_radius > body.inner_radius)) {
+    throw UserError("axial breathing needs 0 <= inner radius < outer radius");
+  }
+  if (body.loaded_inside && !(body.inner_radius > 0.0)) {
+    throw UserError("axial breathing: a part loaded on its bore needs a bore (inner radius > 0)");
+  }
+  const double e = body.material.youngs_modulus, nu = body.material.poisson;
+  if (!(e > 0.0) || !(nu > -1.0) || !(nu < 0.5)) {
+    throw UserError("axial breathing needs the part's Young's modulus and Poisson's ratio");
+  }
+  const int rows = static_cast<int>(row_edges.size()) - 1;
+  if (rows < 1 || rows > kMostRows) {
+    throw UserError("axial breathing needs 1 to " + std::to_string(kMostRows) + " rows, got " +
+                    std::to_string(std::max(rows, 0)));
+  }
+  for (int i = 0; i < rows; ++i) {
+    if (!(row_edges[i + 1] > row_edges[i]) || !std::isfinite(row_edges[i + 1] - row_edges[i])) {
+      throw UserError("axial breathing needs increasing row edges");
+    }
+  }
+
+  // Stations: kElementsPerRow equal elements per row along z; layers in r.
+  std::vector<double> z;
+  for (int i = 0; i < rows; ++i) {
+    for (int s = 0; s < kElementsPerRow; ++s) {
+      z.push_back(row_edges[i] + (row_edges[i + 1] - row_edges[i]) * s / kElementsPerRow);
+    }
+  }
+  z.push_back(row_edges[rows]);
+  const double mean_element = (row_edges[rows] - row_edges[0]) / (rows * kElementsPerRow);
+  const std::vector<double> r = RadialStations(body, mean_element);
+  const int nr = static_cast<int>(r.size()), nz = static_cast<int>(z.size());
+  const int loaded = body.loaded_inside ? 0 : nr - 1;  // radial station of the loaded face
+  // Radial index fastest: the band of the stiffness is two stations wide.
+  auto node = [nr](int iz, int ir) { return iz * nr + ir; };
+
+  // Degrees of freedom, -1 where held.
+  std::vector<int> dof(static_cast<std::size_t>(2 * nr * nz), 0);
+  for (int iz = 0; iz < nz; ++iz) {
+    if (body.inner_radius == 0.0) dof[2 * node(iz, 0)] = -1;  // the axis stays on it
+    if (body.held_faces && (iz == 0 || iz == nz - 1)) {
+      for (int ir = 0; ir < nr; ++ir) dof[2 * node(iz, ir) + 1] = -1;
+    }
+  }
+  // Free faces: radial loads carry no net axial force; one node fixes the axial translation.
+  if (!body.held_faces) dof[2 * node(0, loaded) + 1] = -1;
+  int free = 0;
+  for (int& d : dof) d = d < 0 ? -1 : free++;
+  dofs_ = free;
+
+  Eigen::Matrix4d d;
+  const double c = e / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  d << 1.0 - nu, nu, nu, 0.0,  //
+      nu, 1.0 - nu, nu, 0.0,   //
+      nu, nu, 1.0 - nu, 0.0,   //
+      0.0, 0.0, 0.0, 0.5 - nu;
+  d *= c;
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(64 * (nr - 1) * (nz - 1)));
+  // An element's stiffness depends on its radii and its length only: one per layer while the
+  // length stays (equal rows: one per layer for the whole part).
+  std::vector<Eigen::Matrix<double, 8, 8>> layer(static_cast<std::size_t>(nr - 1));
+  double layer_length = -1.0;
+  for (int iz = 0; iz + 1 < nz; ++iz) {
+    if (z[iz + 1] - z[iz] != layer_length) {
+      layer_length = z[iz + 1] - z[iz];
+      for (int ir = 0; ir + 1 < nr; ++ir) {
+        layer[static_cast<std::size_t>(ir)] =
+            ElementStiffness(r[ir], r[ir + 1], 0.0, layer_length, d);
+      }
+    }
+    for (int ir = 0; ir + 1 < nr; ++ir) {
+      const Eigen::Matrix<double, 8, 8>& ke = layer[static_cast<std::size_t>(ir)];
+      const std::array<int, 4> corner{node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1),
+                                      node(iz + 1, ir)};
+      for (int a = 0; a < 8; ++a) {
+        const int p = dof[2 * corner[a / 2] + a % 2];
+        if (p < 0) continue;
+        for (int b = 0; b < 8; ++b) {
+          const int q = dof[2 * corner[b / 2] + b % 2];
+          if (q >= 0) triplets.emplace_back(p, q, ke(a, b));
+        }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> k(free, free);
+  k.setFromTriplets(triplets.begin(), triplets.end());
+  // The numbering is already banded (radial index fastest): no fill-reducing reordering needed.
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+      llt(k);
+  if (llt.info() != Eigen::Success) {
+    throw UserError("axial breathing: the part's stiffness is not positive definite");
+  }
+
+  // Row j's unit pressure, per radian, is R le / 2 on each end of each element of the loaded face,
+  // pushing the face away from the other part; the same weights over the row's length average
+  // the face's radial displacement: load_j = R length_j mean_j. So F = mean' K^-1 mean
+  // diag(R length) = Y'Y diag(R length) with Y = L^-1 mean (K = L L'): half the triangular solves.
+  const double face = r[loaded];
+  const double open = body.loaded_inside ? 1.0 : -1.0;  // outwards opens a bore, inwards a shaft
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(free, rows);
+  for (int i = 0; i < rows; ++i) {
+    const double length = row_edges[i + 1] - row_edges[i];
+    for (int s = 0; s < kElementsPerRow; ++s) {
+      const int iz = i * kElementsPerRow + s;
+      const double le = z[iz + 1] - z[iz];
+      for (int end : {iz, iz + 1}) y(dof[2 * node(end, loaded)], i) += open * 0.5 * le / length;
+    }
+  }
+  llt.matrixL().solveInPlace(y);
+  Eigen::VectorXd scale(rows);
+  for (int i = 0; i < rows; ++i) scale[i] = face * (row_edges[i + 1] - row_edges[i]);
+  influence_.noalias() = y.transpose() * y;
+  influence_ *= scale.asDiagonal();
+  extra_ = influence_;
+  extra_.diagonal() -= influence_.rowwise().sum();
+}
+
+void AxialBreathing::ExtraDisplacement(const double* mean_pressure, double* out) const {
+  Eigen::Map<Eigen::VectorXd>(out, extra_.rows()) =
+      extra_ * Eigen::Map<const Eigen::VectorXd>(mean_pressure, extra_.cols());
+}
+
+}  // namespace fitfeel

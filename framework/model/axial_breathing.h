@@ -1,0 +1,65 @@
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framework/core/export.h"
+#include "framework/model/gps_spec.h"
+
+namespace fitfeel {
+
+// One part of a press fit as a solid of revolution: the ring between two radii, loaded by the
+// interface pressure on one of its two cylindrical faces over the rows of the part's grid.
+struct BreathingBody {
+  double inner_radius = 0.0;  // m; 0: solid
+  double outer_radius = 0.0;  // m
+  bool loaded_inside = true;  // the bore (a hub) is loaded, else the outside (a shaft)
+  Material material;
+  // Both end faces held axially (u_z = 0), the plane-strain sections' assumption, instead of free.
+  bool held_faces = false;
+};
+
+// What plane sections leave out of a part's breathing (n = 0) mode: a part loaded over some of its
+// rows carries the load past the loaded rows by shear and bending along its axis, so it is stiffer
+// there than its Lame sections say. A shaft half a millimetre into a hub meets 4.5 times the force
+// plane sections give (CalculiX, docs/contact-mechanics.md section 9): the hub's unloaded length
+// and the shaft's length still outside the entrance both stiffen the loaded band.
+//
+// Computed, not assumed: the part's axisymmetric linear elasticity by finite elements (bilinear
+// quadrilaterals in (r, z), 2 x 2 Gauss points, two elements per row along the axis and layers
+// growing by 1.25 from the loaded face inwards), loaded by a uniform unit pressure on each row in
+// turn. F(i, j) is row i's mean radial displacement under row j's pressure, positive where it
+// opens the interface. A uniform pressure on every row is the Lame state, which plane sections
+// have exactly; what the sections need is the rest, X = F - diag(F 1) (the diagonal removes the
+// elements' own small error on the Lame state, so a uniform load shifts nothing), added to the
+// sections' gaps. X is negative semidefinite: plane sections are a statically admissible stress
+// field, so by complementary energy the part is never softer than they say (and elements are
+// stiffer than the continuum). Prepare-time only: it allocates.
+class FITFEEL_API AxialBreathing {
+ public:
+  AxialBreathing() = default;
+  // `row_edges`: the rows' axial boundaries (m, increasing; rows = row_edges.size() - 1).
+  AxialBreathing(const BreathingBody& body, std::span<const double> row_edges);
+
+  bool empty() const { return extra_.size() == 0; }
+  int rows() const { return static_cast<int>(extra_.rows()); }
+  // F: mean radial displacement of each row per unit pressure on each row, m/Pa.
+  const Eigen::MatrixXd& influence() const { return influence_; }
+  // X = F - diag(F 1), m/Pa.
+  const Eigen::MatrixXd& matrix() const { return extra_; }
+  // out[i] = sum_j X(i, j) mean_pressure[j] (rows() values each; Pa in, m out).
+  void ExtraDisplacement(const double* mean_pressure, double* out) const;
+  // The finite element model's size, for the record.
+  int degrees_of_freedom() const { return dofs_; }
+
+  // Rows beyond this make the influence matrix a prepare of its own (one solve per row).
+  static constexpr int kMostRows = 1000;
+
+ private:
+  Eigen::MatrixXd influence_, extra_;
+  int dofs_ = 0;
+};
+
+}  // namespace fitfeel

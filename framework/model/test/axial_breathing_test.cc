@@ -1,0 +1,144 @@
+#include "framework/model/axial_breathing.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
+
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+constexpr double kE = 210e9, kNu = 0.3;
+
+BreathingBody Shaft(double radius, bool held = false) {
+  BreathingBody b;
+  b.inner_radius = 0.0;
+  b.outer_radius = radius;
+  b.loaded_inside = false;
+  b.material = {"steel", kE, kNu};
+  b.held_faces = held;
+  return b;
+}
+
+BreathingBody Hub(double bore, double outside, bool held = false) {
+  BreathingBody b = Shaft(outside, held);
+  b.inner_radius = bore;
+  b.loaded_inside = true;
+  return b;
+}
+
+std::vector<double> Edges(int rows, double pitch) {
+  std::vector<double> e(static_cast<std::size_t>(rows) + 1);
+  for (int i = 0; i <= rows; ++i) e[static_cast<std::size_t>(i)] = i * pitch;
+  return e;
+}
+
+// A uniform pressure on the whole length is the Lame state, which the bilinear elements hold
+// exactly in a solid shaft (u_r linear in r, u_z in z): u = p a (1 - nu) / E with free faces,
+// p a (1 + nu)(1 - 2 nu) / E with held ones (plane strain).
+TEST(AxialBreathing, AUniformlyPressedSolidShaftIsLames) {
+  const double a = 0.010;
+  const AxialBreathing free_faces(Shaft(a), Edges(40, 1e-3));
+  const AxialBreathing held(Shaft(a, true), Edges(40, 1e-3));
+  const Eigen::VectorXd u = free_faces.influence().rowwise().sum();
+  const Eigen::VectorXd v = held.influence().rowwise().sum();
+  for (int i = 0; i < 40; ++i) {
+    EXPECT_NEAR(u[i], a * (1 - kNu) / kE, 1e-9 * a / kE) << i;
+    EXPECT_NEAR(v[i], a * (1 + kNu) * (1 - 2 * kNu) / kE, 1e-9 * a / kE) << i;
+  }
+}
+
+// The hub's bore under a uniform pressure: Lame's thick cylinder (u = A r + B / r, which the
+// elements approximate: 0.25 % low at the free faces, less inside), u(a) = p a / E ((b^2 + a^2) /
+// (b^2 - a^2) + nu) with free faces and p a (1 + nu) ((1 - 2 nu) a^2 + b^2) / (E (b^2 - a^2)) with
+// held ones.
+TEST(AxialBreathing, AUniformlyPressedHubIsLames) {
+  const double a = 0.010, b = 0.015;
+  const AxialBreathing free_faces(Hub(a, b), Edges(40, 0.5e-3));
+  const AxialBreathing held(Hub(a, b, true), Edges(40, 0.5e-3));
+  const double plane_stress = a / kE * ((b * b + a * a) / (b * b - a * a) + kNu);
+  const double plane_strain =
+      a * (1 + kNu) * ((1 - 2 * kNu) * a * a + b * b) / (kE * (b * b - a * a));
+  for (int i = 0; i < 40; ++i) {
+    EXPECT_NEAR(free_faces.influence().row(i).sum(), plane_stress, 3e-3 * plane_stress) << i;
+    EXPECT_NEAR(held.influence().row(i).sum(), plane_strain, 1e-3 * plane_strain) << i;
+  }
+}
+
+// Maxwell-Betti: on equal rows F is symmetric; on unequal ones F diag(1 / length) is. The extra
+// displacement X takes nothing from a uniform load and gives none back (X 1 = 0). With free faces
+// it is negative semidefinite: the part is never softer than its plane-stress sections. Held
+// faces are not that: plane strain holds every section (a kinematic constraint, not a statically
+// admissible stress field), and a band load's section expands axially into its unloaded
+// neighbours, so some loads find the part softer (X's largest eigenvalue about +9 % of the
+// sections' compliance here).
+TEST(AxialBreathing, IsReciprocalAndNeverSofterThanPlaneSections) {
+  std::vector<double> uneven{0.0};
+  for (int i = 0; i < 30; ++i) uneven.push_back(uneven.back() + (i % 3 == 0 ? 0.8e-3 : 0.5e-3));
+  for (const BreathingBody& body :
+       {Shaft(0.010), Hub(0.010, 0.015), Hub(0.010, 0.012, true), Shaft(0.010, true)}) {
+    for (const std::vector<double>& edges : {Edges(40, 0.5e-3), uneven}) {
+      const AxialBreathing c(body, edges);
+      const auto m = static_cast<Eigen::Index>(edges.size() - 1);
+      Eigen::VectorXd length(m);
+      for (Eigen::Index i = 0; i < m; ++i) length[i] = edges[i + 1] - edges[i];
+      const Eigen::MatrixXd f = c.influence() * length.cwiseInverse().asDiagonal();
+      const double scale = c.influence().cwiseAbs().maxCoeff();
+      EXPECT_LT((f - f.transpose()).cwiseAbs().maxCoeff(), 1e-9 * f.cwiseAbs().maxCoeff());
+      EXPECT_LT((c.matrix() * Eigen::VectorXd::Ones(m)).cwiseAbs().maxCoeff(), 1e-12 * scale);
+      // X diag(1 / length) is symmetric too; its eigenvalues, scaled back to a row's pitch.
+      const Eigen::MatrixXd x = c.matrix() * length.cwiseInverse().asDiagonal();
+      const Eigen::VectorXd eig =
+          Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (x + x.transpose())).eigenvalues();
+      EXPECT_LT(eig.minCoeff(), -0.1 * scale / length.maxCoeff() * length.minCoeff());
+      if (body.held_faces) {
+        EXPECT_GT(eig.maxCoeff() * length.maxCoeff(), 0.01 * scale);
+      } else {
+        EXPECT_LT(eig.maxCoeff() * length.maxCoeff(), 1e-6 * scale);
+      }
+    }
+  }
+}
+
+// A thin tube (t / R = 0.05) loaded on half of its length is Hetenyi's beam on an elastic
+// foundation (Timoshenko and Woinowsky-Krieger, Theory of Plates and Shells, section 114): away
+// from its ends the displacement beyond the load's edge is w0 / 2 e^(-beta x) cos(beta x) and
+// w0 (1 - e^(-beta x) cos(beta x) / 2) under the load, beta^4 = 3 (1 - nu^2) / (R t)^2.
+TEST(AxialBreathing, AHalfLoadedThinTubeIsHetenyisBeam) {
+  const double a = 0.020, t = 0.001, pitch = 0.25e-3;
+  const int rows = 240;  // 60 mm: 17 decay lengths
+  const AxialBreathing c(Hub(a, a + t), Edges(rows, pitch));
+  const double radius = a + 0.5 * t;
+  const double beta = std::pow(3 * (1 - kNu * kNu) / (radius * radius * t * t), 0.25);
+  Eigen::VectorXd p = Eigen::VectorXd::Zero(rows);
+  p.head(rows / 2).setConstant(1.0);
+  const Eigen::VectorXd w = c.influence() * p;
+  const double w0 = c.influence().row(rows / 4).sum();  // the uniform state's
+  int checked = 0;
+  for (int i = rows / 2 - 40; i < rows / 2 + 40; ++i) {
+    const double x = (i + 0.5) * pitch - 0.5 * rows * pitch;  // from the load's edge
+    const double tail = 0.5 * w0 * std::exp(-beta * std::abs(x)) * std::cos(beta * std::abs(x));
+    const double expected = x > 0.0 ? tail : w0 - tail;
+    EXPECT_NEAR(w[i], expected, 0.03 * w0) << "x = " << x;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 80);
+}
+
+TEST(AxialBreathing, RefusesWhatItCannotModel) {
+  const std::vector<double> edges = Edges(10, 1e-3);
+  EXPECT_THROW(AxialBreathing(Hub(0.010, 0.010), edges), UserError);
+  EXPECT_THROW(AxialBreathing(Hub(0.0, 0.010), edges), UserError);  // a bore loaded, but none
+  BreathingBody rubber = Shaft(0.010);
+  rubber.material.poisson = 0.5;
+  EXPECT_THROW(AxialBreathing(rubber, edges), UserError);
+  EXPECT_THROW(AxialBreathing(Shaft(0.010), std::vector<double>{0.0}), UserError);
+  EXPECT_THROW(AxialBreathing(Shaft(0.010), std::vector<double>{0.0, 1e-3, 1e-3}), UserError);
+  EXPECT_THROW(AxialBreathing(Shaft(0.010), Edges(AxialBreathing::kMostRows + 1, 1e-5)), UserError);
+}
+
+}  // namespace
+}  // namespace fitfeel
