@@ -23,5 +23,5 @@ set title "Axisymmetric finite hubs, 5 um uniform: flush, through, the shaft par
 set yrange [-80:30]
 set key bottom left
 plot "fem-axisymmetric.csv" using ($6*100):xtic(1) title "plane sections (the paper law's per-cell Lame for a uniform interference)" lc rgb "#c0504d", \
-     "" using ($4*100) title "elastic model with the hub's axial coupling" lc rgb "#4f81bd"
+     "" using ($4*100) title "elastic model with both parts' axial coupling" lc rgb "#4f81bd"
 unset multiplot
