@@ -6,8 +6,6 @@
 #include <string>
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 
 #include "framework/core/error.h"
 
@@ -74,6 +72,46 @@ Eigen::Matrix<double, 8, 8> ElementStiffness(double r0, double r1, double z0, do
   return k;
 }
 
+// A symmetric positive definite band matrix of half-bandwidth w, factored in place: K = L L'. The
+// elements' numbering (radial index fastest) keeps the band two radial stations wide, and a band
+// factor has no fill outside it: N w^2 / 2 operations, no reordering.
+class BandCholesky {
+ public:
+  BandCholesky(int n, int w) : n_(n), w_(w), band_(static_cast<std::size_t>(n) * (w + 1), 0.0) {}
+  // Row i, column j <= i, j >= i - w.
+  double& at(int i, int j) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (j - i + w_)]; }
+  // Factors in place (Cholesky-Banachiewicz, row by row); false if a pivot is not positive.
+  bool Factor() {
+    for (int i = 0; i < n_; ++i) {
+      for (int j = std::max(0, i - w_); j <= i; ++j) {
+        double sum = at(i, j);
+        for (int k = std::max(0, i - w_); k < j; ++k) {
+          sum -= at(i, k) * at(j, k);
+        }
+        if (j == i) {
+          if (!(sum > 0.0)) return false;
+          at(i, i) = std::sqrt(sum);
+        } else {
+          at(i, j) = sum / at(j, j);
+        }
+      }
+    }
+    return true;
+  }
+  // x <- L^-1 x, x zero before `first`.
+  void ForwardSolve(double* x, int first) {
+    for (int i = first; i < n_; ++i) {
+      double sum = x[i];
+      for (int k = std::max(first, i - w_); k < i; ++k) sum -= at(i, k) * x[k];
+      x[i] = sum / at(i, i);
+    }
+  }
+
+ private:
+  int n_, w_;
+  std::vector<double> band_;
+};
+
 }  // namespace
 
 AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double> row_edges) {
@@ -134,8 +172,23 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
       nu, nu, 1.0 - nu, 0.0,   //
       0.0, 0.0, 0.0, 0.5 - nu;
   d *= c;
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>(64 * (nr - 1) * (nz - 1)));
+  // Half-bandwidth: the largest distance between two coupled free unknowns.
+  int w = 0;
+  for (int iz = 0; iz + 1 < nz; ++iz) {
+    for (int ir = 0; ir + 1 < nr; ++ir) {
+      int lo = free, hi = -1;
+      for (int corner : {node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1), node(iz + 1, ir)}) {
+        for (int a = 0; a < 2; ++a) {
+          if (const int p = dof[2 * corner + a]; p >= 0) {
+            lo = std::min(lo, p);
+            hi = std::max(hi, p);
+          }
+        }
+      }
+      w = std::max(w, hi - lo);
+    }
+  }
+  BandCholesky k(free, w);
   // An element's stiffness depends on its radii and its length only: one per layer while the
   // length stays (equal rows: one per layer for the whole part).
   std::vector<Eigen::Matrix<double, 8, 8>> layer(static_cast<std::size_t>(nr - 1));
@@ -157,17 +210,12 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
         if (p < 0) continue;
         for (int b = 0; b < 8; ++b) {
           const int q = dof[2 * corner[b / 2] + b % 2];
-          if (q >= 0) triplets.emplace_back(p, q, ke(a, b));
+          if (q >= 0 && q <= p) k.at(p, q) += ke(a, b);
         }
       }
     }
   }
-  Eigen::SparseMatrix<double> k(free, free);
-  k.setFromTriplets(triplets.begin(), triplets.end());
-  // The numbering is already banded (radial index fastest): no fill-reducing reordering needed.
-  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-      llt(k);
-  if (llt.info() != Eigen::Success) {
+  if (!k.Factor()) {
     throw UserError("axial breathing: the part's stiffness is not positive definite");
   }
 
@@ -180,13 +228,18 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
   Eigen::MatrixXd y = Eigen::MatrixXd::Zero(free, rows);
   for (int i = 0; i < rows; ++i) {
     const double length = row_edges[i + 1] - row_edges[i];
+    int first = free;
     for (int s = 0; s < kElementsPerRow; ++s) {
       const int iz = i * kElementsPerRow + s;
       const double le = z[iz + 1] - z[iz];
-      for (int end : {iz, iz + 1}) y(dof[2 * node(end, loaded)], i) += open * 0.5 * le / length;
+      for (int end : {iz, iz + 1}) {
+        const int p = dof[2 * node(end, loaded)];
+        y(p, i) += open * 0.5 * le / length;
+        first = std::min(first, p);
+      }
     }
+    k.ForwardSolve(y.col(i).data(), first);
   }
-  llt.matrixL().solveInPlace(y);
   Eigen::VectorXd scale(rows);
   for (int i = 0; i < rows; ++i) scale[i] = face * (row_edges[i + 1] - row_edges[i]);
   influence_.noalias() = y.transpose() * y;
