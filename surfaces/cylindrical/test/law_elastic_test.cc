@@ -68,6 +68,30 @@ struct ElasticPair {
   }
 };
 
+// The axial coupling solves each part's elements once per row: a grid past its limit is refused
+// saying what to change, and plane sections take it.
+TEST(ElasticLaw, AxialCouplingRefusesAGridItCannotSolveInTime) {
+  const int rows = AxialBreathing::kMostRows + 1;
+  const PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
+  auto prepare = [&](const char* options) {
+    ModelSettings settings = Elastic(TextureMode::kSampled);
+    settings.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+    CylinderContactAnalyzer analyzer;
+    analyzer.Prepare(shaft, MakeSms(MakeGrid(rows, 24, 0.020, 0.040), [](int, int) { return 0.0; }),
+                     bushing, MakeSms(MakeGrid(20, 24, 0.020, 0.020), [](int, int) { return 0.0; }),
+                     settings);
+  };
+  try {
+    prepare("{}");
+    ADD_FAILURE() << "accepted";
+  } catch (const UserError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("shaft's grid has 1001"), std::string::npos) << what;
+    EXPECT_NE(what.find("model.options.axial_coupling: false"), std::string::npos) << what;
+  }
+  EXPECT_NO_THROW(prepare("{axial_coupling: false}"));
+}
+
 TEST(ElasticLaw, Din7190SmoothingOfAUniformPressFit) {
   // 5 um radial over the full 20 mm engagement, mu = 0.15: 1099.6 N per um of what is left after
   // smoothing 0.8 (1.6 + 1.6) um on the diameter, i.e. 1099.6 x (5 - 1.28) = 4090 N. That is
