@@ -99,27 +99,30 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     auto operator<=>(const RowPair&) const = default;
   };
   // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
-  // The parts' axial coupling of one solve. Per row of either part the mean pressure (kept from
-  // the last solve: the next depth step starts from its extra displacement) and that
-  // displacement; per section the gap shift applied, its mean pressure, the breathing stiffness
-  // the update assumes and the contact set to restart from.
+  // The parts' axial coupling of one solve. Per coupling row of either part the mean pressure
+  // (kept from the last solve: the next depth step starts from its extra displacement) and that
+  // displacement; per section the rows it covers with the overlaps' lengths, the gap shift
+  // applied, its mean pressure, the breathing stiffness the update assumes and the contact set to
+  // restart from.
   struct CouplingScratch {
     std::vector<double> bore_pressure, shaft_pressure, bore_extra, shaft_extra;
-    std::vector<double> shift, target, mean, previous, stiffness, weight_bore, weight_shaft,
-        section_dp, section_shift;
+    std::vector<std::pair<int, double>> bore_cover, shaft_cover;
+    std::vector<std::size_t> bore_first, shaft_first;
+    std::vector<double> shift, target, mean, previous, stiffness, section_dp, section_shift;
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd system;
     Eigen::VectorXd step;
   };
   // The sections' solve with the parts' axial coupling (hub_breathing_ set): each section's gaps
   // (`gaps`, section-major, the solver's columns each) are shifted by the extra displacement of
-  // its bore row and its shaft row for the rows' mean pressures until they agree (a quasi-Newton
-  // iteration on the breathing mode: in full contact the second solve is the answer). bore_row,
-  // shaft_row and length per section.
+  // the coupling rows it covers in either part for the rows' mean pressures until they agree (a
+  // quasi-Newton iteration on the breathing mode: in full contact the second solve is the
+  // answer). Per section its start along the bore (bushing coordinates) and length; `shift` is
+  // the bushing coordinate of the shaft's coordinate 0 (depth - shaft length).
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
-                                   std::span<const int> bore_row, std::span<const int> shaft_row,
-                                   std::span<const double> length, double* gaps,
-                                   const Eigen::Vector4d& warm, CouplingScratch* scratch) const;
+                                   std::span<const double> start, std::span<const double> length,
+                                   double shift, double* gaps, const Eigen::Vector4d& warm,
+                                   CouplingScratch* scratch) const;
 
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
@@ -128,8 +131,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<std::size_t> bucket;
     std::vector<double> st, w, col_a, col_b, col_energy, proj, elastic_gap;
     std::vector<ContactSection> sections;
-    std::vector<int> section_row, section_shaft_row;
-    std::vector<double> section_length;
+    std::vector<double> section_start, section_length;
     Eigen::Vector2d warm{0.0, 0.0};
     Eigen::Vector4d elastic_warm = Eigen::Vector4d::Zero();  // in the elastic solve's frame
     std::optional<RigidSectionContact> solver;
@@ -199,6 +201,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   PressFitSection section_;
   // The hub's and the shaft's breathing along their axes (empty: plane sections).
   AxialBreathing hub_breathing_, shaft_breathing_;
+  // Their rows' edges: the grid's rows split to the shortest row of either part.
+  std::vector<double> hub_rows_, shaft_rows_fe_;
   double breathing_stiffness_ = 0.0;  // 1 / C_0 of the section, Pa/m
   RigidFreedom freedom_;
   double frame_ = 0.0;  // angle of the elastic solve's column 0

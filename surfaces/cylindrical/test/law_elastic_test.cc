@@ -86,7 +86,7 @@ TEST(ElasticLaw, AxialCouplingRefusesAGridItCannotSolveInTime) {
     ADD_FAILURE() << "accepted";
   } catch (const UserError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("shaft's grid has 1001"), std::string::npos) << what;
+    EXPECT_NE(what.find("the shaft has 1001"), std::string::npos) << what;
     EXPECT_NE(what.find("model.options.axial_coupling: false"), std::string::npos) << what;
   }
   EXPECT_NO_THROW(prepare("{axial_coupling: false}"));
@@ -361,14 +361,14 @@ void ChartRow(const char* name, double fem, double model, double plane) {
 // The elastic model's normal force with the shaft `shaft_length` long at `depth`, in a hub of
 // outer diameter `hub_diameter`.
 double UniformNormalForce(double shaft_length, double depth, const std::string& options,
-                          double hub_diameter = 0.030) {
+                          double hub_diameter = 0.030, double shaft_row = 0.5e-3) {
   const PartSpec shaft = MakeShaft(0.020, shaft_length);
   const PartSpec bushing = MakeBushing(0.020, 0.020, hub_diameter);
   ModelSettings settings = Elastic(TextureMode::kSampled);
   settings.extra = ConfigNode::Parse(options, "test", "model.options");
   CylinderContactAnalyzer analyzer;
   ElasticLaw law;
-  const int rows = static_cast<int>(std::lround(shaft_length / 0.5e-3));
+  const int rows = static_cast<int>(std::lround(shaft_length / shaft_row));
   analyzer.Prepare(
       shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), [](int, int) { return 5 * kUm; }),
       bushing, MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }), settings);
@@ -419,16 +419,16 @@ struct PartlyEngaged {
   double depth, hub_diameter;
 };
 
-void ExpectWithinOfCalculix(const PartlyEngaged& c, double tolerance) {
+void ExpectWithinOfCalculix(const PartlyEngaged& c, double tolerance, double shaft_row = 0.5e-3) {
   const double fem = test_support::AxisymmetricFemForce(c.name);
-  const double coupled = UniformNormalForce(0.020, c.depth, "{}", c.hub_diameter);
+  const double coupled = UniformNormalForce(0.020, c.depth, "{}", c.hub_diameter, shaft_row);
   const double plane =
-      UniformNormalForce(0.020, c.depth, "{axial_coupling: false}", c.hub_diameter);
+      UniformNormalForce(0.020, c.depth, "{axial_coupling: false}", c.hub_diameter, shaft_row);
   std::printf("%-32s FEM %8.1f N  coupled %8.1f N %+6.2f %%  plane sections %8.1f N %+6.2f %%\n",
               c.name, fem, coupled, 100 * (coupled / fem - 1), plane, 100 * (plane / fem - 1));
   EXPECT_LT(std::abs(coupled / fem - 1.0), tolerance) << c.name;
   EXPECT_LT(plane, fem) << c.name;  // what the coupling is for
-  ChartRow(c.name, fem, coupled, plane);
+  if (shaft_row == 0.5e-3) ChartRow(c.name, fem, coupled, plane);
 }
 
 TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {
@@ -445,10 +445,15 @@ TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {
 // Where a press fit starts: half a millimetre in, the FEM's force is 4.5 times what plane sections
 // give (4154 against 916 N). A model of the hub's axial coupling alone (a shell on its Lame
 // foundation) was 29 % low here: the shaft's length outside the entrance stiffens it as much.
+// Also on the shipped scenes' grid, shaft rows of 1 mm against bore rows of 0.5 mm: half a
+// millimetre in, the section covers half of the shaft's first row, which the coupling loads
+// alone (it splits each part's rows to the shortest row of either); on whole rows it was 27 %
+// low.
 TEST(ElasticLaw, AgreesWithCalculixInTheFirstMillimetre) {
   for (const PartlyEngaged& c : {PartlyEngaged{"cylinder-entry-0.5mm", 0.0005, 0.030},
                                  PartlyEngaged{"cylinder-entry-1mm", 0.001, 0.030}}) {
     ExpectWithinOfCalculix(c, 0.01);
+    ExpectWithinOfCalculix(c, 0.01, 1e-3);
   }
 }
 
