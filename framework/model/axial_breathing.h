@@ -28,15 +28,17 @@ struct BreathingBody {
 // and the shaft's length still outside the entrance both stiffen the loaded band.
 //
 // Computed, not assumed: the part's axisymmetric linear elasticity by finite elements (bilinear
-// quadrilaterals in (r, z), 2 x 2 Gauss points, two elements per row along the axis and layers
-// growing by 1.25 from the loaded face inwards), loaded by a uniform unit pressure on each row in
-// turn. F(i, j) is row i's mean radial displacement under row j's pressure, positive where it
-// opens the interface. A uniform pressure on every row is the Lame state, which plane sections
-// have exactly; what the sections need is the rest, X = F - diag(F 1) (the diagonal removes the
-// elements' own small error on the Lame state, so a uniform load shifts nothing), added to the
-// sections' gaps. X is negative semidefinite: plane sections are a statically admissible stress
-// field, so by complementary energy the part is never softer than they say (and elements are
-// stiffer than the continuum). Prepare-time only: it allocates.
+// quadrilaterals in (r, z), 2 x 2 Gauss points; along the axis at least two per row and none
+// longer than the loaded face's radius / 40; layers growing by 1.25 from the loaded face
+// inwards), loaded by a uniform unit pressure on each row in turn. F(i, j) is row i's mean radial
+// displacement under row j's pressure, positive where it opens the interface. A uniform pressure on
+// every row is the Lame state, which plane sections have exactly; what the sections need is the
+// rest, X = F - diag(F 1) (the diagonal removes the elements' own small error on the Lame state, so
+// a uniform load shifts nothing), added to the sections' gaps. With free faces X is negative
+// semidefinite: plane-stress sections are a statically admissible stress field, so by
+// complementary energy the part is never softer than they say (and elements are stiffer than the
+// continuum). Held faces are not that case (plane strain constrains every section): some loads
+// find the part softer than its sections. Prepare-time only: it allocates.
 class FITFEEL_API AxialBreathing {
  public:
   AxialBreathing() = default;

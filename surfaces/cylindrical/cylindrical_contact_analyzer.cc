@@ -220,12 +220,13 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         }
         return out;
       };
-      hub_rows_ = refine(bushing_edges_);
-      shaft_rows_fe_ = refine(shaft_edges_);
+      hub_coupling_rows_ = refine(bushing_edges_);
+      shaft_coupling_rows_ = refine(shaft_edges_);
       // One finite-element solve per row (and a coupled solve over every engaged section): past
       // this the prepare takes minutes (1000 rows: 6 min, 400 rows: 20 s on this machine).
-      for (const auto& [part, rows] : {std::pair{"bushing", static_cast<int>(hub_rows_.size()) - 1},
-                                       {"shaft", static_cast<int>(shaft_rows_fe_.size()) - 1}}) {
+      for (const auto& [part, rows] :
+           {std::pair{"bushing", static_cast<int>(hub_coupling_rows_.size()) - 1},
+            {"shaft", static_cast<int>(shaft_coupling_rows_.size()) - 1}}) {
         if (rows > AxialBreathing::kMostRows) {
           throw UserError(std::string("the elastic model's axial coupling takes at most ") +
                           std::to_string(AxialBreathing::kMostRows) +
@@ -236,8 +237,8 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
                           "model.options.axial_coupling: false (plane sections)");
         }
       }
-      hub_breathing_ = AxialBreathing(hub, hub_rows_);
-      shaft_breathing_ = AxialBreathing(shaft, shaft_rows_fe_);
+      hub_breathing_ = AxialBreathing(hub, hub_coupling_rows_);
+      shaft_breathing_ = AxialBreathing(shaft, shaft_coupling_rows_);
     }
     freedom.tilt = options.tilt;
     freedom.tilt_stiffness = options.tilt_stiffness;
@@ -689,8 +690,8 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   CouplingScratch& c = *scratch;
   // Rows keep the last solve's pressures (the last depth step's: the engaged pattern has moved
   // by a step, most rows' pressures barely change); none at the start of a chunk.
-  c.bore_pressure.resize(hub_rows_.size() - 1, 0.0);
-  c.shaft_pressure.resize(shaft_rows_fe_.size() - 1, 0.0);
+  c.bore_pressure.resize(hub_coupling_rows_.size() - 1, 0.0);
+  c.shaft_pressure.resize(shaft_coupling_rows_.size() - 1, 0.0);
   c.bore_extra.resize(c.bore_pressure.size());
   c.shaft_extra.resize(c.shaft_pressure.size());
   // Each section's overlap with the coupling's rows of either part (bore coordinates; the
@@ -712,8 +713,8 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   for (std::size_t s = 0; s < count; ++s) {
     c.bore_first[s] = c.bore_cover.size();
     c.shaft_first[s] = c.shaft_cover.size();
-    cover(hub_rows_, start[s], start[s] + length[s], &c.bore_cover);
-    cover(shaft_rows_fe_, start[s] - shift, start[s] + length[s] - shift, &c.shaft_cover);
+    cover(hub_coupling_rows_, start[s], start[s] + length[s], &c.bore_cover);
+    cover(shaft_coupling_rows_, start[s] - shift, start[s] + length[s] - shift, &c.shaft_cover);
   }
   c.bore_first[count] = c.bore_cover.size();
   c.shaft_first[count] = c.shaft_cover.size();
@@ -724,12 +725,13 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   auto add_pressure = [&](std::size_t s, double mean) {
     for (std::size_t q = c.bore_first[s]; q < c.bore_first[s + 1]; ++q) {
       const auto [row, overlap] = c.bore_cover[q];
-      c.bore_pressure[static_cast<std::size_t>(row)] += mean * overlap / row_length(hub_rows_, row);
+      c.bore_pressure[static_cast<std::size_t>(row)] +=
+          mean * overlap / row_length(hub_coupling_rows_, row);
     }
     for (std::size_t q = c.shaft_first[s]; q < c.shaft_first[s + 1]; ++q) {
       const auto [row, overlap] = c.shaft_cover[q];
       c.shaft_pressure[static_cast<std::size_t>(row)] +=
-          mean * overlap / row_length(shaft_rows_fe_, row);
+          mean * overlap / row_length(shaft_coupling_rows_, row);
     }
   };
   // The extra displacement the rows' pressures give each section: the overlap-weighted mean of
@@ -813,25 +815,24 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     if (change > last_change) secants = false;
     last_change = change;
     // Quasi-Newton on x = M pbar(x), pbar(x) ~ pbar(x_k) - K (x - x_k) with K each section's
-    // breathing stiffness over its touching columns: (I + M K) dx = M pbar(x_k) - x_k, where
-    // M(s, t) = X_bore(b_s, b_t) w_t + X_shaft(h_s, h_t) w'_t maps the sections' mean pressures
-    // to their extra displacement. Why it converges: with free faces X is negative semidefinite
-    // with X >= -F_0 (axial_breathing.h; the coupling only stiffens a part) and a section's true
-    // response to a shift lies between 0 and P0 (the other part in series), so the plain
-    // iteration x <- M pbar(x) contracts; K taken from the touching columns underestimates the
-    // response (a shift closes more of them) and keeps each step short of the root, never past
+    // breathing stiffness over its touching columns: (I + M K) dx = M pbar(x_k) - x_k, where M
+    // maps the sections' mean pressures to their extra displacement, per part
+    // M(s, t) = sum over the rows u of s and v of t of (overlap_su / length_s) X(u, v)
+    // (overlap_tv / length_v). Why it converges: with free faces X is negative semidefinite
+    // with X >= -diag(F 1) (axial_breathing.h: F is a compliance; the coupling only stiffens) and a
+    // section's true response to a shift lies between 0 and P0 (the other part in series), so the
+    // plain iteration x <- M pbar(x) contracts; K taken from the touching columns underestimates
+    // the response (a shift closes more of them) and keeps each step short of the root, never past
     // it. The measured secants (held below full contact's P0) reach the root in two or three
     // solves where the contact set grows with the shift, and are dropped once they make things
     // worse.
-    // M(s, t) = sum over the rows u of s and v of t of (overlap_su / length_s) X(u, v)
-    // (overlap_tv / length_v), per part; times K_t.
     c.system.setZero(m, m);
     for (Eigen::Index t = 0; t < m; ++t) {
       const auto tu = static_cast<std::size_t>(t);
       for (int part = 0; part < 2; ++part) {
         const auto& cov = part == 0 ? c.bore_cover : c.shaft_cover;
         const auto& first = part == 0 ? c.bore_first : c.shaft_first;
-        const auto& edges = part == 0 ? hub_rows_ : shaft_rows_fe_;
+        const auto& edges = part == 0 ? hub_coupling_rows_ : shaft_coupling_rows_;
         const Eigen::MatrixXd& x = part == 0 ? hub_breathing_.matrix() : shaft_breathing_.matrix();
         for (std::size_t qt = first[tu]; qt < first[tu + 1]; ++qt) {
           const int v = cov[qt].first;

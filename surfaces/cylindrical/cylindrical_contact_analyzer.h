@@ -202,7 +202,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // The hub's and the shaft's breathing along their axes (empty: plane sections).
   AxialBreathing hub_breathing_, shaft_breathing_;
   // Their rows' edges: the grid's rows split to the shortest row of either part.
-  std::vector<double> hub_rows_, shaft_rows_fe_;
+  std::vector<double> hub_coupling_rows_, shaft_coupling_rows_;
   double breathing_stiffness_ = 0.0;  // 1 / C_0 of the section, Pa/m
   RigidFreedom freedom_;
   double frame_ = 0.0;  // angle of the elastic solve's column 0
