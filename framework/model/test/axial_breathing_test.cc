@@ -1,6 +1,7 @@
 #include "framework/model/axial_breathing.h"
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -148,6 +149,36 @@ TEST(AxialBreathing, ConvergesUnderRefinement) {
     EXPECT_LT((x - coarse.matrix()).cwiseAbs().maxCoeff(),
               0.007 * coarse.matrix().cwiseAbs().maxCoeff())
         << body.loaded_inside;
+  }
+}
+
+// The properties above on parts drawn at random (radii, walls, materials' Poisson ratios, row
+// counts and unequal rows): reciprocity, X 1 = 0, and X negative semidefinite with free faces.
+TEST(AxialBreathing, HoldsItsPropertiesOnRandomParts) {
+  std::mt19937_64 rng(2711);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 24; ++trial) {
+    const double radius = 0.003 + 0.03 * unit(rng);
+    BreathingBody body = unit(rng) < 0.5 ? Shaft(radius) : Hub(radius, radius * (1.1 + unit(rng)));
+    if (!body.loaded_inside && unit(rng) < 0.3) body.inner_radius = radius * 0.6 * unit(rng);
+    body.material.poisson = 0.1 + 0.35 * unit(rng);
+    const int rows = 4 + static_cast<int>(unit(rng) * 30);
+    std::vector<double> edges{0.0};
+    for (int i = 0; i < rows; ++i)
+      edges.push_back(edges.back() + radius * (0.02 + 0.2 * unit(rng)));
+    const AxialBreathing c(body, edges);
+    Eigen::VectorXd length(rows);
+    for (int i = 0; i < rows; ++i) length[i] = edges[i + 1] - edges[i];
+    const Eigen::MatrixXd f = c.influence() * length.cwiseInverse().asDiagonal();
+    const double scale = c.influence().cwiseAbs().maxCoeff();
+    EXPECT_LT((f - f.transpose()).cwiseAbs().maxCoeff(), 1e-8 * f.cwiseAbs().maxCoeff()) << trial;
+    EXPECT_LT((c.matrix() * Eigen::VectorXd::Ones(rows)).cwiseAbs().maxCoeff(), 1e-12 * scale)
+        << trial;
+    const Eigen::MatrixXd x = c.matrix() * length.cwiseInverse().asDiagonal();
+    const Eigen::VectorXd eig =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (x + x.transpose())).eigenvalues();
+    EXPECT_LT(eig.maxCoeff() * length.maxCoeff(), 1e-6 * scale) << trial;
+    EXPECT_TRUE(c.influence().allFinite()) << trial;
   }
 }
 

@@ -457,5 +457,32 @@ TEST(ElasticLaw, AgreesWithCalculixInTheFirstMillimetre) {
   }
 }
 
+// At the tables' depth steps the pressure map solves the tables' own sections: its integral over
+// the shaft's cells is the tables' normal force, at the entry too.
+TEST(ElasticLaw, PressureMapCarriesTheTablesNormalForce) {
+  const PartSpec shaft = MakeShaft(0.020, 0.020);
+  const PartSpec bushing = MakeBushing(0.020, 0.020, 0.030);
+  const ModelSettings settings = Elastic(TextureMode::kSampled);
+  CylinderContactAnalyzer analyzer;
+  analyzer.Prepare(shaft, MakeSms(MakeGrid(20, 72, 0.020, 0.020), [](int, int) { return 5 * kUm; }),
+                   bushing, MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }),
+                   settings);
+  const double cell_area = kPi * 0.020 * 1e-3 / 72;  // the shaft's cells: 1 mm x 1/72 turn
+  auto map_force = [&](double depth) {
+    MatingPose pose;
+    pose.depth = depth;
+    Eigen::VectorXd p;
+    EXPECT_TRUE(analyzer.PressureMap(pose, &p));
+    return p.sum() * cell_area;
+  };
+  for (double depth : {0.5e-3, 1e-3, 2e-3, 10e-3}) {
+    ContactState state;
+    MatingPose pose;
+    pose.depth = depth;
+    analyzer.Evaluate(pose, &state);
+    EXPECT_NEAR(map_force(depth), state.normal_force, 1e-3 * state.normal_force) << depth;
+  }
+}
+
 }  // namespace
 }  // namespace fitfeel::cylindrical
