@@ -208,6 +208,15 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
     const double secant = (last_r[1] - last_r[0]) / (last_s[1] - last_s[0]);
     if (secant > 0.0 && std::isfinite(secant)) *slope = secant;
   };
+  // Probes s; true (the solution taken, the slope learnt) where its residual is within the
+  // tolerance.
+  auto lands = [&](double s, double* r) {
+    *r = residual(s);
+    if (std::abs(*r) > tolerance) return false;
+    *solution = s;
+    learn();
+    return true;
+  };
   // The root is usually within a few um of the origin (the previous tick's equilibrium): check
   // the origin first, then (with a slope from the last search) take a Newton step, exact on a
   // linear spring; then bracket on the side the residual points to, starting 1 um away (or eight
@@ -267,12 +276,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
   if (!bracketed && slope != nullptr && *slope > 0.0) {
     const double s1 = -r0 / *slope;
     if (std::isfinite(s1) && s1 != 0.0 && std::abs(s1) <= 1.1e-3) {
-      const double r1 = residual(s1);
-      if (std::abs(r1) <= tolerance) {
-        *solution = s1;
-        learn();
-        return true;
-      }
+      double r1 = 0.0;
+      if (lands(s1, &r1)) return true;
       if ((r1 > 0.0) == (r0 < 0.0)) {
         bracket(0.0, r0, s1, r1);
         // The god object's line (a spring pulls along it), both probes on the wall (the contact
@@ -284,19 +289,10 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
         if (spring > 0.0 && r0 + target > 0.0 && r1 != r0) {
           const double s2 = s1 - r1 * s1 / (r1 - r0);
           if (std::isfinite(s2) && s2 > lo && s2 < hi) {
-            const double r2 = residual(s2);
-            if (std::abs(r2) <= tolerance) {
-              *solution = s2;
-              learn();
-              return true;
-            }
-            if (r2 < 0.0) {
-              lo = s2;
-              r_lo = r2;
-            } else {
-              hi = s2;
-              r_hi = r2;
-            }
+            double r2 = 0.0;
+            if (lands(s2, &r2)) return true;
+            (r2 < 0.0 ? lo : hi) = s2;
+            (r2 < 0.0 ? r_lo : r_hi) = r2;
           }
         }
       } else {
@@ -308,12 +304,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
         const double secant = s1 - 1.1 * r1 * s1 / (r1 - r0);
         if (r1 != r0 && std::isfinite(secant) && (secant - s1) * s1 > 0.0 &&
             std::abs(secant) <= 8.0 * std::abs(s1)) {
-          const double r2 = residual(secant);
-          if (std::abs(r2) <= tolerance) {
-            *solution = secant;
-            learn();
-            return true;
-          }
+          double r2 = 0.0;
+          if (lands(secant, &r2)) return true;
           if ((r2 > 0.0) == (r0 < 0.0)) {
             bracket(s1, r1, secant, r2);
           } else {
@@ -375,12 +367,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
     // follow it down; the first landing on the flat side ends them with a tight bracket.
     double wall_s = hi, wall_r = r_hi;
     for (int k = 0; k < 4 && wall > 0.0 && std::isfinite(step) && step > lo && step < hi; ++k) {
-      const double r = residual(step);
-      if (std::abs(r) <= tolerance) {
-        *solution = step;
-        learn();
-        return true;
-      }
+      double r = 0.0;
+      if (lands(step, &r)) return true;
       if (r < 0.0) {
         lo = step;
         r_lo = r;
