@@ -196,7 +196,6 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
   if (!body.held_faces) dof[2 * node(0, loaded) + 1] = -1;
   int free = 0;
   for (int& d : dof) d = d < 0 ? -1 : free++;
-  dofs_ = free;
 
   Eigen::Matrix4d d;
   const double c = e / ((1.0 + nu) * (1.0 - 2.0 * nu));

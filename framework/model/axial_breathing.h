@@ -53,15 +53,12 @@ class FITFEEL_API AxialBreathing {
   const Eigen::MatrixXd& matrix() const { return extra_; }
   // out[i] = sum_j X(i, j) mean_pressure[j] (rows() values each; Pa in, m out).
   void ExtraDisplacement(const double* mean_pressure, double* out) const;
-  // The finite element model's size, for the record.
-  int degrees_of_freedom() const { return dofs_; }
 
   // Rows beyond this make the influence matrix a prepare of its own (one solve per row).
   static constexpr int kMostRows = 1000;
 
  private:
   Eigen::MatrixXd influence_, extra_;
-  int dofs_ = 0;
 };
 
 }  // namespace fitfeel

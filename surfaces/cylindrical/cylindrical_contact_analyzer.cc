@@ -142,6 +142,11 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   bushing_rows_ = gb.rows;
   shaft_length_ = shaft_edges_.back();
   bushing_length_ = bushing_edges_.back();
+  // The shortest row of either part: the auto depth step, and the axial coupling's row length.
+  double min_row = std::numeric_limits<double>::infinity();
+  for (const auto* e : {&shaft_edges_, &bushing_edges_}) {
+    for (std::size_t i = 1; i < e->size(); ++i) min_row = std::min(min_row, (*e)[i] - (*e)[i - 1]);
+  }
   shaft_row_centre_ = gs.row_position.array() - (gs.row_position[0] - 0.5 * shaft_edges_[1]);
   if (shaft_rows_ == 1) shaft_row_centre_[0] = 0.5 * shaft_length_;
   v_shaft_ = inner_sms.variation;
@@ -205,16 +210,11 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       // of a row (the shaft's end half a row into the bore) loads that part and not the row's
       // whole length (a 20 mm shaft of 1 mm rows 0.5 mm in: 27 % low against CalculiX on whole
       // rows).
-      double shortest = std::numeric_limits<double>::infinity();
-      for (const auto* e : {&shaft_edges_, &bushing_edges_}) {
-        for (std::size_t i = 1; i < e->size(); ++i)
-          shortest = std::min(shortest, (*e)[i] - (*e)[i - 1]);
-      }
-      auto refine = [shortest](const std::vector<double>& edges) {
+      auto refine = [min_row](const std::vector<double>& edges) {
         std::vector<double> out{edges.front()};
         for (std::size_t i = 1; i < edges.size(); ++i) {
           const double len = edges[i] - edges[i - 1];
-          const int parts = std::max(1, static_cast<int>(std::ceil(len / shortest - 1e-9)));
+          const int parts = std::max(1, static_cast<int>(std::ceil(len / min_row - 1e-9)));
           for (int q = 1; q < parts; ++q) out.push_back(edges[i - 1] + len * q / parts);
           out.push_back(edges[i]);
         }
@@ -255,10 +255,6 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   // Auto step: the shortest row of either part. Between two row boundaries the slices only change
   // length, so every tabulated quantity is piecewise linear or smooth there; a finer step adds
   // nothing the cells can resolve.
-  double min_row = std::numeric_limits<double>::infinity();
-  for (const auto* e : {&shaft_edges_, &bushing_edges_}) {
-    for (std::size_t i = 1; i < e->size(); ++i) min_row = std::min(min_row, (*e)[i] - (*e)[i - 1]);
-  }
   if (settings.depth_step < 0.0) throw UserError("depth_step must not be negative");
   max_depth_ = shaft_length_ + bushing_length_;
   step_ = settings.depth_step > 0.0 ? settings.depth_step
@@ -688,65 +684,65 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   const std::size_t count = sections.size();
   const auto m = static_cast<Eigen::Index>(count);
   CouplingScratch& c = *scratch;
-  // Rows keep the last solve's pressures (the last depth step's: the engaged pattern has moved
-  // by a step, most rows' pressures barely change); none at the start of a chunk.
-  c.bore_pressure.resize(hub_coupling_rows_.size() - 1, 0.0);
-  c.shaft_pressure.resize(shaft_coupling_rows_.size() - 1, 0.0);
-  c.bore_extra.resize(c.bore_pressure.size());
-  c.shaft_extra.resize(c.shaft_pressure.size());
-  // Each section's overlap with the coupling's rows of either part (bore coordinates; the
-  // shaft's are `shift` less): rows, and the overlap's length.
-  c.bore_cover.clear();
-  c.shaft_cover.clear();
-  c.bore_first.resize(count + 1);
-  c.shaft_first.resize(count + 1);
-  auto cover = [](const std::vector<double>& edges, double lo, double hi,
-                  std::vector<std::pair<int, double>>* out) {
-    auto i = static_cast<int>(std::upper_bound(edges.begin(), edges.end(), lo) - edges.begin()) - 1;
-    i = std::clamp(i, 0, static_cast<int>(edges.size()) - 2);
-    for (; i + 1 < static_cast<int>(edges.size()) && edges[static_cast<std::size_t>(i)] < hi; ++i) {
-      const double overlap = std::min(hi, edges[static_cast<std::size_t>(i) + 1]) -
-                             std::max(lo, edges[static_cast<std::size_t>(i)]);
-      if (overlap > 0.0) out->emplace_back(i, overlap);
-    }
-  };
-  for (std::size_t s = 0; s < count; ++s) {
-    c.bore_first[s] = c.bore_cover.size();
-    c.shaft_first[s] = c.shaft_cover.size();
-    cover(hub_coupling_rows_, start[s], start[s] + length[s], &c.bore_cover);
-    cover(shaft_coupling_rows_, start[s] - shift, start[s] + length[s] - shift, &c.shaft_cover);
-  }
-  c.bore_first[count] = c.bore_cover.size();
-  c.shaft_first[count] = c.shaft_cover.size();
+  // The parts' coupling rows and breathing, the hub's then the shaft's; a section's start in the
+  // part's coordinates is its bore coordinate less the part's offset.
+  const std::array<const std::vector<double>*, 2> rows{&hub_coupling_rows_, &shaft_coupling_rows_};
+  const std::array<const AxialBreathing*, 2> breathing{&hub_breathing_, &shaft_breathing_};
+  const std::array<double, 2> offset{0.0, shift};
   auto row_length = [](const std::vector<double>& edges, int i) {
     return edges[static_cast<std::size_t>(i) + 1] - edges[static_cast<std::size_t>(i)];
   };
+  for (int q = 0; q < 2; ++q) {
+    CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+    const std::vector<double>& edges = *rows[static_cast<std::size_t>(q)];
+    // Rows keep the last solve's pressures (the last depth step's: the engaged pattern has moved
+    // by a step, most rows' pressures barely change); none at the start of a chunk.
+    part.pressure.resize(edges.size() - 1, 0.0);
+    part.extra.resize(part.pressure.size());
+    // Each section's overlap with the part's coupling rows: rows, and the overlap's length.
+    part.cover.clear();
+    part.first.resize(count + 1);
+    for (std::size_t s = 0; s < count; ++s) {
+      part.first[s] = part.cover.size();
+      const double lo = start[s] - offset[static_cast<std::size_t>(q)];
+      const double hi = start[s] + length[s] - offset[static_cast<std::size_t>(q)];
+      auto i =
+          static_cast<int>(std::upper_bound(edges.begin(), edges.end(), lo) - edges.begin()) - 1;
+      i = std::clamp(i, 0, static_cast<int>(edges.size()) - 2);
+      for (; i + 1 < static_cast<int>(edges.size()) && edges[static_cast<std::size_t>(i)] < hi;
+           ++i) {
+        const double overlap = std::min(hi, edges[static_cast<std::size_t>(i) + 1]) -
+                               std::max(lo, edges[static_cast<std::size_t>(i)]);
+        if (overlap > 0.0) part.cover.emplace_back(i, overlap);
+      }
+    }
+    part.first[count] = part.cover.size();
+  }
   // The rows' mean pressures from the sections' (each row's share: the overlap over its length).
   auto add_pressure = [&](std::size_t s, double mean) {
-    for (std::size_t q = c.bore_first[s]; q < c.bore_first[s + 1]; ++q) {
-      const auto [row, overlap] = c.bore_cover[q];
-      c.bore_pressure[static_cast<std::size_t>(row)] +=
-          mean * overlap / row_length(hub_coupling_rows_, row);
-    }
-    for (std::size_t q = c.shaft_first[s]; q < c.shaft_first[s + 1]; ++q) {
-      const auto [row, overlap] = c.shaft_cover[q];
-      c.shaft_pressure[static_cast<std::size_t>(row)] +=
-          mean * overlap / row_length(shaft_coupling_rows_, row);
+    for (int q = 0; q < 2; ++q) {
+      CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+      for (std::size_t k = part.first[s]; k < part.first[s + 1]; ++k) {
+        const auto [row, overlap] = part.cover[k];
+        part.pressure[static_cast<std::size_t>(row)] +=
+            mean * overlap / row_length(*rows[static_cast<std::size_t>(q)], row);
+      }
     }
   };
   // The extra displacement the rows' pressures give each section: the overlap-weighted mean of
   // its rows' in either part.
   auto extra_at_sections = [&](double* out) {
-    hub_breathing_.ExtraDisplacement(c.bore_pressure.data(), c.bore_extra.data());
-    shaft_breathing_.ExtraDisplacement(c.shaft_pressure.data(), c.shaft_extra.data());
+    for (int q = 0; q < 2; ++q) {
+      CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+      breathing[static_cast<std::size_t>(q)]->ExtraDisplacement(part.pressure.data(),
+                                                                part.extra.data());
+    }
     for (std::size_t s = 0; s < count; ++s) {
       double x = 0.0;
-      for (std::size_t q = c.bore_first[s]; q < c.bore_first[s + 1]; ++q) {
-        x += c.bore_extra[static_cast<std::size_t>(c.bore_cover[q].first)] * c.bore_cover[q].second;
-      }
-      for (std::size_t q = c.shaft_first[s]; q < c.shaft_first[s + 1]; ++q) {
-        x += c.shaft_extra[static_cast<std::size_t>(c.shaft_cover[q].first)] *
-             c.shaft_cover[q].second;
+      for (const CouplingScratch::Part& part : c.part) {
+        for (std::size_t k = part.first[s]; k < part.first[s + 1]; ++k) {
+          x += part.extra[static_cast<std::size_t>(part.cover[k].first)] * part.cover[k].second;
+        }
       }
       out[s] = x / length[s];
     }
@@ -777,8 +773,9 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   for (int solve = 0;; ++solve) {
     c.previous.swap(c.mean);
     c.mean.resize(count);
-    std::fill(c.bore_pressure.begin(), c.bore_pressure.end(), 0.0);
-    std::fill(c.shaft_pressure.begin(), c.shaft_pressure.end(), 0.0);
+    for (CouplingScratch::Part& part : c.part) {
+      std::fill(part.pressure.begin(), part.pressure.end(), 0.0);
+    }
     bool all_round = true;  // every section in contact all round
     for (std::size_t s = 0; s < count; ++s) {
       const double* p = solver->pressures().data() + s * ne;
@@ -829,19 +826,18 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     c.system.setZero(m, m);
     for (Eigen::Index t = 0; t < m; ++t) {
       const auto tu = static_cast<std::size_t>(t);
-      for (int part = 0; part < 2; ++part) {
-        const auto& cov = part == 0 ? c.bore_cover : c.shaft_cover;
-        const auto& first = part == 0 ? c.bore_first : c.shaft_first;
-        const auto& edges = part == 0 ? hub_coupling_rows_ : shaft_coupling_rows_;
-        const Eigen::MatrixXd& x = part == 0 ? hub_breathing_.matrix() : shaft_breathing_.matrix();
-        for (std::size_t qt = first[tu]; qt < first[tu + 1]; ++qt) {
-          const int v = cov[qt].first;
-          const double wt = cov[qt].second / row_length(edges, v) * c.stiffness[tu];
+      for (int q = 0; q < 2; ++q) {
+        const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+        const Eigen::MatrixXd& x = breathing[static_cast<std::size_t>(q)]->matrix();
+        for (std::size_t qt = part.first[tu]; qt < part.first[tu + 1]; ++qt) {
+          const int v = part.cover[qt].first;
+          const double wt = part.cover[qt].second /
+                            row_length(*rows[static_cast<std::size_t>(q)], v) * c.stiffness[tu];
           for (Eigen::Index s = 0; s < m; ++s) {
             const auto su = static_cast<std::size_t>(s);
             double sum = 0.0;
-            for (std::size_t qs = first[su]; qs < first[su + 1]; ++qs) {
-              sum += cov[qs].second * x(cov[qs].first, v);
+            for (std::size_t qs = part.first[su]; qs < part.first[su + 1]; ++qs) {
+              sum += part.cover[qs].second * x(part.cover[qs].first, v);
             }
             c.system(s, t) += sum / length[su] * wt;
           }

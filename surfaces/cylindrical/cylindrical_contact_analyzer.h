@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -105,9 +106,13 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // applied, its mean pressure, the breathing stiffness the update assumes and the contact set to
   // restart from.
   struct CouplingScratch {
-    std::vector<double> bore_pressure, shaft_pressure, bore_extra, shaft_extra;
-    std::vector<std::pair<int, double>> bore_cover, shaft_cover;
-    std::vector<std::size_t> bore_first, shaft_first;
+    // One per part, the hub's (bore coordinates) then the shaft's.
+    struct Part {
+      std::vector<double> pressure, extra;        // per coupling row
+      std::vector<std::pair<int, double>> cover;  // per section: its rows and overlaps
+      std::vector<std::size_t> first;             // where each section's cover starts
+    };
+    std::array<Part, 2> part;
     std::vector<double> shift, target, mean, previous, stiffness, section_dp, section_shift;
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd system;
