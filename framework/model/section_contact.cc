@@ -361,7 +361,7 @@ double RigidSectionContact::DistanceToContact(std::span<const ContactSection> se
 RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> sections,
                                               const RigidFreedom& freedom,
                                               const Eigen::Vector4d& warm,
-                                              std::span<const double> gap_shift) {
+                                              std::span<const double> gap_shift, double handoff) {
   const auto nn = static_cast<std::size_t>(columns());
   Eigen::Vector4d q = warm;
   if (!freedom.tilt) q.tail<2>().setZero();
@@ -404,6 +404,8 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   Eigen::Matrix4d hess, trial_hess;
   double phi = Evaluate(sections, freedom, q, &grad, &hess);
   bool evaluated_at_q = true;  // pressure_ and active_ belong to q
+  r.converged = false;
+  r.next = q;
   for (int it = 0; it < 60; ++it) {
     ++r.newton_iterations;
     // Force scale of the problem: what the sections carry and what is applied.
@@ -415,7 +417,11 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
     }
     Eigen::Vector4d scaled = grad;
     scaled.tail<2>() /= length;
-    if (scaled.norm() <= 1e-10 * load + 1e-12) break;
+    if (scaled.norm() <= 1e-10 * load + 1e-12) {
+      r.converged = true;
+      break;
+    }
+    const bool hand_off = scaled.norm() <= handoff * load;
     const int dofs = freedom.tilt ? 4 : 2;
     Eigen::MatrixXd h = hess.topLeftCorner(dofs, dofs);
     const double tr = h.trace();
@@ -440,6 +446,10 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
     dir.head(dofs) = step;
     const double slope = grad.dot(dir);
     if (!(slope < 0.0)) break;
+    if (hand_off) {
+      r.next = q + dir;  // the caller evaluates it (with its gaps moved)
+      break;
+    }
     double alpha = 1.0;
     bool accepted = false;
     while (alpha > 1e-12) {
@@ -463,6 +473,10 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
     if (moved.norm() < 1e-15) break;  // a femtometre: converged to rounding
   }
   if (!evaluated_at_q) Evaluate(sections, freedom, q, &grad, &hess);
+  if (r.converged || r.next == q) {
+    r.converged = true;  // at rounding or out of steps without a better point: where it is
+    r.next = q;
+  }
   r.offset = q.head<2>();
   r.tilt = freedom.tilt ? Eigen::Vector2d(q.tail<2>()) : Eigen::Vector2d::Zero();
   for (std::size_t s = 0; s < sections.size(); ++s) {

@@ -120,6 +120,11 @@ struct RigidContactResult {
   Eigen::Vector2d resultant{0.0, 0.0};  // sum p * A * u_j, N
   double max_pressure = 0.0;            // Pa
   int newton_iterations = 0;
+  // Whether the part is at equilibrium (the unbalanced force within the solve's tolerance); when
+  // not (a Solve limited in Newton steps), `next` is the Newton step's point from the pose
+  // returned, not evaluated (else the pose returned).
+  bool converged = true;
+  Eigen::Vector4d next = Eigen::Vector4d::Zero();
 };
 
 // The rigid part's equilibrium in offset (and tilt) against the elastic contact of every section:
@@ -149,9 +154,14 @@ class FITFEEL_API RigidSectionContact {
 
   // `gap_shift`, when given (one value per section): the sections are the last Solve's with every
   // gap of section s grown since by gap_shift[s] (the caller's axial coupling), so that the
-  // products of the gaps it keeps are updated instead of computed anew.
+  // products of the gaps it keeps are updated instead of computed anew. `handoff` > 0: where the
+  // unbalanced force falls below `handoff` times the forces the solve carries (but not yet to
+  // its tolerance), the solve stops and returns the next Newton point unevaluated in `next`, for
+  // an iteration that also moves the gaps (the axial coupling's) to take one evaluation per step
+  // of both.
   RigidContactResult Solve(std::span<const ContactSection> sections, const RigidFreedom& freedom,
-                           const Eigen::Vector4d& warm, std::span<const double> gap_shift = {});
+                           const Eigen::Vector4d& warm, std::span<const double> gap_shift = {},
+                           double handoff = 0.0);
 
  private:
   // Potential, gradient and Hessian at q; leaves every section's pressures and contact set at q.

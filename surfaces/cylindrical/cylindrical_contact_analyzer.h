@@ -114,6 +114,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     };
     std::array<Part, 2> part;
     std::vector<double> shift, target, mean, previous, stiffness, section_dp, section_shift;
+    std::vector<double> last_stiffness;  // each section's response at the last solve's end
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd system;
     Eigen::VectorXd step;

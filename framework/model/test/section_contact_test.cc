@@ -165,5 +165,50 @@ TEST(RigidSectionContact, ShiftFullContactIsTheSolveOfUniformlyShiftedGaps) {
   EXPECT_FALSE(solver.ShiftFullContact(before, dp, &r));
 }
 
+// A solve that hands off (returns the next Newton point unevaluated once the unbalanced force is
+// below a fraction of the load) and is resumed from that point, as the axial coupling's joint
+// iteration does, reaches the equilibrium of a solve run to its end: lobed sections in partial
+// contact under a sideways load, the part free to tilt.
+TEST(RigidSectionContact, AHandedOffSolveResumedReachesTheSameEquilibrium) {
+  const int n = 48, rows = 8;
+  const double l = 0.016;
+  std::vector<std::vector<double>> gaps(rows, std::vector<double>(n));
+  std::vector<ContactSection> sections;
+  for (int i = 0; i < rows; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double theta = 2 * kPi * j / n;
+      gaps[i][j] = -1e-6 + 3e-6 * std::cos(3 * theta + 0.4 * i) + 0.3e-6 * i * std::sin(theta);
+    }
+    ContactSection s = Slice(gaps[i], l / rows);
+    s.y = (i + 0.5) * l / rows - l / 2;
+    sections.push_back(s);
+  }
+  RigidFreedom freedom;
+  freedom.tilt = true;
+  freedom.force = Eigen::Vector2d(30.0, -50.0);
+  RigidSectionContact full(SteelPair(), n), joint(SteelPair(), n);
+  const RigidContactResult expected = full.Solve(sections, freedom, Eigen::Vector4d::Zero());
+  ASSERT_TRUE(expected.converged);
+  RigidContactResult r = joint.Solve(sections, freedom, Eigen::Vector4d::Zero(), {}, 1e-2);
+  // It stopped short of the equilibrium (else this test checks nothing) ...
+  ASSERT_FALSE(r.converged);
+  EXPECT_GT((r.next.head<2>() - r.offset).norm(), 0.0);
+  int handoffs = 1;
+  const std::vector<double> unchanged(rows, 0.0);
+  while (!r.converged && handoffs < 20) {
+    r = joint.Solve(sections, freedom, r.next, unchanged, 1e-2);
+    ++handoffs;
+  }
+  // ... and resumed from its Newton points it lands where the whole solve did.
+  ASSERT_TRUE(r.converged);
+  EXPECT_NEAR(r.normal_force, expected.normal_force, 1e-8 * expected.normal_force);
+  EXPECT_LT((r.offset - expected.offset).norm(), 1e-12);
+  EXPECT_LT((r.tilt - expected.tilt).norm(), 1e-12 / l);
+  EXPECT_NEAR(r.resultant.x(), 30.0, 1e-6);
+  EXPECT_NEAR(r.resultant.y(), -50.0, 1e-6);
+  // A converged solve returns its own pose as the next point.
+  EXPECT_EQ(expected.next.head<2>(), expected.offset);
+}
+
 }  // namespace
 }  // namespace fitfeel
