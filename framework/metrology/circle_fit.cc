@@ -1,6 +1,7 @@
 #include "framework/metrology/circle_fit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -34,6 +35,93 @@ Circle AlgebraicCircle(const Eigen::Matrix2Xd& p) {
   if (!(r2 > 0.0) || !std::isfinite(r2)) throw std::invalid_argument("points are collinear");
   c.radius = std::sqrt(r2);
   return c;
+}
+
+// The limacon linearisation's minimum zone as a Chebyshev (minimax) fit: (a, b, c) minimising
+// max |dev - a cos - b sin - c| over the points, by Remez's exchange. 1, cos and sin span a Haar
+// space on the circle (three distinct angles never leave their 3 x 3 system singular), so the fit
+// is unique and is levelled on four points whose errors alternate in sign around the circle; each
+// exchange swaps the worst point into that reference, keeping the alternation, and the levelled
+// error grows until no point exceeds it. It replaces the 4-variable linear program the same
+// problem is (the same optimum; about a tenth of its cost on 360 points). Returns false without
+// convergence (a degenerate reference: coincident angles), for the program to take over.
+// `order` and `reference` carry the angular order and the last reference from one recentring step
+// to the next (the centre moves micrometres: the same order, and usually the same four points).
+bool ChebyshevOnCircle(const Eigen::VectorXd& cs, const Eigen::VectorXd& sn,
+                       const Eigen::VectorXd& dev, std::vector<long>* order,
+                       std::array<long, 4>* reference, Eigen::Vector4d* x) {
+  const long n = dev.size();
+  std::array<long, 4>& ref = *reference;
+  if (static_cast<long>(order->size()) != n) {
+    order->resize(static_cast<std::size_t>(n));
+    std::iota(order->begin(), order->end(), 0L);
+    // Points given in angular order (a section's columns) turn once around the centre, each a
+    // positive step from the last: then no angles need sorting.
+    // (Each step turning by less than half a turn, the times the directions cross the +x axis
+    // upwards count the turns.)
+    int turns = 0;
+    bool ordered = true;
+    for (long i = 0; i < n && ordered; ++i) {
+      const long j = (i + 1) % n;
+      ordered = cs(i) * sn(j) - sn(i) * cs(j) > 0.0;
+      if (sn(i) < 0.0 && sn(j) >= 0.0 && cs(i) + cs(j) > 0.0) ++turns;
+    }
+    if (!ordered || turns != 1) {
+      std::vector<double> angle(static_cast<std::size_t>(n));
+      for (long i = 0; i < n; ++i) angle[static_cast<std::size_t>(i)] = std::atan2(sn(i), cs(i));
+      std::sort(order->begin(), order->end(), [&](long i, long j) {
+        return angle[static_cast<std::size_t>(i)] < angle[static_cast<std::size_t>(j)];
+      });
+    }
+    ref = {0, n / 4, n / 2, (3 * n) / 4};  // positions in angular order, increasing
+  }
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    Eigen::Matrix4d m;
+    Eigen::Vector4d rhs;
+    for (int k = 0; k < 4; ++k) {
+      const long i = (*order)[static_cast<std::size_t>(ref[static_cast<std::size_t>(k)])];
+      m.row(k) << cs(i), sn(i), 1.0, (k % 2 == 0) ? 1.0 : -1.0;
+      rhs(k) = dev(i);
+    }
+    const Eigen::FullPivLU<Eigen::Matrix4d> lu(m);
+    if (!lu.isInvertible()) return false;
+    const Eigen::Vector4d abch = lu.solve(rhs);  // a, b, c, h
+    if (!abch.allFinite()) return false;
+    const double level = std::abs(abch(3));
+    long worst = -1;
+    double worst_error = level;
+    for (long p = 0; p < n; ++p) {
+      const long i = (*order)[static_cast<std::size_t>(p)];
+      const double e = std::abs(dev(i) - abch(0) * cs(i) - abch(1) * sn(i) - abch(2));
+      if (e > worst_error) {
+        worst_error = e;
+        worst = p;
+      }
+    }
+    // Deviations are scaled to order 1: 1e-12 beyond the level is rounding.
+    if (worst < 0 || worst_error <= level + 1e-12) {
+      *x << abch(0), abch(1), abch(2) - level, abch(2) + level;
+      return true;
+    }
+    // The reference interval (cyclic) holding the worst point: ref[k] <= worst < ref[k + 1].
+    int k = 3;
+    for (int q = 0; q < 3; ++q) {
+      if (ref[static_cast<std::size_t>(q)] <= worst &&
+          worst < ref[static_cast<std::size_t>(q) + 1]) {
+        k = q;
+      }
+    }
+    const long i = (*order)[static_cast<std::size_t>(worst)];
+    const double sign = dev(i) - abch(0) * cs(i) - abch(1) * sn(i) - abch(2) > 0.0 ? 1.0 : -1.0;
+    // The residual at ref[k] is +h for even k, -h for odd k.
+    const double at_k = ((k % 2 == 0) ? 1.0 : -1.0) * (abch(3) >= 0.0 ? 1.0 : -1.0);
+    const int replace = sign == at_k ? k : (k + 1) % 4;
+    ref[static_cast<std::size_t>(replace)] = worst;
+    std::sort(ref.begin(), ref.end());
+    // Sorting may rotate which point is "even": the levelled system's signs follow the positions,
+    // and an exchange that keeps the alternation keeps it under any rotation of the four.
+  }
+  return false;
 }
 
 }  // namespace
@@ -91,6 +179,8 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
   std::vector<long> order(static_cast<std::size_t>(n));
   std::vector<char> in_set(static_cast<std::size_t>(n));
   std::vector<long> set;
+  std::vector<long> angular;  // the exchange's angular order and reference, kept between steps
+  std::array<long, 4> reference{};
   for (int step = 0; step < 8; ++step) {
     polar();
     const double mean = rho.mean();
@@ -118,6 +208,12 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
       }
     }
     LinearProgramResult lp;
+    if (Eigen::Vector4d fit; ChebyshevOnCircle(cs, sn, dev, &angular, &reference, &fit)) {
+      const Eigen::Vector2d shift = fit.head<2>() * scale;
+      out.centre += shift;
+      if (shift.norm() <= 1e-9 * scale + 1e-15 * mean) break;
+      continue;
+    }
     for (;;) {
       const long m = static_cast<long>(set.size());
       Eigen::MatrixXd A(2 * m, 4);

@@ -26,11 +26,12 @@ struct RoundnessResult {
 
 // Minimum-zone roundness (ISO 12181-1 MZCI, the ISO default): the smallest radial separation of
 // two concentric circles enclosing the points. Each step solves the limacon linearisation about the
-// current centre exactly as a 4-variable linear program (centre shift, inner and outer radius),
-// then recentres and recomputes the polar coordinates; the linearisation error is e^2/(2R) for a
-// centre shift e, so a few steps converge to rounding. The value returned is the exact radial
-// width of the points about the final centre (an upper bound of the minimum zone, equal to it at
-// convergence). Needs >= 4 points.
+// current centre exactly, a Chebyshev fit of (centre shift, mean radius) found by Remez's exchange
+// on four points (the 4-variable linear program it is, over a working set of the points, where the
+// exchange meets a degenerate reference), then recentres and recomputes the polar coordinates;
+// the linearisation error is e^2/(2R) for a centre shift e, so a few steps converge to rounding.
+// The value returned is the exact radial width of the points about the final centre (an upper
+// bound of the minimum zone, equal to it at convergence). Needs >= 4 points.
 FITFEEL_API RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points);
 
 }  // namespace fitfeel::metrology
