@@ -193,6 +193,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     breathing_stiffness_ = 1.0 / HarmonicCompliance(section, 0);
     hub_breathing_ = AxialBreathing();
     shaft_breathing_ = AxialBreathing();
+    axial_coupling_ = options.axial_coupling;
     if (options.axial_coupling) {
       BreathingBody hub;
       hub.inner_radius = 0.5 * d.d1;
@@ -237,8 +238,10 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
                           "model.options.axial_coupling: false (plane sections)");
         }
       }
-      hub_breathing_ = AxialBreathing(hub, hub_coupling_rows_);
-      shaft_breathing_ = AxialBreathing(shaft, shaft_coupling_rows_);
+      // The elements are solved when a depth step first needs them (EnsureBreathing): a
+      // clearance fit's tables may have none that interferes.
+      hub_body_ = hub;
+      shaft_body_ = shaft;
     }
     freedom.tilt = options.tilt;
     freedom.tilt_stiffness = options.tilt_stiffness;
@@ -484,9 +487,11 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       sec.factorization = &s->row_factors[row];
       s->section_length[sl] = slices[sl].length;
     }
+    if (axial_coupling_) EnsureBreathing();
     const RigidContactResult r =
         SolveSections(&*s->solver, s->sections, s->section_start, s->section_length,
-                      depth - shaft_length_, s->elastic_gap.data(), s->elastic_warm, &s->coupling);
+                      depth - shaft_length_, s->elastic_gap.data(), s->elastic_warm, &s->coupling,
+                      Breathing{&hub_breathing_, &shaft_breathing_});
     for (std::size_t sl = 0; sl < slices.size(); ++sl) {
       const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
       s->row_contact[row] = s->solver->contact_sets()[sl];
@@ -675,11 +680,19 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
+void CylinderContactAnalyzer::EnsureBreathing() {
+  const std::lock_guard<std::mutex> lock(breathing_mutex_);
+  if (!hub_breathing_.empty()) return;
+  hub_breathing_ = AxialBreathing(hub_body_, hub_coupling_rows_);
+  shaft_breathing_ = AxialBreathing(shaft_body_, shaft_coupling_rows_);
+}
+
 RigidContactResult CylinderContactAnalyzer::SolveSections(
     RigidSectionContact* solver, std::span<ContactSection> sections, std::span<const double> start,
     std::span<const double> length, double shift, double* gaps, const Eigen::Vector4d& warm,
-    CouplingScratch* scratch) const {
-  if (hub_breathing_.empty() || sections.empty()) return solver->Solve(sections, freedom_, warm);
+    CouplingScratch* scratch, const Breathing& breathing) const {
+  if (!axial_coupling_ || sections.empty()) return solver->Solve(sections, freedom_, warm);
+  assert(!breathing[0]->empty() && !breathing[1]->empty());
   const auto ne = static_cast<std::size_t>(solver->columns());
   const std::size_t count = sections.size();
   const auto m = static_cast<Eigen::Index>(count);
@@ -687,7 +700,6 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   // The parts' coupling rows and breathing, the hub's then the shaft's; a section's start in the
   // part's coordinates is its bore coordinate less the part's offset.
   const std::array<const std::vector<double>*, 2> rows{&hub_coupling_rows_, &shaft_coupling_rows_};
-  const std::array<const AxialBreathing*, 2> breathing{&hub_breathing_, &shaft_breathing_};
   const std::array<double, 2> offset{0.0, shift};
   auto row_length = [](const std::vector<double>& edges, int i) {
     return edges[static_cast<std::size_t>(i) + 1] - edges[static_cast<std::size_t>(i)];
@@ -937,8 +949,16 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   warm << Rotate(anchor_[nearest], -frame_), Rotate(tilt_[nearest], -frame_);
   RigidSectionContact solver(section_, static_cast<int>(ne));
   CouplingScratch coupling;
+  // The parts' elements, solved here where no depth step of the tables needed them.
+  AxialBreathing hub, shaft;
+  Breathing breathing{&hub_breathing_, &shaft_breathing_};
+  if (axial_coupling_ && hub_breathing_.empty()) {
+    hub = AxialBreathing(hub_body_, hub_coupling_rows_);
+    shaft = AxialBreathing(shaft_body_, shaft_coupling_rows_);
+    breathing = {&hub, &shaft};
+  }
   SolveSections(&solver, sections, starts, lengths, pose.depth - shaft_length_, gaps.data(), warm,
-                &coupling);
+                &coupling, breathing);
   // A shaft row's cells take the length-weighted mean of its sections' pressures.
   for (std::size_t s = 0; s < count; ++s) {
     const auto i = static_cast<std::size_t>(shaft_rows[s]);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <vector>
@@ -64,6 +65,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   Eigen::Vector2d anchor(int k) const { return anchor_[static_cast<std::size_t>(k)]; }
   bool interference_at(int k) const { return empty_[static_cast<std::size_t>(k)] != 0; }
   int newton_iterations() const { return newton_iterations_; }
+  // Whether the last prepare solved the parts' axial elements (some depth step interfered).
+  bool axial_elements_solved() const { return !hub_breathing_.empty(); }
   // Elastic model (law `elastic`): equilibrium normal force and tilt at step k, the DIN 7190
   // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
   bool elastic() const { return elastic_; }
@@ -125,10 +128,15 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // quasi-Newton iteration on the breathing mode: in full contact the second solve is the
   // answer). Per section its start along the bore (bushing coordinates) and length; `shift` is
   // the bushing coordinate of the shaft's coordinate 0 (depth - shaft length).
+  // The hub's and the shaft's elements (with the axial coupling, solved: EnsureBreathing).
+  using Breathing = std::array<const AxialBreathing*, 2>;
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
                                    std::span<const double> start, std::span<const double> length,
                                    double shift, double* gaps, const Eigen::Vector4d& warm,
-                                   CouplingScratch* scratch) const;
+                                   CouplingScratch* scratch, const Breathing& breathing) const;
+  // Solves both parts' elements once, for the first depth step whose sections need them (any
+  // thread of the prepare's; the others wait).
+  void EnsureBreathing();
 
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
@@ -205,8 +213,12 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   int block_ = 1;           // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;  // m, added to every gap
   PressFitSection section_;
-  // The hub's and the shaft's breathing along their axes (empty: plane sections).
+  // The hub's and the shaft's breathing along their axes: with the axial coupling, the bodies
+  // and, once a depth step needed them, their elements (empty: not needed yet, or plane sections).
+  bool axial_coupling_ = false;
+  BreathingBody hub_body_, shaft_body_;
   AxialBreathing hub_breathing_, shaft_breathing_;
+  std::mutex breathing_mutex_;  // prepare only: the first interfering step solves the elements
   // Their rows' edges: the grid's rows split to the shortest row of either part.
   std::vector<double> hub_coupling_rows_, shaft_coupling_rows_;
   double breathing_stiffness_ = 0.0;  // 1 / C_0 of the section, Pa/m

@@ -484,6 +484,31 @@ TEST(ElasticLaw, PressureMapCarriesTheTablesNormalForce) {
   }
 }
 
+// The parts' elements are solved only for a table that needs them: a clearance fit's prepare
+// leaves them unsolved (on the paper's 20 mm pair they are a third of an H7/g6 scene's prepare),
+// an interfering one solves them, and the pressure map of the clearance fit solves its own.
+TEST(ElasticLaw, OnlyAnInterferingTableSolvesThePartsElements) {
+  const PartSpec shaft = MakeShaft(0.020, 0.020);
+  const PartSpec bushing = MakeBushing(0.020, 0.020, 0.030);
+  const ModelSettings settings = Elastic(TextureMode::kSampled);
+  const SurfaceGrid grid = MakeGrid(40, 72, 0.020, 0.020);
+  const SkinModelShape bore = MakeSms(grid, [](int, int) { return 0.0; });
+  CylinderContactAnalyzer clear, tight;
+  clear.Prepare(shaft, MakeSms(grid, [](int, int) { return -5 * kUm; }), bushing, bore, settings);
+  tight.Prepare(shaft, MakeSms(grid, [](int, int) { return 5 * kUm; }), bushing, bore, settings);
+  EXPECT_FALSE(clear.axial_elements_solved());
+  EXPECT_TRUE(tight.axial_elements_solved());
+  MatingPose pose;
+  pose.depth = 10e-3;
+  Eigen::VectorXd p;
+  ASSERT_TRUE(clear.PressureMap(pose, &p));
+  EXPECT_TRUE(p.allFinite());
+  EXPECT_FALSE(clear.axial_elements_solved());  // its own, not the analyzer's
+  // Prepared again as a press fit, the same analyzer solves them.
+  clear.Prepare(shaft, MakeSms(grid, [](int, int) { return 5 * kUm; }), bushing, bore, settings);
+  EXPECT_TRUE(clear.axial_elements_solved());
+}
+
 // With held faces (`section: plane_strain`) the coupling's X is not negative semidefinite (a band
 // can expand axially into its unloaded neighbours), so its iteration has no contraction argument:
 // it still settles. Partly engaged it carries more than the plane-strain sections, rising with
