@@ -26,6 +26,7 @@ struct ConstrainedState final : StageState {
   // memory; one shared memory warm-started each from the other's root, 10-12 evaluations each).
   ConstrainedStage::AcrossMemory at_device;
   ConstrainedStage::AcrossMemory at_part;
+  bool lagged = false;  // the last tick solved the balance at the part's own depth
 };
 
 // The finest travel the 1-D searches resolve (IllinoisRoot's brackets end there). Where a
@@ -730,13 +731,19 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // The balance across at the device's depth holds within 10 um of it (the spaces change over
     // rows of 0.5 mm and more): taken anew only where the part lags further, and then from that
     // balance (on the wall a few micrometres of depth away: the edge's repetition starts there
-    // instead of at the device, a millimetre off) with this tick's slope along the line (the
-    // part's own is from its last lag, often hundreds of ticks ago): the lagging ticks of a
-    // hand's insertion 31-34 -> 24-28 contact evaluations.
-    if (std::abs(depth - held_depth) > 1e-5) {
-      run->at_part.line_slope = run->at_device.line_slope;
-      at = across(depth, &run->at_part, on_bed ? held : at);  // a bed's search starts at the device
+    // instead of at the device, a millimetre off; a bed's search starts at the device). Its
+    // line starts on the part's own slope where the part lagged on the last tick too (a press
+    // fit held back by its friction), else on this tick's at the device's depth (the part's own
+    // is from its last lag, often hundreds of ticks ago): the lagging ticks of a hand's
+    // insertion of a clearance fit 31-34 -> 24-28 contact evaluations.
+    const bool lags = std::abs(depth - held_depth) > 1e-5;
+    if (lags) {
+      if (!run->lagged) run->at_part.line_slope = run->at_device.line_slope;
+      at = across(depth, &run->at_part, on_bed ? held : at);
     }
+    run->lagged = lags;
+  } else {
+    run->lagged = false;
   }
   run->part = at;
   run->part_depth = depth;
