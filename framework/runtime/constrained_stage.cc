@@ -598,16 +598,12 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     ++work.contact_evaluations;
     return Eigen::Vector2d(offset - work.contact.penetration * work.contact.penetration_direction);
   };
-  // `start`: where the edge's repetition starts (the device, or a balance found nearby); on a
-  // Winkler bed only the device.
-  bool on_bed = false;
-  auto across = [&](double depth, AcrossMemory* memory, const Eigen::Vector2d& start) {
+  auto across = [&](double depth, AcrossMemory* memory) {
     work.pose.depth = depth;
     motion.depth = depth;
-    Eigen::Vector2d edge = anchor_of(start);
+    Eigen::Vector2d edge = anchor_of(held);
     Eigen::Vector2d part = held;
-    const bool bed = start == held ? edge == held : on_bed;
-    on_bed = bed;
+    const bool bed = edge == held;
     if (bed) {
       // No assembly space in the analyzer's answer (a Winkler bed of cells, as the cone's and the
       // sphere's): free if the law does not push, else balanced along its push, from the device
@@ -699,7 +695,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
   // part goes no deeper than the device, and where the bore narrows ahead that balance already
   // has it clear of the narrowing (a balance taken at the part's own depth would run it into
   // the step and hold it there as if it were jammed).
-  Eigen::Vector2d at = across(held_depth, &run->at_device, held);
+  Eigen::Vector2d at = across(held_depth, &run->at_device);
   // Along the axis: where the law's resistance (stick-slip junctions, probed from the run's state
   // without advancing it) balances the spring k (held - y), the part at that balance across. The
   // resistance falls monotonically as the part goes deeper (a junction's spring, then the
@@ -729,17 +725,16 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
       depth = std::abs(g_lo) < std::abs(g_hi) ? lo : hi;
     }
     // The balance across at the device's depth holds within 10 um of it (the spaces change over
-    // rows of 0.5 mm and more): taken anew only where the part lags further, and then from that
-    // balance (on the wall a few micrometres of depth away: the edge's repetition starts there
-    // instead of at the device, a millimetre off; a bed's search starts at the device). Its
-    // line starts on the part's own slope where the part lagged on the last tick too (a press
-    // fit held back by its friction), else on this tick's at the device's depth (the part's own
-    // is from its last lag, often hundreds of ticks ago): the lagging ticks of a hand's
-    // insertion of a clearance fit 31-34 -> 24-28 contact evaluations.
+    // rows of 0.5 mm and more): taken anew only where the part lags further. Its line starts on
+    // the part's own slope where the part lagged on the last tick too (a press fit held back by
+    // its friction), else on this tick's at the device's depth (the part's own is from its last
+    // lag, often hundreds of ticks ago): a hand's insertion of a clearance fit, largest tick
+    // 34 -> 31 contact evaluations. (Repeating the edge from that balance instead of from the
+    // device saved two more there and cost another scene's worst tick 70 -> 107: not taken.)
     const bool lags = std::abs(depth - held_depth) > 1e-5;
     if (lags) {
       if (!run->lagged) run->at_part.line_slope = run->at_device.line_slope;
-      at = across(depth, &run->at_part, on_bed ? held : at);
+      at = across(depth, &run->at_part);
     }
     run->lagged = lags;
   } else {
