@@ -170,22 +170,23 @@ bool FanAngles(const Eigen::Vector2d* v, int count, const Eigen::Vector2d& centr
   }
   // As ProjectOntoPolygon: a polygon closed down to a point or a segment has no inside.
   if (!(area2 > 1e-12 * longest2) || longest2 == 0.0) return false;
-  const double first = std::atan2(v[0].y() - centre.y(), v[0].x() - centre.x());
+  const double first = PseudoAngle(v[0] - centre);
   angles[0] = first;
   for (int k = 1; k < count; ++k) {
-    double a = std::atan2(v[k].y() - centre.y(), v[k].x() - centre.x());
-    while (a < angles[k - 1]) a += 2.0 * M_PI;
+    double a = PseudoAngle(v[k] - centre);
+    while (a < angles[k - 1]) a += kPseudoTurn;
     angles[k] = a;
   }
-  return angles[count - 1] < first + 2.0 * M_PI;
+  return angles[count - 1] < first + kPseudoTurn;
 }
 
 namespace {
 
-// The edge k (from vertex k to k + 1) whose wedge about the fan's centre holds `angle`.
+// The edge k (from vertex k to k + 1) whose wedge about the fan's centre holds pseudo-angle
+// `angle`.
 int WedgeOf(const double* angles, int count, double angle) noexcept {
-  double a = std::remainder(angle - angles[0], 2.0 * M_PI);
-  if (a < 0.0) a += 2.0 * M_PI;
+  double a = angle - angles[0];  // both in [0, 4)
+  if (a < 0.0) a += kPseudoTurn;
   a += angles[0];
   const int k = static_cast<int>(std::upper_bound(angles, angles + count, a) - angles) - 1;
   return std::clamp(k, 0, count - 1);
@@ -207,7 +208,7 @@ Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count, const Po
                                    const Eigen::Vector2d& x) noexcept {
   if (!fan.valid()) return ProjectOntoPolygon(v, count, x);
   const Eigen::Vector2d r = x - fan.centre;
-  const int k = WedgeOf(fan.angles, count, std::atan2(r.y(), r.x()));
+  const int k = WedgeOf(fan.angles, count, PseudoAngle(r));
   const Eigen::Vector2d e = v[(k + 1) % count] - v[k];
   if (Cross(e, x - v[k]) >= 0.0) return x;  // on the inner side of the edge of its wedge: inside
   Eigen::Vector2d best_point, point;
@@ -235,7 +236,7 @@ Eigen::Vector2d ProjectOntoPolygon(const Eigen::Vector2d* v, int count, const Po
 double RayExtent(const Eigen::Vector2d* v, int count, const PolygonFan& fan,
                  const Eigen::Vector2d& direction) noexcept {
   if (!fan.valid()) return RayExtent(v, count, direction);
-  const int k = WedgeOf(fan.angles, count, std::atan2(direction.y(), direction.x()));
+  const int k = WedgeOf(fan.angles, count, PseudoAngle(direction));
   const Eigen::Vector2d& a = v[k];
   const Eigen::Vector2d e = v[(k + 1) % count] - a;
   const Eigen::Vector2d normal(e.y(), -e.x());

@@ -633,7 +633,10 @@ void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* o
   const std::size_t nearest = t < 0.5 ? k : k + 1;
   out->interference = empty_[nearest] != 0;
   if (!out->interference && !unconstrained_[nearest]) {
-    const Eigen::Vector2d dir(std::cos(out->offset_angle), std::sin(out->offset_angle));
+    // The offset's direction (+x at the axis, as its angle's cosine and sine were).
+    const Eigen::Vector2d dir = out->offset_distance > 0.0
+                                    ? Eigen::Vector2d(x / out->offset_distance)
+                                    : Eigen::Vector2d(1, 0);
     PolygonFan fan;
     if (origin_fan_[nearest]) {
       fan = {Eigen::Vector2d::Zero(), origin_angles_.data() + vertex_begin_[nearest]};
