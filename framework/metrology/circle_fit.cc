@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
@@ -138,29 +137,22 @@ Circle LeastSquaresCircle(const Eigen::Matrix2Xd& points) {
   }
   Circle c = AlgebraicCircle(points);
   const long n = points.cols();
-  // Gauss-Newton on the normal equations: the Jacobian's columns (the unit directions' x and y,
-  // and 1) are near orthogonal on any arc the fit is asked of, so J'J (3 x 3, summed point by
-  // point) loses nothing a QR of the n x 3 Jacobian would keep, at a tenth of its cost.
-  double last = std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd J(n, 3);
+  Eigen::VectorXd res(n);
   for (int it = 0; it < 100; ++it) {
-    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
     for (long i = 0; i < n; ++i) {
       const Eigen::Vector2d q = points.col(i) - c.centre;
       const double d = q.norm();
       if (d == 0.0) throw std::invalid_argument("circle fit: a point lies at the centre");
-      const Eigen::Vector3d j(-q.x() / d, -q.y() / d, -1.0);
-      jtj.noalias() += j * j.transpose();
-      jtr += j * (d - c.radius);
+      res(i) = d - c.radius;
+      J(i, 0) = -q.x() / d;
+      J(i, 1) = -q.y() / d;
+      J(i, 2) = -1.0;
     }
-    const Eigen::Vector3d step = -jtj.ldlt().solve(jtr);
-    if (!step.allFinite()) throw std::invalid_argument("circle fit: no definite step");
+    const Eigen::Vector3d step = J.colPivHouseholderQr().solve(-res);
     c.centre += step.head<2>();
     c.radius += step(2);
-    const double size = step.norm(), scale = c.radius + c.centre.norm();
-    // Converged, or at rounding (a step no longer shrinking, below 1e-12 of the circle).
-    if (size <= 1e-15 * scale || (size <= 1e-12 * scale && size >= 0.5 * last)) break;
-    last = size;
+    if (step.norm() <= 1e-15 * (c.radius + c.centre.norm())) break;
   }
   return c;
 }
