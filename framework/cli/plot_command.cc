@@ -111,9 +111,8 @@ void AddSms(CLI::App& plot) {
       "insertion");
   cmd->add_option("SCENARIO", options->scenario, "scenario file (YAML)")->required();
   cmd->add_option("--part", options->part, "draw only this part's skin profile");
-  AddIntegerOption(
-      cmd, "--seed", 0, std::numeric_limits<long>::max(),
-      [options](long s) { options->seed = static_cast<std::uint64_t>(s); },
+  AddSeedOption(
+      cmd, "--seed", [options](std::uint64_t s) { options->seed = s; },
       "seed of the skin model shapes (default: run.seed; the same range)");
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")

@@ -189,9 +189,8 @@ void AddRunCommand(CLI::App& app) {
                   std::string("scenario file (default: ") + kDefaultScenario +
                       ", looked up in the current folder, then in FITFEEL_SOURCE_DIR)");
   cmd->add_option("--out", args->out, "output folder (default: out/<scenario name>)");
-  AddIntegerOption(
-      cmd, "--seed", 0, std::numeric_limits<long>::max(),
-      [args](long seed) { args->seed = static_cast<std::uint64_t>(seed); },
+  AddSeedOption(
+      cmd, "--seed", [args](std::uint64_t seed) { args->seed = seed; },
       "seed of the scene's random generator (overrides run.seed; the same range)");
   cmd->add_flag("--allow-large", args->allow_large,
                 "run a scene whose estimated preparation exceeds 1 GiB or 30 s");

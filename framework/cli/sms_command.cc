@@ -200,9 +200,8 @@ void AddSmsCommand(CLI::App& app) {
   cmd->add_option("--measurement", options->measurement,
                   "CSV file: the part as a roundness measurement (height, angle, deviation in SI), "
                   "loadable as `measured: {roundness: FILE}` (needs --part)");
-  AddIntegerOption(
-      cmd, "--seed", 0, std::numeric_limits<long>::max(),
-      [options](long s) { options->seed = static_cast<std::uint64_t>(s); },
+  AddSeedOption(
+      cmd, "--seed", [options](std::uint64_t s) { options->seed = s; },
       "Seed (default: the scenario's run.seed; the same range)");
   cmd->callback([options] { Run(*options); });
 }

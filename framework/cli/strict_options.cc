@@ -51,6 +51,18 @@ CLI::Option* AddIntegerOption(CLI::App* cmd, const std::string& name, long min, 
       help);
 }
 
+CLI::Option* AddSeedOption(CLI::App* cmd, const std::string& name,
+                           std::function<void(std::uint64_t)> set, const std::string& help) {
+  return cmd->add_option_function<std::string>(
+      name,
+      [name, set](const std::string& text) {
+        const std::optional<std::uint64_t> value = ParseSeed(text);
+        if (!value) Refuse(name, kSeedRange, Quoted(text));
+        set(*value);
+      },
+      help);
+}
+
 CLI::Option* AddQuantityOption(CLI::App* cmd, const std::string& name, Dimension dimension,
                                double min, double max, std::function<void(double)> set,
                                const std::string& help) {

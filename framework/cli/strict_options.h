@@ -11,11 +11,14 @@
 namespace fitfeel::cli {
 
 // Numeric command-line options read as text and parsed with the scenario keys' rules
-// (ParseInteger, ParseQuantity), so that `--seed -1`, `--seed ''` and a seed past 2^63 - 1 are
-// refused as run.seed is, never clamped or ignored. A refusal throws UserError naming the option:
-// "--seed: expected an integer in [0, 9223372036854775807], found '-1'" (exit code 2).
+// (ParseInteger, ParseSeed, ParseQuantity), so that `--seed -1`, `--seed ''` and a seed past
+// 2^64 - 1 are refused as run.seed is, never clamped or ignored. A refusal throws UserError naming
+// the option: "--seed: expected an integer in [0, 18446744073709551615], found '-1'" (exit code 2).
 CLI::Option* AddIntegerOption(CLI::App* cmd, const std::string& name, long min, long max,
                               std::function<void(long)> set, const std::string& help);
+// A seed (ParseSeed: every 64-bit value, a study pair's included).
+CLI::Option* AddSeedOption(CLI::App* cmd, const std::string& name,
+                           std::function<void(std::uint64_t)> set, const std::string& help);
 // A quantity of `dimension` (a dimensionless one is a bare number) in [min, max].
 CLI::Option* AddQuantityOption(CLI::App* cmd, const std::string& name, Dimension dimension,
                                double min, double max, std::function<void(double)> set,

@@ -122,9 +122,8 @@ void AddStudyCommand(CLI::App& app) {
   AddIntegerOption(
       cmd, "--pairs", 1, 10'000'000, [args](long n) { args->pairs = static_cast<int>(n); },
       "number of part pairs (default 100)");
-  AddIntegerOption(
-      cmd, "--seed", 0, std::numeric_limits<long>::max(),
-      [args](long s) { args->seed = static_cast<std::uint64_t>(s); },
+  AddSeedOption(
+      cmd, "--seed", [args](std::uint64_t s) { args->seed = s; },
       "study seed (default 1; the range of run.seed)");
   AddIntegerOption(
       cmd, "--threads", 1, 1024, [args](long t) { args->threads = static_cast<int>(t); },

@@ -211,6 +211,21 @@ long ConfigNode::AsInteger(long min, long max) const {
   return *value;
 }
 
+std::uint64_t ConfigNode::AsSeed() const {
+  if (!is_scalar()) Fail(kSeedRange, Describe());
+  const std::string& text = node().Scalar();
+  const std::optional<std::uint64_t> value = ParseSeed(text);
+  if (!value) {
+    std::uint64_t ignored = 0;
+    const bool too_large =
+        !text.empty() && std::from_chars(text.data() + (text[0] == '+'), text.data() + text.size(),
+                                         ignored)
+                                 .ec == std::errc::result_out_of_range;
+    Fail(kSeedRange, Describe() + (too_large ? " (too large)" : ""));
+  }
+  return *value;
+}
+
 bool ConfigNode::AsBool() const {
   if (!is_scalar()) Fail("true or false", Describe());
   bool value = false;

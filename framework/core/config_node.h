@@ -58,6 +58,7 @@ class FITFEEL_API ConfigNode {
   double AsQuantityIn(Dimension dimension, double min, double max, bool min_inclusive = true) const;
   long AsInteger(long min = std::numeric_limits<long>::min(),
                  long max = std::numeric_limits<long>::max()) const;
+  std::uint64_t AsSeed() const;  // ParseSeed's (quantity.h)
   bool AsBool() const;
   std::string AsOneOf(const std::vector<std::string_view>& choices) const;
 

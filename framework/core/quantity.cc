@@ -328,6 +328,15 @@ std::optional<long> ParseInteger(std::string_view text, long min, long max) {
   return value;
 }
 
+std::optional<std::uint64_t> ParseSeed(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty() || text.front() < '0' || text.front() > '9') return std::nullopt;
+  std::uint64_t value = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
 std::string DescribeIntegerRange(long min, long max) {
   constexpr long kLow = std::numeric_limits<long>::min(), kHigh = std::numeric_limits<long>::max();
   if (min != kLow && max != kHigh) {

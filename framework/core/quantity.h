@@ -1,7 +1,8 @@
 #pragma once
 
-#include <string>
+#include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "framework/core/export.h"
@@ -43,6 +44,10 @@ FITFEEL_API double ParseQuantity(std::string_view text, Dimension dimension);
 FITFEEL_API std::optional<long> ParseInteger(std::string_view text, long min, long max);
 // "an integer", "an integer >= 0", "an integer in [1, 1000]": what ParseInteger accepts.
 FITFEEL_API std::string DescribeIntegerRange(long min, long max);
+// A random generator's seed, as run.seed and every --seed take it: ParseInteger's form over the
+// whole 64-bit range, so that each seed a fit study gives its pairs (pairs.csv) runs again.
+FITFEEL_API std::optional<std::uint64_t> ParseSeed(std::string_view text);
+inline constexpr const char* kSeedRange = "an integer in [0, 18446744073709551615]";
 
 // Formats an SI value in a unit suited to its magnitude, e.g. 2.0e-5 m -> "20 um".
 FITFEEL_API std::string FormatQuantity(double value_si, Dimension dimension);

@@ -286,7 +286,7 @@ RunSettings ParseRun(const ConfigNode& node) {
                      .AsQuantityIn(Dimension::kTime, 0.0, kMaxDuration,
                                    /*min_inclusive=*/false);
   if (std::optional<ConfigNode> seed = node.Find("seed")) {
-    run.seed = static_cast<std::uint64_t>(seed->AsInteger(0));
+    run.seed = seed->AsSeed();
   }
   if (std::optional<ConfigNode> clock = node.Find("clock")) {
     run.clock = clock->AsOneOf({"virtual", "realtime"}) == "virtual" ? ClockMode::kVirtual

@@ -122,6 +122,24 @@ TEST(ConfigNodeTest, IntegersAreStrict) {
   EXPECT_EQ(Catch([&] { root.Child("e").AsInteger(1, 10); }).expected(), "an integer in [1, 10]");
 }
 
+// Seeds take every 64-bit value (a fit study's pair seeds are SplitMix64 outputs, half of them
+// past 2^63), and nothing else.
+TEST(ConfigNodeTest, SeedsTakeTheWhole64BitRange) {
+  const ConfigNode root = Load(
+      "a: 18446744073709551615\nb: 18446744073709551616\nc: -1\nd: 1.5\ne: ''\nf: +7\n"
+      "g: 9223372036854775808\n");
+  EXPECT_EQ(root.Child("a").AsSeed(), 18446744073709551615ull);
+  EXPECT_EQ(root.Child("f").AsSeed(), 7u);
+  EXPECT_EQ(root.Child("g").AsSeed(), 9223372036854775808ull);
+  EXPECT_THAT(Catch([&] { root.Child("b").AsSeed(); }).found(), HasSubstr("too large"));
+  for (const char* key : {"b", "c", "d", "e"}) {
+    EXPECT_EQ(Catch([&] { root.Child(key).AsSeed(); }).expected(), kSeedRange) << key;
+  }
+  EXPECT_FALSE(ParseSeed("-0").has_value());
+  EXPECT_FALSE(ParseSeed("0x10").has_value());
+  EXPECT_FALSE(ParseSeed(" 5").has_value());
+}
+
 TEST(ConfigNodeTest, ChoicesBoolsStringsAndLists) {
   const ConfigNode root =
       Load("clock: virtual\nbad: sometimes\nflag: true\nlist: [a, b]\nmap: {k: v}\nnull_key:\n");

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
+#include "framework/core/quantity.h"
 #include "framework/plugin/registry.h"
 #include "framework/plot/study_chart.h"
 #include "framework/study/pair_geometry.h"
@@ -30,6 +31,18 @@ TEST(PairSeed, DeterministicAndDistinct) {
     for (int i = 0; i < 1000; ++i) seen.insert(PairSeed(s, i));
   }
   EXPECT_EQ(seen.size(), 4000u);  // neighbouring study seeds give unrelated pairs
+}
+
+// Every pair's seed, as pairs.csv writes it, is a seed run.seed and --seed take (so that one pair
+// of a study can be run and watched on its own).
+TEST(PairSeed, EveryPairSeedParsesBack) {
+  int past_63_bits = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const std::uint64_t seed = PairSeed(1, i);
+    EXPECT_EQ(ParseSeed(std::to_string(seed)), seed);
+    past_63_bits += seed >> 63 != 0 ? 1 : 0;
+  }
+  EXPECT_GT(past_63_bits, 400);  // the range this needs
 }
 
 TEST(Describe, InterpolatesBetweenOrderStatistics) {
