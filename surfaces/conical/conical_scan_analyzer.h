@@ -85,6 +85,7 @@ class ConicalScanAnalyzer final : public ContactAnalyzer {
   double taper_ = 0.0;
   double hole_small_diameter_ = 0.0;
   double area_factor_ = 0.0;           // pi / cos(alpha) / n
+  bool tiled_ = false;                 // the pin rows tile its length evenly
   Eigen::VectorXd pin_row_;            // t of each pin row centre
   Eigen::MatrixXd pin_v_;              // pin variation, rows x columns
   Eigen::MatrixXd hole_v_;             // hole variation, rows x columns

@@ -110,6 +110,27 @@ TEST(ConicalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
   RecordProperty("worst_relative_error", std::to_string(worst));
 }
 
+// The engaged area the tick reads in closed form is the sum of the rows' slant areas the scan and
+// the table's cells are built from, at every depth from before the hole to past its end (a pin
+// of 20 rows, the hole's rows and columns the cells' own).
+TEST(ConicalTable, EngagedAreaIsTheRowsSum) {
+  ConicalContactAnalyzer analyzer;
+  Prepare(&analyzer, 3, {20, 36});
+  const ConicalScanAnalyzer& scan = analyzer.scan();
+  std::vector<ColumnCell> cells;
+  int engaged = 0;
+  for (double depth = -1e-3; depth <= 0.065; depth += 0.37e-3) {
+    double rows = 0.0;
+    for (int j = 0; j < 36; ++j) {
+      scan.ColumnCells(depth, j, &cells);
+      for (const ColumnCell& c : cells) rows += c.area;
+    }
+    EXPECT_NEAR(scan.EngagedArea(depth), rows, 1e-12 * std::max(rows, 1e-9)) << depth;
+    engaged += rows > 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(engaged, 100);
+}
+
 TEST(ConicalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
   ConicalContactAnalyzer one, two;
   setenv("FITFEEL_PREPARE_THREADS", "1", 1);
