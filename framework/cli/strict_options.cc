@@ -34,13 +34,17 @@ void CheckParent(const std::string& option, const fs::path& path) {
   }
 }
 
+// "--seed" of "-s,--seed": the name a refusal gives.
+std::string LongName(const std::string& name) {
+  const std::size_t comma = name.rfind(',');
+  return name.substr(comma == std::string::npos ? 0 : comma + 1);
+}
+
 }  // namespace
 
 CLI::Option* AddIntegerOption(CLI::App* cmd, const std::string& name, long min, long max,
                               std::function<void(long)> set, const std::string& help) {
-  const std::string option = name.substr(name.rfind(',') == std::string::npos
-                                             ? 0
-                                             : name.rfind(',') + 1);
+  const std::string option = LongName(name);
   return cmd->add_option_function<std::string>(
       name,
       [option, min, max, set](const std::string& text) {
@@ -55,9 +59,9 @@ CLI::Option* AddSeedOption(CLI::App* cmd, const std::string& name,
                            std::function<void(std::uint64_t)> set, const std::string& help) {
   return cmd->add_option_function<std::string>(
       name,
-      [name, set](const std::string& text) {
+      [option = LongName(name), set](const std::string& text) {
         const std::optional<std::uint64_t> value = ParseSeed(text);
-        if (!value) Refuse(name, kSeedRange, Quoted(text));
+        if (!value) Refuse(option, kSeedRange, Quoted(text));
         set(*value);
       },
       help);
@@ -66,9 +70,7 @@ CLI::Option* AddSeedOption(CLI::App* cmd, const std::string& name,
 CLI::Option* AddQuantityOption(CLI::App* cmd, const std::string& name, Dimension dimension,
                                double min, double max, std::function<void(double)> set,
                                const std::string& help) {
-  const std::string option = name.substr(name.rfind(',') == std::string::npos
-                                             ? 0
-                                             : name.rfind(',') + 1);
+  const std::string option = LongName(name);
   return cmd->add_option_function<std::string>(
       name,
       [option, dimension, min, max, set](const std::string& text) {

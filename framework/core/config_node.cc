@@ -40,6 +40,18 @@ std::string RangeText(Dimension dimension, double min, double max, bool min_incl
   return "";
 }
 
+// " (too large)" where `text` is digits past what a T holds, for a refusal's "found" (the
+// integer and seed accessors share it).
+template <typename T>
+std::string TooLargeNote(const std::string& text) {
+  T ignored = 0;
+  const bool too_large =
+      !text.empty() && std::from_chars(text.data() + (text[0] == '+'), text.data() + text.size(),
+                                       ignored)
+                               .ec == std::errc::result_out_of_range;
+  return too_large ? " (too large)" : "";
+}
+
 }  // namespace
 
 ConfigNode::ConfigNode(const YAML::Node& node, std::string file, std::string path)
@@ -201,12 +213,7 @@ long ConfigNode::AsInteger(long min, long max) const {
   const std::string& text = node().Scalar();
   const std::optional<long> value = ParseInteger(text, min, max);
   if (!value) {
-    long ignored = 0;
-    const bool too_large =
-        !text.empty() && std::from_chars(text.data() + (text[0] == '+'), text.data() + text.size(),
-                                         ignored)
-                                 .ec == std::errc::result_out_of_range;
-    Fail(expected, Describe() + (too_large ? " (too large)" : ""));
+    Fail(expected, Describe() + TooLargeNote<long>(text));
   }
   return *value;
 }
@@ -216,12 +223,7 @@ std::uint64_t ConfigNode::AsSeed() const {
   const std::string& text = node().Scalar();
   const std::optional<std::uint64_t> value = ParseSeed(text);
   if (!value) {
-    std::uint64_t ignored = 0;
-    const bool too_large =
-        !text.empty() && std::from_chars(text.data() + (text[0] == '+'), text.data() + text.size(),
-                                         ignored)
-                                 .ec == std::errc::result_out_of_range;
-    Fail(kSeedRange, Describe() + (too_large ? " (too large)" : ""));
+    Fail(kSeedRange, Describe() + TooLargeNote<std::uint64_t>(text));
   }
   return *value;
 }

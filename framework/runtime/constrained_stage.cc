@@ -714,6 +714,7 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     return k * (held_depth - depth) + work.wrench.force.y();
   };
   double depth = held_depth;
+  bool lags = false;
   const double at_device = axial(held_depth);
   constexpr double kAxialTolerance = 1e-4;  // N, as across
   if (std::abs(at_device) > kAxialTolerance) {
@@ -731,15 +732,13 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // lag, often hundreds of ticks ago): a hand's insertion of a clearance fit, largest tick
     // 34 -> 31 contact evaluations. (Repeating the edge from that balance instead of from the
     // device saved two more there and cost another scene's worst tick 70 -> 107: not taken.)
-    const bool lags = std::abs(depth - held_depth) > 1e-5;
+    lags = std::abs(depth - held_depth) > 1e-5;
     if (lags) {
       if (!run->lagged) run->at_part.line_slope = run->at_device.line_slope;
       at = across(depth, &run->at_part);
     }
-    run->lagged = lags;
-  } else {
-    run->lagged = false;
   }
+  run->lagged = lags;
   run->part = at;
   run->part_depth = depth;
   out->pose.offset = at;

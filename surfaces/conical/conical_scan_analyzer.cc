@@ -67,10 +67,7 @@ void ConicalScanAnalyzer::ForEachRow(double s, Visit&& visit) const noexcept {
     const double lo = std::max(y - 0.5 * pin_pitch_, 0.0);
     const double hi = std::min(y + 0.5 * pin_pitch_, hole_length_);
     if (!(hi > lo)) continue;
-    // Slant area of the hole's nominal cone over [lo, hi], one column's share: exact for a
-    // frustum, and continuous as a cell slides in or out of the hole.
-    const double area = area_factor_ * (hi - lo) *
-                        (hole_small_diameter_ + taper_ * (hole_length_ - 0.5 * (lo + hi)));
+    const double area = SlantArea(lo, hi);
     // Linear interpolation between hole row centres, constant beyond the end rows.
     const double u = std::clamp(y / hole_pitch_ - 0.5, 0.0, hole_rows_ - 1.0);
     const int k = std::min(static_cast<int>(u), std::max(hole_rows_ - 2, 0));
@@ -99,9 +96,7 @@ double ConicalScanAnalyzer::EngagedArea(double depth) const noexcept {
     // pass over the rows).
     const double a = std::clamp(depth - pin_length_, 0.0, hole_length_);
     const double b = std::clamp(depth, 0.0, hole_length_);
-    if (!(b > a)) return 0.0;
-    return area_factor_ * columns_ * (b - a) *
-           (hole_small_diameter_ + taper_ * (hole_length_ - 0.5 * (a + b)));
+    return b > a ? SlantArea(a, b) * columns_ : 0.0;
   }
   double area = 0.0;
   ForEachRow(depth, [&](int, double a, int, int, double) { area += a; });

@@ -73,6 +73,12 @@ class ConicalScanAnalyzer final : public ContactAnalyzer {
   // hole at depth s.
   template <class Visit>
   void ForEachRow(double depth, Visit&& visit) const noexcept;
+  // Slant area of the hole's nominal cone over [lo, hi] of its length, one column's share: exact
+  // for a frustum, and continuous as a cell slides in or out of the hole.
+  double SlantArea(double lo, double hi) const noexcept {
+    return area_factor_ * (hi - lo) *
+           (hole_small_diameter_ + taper_ * (hole_length_ - 0.5 * (lo + hi)));
+  }
 
   int pin_rows_ = 0;
   int hole_rows_ = 0;

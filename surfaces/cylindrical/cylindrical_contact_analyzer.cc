@@ -683,11 +683,14 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
+void CylinderContactAnalyzer::SolveBreathing(AxialBreathing* hub, AxialBreathing* shaft) const {
+  *hub = AxialBreathing(hub_body_, hub_coupling_rows_);
+  *shaft = AxialBreathing(shaft_body_, shaft_coupling_rows_);
+}
+
 void CylinderContactAnalyzer::EnsureBreathing() {
   const std::lock_guard<std::mutex> lock(breathing_mutex_);
-  if (!hub_breathing_.empty()) return;
-  hub_breathing_ = AxialBreathing(hub_body_, hub_coupling_rows_);
-  shaft_breathing_ = AxialBreathing(shaft_body_, shaft_coupling_rows_);
+  if (hub_breathing_.empty()) SolveBreathing(&hub_breathing_, &shaft_breathing_);
 }
 
 RigidContactResult CylinderContactAnalyzer::SolveSections(
@@ -956,8 +959,7 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   AxialBreathing hub, shaft;
   Breathing breathing{&hub_breathing_, &shaft_breathing_};
   if (axial_coupling_ && hub_breathing_.empty()) {
-    hub = AxialBreathing(hub_body_, hub_coupling_rows_);
-    shaft = AxialBreathing(shaft_body_, shaft_coupling_rows_);
+    SolveBreathing(&hub, &shaft);
     breathing = {&hub, &shaft};
   }
   SolveSections(&solver, sections, starts, lengths, pose.depth - shaft_length_, gaps.data(), warm,

@@ -122,19 +122,21 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     Eigen::MatrixXd system;
     Eigen::VectorXd step;
   };
-  // The sections' solve with the parts' axial coupling (hub_breathing_ set): each section's gaps
+  // The hub's and the shaft's elements, solved (EnsureBreathing, or the caller's own).
+  using Breathing = std::array<const AxialBreathing*, 2>;
+  // The sections' solve with the parts' axial coupling (axial_coupling_ set): each section's gaps
   // (`gaps`, section-major, the solver's columns each) are shifted by the extra displacement of
   // the coupling rows it covers in either part for the rows' mean pressures until they agree (a
   // quasi-Newton iteration on the breathing mode: in full contact the second solve is the
   // answer). Per section its start along the bore (bushing coordinates) and length; `shift` is
   // the bushing coordinate of the shaft's coordinate 0 (depth - shaft length).
-  // The hub's and the shaft's elements (with the axial coupling, solved: EnsureBreathing).
-  using Breathing = std::array<const AxialBreathing*, 2>;
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
                                    std::span<const double> start, std::span<const double> length,
                                    double shift, double* gaps, const Eigen::Vector4d& warm,
                                    CouplingScratch* scratch, const Breathing& breathing) const;
-  // Solves both parts' elements once, for the first depth step whose sections need them (any
+  // Both parts' elements from their bodies and coupling rows.
+  void SolveBreathing(AxialBreathing* hub, AxialBreathing* shaft) const;
+  // Solves them into the analyzer once, for the first depth step whose sections need them (any
   // thread of the prepare's; the others wait).
   void EnsureBreathing();
 
