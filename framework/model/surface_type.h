@@ -91,9 +91,10 @@ class FITFEEL_API SurfaceType {
     return {};
   }
 
-  // The lead-in of the pair with the inner part moving (LeadIn): the free region its chamfers
-  // leave an aligned moving part, in which the positioning stage guides the part as a god object,
-  // and the depth at which the constrained stage takes over. Built once before a run. Default:
+  // The lead-in of the pair (LeadIn, described with the inner part moving; the positioning stage
+  // uses it for either part moving): the free region its chamfers leave an aligned moving part,
+  // in which the positioning stage guides the part as a god object, and the depth at which the
+  // constrained stage takes over. Built once before a run. Default:
   // empty (no lead-in: free motion collides the coarse meshes, if any, and the hand-over asks
   // for the part near the axis at the entrance). Throws UserError if the parts cannot be
   // profiled.

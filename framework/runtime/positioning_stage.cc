@@ -89,11 +89,9 @@ PositioningStage::PositioningStage(const Options& options, const CoarseMeshes& m
 
 PositioningStage::PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving,
                                    LeadIn lead_in)
-    // A lead-in the stage uses takes the meshes' place: their collider is not built.
-    : PositioningStage(options,
-                       moving == Role::kInner && !lead_in.empty() ? CoarseMeshes{} : meshes,
-                       moving) {
-  if (moving == Role::kInner) lead_in_ = std::move(lead_in);
+    // A lead-in takes the meshes' place: their collider is not built.
+    : PositioningStage(options, lead_in.empty() ? meshes : CoarseMeshes{}, moving) {
+  lead_in_ = std::move(lead_in);
 }
 
 PositioningStage::~PositioningStage() = default;

@@ -21,15 +21,21 @@ class CollisionScratch;
 
 // Free motion before mating (paper section 3: "positioning stage").
 //
-// With a lead-in (LeadIn: a pair of revolution whose chamfers guide the part, the inner part
-// moving) the moving part is a god object: where the lead-in lets an aligned part be, as close to
-// the device as it can slide there (LeadIn::Project), and the device is pulled towards it by a
+// With a lead-in (LeadIn: a pair of revolution whose chamfers guide the part) the moving part is
+// a god object, whichever part moves (below): where the lead-in lets an aligned part be, as close
+// to the device as it can slide there (LeadIn::Project), and the device is pulled towards it by a
 // spring of stiffness k_free; the pose the stage reports is the part's, not the device's. The
 // part's orientation is the constraint's (aligned: a 3-DOF device renders no torque; a 6-DOF
 // device's tilt is not rendered) and only its twist follows the device. It hands over to the
 // constrained stage once the part reaches the lead-in's capture depth, the depth from which the
 // reported depth is counted (the mating depth); the constrained stage continues from the part's
-// pose, and hands back when the part is pulled out past it.
+// pose, and hands back when the part is pulled out past it. The lead-in's free region is one of
+// relative position: the inner part's tip y past the outer part's mating start, r off its axis.
+// With the outer part moving, the scene frame is the inner part's turned half a turn about z
+// (CoarseMeshes): its tip at y = 0, its body at y >= 0, and the device reports the outer part's
+// mating start at (y, o), which then has the inner part's tip y past it and |o| off its axis: the
+// (y, r) of an inner part moved to (y, o). So the same region and god object serve both roles,
+// and neither queries FCL.
 //
 // Otherwise it collides the parts' coarse
 // meshes with FCL (docs/architecture.md, section 4: FCL here and only here, since mesh-mesh queries
@@ -81,8 +87,8 @@ class FITFEEL_API PositioningStage final : public Stage {
   // z into the scene frame. Empty meshes mean no collision. Throws UserError for bad options or a
   // mesh FCL refuses.
   PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving);
-  // As above, with a lead-in, which takes the place of the meshes when it is not empty and the
-  // inner part moves (LeadIn describes that case only).
+  // As above, with a lead-in, which takes the place of the meshes when it is not empty (either
+  // part moving: see above).
   PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving,
                    LeadIn lead_in);
   ~PositioningStage() override;

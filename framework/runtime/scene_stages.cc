@@ -12,7 +12,7 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
   SceneStages stages;
   LeadIn lead_in = prepared.surface->MakeLeadIn(scene.inner, scene.outer);
   // Coarse meshes only where no lead-in takes their place (PositioningStage).
-  const bool meshes = lead_in.empty() || scene.moving != Role::kInner;
+  const bool meshes = lead_in.empty();
   stages.positioning = std::make_unique<PositioningStage>(
       free_motion,
       meshes ? prepared.surface->MakeCoarseMeshes(scene.inner, scene.outer) : CoarseMeshes{},

@@ -47,4 +47,15 @@ inline std::string WithHand(const std::string& scenario_text, double aim,
   return text;
 }
 
+// `scenario_text` with its `moving:` line naming `part` instead. Throws std::invalid_argument if
+// the text has no top-level `moving:` line.
+inline std::string WithMoving(const std::string& scenario_text, const std::string& part) {
+  const std::string key = "\nmoving: ";
+  const std::size_t at = scenario_text.find(key);
+  if (at == std::string::npos) throw std::invalid_argument("hand scene: no moving line");
+  const std::size_t end = scenario_text.find('\n', at + key.size());
+  return scenario_text.substr(0, at + key.size()) + part +
+         (end == std::string::npos ? std::string() : scenario_text.substr(end));
+}
+
 }  // namespace fitfeel::test_support

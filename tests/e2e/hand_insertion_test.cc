@@ -70,6 +70,15 @@ RunResult RunHand(const std::string& scenario, double aim, const std::string& wa
   return RunScene(std::move(scene), options);
 }
 
+// A scenario file's name as a test name: its stem, dashes to underscores.
+std::string TestName(const std::string& file) {
+  std::string name = file.substr(0, file.find('.'));
+  for (char& ch : name) {
+    if (ch == '-') ch = '_';
+  }
+  return name;
+}
+
 class HandInsertion : public ::testing::TestWithParam<HandCase> {};
 
 TEST_P(HandInsertion, OffTheAxisWithTremor) {
@@ -157,6 +166,56 @@ TEST(HandInsertionClearance, TheGodObjectsLineTakesTheWallsSecant) {
   EXPECT_LE(e["p99"].get<double>(), 26.0);
 }
 
+// The hand holds the outer part and slides it onto the fixed inner one, 1 mm off the axis, and
+// back off: the lead-in guides it as it guides a moving inner part (docs/lead-in.md; FCL was
+// this case's only path before, 0.4-0.5 ms a tick in contact), the constrained stage takes it
+// over, the fits a hand joins go on to full engagement, and pulled back the part is released.
+struct OuterCase {
+  std::string scenario;
+  std::string outer;  // the outer part's name in the scenario
+};
+
+void PrintTo(const OuterCase& c, std::ostream* out) { *out << c.scenario; }
+
+class HandSlidesTheOuterPart : public ::testing::TestWithParam<OuterCase> {};
+
+TEST_P(HandSlidesTheOuterPart, OnAndOffAgain) {
+  const OuterCase& c = GetParam();
+  const fs::path dir = test_support::EmptyFolder("hand-insertion", "outer-" + c.scenario);
+  const fs::path file = dir / ("outer-" + c.scenario);
+  const std::string text =
+      test_support::ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / c.scenario);
+  std::ofstream(file) << test_support::WithHand(
+      test_support::WithMoving(text, c.outer), 1e-3,
+      std::string(kHandPushIn) + "    - {time: 5 s, position: [0 mm, -5 mm, 0 mm]}\n", 6.0);
+  RunOptions options;
+  options.out_dir = dir / "run";
+  const RunResult result = RunScene(LoadScene(file, Registry()), options);
+  const nlohmann::json& s = result.summary;
+  EXPECT_LE(s["safety"]["energy_created_J"].get<double>(), 1e-9);
+  EXPECT_LE(s["safety"]["max_delivered_force_N"].get<double>(),
+            2.0 * kHandStiffness * (1e-3 + 2.0 * kHandTremor));
+  EXPECT_GE(s["depth_mm"]["max"].get<double>(), 20.0);
+  EXPECT_GE(s["constrained_ticks"].get<double>(), 0.6 * s["ticks"].get<double>());
+  std::ifstream trace(dir / "run" / "trace.csv");
+  std::string line, stages;
+  while (std::getline(trace, line)) {
+    const std::string stage = line.substr(line.find(',') + 1, 3);
+    if (stages.empty() || stages.substr(stages.size() - 3) != stage) stages += stage;
+  }
+  EXPECT_EQ(stages, "staposconpos") << "stage sequence (3 letters each, header first)";
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, HandSlidesTheOuterPart,
+                         ::testing::Values(OuterCase{"paper-case1-h7g6.yaml", "bushing"},
+                                           OuterCase{"fits-20mm-h7js6.yaml", "bushing"},
+                                           OuterCase{"taper-pin.yaml", "hub"},
+                                           OuterCase{"key-parallel.yaml", "hub_keyway"},
+                                           OuterCase{"square-shaft.yaml", "hub"}),
+                         [](const auto& param_info) {
+                           return TestName(param_info.param.scenario);
+                         });
+
 INSTANTIATE_TEST_SUITE_P(
     Shipped, HandInsertion,
     ::testing::Values(HandCase{"paper-case1-h7g6.yaml", Joining::kByHand},
@@ -175,14 +234,7 @@ INSTANTIATE_TEST_SUITE_P(
                       // A DIN 6885 key slides into its JS9 hub keyway by hand; so does the square.
                       HandCase{"key-parallel.yaml", Joining::kByHand},
                       HandCase{"square-shaft.yaml", Joining::kByHand}),
-    [](const auto& param_info) {
-      const std::string& file = param_info.param.scenario;
-      std::string name = file.substr(0, file.find('.'));
-      for (char& ch : name) {
-        if (ch == '-') ch = '_';
-      }
-      return name;
-    });
+    [](const auto& param_info) { return TestName(param_info.param.scenario); });
 
 }  // namespace
 }  // namespace fitfeel

@@ -123,11 +123,10 @@ fs::path HandVariant(const fs::path& file) {
   return out;
 }
 
-// True where the hand variant means something: a surface with a lead-in, the inner part moving.
+// True where the hand variant means something: a surface with a lead-in.
 bool HasLeadIn(const fs::path& file) {
   const Scene scene = LoadScene(file, Registry());
-  return scene.moving == Role::kInner &&
-         !scene.surface->MakeLeadIn(scene.inner, scene.outer).empty();
+  return !scene.surface->MakeLeadIn(scene.inner, scene.outer).empty();
 }
 
 void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {

@@ -128,6 +128,41 @@ TEST(PositioningCollisionTest, AMovingBushingStrikesTheShaftsEnd) {
   EXPECT_NEAR(out.wrench.force.y(), -kStiffness * y, 1e-9 * kStiffness * y);
 }
 
+// With a lead-in the bushing slid over the shaft goes through the funnel the shaft pushed into
+// the bushing meets (the free region is one of relative position): on the same device path
+// (onto the chamfers off the axis, down them, into the bore and out again) the stage answers
+// both roles alike, tick by tick, and pushes the part back and towards the axis on the chamfer,
+// where the meshes alone would have had FCL's answer for the bushing.
+TEST(PositioningCollisionTest, WithALeadInEitherPartMovesThroughTheSameFunnel) {
+  RadiusProfile shaft, bore;
+  shaft.points = {{0.0, kRadius - 0.5e-3}, {0.5e-3, kRadius}};     // C0.5 end
+  bore.points = {{0.0, kRadius + 1e-3}, {1e-3, kRadius + 10e-6}};  // C1 entrance, 10 um play
+  const LeadIn lead_in(shaft, bore, -1e-3, 0.5e-3);
+  const PositioningStage inner(WithStiffness(), Meshes(), Role::kInner, lead_in);
+  const PositioningStage outer(WithStiffness(), Meshes(), Role::kOuter, lead_in);
+  const std::unique_ptr<StageState> inner_run = inner.MakeState(), outer_run = outer.MakeState();
+  EXPECT_TRUE(outer.collides());
+  EXPECT_EQ(outer.depth_origin(), inner.depth_origin());
+  bool pushed_back = false;
+  for (int i = 0; i <= 400; ++i) {
+    // 1.2 mm off along x and 0.3 mm along z, from 3 mm in front of the entrance to 1 mm past
+    // the capture depth and back: the part lands on the chamfer and slides down it.
+    const double s = i <= 200 ? i / 200.0 : (400 - i) / 200.0;
+    const DeviceState device = At(1.2e-3, -3e-3 + 4e-3 * s, 0.3e-3);
+    StageOutput a, b;
+    inner.Evaluate(device, inner_run.get(), &a);
+    outer.Evaluate(device, outer_run.get(), &b);
+    ASSERT_EQ(a.wrench.force, b.wrench.force) << i;
+    ASSERT_EQ(a.pose.depth, b.pose.depth) << i;
+    ASSERT_EQ(a.pose.offset, b.pose.offset) << i;
+    ASSERT_EQ(a.next, b.next) << i;
+    if (b.wrench.force.y() < 0.0 && b.wrench.force.x() < 0.0 && b.wrench.force.z() < 0.0) {
+      pushed_back = true;
+    }
+  }
+  EXPECT_TRUE(pushed_back);
+}
+
 TEST(PositioningCollisionTest, WithoutMeshesFreeMotionIsCollisionFree) {
   const PositioningStage stage(WithStiffness(), CoarseMeshes{}, Role::kInner);
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
