@@ -213,7 +213,7 @@ int fitfeel_pressure_map(fitfeel_scene* s, double* pressure, int capacity, int* 
     const std::uint64_t done = s->scheduler->ticks_done();
     if (done > 0) pose = s->scheduler->trace()[done - 1].pose;
     Eigen::VectorXd delta;
-    s->prepared.analyzer->InterferenceMap(pose, &delta);
+    s->prepared.analyzer->InterferenceMap(fitfeel::AnalyzerPose(pose, s->scene.moving), &delta);
     for (int c = 0; c < grid.size(); ++c) pressure[c] = k * delta(c);
     return FITFEEL_OK;
   } catch (const std::exception& e) {

@@ -177,8 +177,9 @@ void AddPressure(CLI::App& plot) {
     const plot::SceneShapes shapes = plot::GenerateSceneShapes(std::move(scene), run.summary.seed);
     plot::CheckSameGrids(shapes, run.summary.inner_grid, run.summary.outer_grid);
     const plot::PreparedContact contact = plot::PrepareContact(shapes, run.summary.law);
-    const plot::PressureMapData data = plot::MakePressureData(
-        run, options->depth_mm, *contact.analyzer, *contact.law, shapes.inner.grid);
+    const plot::PressureMapData data =
+        plot::MakePressureData(run, options->depth_mm, *contact.analyzer, *contact.law,
+                               shapes.inner.grid, shapes.scene.moving);
     if (!data.pose_note.empty()) std::cerr << "fitfeel: note: " << data.pose_note << "\n";
     plot::Render(plot::MakePressureChart(data), outputs);
     PrintWritten(outputs);

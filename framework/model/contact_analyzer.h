@@ -18,6 +18,16 @@ struct MatingPose {
   double angle = 0.0;                 // rotation about the mating axis (or the sphere centre), rad
 };
 
+// The pose a contact analyzer takes (the inner part's, in the outer part's mating frame) for the
+// moving part's pose in the scene frame (positioning_stage.h): the same where the inner part
+// moves. Where the outer part moves, the scene frame is the inner part's turned half a turn about
+// z and the pose is the outer part's; the inner part's offset in the outer part's frame is then
+// the scene's reflected in z, (x, z) -> (x, -z), at the same depth and twist (the half turn maps
+// a rotation about y to its inverse, and so does inverting the pose). What the analyzer and the
+// law answer in that frame (forces and torques on the inner part, directions across the axis)
+// is, on the moving outer part in the scene frame, the same reflection of it. Its own inverse.
+FITFEEL_API MatingPose AnalyzerPose(const MatingPose& scene_pose, Role moving) noexcept;
+
 // What the analyzer found at one pose (paper section 3.1); read by a resistance law.
 struct ContactState {
   bool engaged = false;         // the mating surfaces overlap axially

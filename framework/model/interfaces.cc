@@ -84,6 +84,12 @@ void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner
   prepared_ = true;
 }
 
+MatingPose AnalyzerPose(const MatingPose& scene_pose, Role moving) noexcept {
+  MatingPose pose = scene_pose;
+  if (moving == Role::kOuter) pose.offset.y() = -pose.offset.y();
+  return pose;
+}
+
 void ContactAnalyzer::Evaluate(const MatingPose& pose, ContactState* out) const noexcept {
   FITFEEL_DEMAND(prepared_ && out != nullptr);
   DoEvaluate(pose, out);

@@ -45,7 +45,7 @@ HeatMapChart MakeSceneSmsChart(const std::string& scenario, const PartSpec& inne
 
 PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
                                  const ContactAnalyzer& analyzer, const ResistanceLaw& law,
-                                 const SurfaceGrid& inner_grid) {
+                                 const SurfaceGrid& inner_grid, Role moving) {
   const ConstrainedTrace& trace = run.trace;
   const std::size_t row = RowAtDepth(trace, depth_mm);
   MatingPose pose;
@@ -69,7 +69,7 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
   data.law = run.summary.law;
   data.depth_mm = depth_mm;
   data.grid = inner_grid;
-  analyzer.InterferenceMap(pose, &data.interference);
+  analyzer.InterferenceMap(AnalyzerPose(pose, moving), &data.interference);
   try {
     data.pressure_per_interference = law.PressurePerInterference();
   } catch (const UnsupportedError&) {

@@ -114,6 +114,33 @@ std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
 
 void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
                                   StageOutput* out) const noexcept {
+  if (options_.moving == Role::kInner) {
+    EvaluateInAnalyzerFrame(device, state, out);
+    return;
+  }
+  // The reflection in z (AnalyzerPose) of every vector read and written; the twist stays, so the
+  // orientation does too.
+  const Eigen::Vector3d z(1.0, 1.0, -1.0);
+  DeviceState relative = device;
+  relative.position = device.position.cwiseProduct(z);
+  relative.velocity = device.velocity.cwiseProduct(z);
+  relative.angular_velocity = device.angular_velocity.cwiseProduct(z);
+  relative.load.y() = -device.load.y();
+  out->pose = AnalyzerPose(out->pose, options_.moving);  // the hand-over's
+  EvaluateInAnalyzerFrame(relative, state, out);
+  out->pose = AnalyzerPose(out->pose, options_.moving);
+  out->wrench.force = out->wrench.force.cwiseProduct(z);
+  out->wrench.torque = out->wrench.torque.cwiseProduct(z);
+  out->gap_direction.y() = -out->gap_direction.y();
+  ContactState& c = out->contact;
+  c.offset_angle = -c.offset_angle;
+  c.penetration_direction.y() = -c.penetration_direction.y();
+  c.pressure_resultant.y() = -c.pressure_resultant.y();
+  c.tilt.y() = -c.tilt.y();
+}
+
+void ConstrainedStage::EvaluateInAnalyzerFrame(const DeviceState& device, StageState* state,
+                                               StageOutput* out) const noexcept {
   auto* run = static_cast<ConstrainedState*>(state);
   // Handed over by the positioning stage: the part is where that stage left it.
   if (out->stage != StageId::kConstrained) {

@@ -30,6 +30,12 @@ class FITFEEL_API ConstrainedStage final : public Stage {
     // most k_free, held a little into the wall by the hand, would put the part micrometres into
     // a contact of kN/um.
     double proxy_stiffness = std::numeric_limits<double>::infinity();
+    // The part the device moves (Scene::moving). The analyzer and the law describe the inner part
+    // in the outer part's frame; with the outer part moving that is the scene frame reflected in
+    // z (AnalyzerPose): the stage reflects the device's position, velocities and load on the way
+    // in and its pose, wrench, gap and contact directions on the way out, so that what it
+    // reports stays in the scene frame.
+    Role moving = Role::kInner;
   };
 
   // Both must be prepared and outlive the stage. Throws UserError if the analyzer is not prepared.
@@ -95,6 +101,10 @@ class FITFEEL_API ConstrainedStage final : public Stage {
                   StageOutput* out) const noexcept override;
 
  private:
+  // DoEvaluate in the analyzer's frame (Options::moving): `device` and the hand-over pose in
+  // `out` already reflected where the outer part moves, the outputs left in that frame.
+  void EvaluateInAnalyzerFrame(const DeviceState& device, StageState* state,
+                               StageOutput* out) const noexcept;
   // The free way outwards (StageOutput::gap) from the output's contact and stiffness.
   static void SetGap(StageOutput* out) noexcept;
   // -dF/dx of the radial force along its own direction, by a second evaluation 1 nm deeper

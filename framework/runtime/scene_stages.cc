@@ -19,6 +19,7 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
       scene.moving, std::move(lead_in));
   ConstrainedStage::Options mating;
   mating.depth_origin = stages.positioning->depth_origin();
+  mating.moving = scene.moving;
   const bool limited = spec.max_stiffness > 0.0 && std::isfinite(spec.max_stiffness);
   if (limited && free_motion.free_stiffness > 0.0) {
     mating.proxy_stiffness = free_motion.free_stiffness;
