@@ -61,6 +61,7 @@ std::vector<view::ViewSample> HistoryOf(const plot::ConstrainedTrace& t,
     s.force[1] = t.fy_N[k];
     s.force[2] = t.fz_N[k];
     s.stage = 1;
+    view::InOuterPartsFrame(&s, model.moving());
     model.FillContact(&s);
   }
   return rows;
@@ -114,7 +115,7 @@ void View(const ViewArgs& args) {
   Scene scene = LoadScene(file, registry);
   const std::uint64_t seed = args.seed.value_or(scene.run.seed);
   const view::ViewModel model(scene, seed);
-  view::TickPublisher publisher;
+  view::TickPublisher publisher(1024, scene.moving);
   view::Server server(model, &publisher, {}, options);
   server.Start();
   std::printf("fitfeel view: %s (%s, seed %llu)\n  http://%s:%u/\n", scene.name.c_str(),

@@ -2,17 +2,18 @@
 
 namespace fitfeel::view {
 
-TickPublisher::TickPublisher(std::size_t capacity) : ring_(capacity) {}
+TickPublisher::TickPublisher(std::size_t capacity, Role moving)
+    : ring_(capacity), moving_(moving) {}
 
 void TickPublisher::OnTick(const TickRecord& record) noexcept {
-  if (!ring_.TryPush(MakeViewSample(record, ticks_))) {
+  if (!ring_.TryPush(MakeViewSample(record, ticks_, moving_))) {
     dropped_.fetch_add(1, std::memory_order_relaxed);
   }
   ++ticks_;
 }
 
 void TickPublisher::OnRecord(const TickRecord& record, std::uint64_t index) {
-  building_.push_back(MakeViewSample(record, index));
+  building_.push_back(MakeViewSample(record, index, moving_));
 }
 
 void TickPublisher::OnRunEnd() {

@@ -21,8 +21,9 @@ namespace fitfeel::view {
 class FITFEEL_API TickPublisher final : public TickObserver {
  public:
   // `capacity` samples (rounded up to a power of two): at 1 kHz and a 60 Hz reader, 17 are
-  // waiting at a time; the default leaves the reader a second of slack.
-  explicit TickPublisher(std::size_t capacity = 1024);
+  // waiting at a time; the default leaves the reader a second of slack. `moving`: the scene's
+  // moving part, which decides the samples' frame (ViewSample).
+  explicit TickPublisher(std::size_t capacity = 1024, Role moving = Role::kInner);
 
   void OnTick(const TickRecord& record) noexcept override;
   void OnRecord(const TickRecord& record, std::uint64_t index) override;
@@ -37,6 +38,7 @@ class FITFEEL_API TickPublisher final : public TickObserver {
 
  private:
   SpscRing<ViewSample> ring_;
+  Role moving_;
   std::uint64_t ticks_ = 0;  // producer only
   std::atomic<std::uint64_t> dropped_{0};
   std::mutex history_mutex_;  // between the run's thread at its end and the server thread

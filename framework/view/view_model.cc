@@ -98,15 +98,10 @@ StateExtras ViewModel::Extras(const ViewSample& sample) const {
   if (!std::isfinite(pose.depth) || !pose.offset.allFinite() || !std::isfinite(pose.angle)) {
     return x;
   }
-  // In the analyzer's frame, the space drawn back in the scene's (AnalyzerPose).
-  const MatingPose relative = AnalyzerPose(pose, scene_.moving);
-  x.assembly_space_known = analyzer_->AssemblySpace(relative, &x.assembly_space);
-  if (scene_.moving == Role::kOuter) {
-    for (Eigen::Vector2d& corner : x.assembly_space) corner.y() = -corner.y();
-  }
+  x.assembly_space_known = analyzer_->AssemblySpace(pose, &x.assembly_space);
   if (pressure_per_interference_ > 0.0) {
     Eigen::VectorXd delta;
-    analyzer_->InterferenceMap(relative, &delta);
+    analyzer_->InterferenceMap(pose, &delta);
     x.pressure_max = QuantisePressure(pressure_per_interference_ * delta, &x.pressure);
   }
   return x;
@@ -115,11 +110,11 @@ StateExtras ViewModel::Extras(const ViewSample& sample) const {
 void ViewModel::FillContact(ViewSample* sample) const {
   if (!analyzer_) return;
   ContactState c;
-  analyzer_->Evaluate(AnalyzerPose(PoseOf(*sample), scene_.moving), &c);
+  analyzer_->Evaluate(PoseOf(*sample), &c);
   sample->engaged = c.engaged;
   sample->interference = c.interference;
   sample->offset_distance = c.offset_distance;
-  sample->offset_angle = scene_.moving == Role::kOuter ? -c.offset_angle : c.offset_angle;
+  sample->offset_angle = c.offset_angle;
   sample->assembly_extent = c.assembly_extent;
   sample->penetration = c.penetration;
   sample->max_interference = c.max_interference;

@@ -34,9 +34,11 @@ class FITFEEL_API ViewModel {
   // The mesh frame of the inner (0) or outer (1) part.
   const std::string& mesh_frame(int part) const;
   bool renders_forces() const { return law_ != nullptr; }
+  Role moving() const { return scene_.moving; }
   const std::string& status() const { return status_; }
 
-  // Pressure map (quantised) and assembly space at the sample's pose. Not for the tick.
+  // Pressure map (quantised) and assembly space at the sample's pose (in the outer part's frame,
+  // ViewSample), the analyzer's own. Not for the tick.
   StateExtras Extras(const ViewSample& sample) const;
   // Fills the sample's contact fields (engaged, interference, assembly extent, ...) from the
   // viewer's own analyzer at its pose: for rows of a finished run that recorded only the pose and

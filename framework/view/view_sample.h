@@ -7,7 +7,10 @@
 namespace fitfeel::view {
 
 // The part of a tick's record a viewer shows, as plain numbers (trivially copyable, so that it can
-// cross threads through SpscRing). SI units, the scene's mating frame (TickRecord).
+// cross threads through SpscRing). SI units, in the outer part's mating frame, which the viewer
+// draws fixed: the inner part's pose in it and what acts on the inner part. That is the scene's
+// frame (TickRecord) where the inner part moves; where the outer part moves, the scene's reflected
+// in z (InOuterPartsFrame, AnalyzerPose).
 struct ViewSample {
   double time = 0.0;  // s
   std::uint64_t tick = 0;
@@ -27,8 +30,21 @@ struct ViewSample {
   bool guard_fault = false;
 };
 
-// Copies what a viewer shows out of a tick's record. No allocation: called in the tick.
-inline ViewSample MakeViewSample(const TickRecord& r, std::uint64_t tick) noexcept {
+// A sample taken in the scene frame, brought into the outer part's (the view's) for the scene's
+// `moving` part: the reflection in z of its offset, its force and torque and its offset angle
+// where the outer part moves (AnalyzerPose), nothing otherwise.
+inline void InOuterPartsFrame(ViewSample* s, Role moving) noexcept {
+  if (moving != Role::kOuter) return;
+  s->offset_z = -s->offset_z;
+  s->force[2] = -s->force[2];
+  s->torque[2] = -s->torque[2];
+  s->offset_angle = -s->offset_angle;
+}
+
+// Copies what a viewer shows out of a tick's record (in the scene frame), in the outer part's
+// frame for the scene's `moving` part. No allocation: called in the tick.
+inline ViewSample MakeViewSample(const TickRecord& r, std::uint64_t tick,
+                                 Role moving = Role::kInner) noexcept {
   ViewSample s;
   s.time = r.time;
   s.tick = tick;
@@ -49,6 +65,7 @@ inline ViewSample MakeViewSample(const TickRecord& r, std::uint64_t tick) noexce
   s.engaged = r.contact.engaged;
   s.interference = r.contact.interference;
   s.guard_fault = r.guard_fault;
+  InOuterPartsFrame(&s, moving);
   return s;
 }
 

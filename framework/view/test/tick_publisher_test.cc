@@ -37,6 +37,32 @@ TEST(TickPublisher, ReaderGetsTheNewestSample) {
   EXPECT_EQ(publisher.dropped(), 0u);
 }
 
+// The viewer draws the outer part fixed: where the outer part moves, a sample is the inner
+// part's pose in the outer part's frame and the force on the inner part, the scene's reflected in
+// z (AnalyzerPose); where the inner part moves, the scene's as it is.
+TEST(TickPublisher, SamplesAreInTheOuterPartsFrame) {
+  TickRecord r = Record(3.0);
+  r.pose.offset = Eigen::Vector2d(1e-6, 2e-6);
+  r.wrench.torque = Eigen::Vector3d(0.1, 0.2, 0.3);
+  r.contact.offset_angle = 0.5;
+  TickPublisher inner(8), outer(8, Role::kOuter);
+  inner.OnTick(r);
+  outer.OnTick(r);
+  ViewSample a, b;
+  ASSERT_TRUE(inner.PopLatest(&a));
+  ASSERT_TRUE(outer.PopLatest(&b));
+  EXPECT_EQ(a.offset_z, 2e-6);
+  EXPECT_EQ(a.force[2], 2.0);
+  EXPECT_EQ(b.depth, a.depth);
+  EXPECT_EQ(b.offset_x, a.offset_x);
+  EXPECT_EQ(b.offset_z, -2e-6);
+  EXPECT_EQ(b.force[0], a.force[0]);
+  EXPECT_EQ(b.force[1], a.force[1]);
+  EXPECT_EQ(b.force[2], -2.0);
+  EXPECT_EQ(b.torque[2], -0.3);
+  EXPECT_EQ(b.offset_angle, -0.5);
+}
+
 TEST(TickPublisher, AFullRingDropsAndCountsWithoutAllocating) {
   TickPublisher publisher(4);
   const TickRecord r = Record(1.0);
