@@ -122,21 +122,32 @@ void ColumnResponseTable::Blend(int a, int b, double t, const Eigen::Matrix2Xd& 
   // Skipped columns are those At answers with zeros for both steps, so the sums are unchanged.
   const double* from_a = touch_from_.data() + static_cast<std::size_t>(a) * columns_;
   const double* from_b = touch_from_.data() + static_cast<std::size_t>(b) * columns_;
+  // The resultant's Jacobian: column j's resultant is a function of x_j = offset . u_j, so it adds
+  // its slope in x times u_j u_j' (symmetric: three sums).
+  double jxx = 0.0, jxz = 0.0, jzz = 0.0;
   for (int j = 0; j < columns_; ++j) {
     const double x = offset.dot(directions.col(j)) - shift;
     if (!(x > from_a[j]) && !(x > from_b[j])) continue;
-    const ColumnResponse p = At(a, j, x);
-    const ColumnResponse q = At(b, j, x);
+    double slope_p = 0.0, slope_q = 0.0;
+    const ColumnResponse p = At(a, j, x, &slope_p);
+    const ColumnResponse q = At(b, j, x, &slope_q);
     const double volume = p.volume + t * (q.volume - p.volume);
     if (!(volume > 0.0)) continue;
     out->interference_volume += volume;
     out->pressure_resultant += (p.resultant + t * (q.resultant - p.resultant)) * directions.col(j);
     out->max_interference = std::max(out->max_interference, p.max + t * (q.max - p.max));
+    const double slope = slope_p + t * (slope_q - slope_p);
+    const double ux = directions(0, j), uz = directions(1, j);
+    jxx += slope * ux * ux;
+    jxz += slope * ux * uz;
+    jzz += slope * uz * uz;
   }
   out->interference = out->interference_volume > 0.0;
+  out->resultant_jacobian << jxx, jxz, jxz, jzz;
 }
 
-ColumnResponse ColumnResponseTable::At(int step, int column, double x) const noexcept {
+ColumnResponse ColumnResponseTable::At(int step, int column, double x,
+                                       double* resultant_slope) const noexcept {
   const std::size_t index = static_cast<std::size_t>(step) * columns_ + column;
   const Entry& e = entries_[index];
   ColumnResponse r;
@@ -149,7 +160,7 @@ ColumnResponse ColumnResponseTable::At(int step, int column, double x) const noe
     r.volume = last[0] + e.volume_slope * beyond;
     r.resultant = last[1] + e.resultant_slope * beyond;
     r.max = std::max(e.max_intercept_a + e.max_slope_a * x, e.max_intercept_b + e.max_slope_b * x);
-    (void)last;
+    if (resultant_slope != nullptr) *resultant_slope = e.resultant_slope;
     return r;
   }
   const int m = static_cast<int>(u);
@@ -158,6 +169,7 @@ ColumnResponse ColumnResponseTable::At(int step, int column, double x) const noe
   r.volume = a[0] + f * (a[3] - a[0]);
   r.resultant = a[1] + f * (a[4] - a[1]);
   r.max = a[2] + f * (a[5] - a[2]);
+  if (resultant_slope != nullptr) *resultant_slope = (a[4] - a[1]) * e.inv_dx;
   return r;
 }
 

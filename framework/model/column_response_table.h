@@ -69,11 +69,15 @@ class FITFEEL_API ColumnResponseTable {
   void FillAll(
       const std::function<void(int step, int column, std::vector<ColumnCell>* cells)>& cells);
 
-  // Per tick: no allocation. `step` and `column` must be in range.
-  ColumnResponse At(int step, int column, double x) const noexcept;
+  // Per tick: no allocation. `step` and `column` must be in range. `resultant_slope`, when given,
+  // receives d(resultant)/dx of the piece x lies on (0 where the entry does not touch).
+  ColumnResponse At(int step, int column, double x,
+                    double* resultant_slope = nullptr) const noexcept;
   // Per tick: adds to `out` the columns' sums at x_j = offset . u_j - shift (u_j the columns of
   // `directions`), blended linearly between steps `a` and `b` with weight t of b: the interference
-  // volume, the resultant sum (along u_j) and the largest interference; sets out->interference.
+  // volume, the resultant sum (along u_j) and the largest interference; sets out->interference and
+  // out->resultant_jacobian, the sum of each column's blended slope d(resultant)/dx times
+  // u_j u_j' (the interpolation's own: exact between samples, one-sided on a sample).
   void Blend(int a, int b, double t, const Eigen::Matrix2Xd& directions,
              const Eigen::Vector2d& offset, double shift, ContactState* out) const noexcept;
   // The worst-case interpolation error bound above for the volume of entry (step, column), m^3.

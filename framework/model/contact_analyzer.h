@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -30,6 +31,7 @@ FITFEEL_API MatingPose AnalyzerPose(const MatingPose& scene_pose, Role moving) n
 
 // What the analyzer found at one pose (paper section 3.1); read by a resistance law.
 struct ContactState {
+  static constexpr double kNotGiven = std::numeric_limits<double>::quiet_NaN();
   bool engaged = false;         // the mating surfaces overlap axially
   bool interference = false;    // the assembly space is empty: the parts are pressed together
   double engaged_length = 0.0;  // overlap along the mating axis, m
@@ -53,6 +55,11 @@ struct ContactState {
   double max_interference = 0.0;     // largest delta(P_ij), m
   // Resultant direction of the contact normal force in the cross-section when interfering.
   Eigen::Vector2d pressure_resultant{0.0, 0.0};  // sum of delta * area * u_j, m^3
+  // d(pressure_resultant)/d(offset), m^2 (column 0 along x, 1 along z), where the analyzer gives
+  // it in closed form (tabulated columns: ColumnResponseTable::Blend); NaN where it does not. A
+  // law whose radial force is a linear map of the resultant turns it into its radial stiffness
+  // (ResistanceLaw::RadialJacobian), which spares a settling search its differences.
+  Eigen::Matrix2d resultant_jacobian = Eigen::Matrix2d::Constant(kNotGiven);
   // Models that solve the contact pressure (the cylinder's elastic model): the total normal force
   // sum p * A of the part at its equilibrium pose for this depth (N; 0 where a model does not
   // solve for pressure, or in clearance), and the equilibrium tilt of its axis (slopes dx/dy,

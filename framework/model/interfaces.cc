@@ -149,6 +149,17 @@ ElasticLimitCheck ResistanceLaw::DoCheckElasticLimit(const ContactState&) const 
   return {};
 }
 
+bool ResistanceLaw::RadialJacobian(const ContactState& contact,
+                                   Eigen::Matrix2d* jacobian) const noexcept {
+  FITFEEL_DEMAND(jacobian != nullptr);
+  if (!contact.interference || !contact.resultant_jacobian.allFinite()) return false;
+  return DoRadialJacobian(contact, jacobian);
+}
+
+bool ResistanceLaw::DoRadialJacobian(const ContactState&, Eigen::Matrix2d*) const noexcept {
+  return false;
+}
+
 double ResistanceLaw::PressurePerInterference() const {
   const double coefficient = DoPressurePerInterference();
   FITFEEL_DEMAND(coefficient >= 0.0);

@@ -51,6 +51,11 @@ class FITFEEL_API ResistanceLaw {
                 Wrench* out) const noexcept;
   // Per tick: the contact's stresses against the parts' elastic limits (DIN 7190).
   ElasticLimitCheck CheckElasticLimit(const ContactState& contact) const noexcept;
+  // Per tick: d(radial force (x, z))/d(offset), N/m (column 0 along x, 1 along z), in closed
+  // form where the law's radial force is a linear map of the contact's pressure resultant and the
+  // contact carries the resultant's Jacobian (ContactState::resultant_jacobian). False, with
+  // `jacobian` untouched, where the law has no such form there or the parts do not interfere.
+  bool RadialJacobian(const ContactState& contact, Eigen::Matrix2d* jacobian) const noexcept;
   // Not for the tick: contact pressure per unit radial interference delta(P_ij), Pa/m, after
   // Prepare (eq. 10's coefficient), for pressure maps. UnsupportedError for a law without one.
   double PressurePerInterference() const;
@@ -64,6 +69,9 @@ class FITFEEL_API ResistanceLaw {
   virtual void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
                                    LawState* state, Wrench* out) const noexcept;
   virtual ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept;
+  // Default: false (no closed form).
+  virtual bool DoRadialJacobian(const ContactState& contact,
+                                Eigen::Matrix2d* jacobian) const noexcept;
 };
 
 }  // namespace fitfeel

@@ -463,6 +463,13 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     const Eigen::Vector2d start = ForceAt(at, motion, &work) + load;
     // (A part pulled out since meets no sideways push: the search below finds nothing carries it.)
     stiff_start = std::abs(start.dot(across)) > across_tolerance;
+  } else if (memory->interference) {
+    // Where the contact's stiffness comes in closed form (RadialJacobian), the Newton step on it
+    // balances both directions from the first evaluation, a wall that holds the part one way only
+    // (a pin resting on one side of its cone) included: no search along the load first.
+    Eigen::Matrix2d unused;
+    ForceAt(at, motion, &work);
+    stiff_start = law_.RadialJacobian(work.contact, &unused);
   }
   if (stiff_start) {
     // The Newton loop below starts here, from this evaluation.
@@ -501,12 +508,19 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     // far above rounding (k h ~ 1e-2 N against forces of 1 N).
     constexpr double kProbe = 1e-11;
     Eigen::Matrix2d k = memory->stiffness;  // stiffness, -d(force)/d(offset)
+    // Where the analyzer and the law give the stiffness in closed form (the cone's and the
+    // sphere's tables, ResistanceLaw::RadialJacobian), it is taken at every step: exact, where
+    // the secants below lag a stiffness that grows as a taper is pressed (the pin's weight
+    // balanced in three to four steps a tick) and differences cost two evaluations.
+    Eigen::Matrix2d jacobian;
+    const bool exact = law_.RadialJacobian(work.contact, &jacobian);
+    if (exact) k = -jacobian;
     // Where the parts interfere, later steps correct the stiffness by the last step's secant
     // (Powell's symmetric update: the least change to k that is symmetric and maps the step to
     // the change of force it made) instead of two differences: a press fit's stiffness grows a few
     // per cent a tick as the interference does, and the step on the last tick's stiffness fell
     // short by as much; the secant is what the step measured.
-    if (step > 0 && work.contact.interference) {
+    if (!exact && step > 0 && work.contact.interference) {
       const Eigen::Vector2d sx = at - step_from;
       const Eigen::Vector2d miss = -(residual - residual_from) - k * sx;  // (k_true - k) sx
       const double ss = sx.squaredNorm();
@@ -520,7 +534,7 @@ bool ConstrainedStage::Settle(const Eigen::Vector2d& load, const MatingMotion& m
     // in clearance (the part rests on one wall or in a corner of the assembly space, and which
     // changes from tick to tick), where a direction is nearly free, and on later steps without
     // interference or where the secant leaves the stiffness ill-conditioned.
-    if (!work.contact.interference || !HoldsBothWays(k)) {
+    if (!exact && (!work.contact.interference || !HoldsBothWays(k))) {
       Eigen::Matrix2d d;  // d(force)/d(along, across)
       d.col(0) = (force_at(at + kProbe * down) + load - residual) / kProbe;
       d.col(1) = (force_at(at + kProbe * across) + load - residual) / kProbe;
@@ -625,9 +639,38 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     ++work.contact_evaluations;
     return Eigen::Vector2d(offset - work.contact.penetration * work.contact.penetration_direction);
   };
+  // On a Winkler bed whose stiffness the law gives in closed form (the cone's and the sphere's
+  // tables), Newton's method from where the last balance left the part: the part moves
+  // nanometres from tick to tick (a wall of kN/um against a spring of kN/m) while the device
+  // moves micrometres (a hand's tremor: tenths of a newton of the spring's pull a tick), and on
+  // the exact stiffness the balance converges quadratically, in two or three evaluations where
+  // the searches below take seven to ten. Three steps at most; then those searches.
+  auto newton_on_bed = [&](AcrossMemory* memory, Eigen::Vector2d* part) {
+    Eigen::Vector2d p = memory->bed_part;
+    if (!p.allFinite()) return false;
+    for (int i = 0; i < 4; ++i) {
+      const Eigen::Vector2d r = ProbeAt(p, motion, &work) + k * (held - p);
+      if (r.norm() <= std::max(1e-4, 1e-6 * k * (held - p).norm())) {
+        *part = p;
+        return true;
+      }
+      Eigen::Matrix2d jacobian;
+      if (i == 3 || !law_.RadialJacobian(work.contact, &jacobian)) break;
+      jacobian.diagonal().array() -= k;  // the spring's pull falls as the part nears the device
+      const Eigen::Vector2d step = -jacobian.partialPivLu().solve(r);
+      if (!step.allFinite()) break;
+      p += step;
+    }
+    return false;
+  };
   auto across = [&](double depth, AcrossMemory* memory) {
     work.pose.depth = depth;
     motion.depth = depth;
+    if (Eigen::Vector2d part; newton_on_bed(memory, &part)) {
+      memory->bed_part = part;
+      return part;
+    }
+    memory->bed_part.setConstant(std::numeric_limits<double>::quiet_NaN());
     Eigen::Vector2d edge = anchor_of(held);
     Eigen::Vector2d part = held;
     const bool bed = edge == held;
@@ -715,6 +758,10 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
         if (bed) memory->back_root = t;
         if (t < 0.0) part += t * wall;
       }
+    }
+    // A balance on a bed with a closed-form stiffness starts the next tick's Newton steps.
+    if (Eigen::Matrix2d unused; bed && law_.RadialJacobian(work.contact, &unused)) {
+      memory->bed_part = part;
     }
     return part;
   };

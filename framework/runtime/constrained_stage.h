@@ -90,6 +90,10 @@ class FITFEEL_API ConstrainedStage final : public Stage {
     // pull).
     double back_slope = 0.0;
     double back_root = std::numeric_limits<double>::quiet_NaN();
+    // On a Winkler bed whose stiffness comes in closed form (ResistanceLaw::RadialJacobian):
+    // where the last balance left the part (NaN = not known, or free), the next one's start.
+    Eigen::Vector2d bed_part{std::numeric_limits<double>::quiet_NaN(),
+                             std::numeric_limits<double>::quiet_NaN()};
     // On an assembly space's edge: the slope of the last balance on the line from the edge to
     // the device (the wall's stiffness along it plus the spring's, N/m; 0 = not known yet).
     double line_slope = 0.0;

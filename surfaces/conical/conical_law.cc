@@ -72,6 +72,13 @@ void TaperPressFitLaw::DoEvaluateWithState(const ContactState& contact,
   out->torque.y() = f.y() * mean_radius_;
 }
 
+bool TaperPressFitLaw::DoRadialJacobian(const ContactState& contact,
+                                        Eigen::Matrix2d* jacobian) const noexcept {
+  if (!contact.engaged || !(contact.interference_volume > 0.0)) return false;
+  *jacobian = -(pressure_per_interference_ * cos_alpha_) * contact.resultant_jacobian;
+  return true;
+}
+
 ElasticLimitCheck TaperPressFitLaw::DoCheckElasticLimit(
     const ContactState& contact) const noexcept {
   ElasticLimitCheck check;

@@ -42,6 +42,9 @@ class TaperPressFitLaw final : public ResistanceLaw {
   void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
                            LawState* state, Wrench* out) const noexcept override;
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
+  // The radial force is -P cos(alpha) times the pressure resultant (Normal).
+  bool DoRadialJacobian(const ContactState& contact,
+                        Eigen::Matrix2d* jacobian) const noexcept override;
 
  private:
   // The normal (wedge) and radial parts of the wrench; returns the normal force N.

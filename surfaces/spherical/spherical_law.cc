@@ -142,6 +142,16 @@ double KnuckleBearingLaw::Normal(const ContactState& contact, Wrench* out,
   return pressure_per_interference_ * contact.interference_volume;
 }
 
+bool KnuckleBearingLaw::DoRadialJacobian(const ContactState& contact,
+                                         Eigen::Matrix2d* jacobian) const noexcept {
+  Wrench force;
+  HertzContact hertz;
+  Normal(contact, &force, &hertz);
+  if (hertz.load > 0.0 || !(contact.interference_volume > 0.0)) return false;
+  *jacobian = -pressure_per_interference_ * contact.resultant_jacobian;
+  return true;
+}
+
 void KnuckleBearingLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                                    Wrench* out) const noexcept {
   HertzContact hertz;

@@ -101,6 +101,10 @@ class KnuckleBearingLaw final : public ResistanceLaw {
   void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
                            Wrench* out) const noexcept override;
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
+  // The ring's bed: -P times the pressure resultant; none where the Hertz regime carries the
+  // load (Normal).
+  bool DoRadialJacobian(const ContactState& contact,
+                        Eigen::Matrix2d* jacobian) const noexcept override;
 
  private:
   // Radial force into `out`; returns the normal force and, when the Hertz regime carries the

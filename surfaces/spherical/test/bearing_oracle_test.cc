@@ -434,6 +434,34 @@ TEST(KnuckleBearing, LoadedPlainBearingIsAConformalHertzContact) {
   EXPECT_NEAR(w.torque.y(), -kMu * load * model.law.friction_arm(), 1e-9 * load);
   // The per-cell ring bed would carry it far softer (the ring's breathing is not a local patch).
   EXPECT_LT(model.law.pressure_per_interference() * contact.pressure_resultant.norm(), 0.8 * 281.3);
+  // Hertz's load is not a linear map of the resultant: no stiffness in closed form there.
+  Eigen::Matrix2d jacobian;
+  EXPECT_FALSE(model.law.RadialJacobian(contact, &jacobian));
+}
+
+// Interfering all round (1 um, the ring's bed carries it), the law's radial stiffness in closed
+// form is -P times the table's resultant Jacobian: against central differences of the radial
+// force over 1 pm in both directions of the offset.
+TEST(KnuckleBearing, TheRingsBedGivesItsStiffnessInClosedForm) {
+  Model model;
+  Prepare(&model, test::Ball(), test::Socket(), Resolution{20, 72}, 1e-6);
+  const Eigen::Vector2d offset(0.13e-6, -0.21e-6);
+  ContactState contact;
+  Evaluate(model, 0.0, 10.0, offset, &contact);
+  Eigen::Matrix2d jacobian;
+  ASSERT_TRUE(model.law.RadialJacobian(contact, &jacobian));
+  constexpr double h = 1e-12;
+  for (int axis = 0; axis < 2; ++axis) {
+    ContactState unused;
+    const Wrench plus =
+        Evaluate(model, 0.0, 10.0, offset + h * Eigen::Vector2d::Unit(axis), &unused);
+    const Wrench minus =
+        Evaluate(model, 0.0, 10.0, offset - h * Eigen::Vector2d::Unit(axis), &unused);
+    const Eigen::Vector2d numeric = (Eigen::Vector2d(plus.force.x(), plus.force.z()) -
+                                     Eigen::Vector2d(minus.force.x(), minus.force.z())) /
+                                    (2.0 * h);
+    EXPECT_LT((numeric - jacobian.col(axis)).norm(), 1e-5 * jacobian.norm()) << axis;
+  }
 }
 
 // Stick-slip torque: a ball held still under load does not turn below mu_s N rho, and turns at
