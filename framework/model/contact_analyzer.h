@@ -69,6 +69,12 @@ struct ContactState {
   Eigen::Vector2d tilt{0.0, 0.0};
 };
 
+// The analyzer's answer at AnalyzerPose(pose, moving) with its directions across the axis in the
+// scene frame: where the outer part moves, reflected in z as the pose was (offset angle, the
+// penetration direction, the resultant, the tilt and the resultant's Jacobian); nothing otherwise.
+// Its own inverse.
+FITFEEL_API void SceneContact(ContactState* contact, Role moving) noexcept;
+
 // Builds per-depth tables in prepare and answers per-tick queries in bounded time.
 class FITFEEL_API ContactAnalyzer {
  public:

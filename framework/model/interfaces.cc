@@ -90,6 +90,16 @@ MatingPose AnalyzerPose(const MatingPose& scene_pose, Role moving) noexcept {
   return pose;
 }
 
+void SceneContact(ContactState* contact, Role moving) noexcept {
+  if (moving != Role::kOuter) return;
+  contact->offset_angle = -contact->offset_angle;
+  contact->penetration_direction.y() = -contact->penetration_direction.y();
+  contact->pressure_resultant.y() = -contact->pressure_resultant.y();
+  contact->tilt.y() = -contact->tilt.y();
+  contact->resultant_jacobian(0, 1) = -contact->resultant_jacobian(0, 1);
+  contact->resultant_jacobian(1, 0) = -contact->resultant_jacobian(1, 0);
+}
+
 void ContactAnalyzer::Evaluate(const MatingPose& pose, ContactState* out) const noexcept {
   FITFEEL_DEMAND(prepared_ && out != nullptr);
   DoEvaluate(pose, out);

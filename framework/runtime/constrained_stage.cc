@@ -120,23 +120,19 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   }
   // The reflection in z (AnalyzerPose) of every vector read and written; the twist stays, so the
   // orientation does too.
-  const Eigen::Vector3d z(1.0, 1.0, -1.0);
+  const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
   DeviceState relative = device;
-  relative.position = device.position.cwiseProduct(z);
-  relative.velocity = device.velocity.cwiseProduct(z);
-  relative.angular_velocity = device.angular_velocity.cwiseProduct(z);
+  relative.position = device.position.cwiseProduct(reflect);
+  relative.velocity = device.velocity.cwiseProduct(reflect);
+  relative.angular_velocity = device.angular_velocity.cwiseProduct(reflect);
   relative.load.y() = -device.load.y();
   out->pose = AnalyzerPose(out->pose, options_.moving);  // the hand-over's
   EvaluateInAnalyzerFrame(relative, state, out);
   out->pose = AnalyzerPose(out->pose, options_.moving);
-  out->wrench.force = out->wrench.force.cwiseProduct(z);
-  out->wrench.torque = out->wrench.torque.cwiseProduct(z);
+  out->wrench.force = out->wrench.force.cwiseProduct(reflect);
+  out->wrench.torque = out->wrench.torque.cwiseProduct(reflect);
   out->gap_direction.y() = -out->gap_direction.y();
-  ContactState& c = out->contact;
-  c.offset_angle = -c.offset_angle;
-  c.penetration_direction.y() = -c.penetration_direction.y();
-  c.pressure_resultant.y() = -c.pressure_resultant.y();
-  c.tilt.y() = -c.tilt.y();
+  SceneContact(&out->contact, options_.moving);
 }
 
 void ConstrainedStage::EvaluateInAnalyzerFrame(const DeviceState& device, StageState* state,

@@ -73,6 +73,18 @@ RunResult RunHand(const std::string& scenario, double aim, const std::string& wa
   return RunScene(std::move(scene), options);
 }
 
+// The stages a run's trace went through, three letters of each, in order, with the header's
+// "sta" first: "staposconpos" for free, captured, released.
+std::string StageSequence(const fs::path& trace_csv) {
+  std::ifstream trace(trace_csv);
+  std::string line, stages;
+  while (std::getline(trace, line)) {
+    const std::string stage = line.substr(line.find(',') + 1, 3);
+    if (stages.empty() || stages.substr(stages.size() - 3) != stage) stages += stage;
+  }
+  return stages;
+}
+
 // A scenario file's name as a test name: its stem, dashes to underscores.
 std::string TestName(const std::string& file) {
   std::string name = file.substr(0, file.find('.'));
@@ -135,14 +147,9 @@ TEST(HandInsertionRelease, PulledOutTheConstrainedStageLetsGo) {
   EXPECT_LE(result.summary["safety"]["energy_created_J"].get<double>(), 1e-9);
   EXPECT_LE(result.summary["safety"]["max_delivered_force_N"].get<double>(),
             2.0 * kHandStiffness * (1e-3 + 2.0 * kHandTremor));
-  std::ifstream trace(out / "trace.csv");
-  std::string line, stages;
-  while (std::getline(trace, line)) {
-    const std::string stage = line.substr(line.find(',') + 1, 3);
-    if (stages.empty() || stages.substr(stages.size() - 3) != stage) stages += stage;
-  }
   // Free, captured, released: positioning, constrained, positioning.
-  EXPECT_EQ(stages, "staposconpos") << "stage sequence (3 letters each, header first)";
+  EXPECT_EQ(StageSequence(out / "trace.csv"), "staposconpos")
+      << "stage sequence (3 letters each, header first)";
 }
 
 // The taper pin wedged with the hand's target millimetres ahead: the god object balances the part
@@ -217,13 +224,8 @@ TEST_P(HandSlidesTheOuterPart, OnAndOffAgain) {
             2.0 * kHandStiffness * (1e-3 + 2.0 * kHandTremor));
   EXPECT_GE(s["depth_mm"]["max"].get<double>(), 20.0);
   EXPECT_GE(s["constrained_ticks"].get<double>(), 0.6 * s["ticks"].get<double>());
-  std::ifstream trace(dir / "run" / "trace.csv");
-  std::string line, stages;
-  while (std::getline(trace, line)) {
-    const std::string stage = line.substr(line.find(',') + 1, 3);
-    if (stages.empty() || stages.substr(stages.size() - 3) != stage) stages += stage;
-  }
-  EXPECT_EQ(stages, "staposconpos") << "stage sequence (3 letters each, header first)";
+  EXPECT_EQ(StageSequence(dir / "run" / "trace.csv"), "staposconpos")
+      << "stage sequence (3 letters each, header first)";
 }
 
 // With the outer part moving the constrained stage meets the inner part in the outer part's frame,
@@ -237,7 +239,7 @@ TEST(OuterPartMoving, TheStageMeetsTheInnerPartInTheOuterPartsFrame) {
   const Scene scene = LoadScene(
       fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "paper-case1-h7g6.yaml", Registry());
   const PreparedScene prepared = Prepare(scene);
-  const Eigen::Vector3d z(1.0, 1.0, -1.0);
+  const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
   for (const double spring : {std::numeric_limits<double>::infinity(), 2e3}) {
     ConstrainedStage::Options inner_options, outer_options;
     inner_options.proxy_stiffness = outer_options.proxy_stiffness = spring;
@@ -255,12 +257,12 @@ TEST(OuterPartMoving, TheStageMeetsTheInnerPartInTheOuterPartsFrame) {
       // The robot lets 2 N act on the part (settled); the god object's spring carries it.
       if (std::isinf(spring)) device.load = Eigen::Vector2d(0.3, -2.0);
       DeviceState reflected = device;
-      reflected.position = device.position.cwiseProduct(z);
-      reflected.velocity = device.velocity.cwiseProduct(z);
+      reflected.position = device.position.cwiseProduct(reflect);
+      reflected.velocity = device.velocity.cwiseProduct(reflect);
       reflected.load.y() = -device.load.y();
       inner.Evaluate(reflected, inner_run.get(), &a);
       outer.Evaluate(device, outer_run.get(), &b);
-      ASSERT_EQ(b.wrench.force, a.wrench.force.cwiseProduct(z));
+      ASSERT_EQ(b.wrench.force, a.wrench.force.cwiseProduct(reflect));
       ASSERT_EQ(b.pose.offset, Eigen::Vector2d(a.pose.offset.x(), -a.pose.offset.y()));
       ASSERT_EQ(b.pose.depth, a.pose.depth);
       ASSERT_EQ(b.contact.penetration_direction.y(), -a.contact.penetration_direction.y());
