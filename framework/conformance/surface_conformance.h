@@ -258,11 +258,69 @@ TYPED_TEST_P(SurfaceConformance, ContactBeyondTheAssemblySpace) {
   EXPECT_GT(polygons, 0) << "no depth with a non-empty assembly space: nothing was checked";
 }
 
+// A law that gives its radial stiffness in closed form (ResistanceLaw::RadialJacobian; the
+// settling and the god object step on it instead of differences) gives the derivative of the
+// radial force it renders: against central differences over 1 pm at poses from the axis to 50 um
+// past the largest interference at mid engagement, where the Jacobian is the same either side of
+// the difference (no piece of the contact changes within it). A surface type whose law gives none
+// skips, saying so.
+TYPED_TEST_P(SurfaceConformance, ARadialJacobianIsTheRadialForcesDerivative) {
+  if (!this->scene_.surface->renders_forces()) {
+    GTEST_SKIP() << "no resistance law: " << this->scene_.surface->limitation();
+  }
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+  this->PrepareModel(7, &analyzer, &law);
+  const double length = this->scene_.inner.geometry->mating_length();
+  const double reach =
+      std::abs(this->scene_.inner.size.upper_deviation - this->scene_.outer.size.lower_deviation) +
+      50e-6;
+  auto radial = [&](const MatingPose& pose, ContactState* contact) {
+    analyzer->Evaluate(pose, contact);
+    Wrench w;
+    law->Evaluate(*contact, MatingMotion{}, &w);
+    return Eigen::Vector2d(w.force.x(), w.force.z());
+  };
+  int given = 0, compared = 0;
+  for (int k = 0; k < 400; ++k) {
+    MatingPose pose;
+    pose.depth = (0.4 + 0.2 * std::sin(0.37 * k) * std::sin(0.37 * k)) * length;
+    const double angle = 2.399963 * k;  // the golden angle: directions all round
+    pose.offset = (reach * (k + 0.5) / 400.0) * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    ContactState contact;
+    radial(pose, &contact);
+    Eigen::Matrix2d jacobian;
+    if (!law->RadialJacobian(contact, &jacobian)) continue;
+    ++given;
+    constexpr double h = 1e-12;
+    Eigen::Matrix2d numeric;
+    bool smooth = true;
+    for (int axis = 0; axis < 2; ++axis) {
+      MatingPose plus = pose, minus = pose;
+      plus.offset[axis] += h;
+      minus.offset[axis] -= h;
+      ContactState a, b;
+      numeric.col(axis) = (radial(plus, &a) - radial(minus, &b)) / (2.0 * h);
+      Eigen::Matrix2d ja, jb;
+      smooth = smooth && law->RadialJacobian(a, &ja) && law->RadialJacobian(b, &jb) &&
+               ja.isApprox(jb, 1e-12);
+    }
+    if (!smooth) continue;
+    ++compared;
+    EXPECT_LT((numeric - jacobian).norm(), 1e-5 * jacobian.norm())
+        << "depth " << pose.depth << ", offset " << pose.offset.transpose();
+  }
+  if (given == 0) {
+    GTEST_SKIP() << "this surface type's law gives no radial stiffness in closed form";
+  }
+  EXPECT_GT(compared, given / 4) << "too few poses away from a kink: nothing much was checked";
+}
+
 REGISTER_TYPED_TEST_SUITE_P(SurfaceConformance, CellAreasSumToTheNominalArea,
-                            ZeroTolerancesGiveZeroVariation,
-                            EverySkinModelShapeMeetsItsTolerances, SameSeedGivesTheSameShape,
-                            ForceIsContinuousAcrossContactOnset, EvaluateNeverAllocates,
-                            ContactBeyondTheAssemblySpace);
+                            ZeroTolerancesGiveZeroVariation, EverySkinModelShapeMeetsItsTolerances,
+                            SameSeedGivesTheSameShape, ForceIsContinuousAcrossContactOnset,
+                            EvaluateNeverAllocates, ContactBeyondTheAssemblySpace,
+                            ARadialJacobianIsTheRadialForcesDerivative);
 
 }  // namespace fitfeel::conformance
 
