@@ -14,7 +14,6 @@
 #include "surfaces/conical/conical_contact_analyzer.h"
 #include "surfaces/conical/conical_discretizer.h"
 #include "surfaces/conical/conical_generator.h"
-#include "surfaces/conical/conical_law.h"
 #include "surfaces/conical/test/test_parts.h"
 
 namespace fitfeel::conical {
@@ -114,54 +113,6 @@ TEST(ConicalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
 // The engaged area the tick reads in closed form is the sum of the rows' slant areas the scan and
 // the table's cells are built from, at every depth from before the hole to past its end (a pin
 // of 20 rows, the hole's rows and columns the cells' own).
-// The law's radial stiffness in closed form (the table's resultant Jacobian times -P cos alpha) is
-// the derivative of the radial force it renders: against central differences over 1 pm at random
-// poses between the depth steps, where no column changes its piece within the difference. A
-// settling search steps on it instead of differences (ConstrainedStage::Settle).
-TEST(ConicalTable, TheLawsRadialJacobianIsItsForcesDerivative) {
-  ConicalContactAnalyzer analyzer;
-  Prepare(&analyzer, 5);
-  TaperPressFitLaw law;
-  ModelSettings settings;
-  settings.friction = 0.15;
-  law.Prepare(test::Pin(), test::Hole(), settings);
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> depth(2e-3, 30e-3);
-  auto radial = [&](const MatingPose& pose, ContactState* contact) {
-    analyzer.Evaluate(pose, contact);
-    Wrench w;
-    law.Evaluate(*contact, MatingMotion{}, &w);
-    return Eigen::Vector2d(w.force.x(), w.force.z());
-  };
-  int compared = 0;
-  for (int trial = 0; trial < 600; ++trial) {
-    const double s = depth(rng);
-    const MatingPose pose = RandomPose(rng, s, analyzer.scan().Clearance(s));
-    ContactState contact;
-    radial(pose, &contact);
-    Eigen::Matrix2d jacobian;
-    if (!law.RadialJacobian(contact, &jacobian)) {
-      EXPECT_FALSE(contact.interference);
-      continue;
-    }
-    constexpr double h = 1e-12;
-    Eigen::Matrix2d numeric;
-    bool smooth = true;
-    for (int axis = 0; axis < 2; ++axis) {
-      MatingPose plus = pose, minus = pose;
-      plus.offset[axis] += h;
-      minus.offset[axis] -= h;
-      ContactState a, b;
-      numeric.col(axis) = (radial(plus, &a) - radial(minus, &b)) / (2.0 * h);
-      smooth = smooth && a.resultant_jacobian.isApprox(b.resultant_jacobian, 1e-12);
-    }
-    if (!smooth) continue;
-    ++compared;
-    EXPECT_LT((numeric - jacobian).norm(), 1e-5 * jacobian.norm()) << s;
-  }
-  EXPECT_GT(compared, 200);
-}
-
 TEST(ConicalTable, EngagedAreaIsTheRowsSum) {
   ConicalContactAnalyzer analyzer;
   Prepare(&analyzer, 3, {20, 36});
