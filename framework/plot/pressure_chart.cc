@@ -77,7 +77,7 @@ HeatMapChart MakePressureChart(const PressureMapData& data) {
     if (angle < 0.0) angle += 360.0;
     std::snprintf(direction, sizeof direction, " toward %.0f°", angle);
     if (angle_axis && angle >= map.y(0) && angle <= map.y(map.y.size() - 1)) {
-      map.y_lines.push_back({angle, "radial force on the moving part"});
+      map.y_lines.push_back({angle, "radial force on the inner part"});
     }
   }
   HeatMapChart chart;

@@ -33,6 +33,9 @@ struct PressureMapData {
   SurfaceGrid grid;                        // the inner part's grid
   Eigen::VectorXd interference;            // delta per cell, m (>= 0)
   double pressure_per_interference = 0.0;  // Pa/m
+  // The recorded force, as it acts on the inner part in the outer part's frame (the analyzer's,
+  // AnalyzerPose): the run's own where the inner part moves, reflected in z where the outer part
+  // moves, so that its direction is read on the inner part's map.
   double fx_N = 0.0, fy_N = 0.0, fz_N = 0.0;
   double force_depth_mm = 0.0;  // depth of the tick the forces come from (nearest to depth_mm)
   std::string pose_note;        // how the pose was taken, when not from the run's pose columns

@@ -82,7 +82,7 @@ PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
   }
   data.fx_N = trace.fx_N[row];
   data.fy_N = trace.fy_N[row];
-  data.fz_N = trace.fz_N[row];
+  data.fz_N = moving == Role::kOuter ? -trace.fz_N[row] : trace.fz_N[row];
   data.force_depth_mm = trace.depth_mm[row];
   return data;
 }

@@ -28,8 +28,9 @@ FITFEEL_API HeatMapChart MakeSceneSmsChart(const std::string& scenario, const Pa
 // offset (offset_x_um, offset_z_um) and twist the run recorded at the nearest tick; for an older
 // trace without the offset columns, the device position x_mm, z_mm, said in `pose_note`; taken
 // into the analyzer's frame for the scene's `moving` part, AnalyzerPose), turned into pressure by
-// the law, and that tick's forces. Throws UserError for a depth outside the run's constrained
-// range and UnsupportedError for a law or analyzer that cannot give a pressure map.
+// the law, and that tick's forces in the same frame. Throws UserError for a depth outside the
+// run's constrained range and UnsupportedError for a law or analyzer that cannot give a pressure
+// map.
 FITFEEL_API PressureMapData MakePressureData(const RunRecord& run, double depth_mm,
                                              const ContactAnalyzer& analyzer,
                                              const ResistanceLaw& law,

@@ -118,11 +118,17 @@ TEST(MakePressureData, PrefersThePosesOffsetColumnsToTheDevicePosition) {
   EXPECT_NEAR(analyzer.last_pose.angle, 0.01, 1e-15);
   EXPECT_TRUE(data.pose_note.empty());
   // With the outer part moving, the trace's pose is the bushing's in the scene frame: the
-  // analyzer takes the shaft's in the bushing's, reflected in z (AnalyzerPose).
-  MakePressureData(run, 10.0, analyzer, LameLaw{}, shaft.grid, Role::kOuter);
+  // analyzer takes the shaft's in the bushing's, reflected in z (AnalyzerPose), and the force is
+  // read there too, on the inner part whose map is drawn.
+  const PressureMapData outer =
+      MakePressureData(run, 10.0, analyzer, LameLaw{}, shaft.grid, Role::kOuter);
   EXPECT_NEAR(analyzer.last_pose.offset.x(), 3.5e-6, 1e-15);
   EXPECT_NEAR(analyzer.last_pose.offset.y(), 4.25e-6, 1e-15);
   EXPECT_NEAR(analyzer.last_pose.angle, 0.01, 1e-15);
+  EXPECT_EQ(outer.fx_N, data.fx_N);
+  EXPECT_EQ(outer.fy_N, data.fy_N);
+  EXPECT_EQ(outer.fz_N, -data.fz_N);
+  EXPECT_NE(data.fz_N, 0.0);
 }
 
 TEST(MakePressureData, AnOlderTraceFallsBackToTheDevicePositionAndSaysSo) {
