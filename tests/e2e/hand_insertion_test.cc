@@ -53,11 +53,13 @@ PluginRegistry& Registry() {
   return *registry;
 }
 
-// The shipped scenario with the hand as its device, written beside the test's outputs.
+// The shipped scenario with the hand as its device (moving the part named `moving`, where not
+// empty, instead of the scenario's own), written beside the test's outputs.
 fs::path WithHand(const std::string& scenario, double aim, const std::string& waypoints,
-                  double seconds, const fs::path& dir) {
-  const std::string text =
+                  double seconds, const fs::path& dir, const std::string& moving) {
+  std::string text =
       test_support::ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / scenario);
+  if (!moving.empty()) text = test_support::WithMoving(text, moving);
   const fs::path file =
       dir / ("hand-" + std::to_string(static_cast<int>(aim * 1e6)) + "um-" + scenario);
   std::ofstream(file) << test_support::WithHand(text, aim, waypoints, seconds);
@@ -65,9 +67,11 @@ fs::path WithHand(const std::string& scenario, double aim, const std::string& wa
 }
 
 RunResult RunHand(const std::string& scenario, double aim, const std::string& waypoints,
-                  double seconds, const fs::path& out = {}) {
-  const fs::path dir = test_support::EmptyFolder("hand-insertion", scenario);
-  Scene scene = LoadScene(WithHand(scenario, aim, waypoints, seconds, dir), Registry());
+                  double seconds, const fs::path& out = {}, const std::string& moving = "") {
+  // A folder of its own per role: tests of both roles on one scenario may run at once.
+  const fs::path dir =
+      test_support::EmptyFolder("hand-insertion", (moving.empty() ? "" : "outer-") + scenario);
+  Scene scene = LoadScene(WithHand(scenario, aim, waypoints, seconds, dir, moving), Registry());
   RunOptions options;
   options.out_dir = out;
   return RunScene(std::move(scene), options);
@@ -208,23 +212,19 @@ class HandSlidesTheOuterPart : public ::testing::TestWithParam<OuterCase> {};
 
 TEST_P(HandSlidesTheOuterPart, OnAndOffAgain) {
   const OuterCase& c = GetParam();
-  const fs::path dir = test_support::EmptyFolder("hand-insertion", "outer-" + c.scenario);
-  const fs::path file = dir / ("outer-" + c.scenario);
-  const std::string text =
-      test_support::ReadText(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / c.scenario);
-  std::ofstream(file) << test_support::WithHand(
-      test_support::WithMoving(text, c.outer), 1e-3,
-      std::string(kHandPushIn) + "    - {time: 5 s, position: [0 mm, -5 mm, 0 mm]}\n", 6.0);
-  RunOptions options;
-  options.out_dir = dir / "run";
-  const RunResult result = RunScene(LoadScene(file, Registry()), options);
+  const fs::path out =
+      test_support::EmptyFolder("hand-insertion", "outer-run-" + c.scenario) / "run";
+  const RunResult result =
+      RunHand(c.scenario, 1e-3,
+              std::string(kHandPushIn) + "    - {time: 5 s, position: [0 mm, -5 mm, 0 mm]}\n", 6.0,
+              out, c.outer);
   const nlohmann::json& s = result.summary;
   EXPECT_LE(s["safety"]["energy_created_J"].get<double>(), 1e-9);
   EXPECT_LE(s["safety"]["max_delivered_force_N"].get<double>(),
             2.0 * kHandStiffness * (1e-3 + 2.0 * kHandTremor));
   EXPECT_GE(s["depth_mm"]["max"].get<double>(), 20.0);
   EXPECT_GE(s["constrained_ticks"].get<double>(), 0.6 * s["ticks"].get<double>());
-  EXPECT_EQ(StageSequence(dir / "run" / "trace.csv"), "staposconpos")
+  EXPECT_EQ(StageSequence(out / "trace.csv"), "staposconpos")
       << "stage sequence (3 letters each, header first)";
 }
 
