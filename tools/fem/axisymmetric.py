@@ -125,10 +125,9 @@ def write_block(f, block, elset):
         f.write(f"{eid}, " + ", ".join(str(v) for v in n) + "\n")
 
 
-def hoop_integral(dat, elset, areas):
-    """2 pi * integral of sigma_theta over the meridian section of the elements in `areas` (the
-    elset's), from the integration point stresses of *EL PRINT (the mean of a CAX8R's points
-    times its area)."""
+def point_stresses(dat):
+    """The integration point stresses of *EL PRINT S in a .dat: {element: [[sxx, syy, szz, sxy,
+    sxz, syz] per point]}."""
     stresses = {}
     for line in dat.splitlines():
         parts = line.split()
@@ -139,12 +138,21 @@ def hoop_integral(dat, elset, areas):
             vals = [float(v) for v in parts[2:]]
         except ValueError:
             continue
-        if eid in areas:
-            stresses.setdefault(eid, []).append(vals[2])  # szz: the hoop component
+        stresses.setdefault(eid, []).append(vals)
+    return stresses
+
+
+def hoop_integral(dat, elset, areas):
+    """2 pi * integral of sigma_theta over the meridian section of the elements in `areas` (the
+    elset's), from the integration point stresses of *EL PRINT (the mean of a CAX8R's points
+    times its area)."""
+    stresses = point_stresses(dat)
     missing = set(areas) - set(stresses)
     if missing:
         raise RuntimeError(f"no stresses printed for {len(missing)} elements of {elset}")
-    return 2.0 * math.pi * sum(float(np.mean(stresses[e])) * areas[e] for e in areas)
+    # szz: the hoop component
+    return 2.0 * math.pi * sum(float(np.mean([v[2] for v in stresses[e]])) * areas[e]
+                               for e in areas)
 
 
 def pair_deck(inner, outer, holds, heading):

@@ -10,8 +10,11 @@ tests compare the model against (docs/contact-mechanics.md says what each case c
                                                         contact from overlapping geometry)
   /usr/bin/python3 tools/fem/fem.py axisymmetric OUT.csv  finite hubs, a taper pin, a ball in its ring
                                                         (tools/fem/axisymmetric.py)
-  /usr/bin/python3 tools/fem/fem.py all DIR             all three, into DIR/harmonic.csv,
-                                                        DIR/contact.csv, DIR/axisymmetric.csv
+  /usr/bin/python3 tools/fem/fem.py solid OUT.csv       a bent shaft in 3-D (tools/fem/solid.py;
+                                                        about ten minutes a case)
+  /usr/bin/python3 tools/fem/fem.py all DIR             all four, into DIR/harmonic.csv,
+                                                        DIR/contact.csv, DIR/axisymmetric.csv,
+                                                        DIR/solid.csv
   /usr/bin/python3 tools/fem/fem.py compare NEW OLD      every number of two such CSV files
                                                         within 0.5 % (of 1e-3 for smaller ones;
                                                         exit 1 otherwise)
@@ -30,6 +33,7 @@ import tempfile
 import numpy as np
 
 import axisymmetric as axi
+import solid
 
 # The reference section: solid steel shaft d1 = 20 mm in a steel hub d2 = 30 mm (the paper's
 # case-study pair), one millimetre thick (plane stress: results per unit thickness scale).
@@ -385,17 +389,21 @@ def compare(new_csv, old_csv, tolerance=0.005):
 if __name__ == "__main__":
     if sys.argv[1:2] == ["compare"] and len(sys.argv) == 4:
         sys.exit(0 if compare(sys.argv[2], sys.argv[3]) else 1)
-    if len(sys.argv) < 3 or sys.argv[1] not in ("harmonic", "contact", "axisymmetric", "all"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("harmonic", "contact", "axisymmetric", "solid",
+                                                "all"):
         sys.stderr.write(__doc__)
         sys.exit(2)
     if sys.argv[1] == "contact":
         contact(sys.argv[2])
     if sys.argv[1] == "axisymmetric":  # optional case names after the file: only those
         axi.axisymmetric(sys.argv[2], run_ccx, sys.argv[3:])
+    if sys.argv[1] == "solid":  # optional case names after the file: only those
+        solid.solid(sys.argv[2], run_ccx, sys.argv[3:])
     if sys.argv[1] == "all":
         harmonic(os.path.join(sys.argv[2], "harmonic.csv"))
         contact(os.path.join(sys.argv[2], "contact.csv"))
         axi.axisymmetric(os.path.join(sys.argv[2], "axisymmetric.csv"), run_ccx)
+        solid.solid(os.path.join(sys.argv[2], "solid.csv"), run_ccx)
     if sys.argv[1] == "harmonic":
         for n, k in harmonic(sys.argv[2]):
             print(n, k)

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -260,6 +261,20 @@ TEST(ElasticLaw, ColumnsOptionSetsTheSolveResolution) {
   }
 }
 
+// A row of the accuracy chart's data, appended to the file the variable `table` names when set
+// (docs/figures/regenerate.sh sets it and writes the header): case, FEM, elastic model, its
+// error, the comparison (the paper law, or plane sections: the paper law's per-cell Lame for a
+// uniform interference), its error.
+void ChartRow(const char* table, const char* name, double fem, double model, double other) {
+  const char* path = std::getenv(table);
+  if (path == nullptr) return;
+  std::FILE* f = std::fopen(path, "a");
+  ASSERT_NE(f, nullptr) << path;
+  std::fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, fem, model, model / fem - 1.0, other,
+               other / fem - 1.0);
+  std::fclose(f);
+}
+
 // tools/fem/data/contact.csv: CalculiX plane-stress sections, steel d1 = 20 in d2 = 30 mm.
 struct FemCase {
   std::string name, kind;
@@ -298,15 +313,6 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
   ASSERT_EQ(cases.size(), 12u);  // every case of tools/fem/fem.py contact_cases()
   std::printf("%-16s %12s %12s %8s %12s %8s\n", "case", "FEM N/mm", "elastic", "error", "paper law",
               "error");
-  // The accuracy chart's data (docs/figures/regenerate.sh sets the variable).
-  std::FILE* table = nullptr;
-  if (const char* path = std::getenv("FITFEEL_FEM_ACCURACY_CSV")) {
-    table = std::fopen(path, "w");
-    ASSERT_NE(table, nullptr) << path;
-    std::fprintf(table,
-                 "case,fem_N_per_mm,elastic_N_per_mm,elastic_error,paper_N_per_mm,"
-                 "paper_error\n");
-  }
   for (const FemCase& c : cases) {
     const int columns = 240;  // the FEM's elements around
     auto shaft = [&](int, int j) { return Interference(c, 2 * kPi * (j + 0.5) / columns) * kUm; };
@@ -333,48 +339,46 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
     std::printf("%-16s %12.2f %12.2f %+7.1f%% %12.2f %+7.1f%%\n", c.name.c_str(), c.force_per_mm,
                 model, 100 * err, law, 100 * err_paper);
     EXPECT_LT(std::abs(err), 0.10) << c.name;
-    if (table) {
-      std::fprintf(table, "%s,%.6g,%.6g,%.6g,%.6g,%.6g\n", c.name.c_str(), c.force_per_mm, model,
-                   err, law, err_paper);
-    }
+    ChartRow("FITFEEL_FEM_ACCURACY_CSV", c.name.c_str(), c.force_per_mm, model, law);
   }
-  if (table) std::fclose(table);
 }
 
 // tools/fem/data/axisymmetric.csv (AxisymmetricFemForce): CalculiX in axisymmetry, the paper's
 // pair (shaft 20 mm in a hub 20 mm long, outer diameter 30 mm, steel) with a uniform radial
 // interference of 5 um, no texture, frictionless; the normal force B of each case.
 
-// The accuracy chart's rows of the axisymmetric cases (docs/figures/regenerate.sh sets the
-// variable and writes the header): case, FEM, elastic model, its error, plane sections (the paper
-// law's per-cell Lame for a uniform interference), their error.
-void ChartRow(const char* name, double fem, double model, double plane) {
-  const char* path = std::getenv("FITFEEL_FEM_AXISYMMETRIC_CSV");
-  if (path == nullptr) return;
-  std::FILE* f = std::fopen(path, "a");
-  ASSERT_NE(f, nullptr) << path;
-  std::fprintf(f, "%s,%.6g,%.6g,%.6g,%.6g,%.6g\n", name, fem, model, model / fem - 1.0, plane,
-               plane / fem - 1.0);
-  std::fclose(f);
-}
-
 // The elastic model's normal force with the shaft `shaft_length` long at `depth`, in a hub of
-// outer diameter `hub_diameter`.
-double UniformNormalForce(double shaft_length, double depth, const std::string& options,
-                          double hub_diameter = 0.030, double shaft_row = 0.5e-3) {
+// outer diameter `hub_diameter`, the shaft's rim drawn at `shaft_v` (row, column of 72) over a
+// true bore, no texture; at the tabulated anchor.
+double NormalForce(const std::function<double(int, int)>& shaft_v, double shaft_length,
+                   double depth, const std::string& options, double hub_diameter = 0.030,
+                   double shaft_row = 0.5e-3, bool paper_law = false) {
   const PartSpec shaft = MakeShaft(0.020, shaft_length);
   const PartSpec bushing = MakeBushing(0.020, 0.020, hub_diameter);
-  ModelSettings settings = Elastic(TextureMode::kSampled);
+  ModelSettings settings =
+      paper_law ? Settings(0.15, 0.0, TextureMode::kSampled) : Elastic(TextureMode::kSampled);
   settings.extra = ConfigNode::Parse(options, "test", "model.options");
   CylinderContactAnalyzer analyzer;
-  ElasticLaw law;
   const int rows = static_cast<int>(std::lround(shaft_length / shaft_row));
-  analyzer.Prepare(
-      shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), [](int, int) { return 5 * kUm; }),
-      bushing, MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }), settings);
+  analyzer.Prepare(shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), shaft_v), bushing,
+                   MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }), settings);
   EXPECT_EQ(analyzer.smoothing(), 0.0);
+  if (paper_law) {  // eq. 9's pressure per unit interference over the interference volume
+    GpsLaw law;
+    law.Prepare(shaft, bushing, settings);
+    return law.pressure_per_interference() *
+           OutcomeAt(analyzer, law, depth, AnchorNear(analyzer, depth)).state.interference_volume;
+  }
+  ElasticLaw law;
   law.Prepare(shaft, bushing, settings);
-  return OutcomeAt(analyzer, law, depth, {0, 0}).state.normal_force;
+  return OutcomeAt(analyzer, law, depth, AnchorNear(analyzer, depth)).state.normal_force;
+}
+
+// The same with a uniform radial interference of 5 um.
+double UniformNormalForce(double shaft_length, double depth, const std::string& options,
+                          double hub_diameter = 0.030, double shaft_row = 0.5e-3) {
+  return NormalForce([](int, int) { return 5 * kUm; }, shaft_length, depth, options, hub_diameter,
+                     shaft_row);
 }
 
 // The fully engaged finite hub: plane sections are exact in plane strain (the FEM's slice held
@@ -405,7 +409,60 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
     } else {
       EXPECT_LT(std::abs(model / fem - 1.0), 0.1 * std::abs(plane / fem - 1.0)) << c.name;
     }
-    ChartRow(c.name, fem, model, plane);
+    ChartRow("FITFEEL_FEM_AXISYMMETRIC_CSV", c.name, fem, model, plane);
+  }
+}
+
+// tools/fem/data/solid.csv: CalculiX in 3-D (tools/fem/solid.py), the shaft flush in the hub (both
+// 20 mm, d2 = 30 mm), its rim drawn at delta0 + h (2 z / L)^2 cos theta over a true bore: a shaft
+// bent in a parabola of sagitta h, each part held only against rigid motion. Where the contact is
+// partial its sections carry net radial loads that balance only over the length; the model
+// shares them between its plane sections through the rigid part (each section's order-1
+// compliance taken as the breathing mode's), the FEM by the parts' deformation in 3-D. Returns
+// the model's error against the FEM; prints it and the paper law's.
+double BentShaftError(const char* name) {
+  using test_support::FemValue;
+  const double d0 = FemValue("solid.csv", name, 1) * kUm;
+  const double h = FemValue("solid.csv", name, 2) * kUm;
+  const double fem = FemValue("solid.csv", name, 3);
+  auto shaft = [&](int i, int j) {
+    const double z = (i + 0.5) * 0.020 / 40 - 0.010;
+    return d0 + h * std::pow(2.0 * z / 0.020, 2) * std::cos(2 * kPi * j / 72);
+  };
+  const double model = NormalForce(shaft, 0.020, 0.020, "{}");
+  const double paper = NormalForce(shaft, 0.020, 0.020, "{}", 0.030, 0.5e-3, true);
+  std::printf("%-16s FEM %8.1f N  elastic model %8.1f N %+6.2f %%  paper law %8.1f N %+6.2f %%\n",
+              name, fem, model, 100 * (model / fem - 1), paper, 100 * (paper / fem - 1));
+  // Per mm of the 20 mm engagement, as the sections' rows of the same chart.
+  ChartRow("FITFEEL_FEM_ACCURACY_CSV", name, fem / 20, model / 20, paper / 20);
+  return model / fem - 1.0;
+}
+
+// The uniform press fit (the 3-D mesh against the axisymmetric one too), the bent shaft in full
+// contact (the bend's order-1 load adds nothing to the normal force, in the FEM to seven digits)
+// and in partial contact all along (measured -6.4 %; the paper law -5.4 %). Asserted: 10 %.
+TEST(ElasticLaw, AgreesWithCalculixOnABentShaft) {
+  EXPECT_NEAR(test_support::FemValue("solid.csv", "uniform-flush", 3) /
+                  test_support::AxisymmetricFemForce("cylinder-flush"),
+              1.0, 0.005);
+  for (const char* name : {"uniform-flush", "bent-full", "bent-partial"}) {
+    EXPECT_LT(std::abs(BentShaftError(name)), 0.10) << name;
+  }
+}
+
+// Not yet within reach: the bent shaft on a clearance touches the bore at its ends on one side
+// and in the middle on the other, short loaded bands whose unloaded neighbours along the axis
+// stiffen them, as they do a press fit's first millimetres. The model couples only the breathing
+// mode along the axis (section 9 of docs/contact-mechanics.md); each section's order-1 load is
+// carried on its own, so the model is far too soft here.
+TEST(ElasticLaw, AgreesWithCalculixOnABentShaftOnAClearance) {
+  const double error = BentShaftError("bent-clearance");
+  if (std::abs(error) >= 0.10) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%+.1f %%", 100 * error);
+    GTEST_SKIP() << "open (issue 9): the elastic model is " << percent
+                 << " off CalculiX on a bent shaft touching at three bands; it needs the order-1 "
+                    "(offset) mode coupled along the axis as the breathing mode is";
   }
 }
 
@@ -428,7 +485,7 @@ void ExpectWithinOfCalculix(const PartlyEngaged& c, double tolerance, double sha
               c.name, fem, coupled, 100 * (coupled / fem - 1), plane, 100 * (plane / fem - 1));
   EXPECT_LT(std::abs(coupled / fem - 1.0), tolerance) << c.name;
   EXPECT_LT(plane, fem) << c.name;  // what the coupling is for
-  if (shaft_row == 0.5e-3) ChartRow(c.name, fem, coupled, plane);
+  if (shaft_row == 0.5e-3) ChartRow("FITFEEL_FEM_AXISYMMETRIC_CSV", c.name, fem, coupled, plane);
 }
 
 TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {

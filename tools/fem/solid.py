@@ -1,0 +1,217 @@
+"""3-D CalculiX cases: a bent shaft in a straight bore (tools/fem/fem.py runs them;
+docs/contact-mechanics.md says what each checks).
+
+The paper's pair, a solid steel shaft d1 = 20 mm flush in a hub d2 = 30 mm, both L = 20 mm long,
+with the shaft's rim drawn at radius a + delta(theta, z) over a bore of radius a:
+
+    delta(theta, z) = delta0 + h (2 z / L)^2 cos theta,   -L/2 <= z <= L/2,
+
+a uniform interference delta0 on a shaft whose axis is bent in a parabola of sagitta h (ends h
+off the middle). Where contact is partial, the sections carry net radial loads that change sign
+along the axis and balance only over the length: how the parts carry them (each section's order-1
+compliance in the model, beam and shear deformation over the length in 3-D) is what these cases
+check. The loads are self-equilibrated, so the answer does not depend on how the parts are held:
+each is held only against rigid motion, the shaft floats radially.
+
+A quarter is meshed (0 <= theta <= pi, 0 <= z <= L/2: the field is symmetric about the planes y = 0
+and z = 0, which become symmetry planes), in quadratic hexahedra (C3D20R; the shaft's core in
+quadratic wedges, C3D15) on a polar grid graded towards the interface and the free ends.
+Frictionless surface-to-surface penalty contact resolves the overlap.
+
+The normal force N = integral of p dA comes from equilibrium, as in axisymmetric.py: a plane
+through the axis at angle alpha cuts the hub in two walls; the half on one side balances the
+contact pressure's component normal to the plane with the hoop forces W in its walls, and
+averaged over alpha this gives N = integral of W(alpha) d alpha = integral of sigma_theta dr dtheta dz
+over the hub. The uniform case is also computed in axisymmetry (cylinder-flush): the two meshes'
+agreement is reported beside it.
+"""
+
+import io
+import math
+import tempfile
+
+import numpy as np
+
+import axisymmetric as axi
+
+E = axi.E
+NU = axi.NU
+PENALTY = axi.PENALTY
+A = 10.0     # interface radius, mm
+B = 15.0     # hub outer radius, mm
+LENGTH = 20.0  # hub and shaft, mm
+
+
+class PolarGrid:
+    """Quadratic serendipity nodes of r in radii, theta in angles, z in zs (corner stations), in a
+    polar cell grid; a grid starting at r = 0 has one node per axial station on the axis."""
+
+    def __init__(self, radii, angles, zs, first_node):
+        self.radii, self.angles, self.zs = radii, angles, zs
+        half = lambda v: np.concatenate([np.ravel(np.column_stack([v[:-1], 0.5 * (v[:-1] + v[1:])])),
+                                         v[-1:]])
+        rr, tt, zz = half(radii), half(angles), half(zs)
+        self.ids = {}
+        self.nodes = []  # (id, x, y, z)
+        nid = first_node
+        axis = {}
+        for i, r in enumerate(rr):
+            for j, t in enumerate(tt):
+                for k, z in enumerate(zz):
+                    if (i % 2) + (j % 2) + (k % 2) > 1:
+                        continue  # serendipity: edge midpoints only
+                    if r == 0.0:
+                        if j % 2 == 1:
+                            continue  # collapsed edge
+                        if k not in axis:
+                            axis[k] = nid
+                            self.nodes.append((nid, 0.0, 0.0, z))
+                            nid += 1
+                        self.ids[(i, j, k)] = axis[k]
+                        continue
+                    self.ids[(i, j, k)] = nid
+                    self.nodes.append((nid, r * math.cos(t), r * math.sin(t), z))
+                    nid += 1
+        self.next_node = nid
+
+    def cells(self, first_elem):
+        """(element id, type, node ids, (i, j, k) cell index) of every cell."""
+        out = []
+        eid = first_elem
+        g = self.ids
+        for i in range(len(self.radii) - 1):
+            for j in range(len(self.angles) - 1):
+                for k in range(len(self.zs) - 1):
+                    i0, im, i1 = 2 * i, 2 * i + 1, 2 * i + 2
+                    j0, jm, j1 = 2 * j, 2 * j + 1, 2 * j + 2
+                    k0, km, k1 = 2 * k, 2 * k + 1, 2 * k + 2
+                    if self.radii[i] == 0.0:
+                        tri = [(i0, j0), (i1, j0), (i1, j1)]
+                        mids = [(im, j0), (i1, jm), (im, j1)]
+                        conn = ([g[(a, b, k0)] for a, b in tri] + [g[(a, b, k1)] for a, b in tri] +
+                                [g[(a, b, k0)] for a, b in mids] +
+                                [g[(a, b, k1)] for a, b in mids] +
+                                [g[(a, b, km)] for a, b in tri])
+                        out.append((eid, "C3D15", conn, (i, j, k)))
+                    else:
+                        quad = [(i0, j0), (i1, j0), (i1, j1), (i0, j1)]
+                        mids = [(im, j0), (i1, jm), (im, j1), (i0, jm)]
+                        conn = ([g[(a, b, k0)] for a, b in quad] +
+                                [g[(a, b, k1)] for a, b in quad] +
+                                [g[(a, b, k0)] for a, b in mids] +
+                                [g[(a, b, k1)] for a, b in mids] +
+                                [g[(a, b, km)] for a, b in quad])
+                        out.append((eid, "C3D20R", conn, (i, j, k)))
+                    eid += 1
+        return out
+
+
+def meshes(columns, shaft_rings, hub_rings, axial):
+    """The shaft and hub grids of the quarter model, graded towards the interface and the ends."""
+    angles = np.linspace(0.0, math.pi, columns + 1)
+    zs = axi.stations(LENGTH / 2, axial, bias_hi=1.5)
+    shaft = PolarGrid(A * axi.graded(shaft_rings, bias_hi=1.5), angles, zs, 1)
+    hub = PolarGrid(A + (B - A) * axi.graded(hub_rings, bias_lo=1.5), angles, zs, shaft.next_node)
+    return shaft, hub
+
+
+def deck(delta, columns, shaft_rings, hub_rings, axial):
+    shaft, hub = meshes(columns, shaft_rings, hub_rings, axial)
+    shaft_cells = shaft.cells(1)
+    hub_cells = hub.cells(len(shaft_cells) + 1)
+    f = io.StringIO()
+    f.write("*HEADING\nfitfeel 3-D case\n*NODE\n")
+    for nid, x, y, z in shaft.nodes:
+        r, t = math.hypot(x, y), math.atan2(y, x)
+        k = 1.0 + delta(t, z) / A if r > 0.0 else 1.0  # the section scaled radially: rim exact
+        f.write(f"{nid}, {x * k:.15g}, {y * k:.15g}, {z:.15g}\n")
+    for nid, x, y, z in hub.nodes:
+        f.write(f"{nid}, {x:.15g}, {y:.15g}, {z:.15g}\n")
+    for name, cells in (("SHAFT", shaft_cells), ("HUB", hub_cells)):
+        for etype in ("C3D15", "C3D20R"):
+            group = [c for c in cells if c[1] == etype]
+            if not group:
+                continue
+            f.write(f"*ELEMENT, TYPE={etype}, ELSET={name}\n")
+            for eid, _, conn, _ in group:
+                # 16 ids per line at most in a deck: continue on a second line.
+                head = ", ".join(str(v) for v in conn[:15])
+                tail = ", ".join(str(v) for v in conn[15:])
+                f.write(f"{eid}, {head}" + (f",\n{tail}\n" if tail else "\n"))
+    f.write("*MATERIAL, NAME=STEEL\n*ELASTIC\n" + f"{E}, {NU}\n")
+    f.write("*SOLID SECTION, ELSET=SHAFT, MATERIAL=STEEL\n*SOLID SECTION, ELSET=HUB, "
+            "MATERIAL=STEEL\n")
+    rim = len(shaft.radii) - 2
+    f.write("*SURFACE, NAME=SRIM, TYPE=ELEMENT\n")
+    f.write("".join(f"{c[0]}, S4\n" for c in shaft_cells if c[3][0] == rim))
+    f.write("*SURFACE, NAME=SBORE, TYPE=ELEMENT\n")
+    f.write("".join(f"{c[0]}, S6\n" for c in hub_cells if c[3][0] == 0))
+    f.write(f"*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
+            f"{PENALTY:g}, 3.\n")
+    f.write("*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSRIM, SBORE\n")
+    # Symmetry planes y = 0 (theta = 0 and pi) and z = 0; the hub held in x at one node, the
+    # shaft free in x (the contact holds it).
+    f.write("*BOUNDARY\n")
+    last_j = 2 * (len(shaft.angles) - 1)
+    for grid in (shaft, hub):
+        for (i, j, k), nid in sorted(grid.ids.items()):
+            if j in (0, last_j):
+                f.write(f"{nid}, 2, 2\n")
+            if k == 0:
+                f.write(f"{nid}, 3, 3\n")
+    f.write(f"{hub.ids[(2 * (len(hub.radii) - 1), 0, 0)]}, 1, 1\n")
+    f.write("*STEP, INC=200\n*STATIC\n1., 1.\n*EL PRINT, ELSET=HUB\nS\n*END STEP\n")
+    return f.getvalue(), hub, hub_cells
+
+
+def hoop_integral(dat, grid, cells):
+    """Integral of sigma_theta dr dtheta dz over the hub's quarter: per element the mean of its
+    integration points' hoop stress (taken at the element's mid angle) times the cell's extent."""
+    stress = axi.point_stresses(dat)
+    total = 0.0
+    for eid, _, _, (i, j, k) in cells:
+        if eid not in stress:
+            raise RuntimeError(f"no stresses printed for hub element {eid}")
+        t = 0.5 * (grid.angles[j] + grid.angles[j + 1])
+        c, s = math.cos(t), math.sin(t)
+        sxx, syy, _, sxy = (np.mean([v[q] for v in stress[eid]]) for q in range(4))
+        hoop = sxx * s * s + syy * c * c - 2.0 * sxy * s * c
+        total += hoop * ((grid.radii[i + 1] - grid.radii[i]) * (grid.angles[j + 1] - grid.angles[j])
+                         * (grid.zs[k + 1] - grid.zs[k]))
+    return 4.0 * total  # the four quarters
+
+
+# (case, delta0 um, sagitta h um): the uniform press fit (the axisymmetric cylinder-flush case in
+# 3-D), a bent shaft in full contact (its normal force is the uniform one's: the bend's order-1
+# load adds nothing to the mean), in partial contact, and on a clearance.
+CASES = [
+    ("uniform-flush", 5.0, 0.0),
+    ("bent-full", 5.0, 2.0),
+    ("bent-partial", 1.0, 4.0),
+    ("bent-clearance", -1.0, 6.0),
+]
+
+MESH = dict(columns=36, shaft_rings=8, hub_rings=5, axial=10)
+
+
+def solid(out_csv, run_ccx, only=()):
+    rows = []
+    for name, d0, h in CASES:
+        if only and name not in only:
+            continue
+        delta = lambda t, z, d0=d0, h=h: 1e-3 * (d0 + h * (2.0 * z / LENGTH) ** 2 * math.cos(t))
+        text, hub, cells = deck(delta, **MESH)
+        with tempfile.TemporaryDirectory() as work:
+            dat = run_ccx(text, work, "solid")
+        force = hoop_integral(dat, hub, cells)
+        rows.append((name, d0, h, force))
+        print(name, force, flush=True)
+    with open(out_csv, "w") as out:
+        out.write("# CalculiX 3-D (C3D20R, quarter model), steel shaft d1 = 20 mm flush in a hub "
+                  "d2 = 30 mm, L = 20 mm, rim interference delta0 + h (2z/L)^2 cos theta, "
+                  "frictionless; normal force from the hub's hoop stress; regenerate: "
+                  "/usr/bin/python3 tools/fem/fem.py solid <this file>\n")
+        out.write("case,delta0_um,sagitta_um,normal_force_N\n")
+        for r in rows:
+            out.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in r) + "\n")
+    return rows
