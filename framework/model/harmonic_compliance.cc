@@ -85,6 +85,85 @@ double RingDisplacement(double a0, double a1, bool load_outer, int n, const Elas
   return u;
 }
 
+// Order 1 of the ring a0 < r < a1 (solid when a0 = 0) loaded by p cos(theta) on the boundary
+// `load_outer` names (the other free), the net force balanced by a uniform body force (the
+// rest of the part, whose axis is rigid in the model, carries it): the loaded face's radial
+// displacement amplitude relative to the section's area-mean displacement, per unit p.
+//
+// Plane stress with body force f = -beta e_x; u_r = U(r) cos theta, u_theta = V(r) sin theta.
+// With the dilatation D cos theta and the rotation W sin theta, Navier's equations in polar
+// coordinates read L D' - 2 mu W / r = beta, -L D / r + 2 mu W' = -beta (L = E / (1 - nu^2)), so
+// D = alpha r + gamma / r, W = (L / 2 mu)(alpha r - gamma / r) - beta r / (2 mu). With
+// S = U + V and T = U - V (T's constant is the rigid translation, left out):
+//   S = alpha (1 + L/mu) r^2 / 4 + gamma (1 - L/mu) / 2 - beta r^2 / (4 mu) + kappa / r^2,
+//   T = alpha (1 - L/mu) r^2 / 2 + gamma (1 + L/mu) ln(r / a1) + beta r^2 / (2 mu),
+// sigma_rr = L (U' + nu S / r), sigma_rtheta = mu (V' - S / r), and the area-mean u_x is the mean
+// of T / 2. A solid disc keeps only alpha (regular at the axis): its stress is sigma_xx =
+// sigma_yy = -p x / a1, and the rim moves (1 - nu) p a1 / (2E) towards the centre relative to the
+// centroid (tested).
+double OrderOneDisplacement(double a0, double a1, bool load_outer, const Elastic& m) {
+  const double mu = m.e / (2.0 * (1.0 + m.nu)), l = m.e / (1.0 - m.nu * m.nu);
+  const double loaded = load_outer ? a1 : a0;
+  // Net force of the face load along x: -pi a1 (pressed inwards) or +pi a0 (pushed outwards).
+  const double beta = (load_outer ? -a1 : a0) / (a1 * a1 - a0 * a0);
+  // The fields at r for the coefficients c = (alpha, gamma, kappa) (linear, plus beta's part):
+  // each row is (the three coefficients' parts, beta's part).
+  struct Row {
+    Eigen::Vector3d c;
+    double b;
+  };
+  auto fields = [&](double r, Row* u, Row* srr, Row* srt) {
+    const double g = l / mu;
+    const Row d{{r, 1.0 / r, 0.0}, 0.0};
+    const Row w{{0.5 * g * r, -0.5 * g / r, 0.0}, -r / (2.0 * mu)};
+    const Row sv{{(1.0 + g) * r * r / 4.0, (1.0 - g) / 2.0, 1.0 / (r * r)}, -r * r / (4.0 * mu)};
+    const Row t{{(1.0 - g) * r * r / 2.0, (1.0 + g) * std::log(r / a1), 0.0}, r * r / (2.0 * mu)};
+    auto combine = [](const Row& x, double kx, const Row& y, double ky, const Row& z, double kz) {
+      return Row{kx * x.c + ky * y.c + kz * z.c, kx * x.b + ky * y.b + kz * z.b};
+    };
+    const Row sp = combine(d, 1.0, w, 2.0, sv, -2.0 / r);  // S'
+    const Row tp = combine(d, 1.0, w, -2.0, sv, 0.0);      // T'
+    if (u != nullptr) *u = combine(sv, 0.5, t, 0.5, t, 0.0);
+    // U' = (S' + T') / 2, V' = (S' - T') / 2.
+    *srr = combine(sp, 0.5 * l, tp, 0.5 * l, sv, l * m.nu / r);
+    *srt = combine(sp, 0.5 * mu, tp, -0.5 * mu, sv, -mu / r);
+  };
+  // Traction conditions: sigma_rr = -1 and sigma_rtheta = 0 on the loaded face, both zero on a
+  // free one; equilibrium makes one of them redundant (least squares solves them exactly).
+  const bool solid = a0 == 0.0;
+  const int faces = solid ? 1 : 2;
+  Eigen::MatrixXd a(2 * faces, 3);
+  Eigen::VectorXd rhs(2 * faces);
+  for (int f = 0; f < faces; ++f) {
+    const double r = solid || f == 1 ? a1 : a0;
+    Row srr, srt;
+    fields(r, nullptr, &srr, &srt);
+    a.row(2 * f) = srr.c.transpose();
+    a.row(2 * f + 1) = srt.c.transpose();
+    rhs[2 * f] = (r == loaded ? -1.0 : 0.0) - srr.b * beta;
+    rhs[2 * f + 1] = -srt.b * beta;
+  }
+  // Columns scaled to unit norm: the coefficients differ by powers of the radius.
+  const int unknowns = solid ? 1 : 3;
+  Eigen::VectorXd scale = a.leftCols(unknowns).colwise().norm().cwiseInverse().transpose();
+  const Eigen::VectorXd y =
+      (a.leftCols(unknowns) * scale.asDiagonal()).colPivHouseholderQr().solve(rhs);
+  Eigen::Vector3d coef = Eigen::Vector3d::Zero();
+  coef.head(unknowns) = scale.cwiseProduct(y);
+  Row u, srr, srt;
+  fields(loaded, &u, &srr, &srt);
+  const double face = u.c.dot(coef) + u.b * beta;
+  // Area-mean of T / 2: integral of T r dr over the section's (a1^2 - a0^2) / 2.
+  const double g = l / mu;
+  auto t_moment = [&](double r) {  // integral of T r dr from 0 (the log term: r^2 ln / 2 - r^2 / 4)
+    const double log_part = r == 0.0 ? 0.0 : r * r / 2.0 * std::log(r / a1) - r * r / 4.0;
+    return coef[0] * (1.0 - g) * std::pow(r, 4) / 8.0 + coef[1] * (1.0 + g) * log_part +
+           beta / (2.0 * mu) * std::pow(r, 4) / 4.0;
+  };
+  const double mean = (t_moment(a1) - t_moment(a0)) / (a1 * a1 - a0 * a0);
+  return face - mean;
+}
+
 void CheckSection(const PressFitSection& s) {
   if (!(s.d1 > 0.0) || !(s.d2 > s.d1) || !(s.di >= 0.0 && s.di < s.d1)) {
     throw UserError("press-fit section needs 0 <= shaft bore < interface diameter < hub outer "
@@ -96,9 +175,9 @@ void CheckSection(const PressFitSection& s) {
 
 double HarmonicCompliance(const PressFitSection& s, int n) {
   CheckSection(s);
-  if (n < 0 || n == 1) {
-    throw UserError("harmonic compliance is defined for orders 0 and >= 2 (order " +
-                    std::to_string(n) + " asked)");
+  if (n < 0) {
+    throw UserError("harmonic compliance is defined for orders >= 0 (order " + std::to_string(n) +
+                    " asked)");
   }
   const Elastic ms = Effective(s.shaft, s.plane_strain);
   const Elastic mh = Effective(s.hub, s.plane_strain);
@@ -108,6 +187,10 @@ double HarmonicCompliance(const PressFitSection& s, int n) {
     const double c_shaft = (a * a + c * c) / (a * a - c * c) - ms.nu;
     const double c_hub = (b * b + a * a) / (b * b - a * a) + mh.nu;
     return a * (c_shaft / ms.e + c_hub / mh.e);
+  }
+  if (n == 1) {
+    return -OrderOneDisplacement(c, a, /*load_outer=*/true, ms) +
+           OrderOneDisplacement(a, b, /*load_outer=*/false, mh);
   }
   // The shaft moves inward (its displacement along +r is negative under pressure), the hub out.
   return -RingDisplacement(c, a, /*load_outer=*/true, n, ms) +
@@ -120,7 +203,7 @@ std::vector<double> CirculantCompliance(const PressFitSection& section, int n_co
   }
   std::vector<double> c(static_cast<std::size_t>(n_columns / 2) + 1);
   for (int k = 0; k <= n_columns / 2; ++k) {
-    c[static_cast<std::size_t>(k)] = HarmonicCompliance(section, k == 1 ? 0 : k);
+    c[static_cast<std::size_t>(k)] = HarmonicCompliance(section, k);
   }
   return c;
 }

@@ -23,15 +23,14 @@ struct PressFitSection {
 // Radial closure of the interface per unit normal pressure p cos(n theta), m/Pa: the shaft's
 // inward plus the hub's outward radial displacement amplitude, from the Michell solution of each
 // ring (Airy stress function r^{+-n}, r^{2+-n} times cos n theta; Lame for n = 0). The interface
-// stiffness per harmonic is K_n = 1 / HarmonicCompliance(n). n = 1 carries a net force, which the
-// rigid-body equilibrium of the part balances, not a deformation mode of the section: refused
-// here (UserError), see CirculantCompliance for what the contact solver uses in its place.
+// stiffness per harmonic is K_n = 1 / HarmonicCompliance(n). Order 1 carries a net force, which
+// the model's rigid parts carry along their axes: its compliance is each section's face moving
+// relative to the section's centroid, the net force balanced by a uniform body force (the rest
+// of a rigid part pulling on the section; docs/contact-mechanics.md section 1): 0.36 of order 0's
+// for the steel 20 mm shaft in its 30 mm hub.
 FITFEEL_API double HarmonicCompliance(const PressFitSection& section, int n);
 
 // The compliance of every order 0 .. n_columns/2 a circulant contact solve on n_columns needs.
-// Order 1 is taken as order 0's (the breathing mode's): it only decides how a tilt-constrained
-// rigid part shares a net radial load between sections, never the pressure distribution of one
-// section in equilibrium.
 FITFEEL_API std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns);
 
 // DIN 7190-1 smoothing: the diametral interference lost while joining as the asperity peaks are

@@ -190,21 +190,48 @@ def radial_harmonic(disp, ring, n):
     return 2.0 / len(th) * float(np.sum(ur * np.cos(n * th))) / (2.0 if n == 0 else 1.0)
 
 
-def harmonic(out_csv, orders=(0, 2, 3, 5, 10)):
+def mean_displacement(mesh, disp):
+    """Area-weighted mean displacement (x, y) of a mesh: each element's area (the polygon of its
+    corner and midside nodes, which lie on the polar grid's arcs) times the mean of its nodes'."""
+    total, area = np.zeros(2), 0.0
+    for elements, order in ((mesh.quads, [0, 4, 1, 5, 2, 6, 3, 7]), (mesh.tris, [0, 3, 1, 4, 2, 5])):
+        for _, conn in elements:
+            xy = np.array([mesh_coords(mesh)[conn[i]] for i in order])
+            a = 0.5 * abs(np.dot(xy[:, 0], np.roll(xy[:, 1], -1)) -
+                          np.dot(xy[:, 1], np.roll(xy[:, 0], -1)))
+            total += a * np.mean([disp[n][:2] for n in conn], axis=0)
+            area += a
+    return total / area
+
+
+def mesh_coords(mesh):
+    if not hasattr(mesh, "coords"):
+        mesh.coords = {nid: (x, y) for nid, x, y in mesh.nodes}
+    return mesh.coords
+
+
+def harmonic(out_csv, orders=(0, 1, 2, 3, 5, 10)):
     """Interface compliance per harmonic: pressure p cos(n theta) on the shaft's rim and on the
     hub's bore (two separate bodies, each held only against rigid motion), radial displacement
-    amplitude of order n at the interface, K_n = p / (u_shaft + u_hub)."""
+    amplitude of order n at the interface, K_n = p / (u_shaft + u_hub). Order 1 carries a net
+    force: each body's is balanced by a uniform body force (gravity at unit density), and the
+    face's amplitude is taken relative to the body's area-mean displacement (its centroid's
+    motion), as the model defines it (docs/contact-mechanics.md section 1)."""
     shaft, hub = sections()
     p = 10.0  # MPa amplitude; linear, any value
+    a, b = D1 / 2, D2 / 2
     f = io.StringIO()
     f.write("*HEADING\nfitfeel harmonic compliance\n")
     write_mesh(f, shaft, "SHAFT")
     write_mesh(f, hub, "HUB")
     material(f, ["SHAFT", "HUB"])
+    f.write("*DENSITY\n1.\n")  # for the body force of order 1 (tonne/mm^3: g in N/mm^3)
     rim = shaft.ring_nodes(shaft.outer_ring)
     bore = hub.ring_nodes(0)
     f.write("*NSET, NSET=RIM\n" + "\n".join(str(n) for n, _ in rim) + "\n")
     f.write("*NSET, NSET=BORE\n" + "\n".join(str(n) for n, _ in bore) + "\n")
+    f.write("*NSET, NSET=SHAFTN\n" + "\n".join(str(n) for n, _, _ in shaft.nodes) + "\n")
+    f.write("*NSET, NSET=HUBN\n" + "\n".join(str(n) for n, _, _ in hub.nodes) + "\n")
     # Rigid-body holds only (statically determinate, so self-equilibrated loads leave them
     # unloaded): shaft centre in x, y and a rim node in y; hub outer node at 0 deg in x, y, the
     # one at 180 deg in y.
@@ -215,23 +242,35 @@ def harmonic(out_csv, orders=(0, 2, 3, 5, 10)):
     h180 = hub_out[len(hub_out) // 2][0]
     f.write(f"*BOUNDARY\n{centre}, 1, 2\n{s0}, 2, 2\n{h0}, 1, 2\n{h180}, 2, 2\n")
     dtheta = 2 * math.pi / shaft.columns
+    # A piecewise-constant load per element carries sinc(n dtheta / 2) of the cosine.
+    applied = {n: p * (1.0 if n == 0 else math.sin(n * dtheta / 2) / (n * dtheta / 2))
+               for n in orders}
     for n in orders:
         f.write("*STEP\n*STATIC\n*DLOAD, OP=NEW\n")
         for eid, face, th in shaft.boundary_elements(outer=True):
             f.write(f"{eid}, {face}, {p * math.cos(n * th):.12g}\n")
         for eid, face, th in hub.boundary_elements(outer=False):
             f.write(f"{eid}, {face}, {p * math.cos(n * th):.12g}\n")
-        f.write("*NODE PRINT, NSET=RIM\nU\n*NODE PRINT, NSET=BORE\nU\n*END STEP\n")
+        if n == 1:
+            # Net forces -pi a p1 and +pi a p1 per mm (p1 the applied amplitude), spread over
+            # each body's area.
+            f.write(f"SHAFT, GRAV, {applied[1] / a:.12g}, 1., 0., 0.\n"
+                    f"HUB, GRAV, {applied[1] * a / (b * b - a * a):.12g}, -1., 0., 0.\n")
+        f.write("*NODE PRINT, NSET=RIM\nU\n*NODE PRINT, NSET=BORE\nU\n")
+        if n == 1:
+            f.write("*NODE PRINT, NSET=SHAFTN\nU\n*NODE PRINT, NSET=HUBN\nU\n")
+        f.write("*END STEP\n")
     with tempfile.TemporaryDirectory() as work:
         dat = run_ccx(f.getvalue(), work, "harmonic")
-    blocks = parse_blocks(dat, "displacements")
+    blocks = iter(parse_blocks(dat, "displacements"))
     rows = []
-    for k, n in enumerate(orders):
-        u_rim, u_bore = blocks[2 * k], blocks[2 * k + 1]
-        # A piecewise-constant load per element carries sinc(n dtheta / 2) of the cosine.
-        applied = p * (1.0 if n == 0 else math.sin(n * dtheta / 2) / (n * dtheta / 2))
+    for n in orders:
+        u_rim, u_bore = next(blocks), next(blocks)
         closure = -radial_harmonic(u_rim, rim, n) + radial_harmonic(u_bore, bore, n)
-        rows.append((n, applied / closure * 1e9))  # MPa/mm -> Pa/m
+        if n == 1:  # relative to each body's centroid: its mean x displacement
+            closure += mean_displacement(shaft, next(blocks))[0]
+            closure -= mean_displacement(hub, next(blocks))[0]
+        rows.append((n, applied[n] / closure * 1e9))  # MPa/mm -> Pa/m
     p0 = rows[0][1]
     with open(out_csv, "w") as out:
         out.write("# CalculiX 2-D plane stress, steel d1 = 20 mm, d2 = 30 mm; "

@@ -1,17 +1,18 @@
-"""3-D CalculiX cases: a bent shaft in a straight bore (tools/fem/fem.py runs them;
+"""3-D CalculiX cases: bent and lobed shafts in a straight bore (tools/fem/fem.py runs them;
 docs/contact-mechanics.md says what each checks).
 
 The paper's pair, a solid steel shaft d1 = 20 mm flush in a hub d2 = 30 mm, both L = 20 mm long,
 with the shaft's rim drawn at radius a + delta(theta, z) over a bore of radius a:
 
-    delta(theta, z) = delta0 + h (2 z / L)^2 cos theta,   -L/2 <= z <= L/2,
+    delta(theta, z) = delta0 + h (2 z / L)^2 cos(n theta),   -L/2 <= z <= L/2,
 
-a uniform interference delta0 on a shaft whose axis is bent in a parabola of sagitta h (ends h
-off the middle). Where contact is partial, the sections carry net radial loads that change sign
-along the axis and balance only over the length: how the parts carry them (each section's order-1
-compliance in the model, beam and shear deformation over the length in 3-D) is what these cases
-check. The loads are self-equilibrated, so the answer does not depend on how the parts are held:
-each is held only against rigid motion, the shaft floats radially.
+a uniform interference delta0 and, for n = 1, a shaft whose axis is bent in a parabola of
+sagitta h (ends h off the middle), for n >= 2 lobes growing from the middle to the ends. Where
+contact is partial, the sections carry loads that change along the axis: for n = 1 net radial
+loads that balance only over the length. How the parts carry them (in the model, each section on
+its own but for the breathing mode; in 3-D, the parts' deformation along the axis) is what these
+cases check. The loads are self-equilibrated, so the answer does not depend on how the parts are
+held: each is held only against rigid motion, the shaft floats radially.
 
 A quarter is meshed (0 <= theta <= pi, 0 <= z <= L/2: the field is symmetric about the planes y = 0
 and z = 0, which become symmetry planes), in quadratic hexahedra (C3D20R; the shaft's core in
@@ -181,14 +182,15 @@ def hoop_integral(dat, grid, cells):
     return 4.0 * total  # the four quarters
 
 
-# (case, delta0 um, sagitta h um): the uniform press fit (the axisymmetric cylinder-flush case in
-# 3-D), a bent shaft in full contact (its normal force is the uniform one's: the bend's order-1
-# load adds nothing to the mean), in partial contact, and on a clearance.
+# (case, order n, delta0 um, h um) of delta0 + h (2 z / L)^2 cos(n theta): the uniform press fit
+# (the axisymmetric cylinder-flush case in 3-D); a bent shaft (n = 1, h the sagitta) in full
+# contact (its normal force is the uniform one's: the bend's order-1 load adds nothing to the
+# mean), in partial contact, and on a clearance.
 CASES = [
-    ("uniform-flush", 5.0, 0.0),
-    ("bent-full", 5.0, 2.0),
-    ("bent-partial", 1.0, 4.0),
-    ("bent-clearance", -1.0, 6.0),
+    ("uniform-flush", 1, 5.0, 0.0),
+    ("bent-full", 1, 5.0, 2.0),
+    ("bent-partial", 1, 1.0, 4.0),
+    ("bent-clearance", 1, -1.0, 6.0),
 ]
 
 MESH = dict(columns=36, shaft_rings=8, hub_rings=5, axial=10)
@@ -196,22 +198,23 @@ MESH = dict(columns=36, shaft_rings=8, hub_rings=5, axial=10)
 
 def solid(out_csv, run_ccx, only=()):
     rows = []
-    for name, d0, h in CASES:
+    for name, n, d0, h in CASES:
         if only and name not in only:
             continue
-        delta = lambda t, z, d0=d0, h=h: 1e-3 * (d0 + h * (2.0 * z / LENGTH) ** 2 * math.cos(t))
+        delta = lambda t, z, n=n, d0=d0, h=h: 1e-3 * (d0 + h * (2.0 * z / LENGTH) ** 2 *
+                                                       math.cos(n * t))
         text, hub, cells = deck(delta, **MESH)
         with tempfile.TemporaryDirectory() as work:
             dat = run_ccx(text, work, "solid")
         force = hoop_integral(dat, hub, cells)
-        rows.append((name, d0, h, force))
+        rows.append((name, n, d0, h, force))
         print(name, force, flush=True)
     with open(out_csv, "w") as out:
         out.write("# CalculiX 3-D (C3D20R, quarter model), steel shaft d1 = 20 mm flush in a hub "
-                  "d2 = 30 mm, L = 20 mm, rim interference delta0 + h (2z/L)^2 cos theta, "
+                  "d2 = 30 mm, L = 20 mm, rim interference delta0 + h (2z/L)^2 cos(n theta), "
                   "frictionless; normal force from the hub's hoop stress; regenerate: "
                   "/usr/bin/python3 tools/fem/fem.py solid <this file>\n")
-        out.write("case,delta0_um,sagitta_um,normal_force_N\n")
+        out.write("case,order,delta0_um,amplitude_um,normal_force_N\n")
         for r in rows:
             out.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in r) + "\n")
     return rows

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -37,7 +37,8 @@ TEST(HarmonicCompliance, MichellStiffnessPerHarmonic) {
 
 TEST(HarmonicCompliance, AgreesWithCalculixWithinTwoPercent) {
   // tools/fem/data/harmonic.csv: CalculiX, quadratic plane-stress elements, pressure cos(n theta)
-  // on the shaft's rim and the hub's bore.
+  // on the shaft's rim and the hub's bore (order 1 balanced by a uniform body force in each, its
+  // faces' motion taken relative to each body's centroid).
   std::ifstream in(std::string(FITFEEL_TEST_SOURCE_DIR) + "/tools/fem/data/harmonic.csv");
   ASSERT_TRUE(in) << "tools/fem/data/harmonic.csv";
   const PressFitSection s = SteelPair();
@@ -58,7 +59,7 @@ TEST(HarmonicCompliance, AgreesWithCalculixWithinTwoPercent) {
     EXPECT_NEAR(fem / michell, 1.0, 0.02) << "n = " << n;
     ++checked;
   }
-  EXPECT_EQ(checked, 5);
+  EXPECT_EQ(checked, 6);  // n = 0, 1, 2, 3, 5, 10
 }
 
 TEST(HarmonicCompliance, HighOrdersTendToTwoHalfSpaces) {
@@ -84,8 +85,28 @@ TEST(HarmonicCompliance, StifferWithThickerHubAndSofterWithHollowShaft) {
   EXPECT_GT(HarmonicCompliance(s, 2), base);
 }
 
-TEST(HarmonicCompliance, RefusesOrderOneAndBadSections) {
-  EXPECT_THROW(HarmonicCompliance(SteelPair(), 1), UserError);
+// Order 1 of a solid disc under p cos(theta) on its rim, balanced by a uniform body force p / a:
+// the stress sigma_xx = sigma_yy = -p x / a (no shear) meets equilibrium and the rim's traction,
+// so u_x = -(1 - nu) p (x^2 - y^2) / (2 E a), u_y = -(1 - nu) p x y / (E a): the rim moves
+// (1 - nu) p a / (2E) cos(theta) towards the centre, whose area-mean motion is nil. With a hub a
+// million times stiffer the closure is the shaft's alone (to 3e-6).
+TEST(HarmonicCompliance, OrderOneOfASolidShaftIsHalfItsBreathing) {
+  PressFitSection s = SteelPair();
+  s.hub.youngs_modulus *= 1e6;
+  const double a = 0.01, nu = 0.3, e = 210e9;
+  EXPECT_NEAR(HarmonicCompliance(s, 1) / ((1.0 - nu) * a / (2.0 * e)), 1.0, 1e-5);
+  // The plane-strain constants go through the same formula.
+  s.plane_strain = true;
+  const double e_strain = e / (1.0 - nu * nu), nu_strain = nu / (1.0 - nu);
+  EXPECT_NEAR(HarmonicCompliance(s, 1) / ((1.0 - nu_strain) * a / (2.0 * e_strain)), 1.0, 1e-5);
+  // A hollow shaft is softer.
+  PressFitSection hollow = SteelPair();
+  hollow.di = 0.010;
+  EXPECT_GT(HarmonicCompliance(hollow, 1), HarmonicCompliance(SteelPair(), 1));
+}
+
+TEST(HarmonicCompliance, RefusesNegativeOrdersAndBadSections) {
+  EXPECT_THROW(HarmonicCompliance(SteelPair(), -1), UserError);
   PressFitSection s = SteelPair();
   s.d2 = 0.019;
   EXPECT_THROW(HarmonicCompliance(s, 2), UserError);
