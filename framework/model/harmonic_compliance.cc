@@ -112,21 +112,22 @@ double OrderOneDisplacement(double a0, double a1, bool load_outer, const Elastic
     Eigen::Vector3d c;
     double b;
   };
+  const double g = l / mu;
+  // kx x + ky y, row by row.
+  auto add = [](const Row& x, double kx, const Row& y, double ky) {
+    return Row{kx * x.c + ky * y.c, kx * x.b + ky * y.b};
+  };
   auto fields = [&](double r, Row* u, Row* srr, Row* srt) {
-    const double g = l / mu;
     const Row d{{r, 1.0 / r, 0.0}, 0.0};
     const Row w{{0.5 * g * r, -0.5 * g / r, 0.0}, -r / (2.0 * mu)};
     const Row sv{{(1.0 + g) * r * r / 4.0, (1.0 - g) / 2.0, 1.0 / (r * r)}, -r * r / (4.0 * mu)};
     const Row t{{(1.0 - g) * r * r / 2.0, (1.0 + g) * std::log(r / a1), 0.0}, r * r / (2.0 * mu)};
-    auto combine = [](const Row& x, double kx, const Row& y, double ky, const Row& z, double kz) {
-      return Row{kx * x.c + ky * y.c + kz * z.c, kx * x.b + ky * y.b + kz * z.b};
-    };
-    const Row sp = combine(d, 1.0, w, 2.0, sv, -2.0 / r);  // S'
-    const Row tp = combine(d, 1.0, w, -2.0, sv, 0.0);      // T'
-    if (u != nullptr) *u = combine(sv, 0.5, t, 0.5, t, 0.0);
+    const Row sp = add(add(d, 1.0, w, 2.0), 1.0, sv, -2.0 / r);  // S'
+    const Row tp = add(d, 1.0, w, -2.0);                         // T'
+    if (u != nullptr) *u = add(sv, 0.5, t, 0.5);
     // U' = (S' + T') / 2, V' = (S' - T') / 2.
-    *srr = combine(sp, 0.5 * l, tp, 0.5 * l, sv, l * m.nu / r);
-    *srt = combine(sp, 0.5 * mu, tp, -0.5 * mu, sv, -mu / r);
+    *srr = add(add(sp, 0.5 * l, tp, 0.5 * l), 1.0, sv, l * m.nu / r);
+    *srt = add(add(sp, 0.5 * mu, tp, -0.5 * mu), 1.0, sv, -mu / r);
   };
   // Traction conditions: sigma_rr = -1 and sigma_rtheta = 0 on the loaded face, both zero on a
   // free one; equilibrium makes one of them redundant (least squares solves them exactly).
@@ -154,7 +155,6 @@ double OrderOneDisplacement(double a0, double a1, bool load_outer, const Elastic
   fields(loaded, &u, &srr, &srt);
   const double face = u.c.dot(coef) + u.b * beta;
   // Area-mean of T / 2: integral of T r dr over the section's (a1^2 - a0^2) / 2.
-  const double g = l / mu;
   auto t_moment = [&](double r) {  // integral of T r dr from 0 (the log term: r^2 ln / 2 - r^2 / 4)
     const double log_part = r == 0.0 ? 0.0 : r * r / 2.0 * std::log(r / a1) - r * r / 4.0;
     return coef[0] * (1.0 - g) * std::pow(r, 4) / 8.0 + coef[1] * (1.0 + g) * log_part +
