@@ -49,8 +49,9 @@ class PolarGrid:
 
     def __init__(self, radii, angles, zs, first_node):
         self.radii, self.angles, self.zs = radii, angles, zs
-        half = lambda v: np.concatenate([np.ravel(np.column_stack([v[:-1], 0.5 * (v[:-1] + v[1:])])),
-                                         v[-1:]])
+        def half(v):  # corner stations with their midpoints between
+            return np.concatenate([np.ravel(np.column_stack([v[:-1], 0.5 * (v[:-1] + v[1:])])),
+                                   v[-1:]])
         rr, tt, zz = half(radii), half(angles), half(zs)
         self.ids = {}
         self.nodes = []  # (id, x, y, z)
@@ -86,23 +87,22 @@ class PolarGrid:
                     i0, im, i1 = 2 * i, 2 * i + 1, 2 * i + 2
                     j0, jm, j1 = 2 * j, 2 * j + 1, 2 * j + 2
                     k0, km, k1 = 2 * k, 2 * k + 1, 2 * k + 2
+                    # The cross-section's corners and midside nodes (a wedge at the axis), then
+                    # ccx's order: corners below and above, midsides below and above, the
+                    # corners' edges along z.
                     if self.radii[i] == 0.0:
-                        tri = [(i0, j0), (i1, j0), (i1, j1)]
+                        etype = "C3D15"
+                        corners = [(i0, j0), (i1, j0), (i1, j1)]
                         mids = [(im, j0), (i1, jm), (im, j1)]
-                        conn = ([g[(a, b, k0)] for a, b in tri] + [g[(a, b, k1)] for a, b in tri] +
-                                [g[(a, b, k0)] for a, b in mids] +
-                                [g[(a, b, k1)] for a, b in mids] +
-                                [g[(a, b, km)] for a, b in tri])
-                        out.append((eid, "C3D15", conn, (i, j, k)))
                     else:
-                        quad = [(i0, j0), (i1, j0), (i1, j1), (i0, j1)]
+                        etype = "C3D20R"
+                        corners = [(i0, j0), (i1, j0), (i1, j1), (i0, j1)]
                         mids = [(im, j0), (i1, jm), (im, j1), (i0, jm)]
-                        conn = ([g[(a, b, k0)] for a, b in quad] +
-                                [g[(a, b, k1)] for a, b in quad] +
-                                [g[(a, b, k0)] for a, b in mids] +
-                                [g[(a, b, k1)] for a, b in mids] +
-                                [g[(a, b, km)] for a, b in quad])
-                        out.append((eid, "C3D20R", conn, (i, j, k)))
+                    conn = [g[(a, b, kz)] for points, kz in ((corners, k0), (corners, k1),
+                                                             (mids, k0), (mids, k1),
+                                                             (corners, km))
+                            for a, b in points]
+                    out.append((eid, etype, conn, (i, j, k)))
                     eid += 1
         return out
 
