@@ -469,6 +469,24 @@ TEST(ElasticLaw, AgreesWithCalculixOnABentShaftInPartialContactAllAlong) {
   }
 }
 
+// Not yet within reach: an oval shaft whose ovality grows from nothing in the middle to 8 um at
+// the ends, on 0.5 um of interference (round and in full contact in the middle, touching at two
+// bands at the ends). Each model section ovalizes on its own, at K_2 = 0.145 P0; in 3-D the
+// tube that is round in the middle resists ovalizing at its ends, bending along its axis, so the
+// model is about half the FEM's force (-53 %; the paper law's per-cell P0 happens to land at
+// +4 %). The shipped parts' lobing changes from section to section (the generator draws it
+// at sampling rows), so this reaches the shipped scenarios' forces.
+TEST(ElasticLaw, AgreesWithCalculixOnAnOvalityThatGrowsAlongTheAxis) {
+  const double error = SolidCaseError("oval-ends-partial");
+  if (std::abs(error) >= 0.10) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%+.1f %%", 100 * error);
+    GTEST_SKIP() << "open (issue 9): the elastic model is " << percent
+                 << " off CalculiX on an ovality growing along the axis; its sections ovalize on "
+                    "their own, with no coupling along the axis for orders n >= 1";
+  }
+}
+
 // The shaft (20 mm long, the rest of it outside the entrance) part way in: the hub's unloaded
 // length and the shaft's length still outside stiffen the loaded band. Plane sections give 10 to
 // 78 % too little; with both parts' axial coupling (axial_breathing.h) the model is within
