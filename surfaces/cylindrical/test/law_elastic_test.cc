@@ -453,20 +453,28 @@ TEST(ElasticLaw, AgreesWithCalculixOnABentShaft) {
   }
 }
 
+// A 3-D case the model does not meet yet: skipped saying by how much and why (`what`), until the
+// model is within the issue's 10 % (then it passes).
+void ExpectWithinTenPercentOrSkip(const char* name, const char* what) {
+  const double error = SolidCaseError(name);
+  if (std::abs(error) >= 0.10) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%+.1f %%", 100 * error);
+    GTEST_SKIP() << "open (issue 9): the elastic model is " << percent << " off CalculiX on "
+                 << what;
+  }
+}
+
 // Not yet within reach: the bent shaft in partial contact all along its length. The model's
 // parts are rigid along their axes (each section deforms about its own centroid, order 1
 // included), while the FEM's shaft and hub also bend and shear along the axis under the bend's
 // loads, which change sign along it: the model is too stiff here (+13 %; with order 1 at the
 // breathing mode's compliance it was -6.4 %, but -35 % on the clearance above).
 TEST(ElasticLaw, AgreesWithCalculixOnABentShaftInPartialContactAllAlong) {
-  const double error = SolidCaseError("bent-partial");
-  if (std::abs(error) >= 0.10) {
-    char percent[32];
-    std::snprintf(percent, sizeof percent, "%+.1f %%", 100 * error);
-    GTEST_SKIP() << "open (issue 9): the elastic model is " << percent
-                 << " off CalculiX on a bent shaft in partial contact all along; its parts are "
-                    "rigid along their axes, and the FEM's bend and shear under the bend's loads";
-  }
+  ExpectWithinTenPercentOrSkip("bent-partial",
+                               "a bent shaft in partial contact all along; its parts are rigid "
+                               "along their axes, where the FEM's bend and shear under the "
+                               "bend's loads");
 }
 
 // Not yet within reach: an oval shaft whose ovality grows from nothing in the middle to 8 um at
@@ -477,14 +485,9 @@ TEST(ElasticLaw, AgreesWithCalculixOnABentShaftInPartialContactAllAlong) {
 // +4 %). The shipped parts' lobing changes from section to section (the generator draws it
 // at sampling rows), so this reaches the shipped scenarios' forces.
 TEST(ElasticLaw, AgreesWithCalculixOnAnOvalityThatGrowsAlongTheAxis) {
-  const double error = SolidCaseError("oval-ends-partial");
-  if (std::abs(error) >= 0.10) {
-    char percent[32];
-    std::snprintf(percent, sizeof percent, "%+.1f %%", 100 * error);
-    GTEST_SKIP() << "open (issue 9): the elastic model is " << percent
-                 << " off CalculiX on an ovality growing along the axis; its sections ovalize on "
-                    "their own, with no coupling along the axis for orders n >= 1";
-  }
+  ExpectWithinTenPercentOrSkip("oval-ends-partial",
+                               "an ovality growing along the axis; its sections ovalize on their "
+                               "own, with no coupling along the axis for orders n >= 1");
 }
 
 // The shaft (20 mm long, the rest of it outside the entrance) part way in: the hub's unloaded
