@@ -1,5 +1,5 @@
 # Error of the normal force against CalculiX, per FEM case, for the paper's per-cell (Winkler)
-# law and the elastic model. Data: fem-accuracy.csv (2-D sections, 3-D bent and oval shafts) and
+# law and the elastic model. Data: fem-accuracy.csv (2-D sections, 3-D bent and lobed shafts) and
 # fem-axisymmetric.csv (finite hubs), written by the FEM agreement tests (regenerate.sh). Run from
 # docs/figures:
 # gnuplot fem-accuracy.gp
@@ -17,7 +17,7 @@ set xtics rotate by -35 noenhanced
 set grid ytics
 set yrange [-100:*]
 set key top right
-set title "2-D plane stress sections (lobes, bumps, partial contact) and 3-D bent and oval shafts, flush in the hub"
+set title "2-D plane stress sections (lobes, bumps, partial contact) and 3-D bent and lobed shafts, flush in the hub"
 plot "fem-accuracy.csv" using ($6*100):xtic(1) title "paper law (per-cell Lame, eqs. 10-11)" lc rgb "#c0504d", \
      "" using ($4*100) title "elastic model (harmonic compliance, non-negative pressure)" lc rgb "#4f81bd"
 set title "Axisymmetric finite hubs, 5 um uniform: flush, through, the shaft part way in"

@@ -185,15 +185,16 @@ def hoop_integral(dat, grid, cells):
 # (case, order n, delta0 um, h um) of delta0 + h (2 z / L)^2 cos(n theta): the uniform press fit
 # (the axisymmetric cylinder-flush case in 3-D); a bent shaft (n = 1, h the sagitta) in full
 # contact (its normal force is the uniform one's: the bend's order-1 load adds nothing to the
-# mean), in partial contact, and on a clearance; an oval shaft (n = 2) whose ovality grows from
-# the middle to the ends, round and in full contact in the middle, touching in two bands at the
-# ends (full contact there would need delta0 >= (K_2 / K_0) h = 1.16 um).
+# mean), in partial contact, and on a clearance; an oval (n = 2) and a three-lobed (n = 3) shaft
+# whose lobes grow from the middle to the ends, round and in full contact in the middle, touching
+# in bands at the ends (full contact there would need delta0 >= (K_n / K_0) h = 1.16 and 3.1 um).
 CASES = [
     ("uniform-flush", 1, 5.0, 0.0),
     ("bent-full", 1, 5.0, 2.0),
     ("bent-partial", 1, 1.0, 4.0),
     ("bent-clearance", 1, -1.0, 6.0),
     ("oval-ends-partial", 2, 0.5, 8.0),
+    ("lobed3-ends-partial", 3, 1.0, 4.0),
 ]
 
 MESH = dict(columns=36, shaft_rings=8, hub_rings=5, axial=10)
