@@ -10,8 +10,9 @@ tests compare the model against (docs/contact-mechanics.md says what each case c
                                                         contact from overlapping geometry)
   /usr/bin/python3 tools/fem/fem.py axisymmetric OUT.csv  finite hubs, a taper pin, a ball in its ring
                                                         (tools/fem/axisymmetric.py)
-  /usr/bin/python3 tools/fem/fem.py solid OUT.csv       a bent shaft in 3-D (tools/fem/solid.py;
-                                                        about ten minutes a case)
+  /usr/bin/python3 tools/fem/fem.py solid OUT.csv       bent and lobed shafts in 3-D
+                                                        (tools/fem/solid.py; 1 to 40 minutes a
+                                                        case)
   /usr/bin/python3 tools/fem/fem.py all DIR             all four, into DIR/harmonic.csv,
                                                         DIR/contact.csv, DIR/axisymmetric.csv,
                                                         DIR/solid.csv
@@ -193,21 +194,18 @@ def radial_harmonic(disp, ring, n):
 def mean_displacement(mesh, disp):
     """Area-weighted mean displacement (x, y) of a mesh: each element's area (the polygon of its
     corner and midside nodes, which lie on the polar grid's arcs) times the mean of its nodes'."""
+    coords = {nid: (x, y) for nid, x, y in mesh.nodes}
     total, area = np.zeros(2), 0.0
-    for elements, order in ((mesh.quads, [0, 4, 1, 5, 2, 6, 3, 7]), (mesh.tris, [0, 3, 1, 4, 2, 5])):
+    # Boundary order of the nodes: corners and midsides alternating (CPS8, CPS6).
+    for elements, order in ((mesh.quads, [0, 4, 1, 5, 2, 6, 3, 7]),
+                            (mesh.tris, [0, 3, 1, 4, 2, 5])):
         for _, conn in elements:
-            xy = np.array([mesh_coords(mesh)[conn[i]] for i in order])
+            xy = np.array([coords[conn[i]] for i in order])
             a = 0.5 * abs(np.dot(xy[:, 0], np.roll(xy[:, 1], -1)) -
                           np.dot(xy[:, 1], np.roll(xy[:, 0], -1)))
             total += a * np.mean([disp[n][:2] for n in conn], axis=0)
             area += a
     return total / area
-
-
-def mesh_coords(mesh):
-    if not hasattr(mesh, "coords"):
-        mesh.coords = {nid: (x, y) for nid, x, y in mesh.nodes}
-    return mesh.coords
 
 
 def harmonic(out_csv, orders=(0, 1, 2, 3, 5, 10)):
