@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "framework/core/error.h"
@@ -347,31 +348,46 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
 // pair (shaft 20 mm in a hub 20 mm long, outer diameter 30 mm, steel) with a uniform radial
 // interference of 5 um, no texture, frictionless; the normal force B of each case.
 
-// The elastic model's normal force with the shaft `shaft_length` long at `depth`, in a hub of
-// outer diameter `hub_diameter`, the shaft's rim drawn at `shaft_v` (row, column of 72) over a
-// true bore, no texture; at the tabulated anchor.
+// The paper's pair with the shaft `shaft_length` long in a hub of outer diameter `hub_diameter`,
+// the shaft's rim drawn at `shaft_v` (row, column of 72) over a true bore, no texture, the
+// analyzer prepared with `settings` and `options`.
+struct FieldPair {
+  PartSpec shaft, bushing;
+  ModelSettings settings;
+  CylinderContactAnalyzer analyzer;
+  FieldPair(const std::function<double(int, int)>& shaft_v, double shaft_length, ModelSettings base,
+            const std::string& options, double hub_diameter = 0.030, double shaft_row = 0.5e-3)
+      : shaft(MakeShaft(0.020, shaft_length)),
+        bushing(MakeBushing(0.020, 0.020, hub_diameter)),
+        settings(std::move(base)) {
+    settings.extra = ConfigNode::Parse(options, "test", "model.options");
+    const int rows = static_cast<int>(std::lround(shaft_length / shaft_row));
+    analyzer.Prepare(shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), shaft_v), bushing,
+                     MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }),
+                     settings);
+    EXPECT_EQ(analyzer.smoothing(), 0.0);
+  }
+};
+
+// The elastic model's normal force of that pair at `depth`, at the tabulated anchor.
 double NormalForce(const std::function<double(int, int)>& shaft_v, double shaft_length,
                    double depth, const std::string& options, double hub_diameter = 0.030,
-                   double shaft_row = 0.5e-3, bool paper_law = false) {
-  const PartSpec shaft = MakeShaft(0.020, shaft_length);
-  const PartSpec bushing = MakeBushing(0.020, 0.020, hub_diameter);
-  ModelSettings settings =
-      paper_law ? Settings(0.15, 0.0, TextureMode::kSampled) : Elastic(TextureMode::kSampled);
-  settings.extra = ConfigNode::Parse(options, "test", "model.options");
-  CylinderContactAnalyzer analyzer;
-  const int rows = static_cast<int>(std::lround(shaft_length / shaft_row));
-  analyzer.Prepare(shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), shaft_v), bushing,
-                   MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }), settings);
-  EXPECT_EQ(analyzer.smoothing(), 0.0);
-  if (paper_law) {  // eq. 9's pressure per unit interference over the interference volume
-    GpsLaw law;
-    law.Prepare(shaft, bushing, settings);
-    return law.pressure_per_interference() *
-           OutcomeAt(analyzer, law, depth, AnchorNear(analyzer, depth)).state.interference_volume;
-  }
+                   double shaft_row = 0.5e-3) {
+  FieldPair p(shaft_v, shaft_length, Elastic(TextureMode::kSampled), options, hub_diameter,
+              shaft_row);
   ElasticLaw law;
-  law.Prepare(shaft, bushing, settings);
-  return OutcomeAt(analyzer, law, depth, AnchorNear(analyzer, depth)).state.normal_force;
+  law.Prepare(p.shaft, p.bushing, p.settings);
+  return OutcomeAt(p.analyzer, law, depth, AnchorNear(p.analyzer, depth)).state.normal_force;
+}
+
+// The paper law's: eq. 9's pressure per unit interference times the interference volume.
+double PaperLawNormalForce(const std::function<double(int, int)>& shaft_v, double shaft_length,
+                           double depth) {
+  FieldPair p(shaft_v, shaft_length, Settings(0.15, 0.0, TextureMode::kSampled), "{}");
+  GpsLaw law;
+  law.Prepare(p.shaft, p.bushing, p.settings);
+  return law.pressure_per_interference() *
+         OutcomeAt(p.analyzer, law, depth, AnchorNear(p.analyzer, depth)).state.interference_volume;
 }
 
 // The same with a uniform radial interference of 5 um.
@@ -432,7 +448,7 @@ double SolidCaseError(const char* name) {
     return d0 + h * std::pow(2.0 * z / 0.020, 2) * std::cos(n * 2 * kPi * j / 72);
   };
   const double model = NormalForce(shaft, 0.020, 0.020, "{}");
-  const double paper = NormalForce(shaft, 0.020, 0.020, "{}", 0.030, 0.5e-3, true);
+  const double paper = PaperLawNormalForce(shaft, 0.020, 0.020);
   std::printf("%-20s FEM %8.1f N  elastic model %8.1f N %+6.2f %%  paper law %8.1f N %+6.2f %%\n",
               name, fem, model, 100 * (model / fem - 1), paper, 100 * (paper / fem - 1));
   // Per mm of the 20 mm engagement, as the sections' rows of the same chart.
