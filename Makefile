@@ -13,7 +13,7 @@
 #   make campaign  the generated-input campaign over scenarios, recordings and command lines
 #               (tools/campaign/run.py; CAMPAIGN_CASES, default 10000)
 #   make fem-check  rerun the CalculiX reference of the elastic contact model (tools/fem) and
-#               compare it with the committed data the tests use (about 45 minutes, most of
+#               compare it with the committed data the tests use (about 90 minutes, most of
 #               it the 3-D cases; needs no build)
 
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \
@@ -83,6 +83,7 @@ fem-check: fem-deps
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/axisymmetric.csv" \
 	  tools/fem/data/axisymmetric.csv && \
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/solid.csv" tools/fem/data/solid.csv && \
+	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/bearing.csv" tools/fem/data/bearing.csv && \
 	echo "fem-check: CalculiX reproduces tools/fem/data within 0.5 %"
 
 # Not part of `make test`: a sanitized build of everything takes about as long again as the

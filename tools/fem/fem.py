@@ -13,9 +13,11 @@ tests compare the model against (docs/contact-mechanics.md says what each case c
   /usr/bin/python3 tools/fem/fem.py solid OUT.csv       bent and lobed shafts in 3-D
                                                         (tools/fem/solid.py; 1 to 40 minutes a
                                                         case)
-  /usr/bin/python3 tools/fem/fem.py all DIR             all four, into DIR/harmonic.csv,
+  /usr/bin/python3 tools/fem/fem.py bearing OUT.csv     a loaded plain bearing in 3-D
+                                                        (tools/fem/solid.py; minutes a case)
+  /usr/bin/python3 tools/fem/fem.py all DIR             all five, into DIR/harmonic.csv,
                                                         DIR/contact.csv, DIR/axisymmetric.csv,
-                                                        DIR/solid.csv
+                                                        DIR/solid.csv, DIR/bearing.csv
   /usr/bin/python3 tools/fem/fem.py compare NEW OLD      every number of two such CSV files
                                                         within 0.5 % (of 1e-3 for smaller ones;
                                                         exit 1 otherwise)
@@ -427,7 +429,7 @@ if __name__ == "__main__":
     if sys.argv[1:2] == ["compare"] and len(sys.argv) == 4:
         sys.exit(0 if compare(sys.argv[2], sys.argv[3]) else 1)
     if len(sys.argv) < 3 or sys.argv[1] not in ("harmonic", "contact", "axisymmetric", "solid",
-                                                "all"):
+                                                "bearing", "all"):
         sys.stderr.write(__doc__)
         sys.exit(2)
     if sys.argv[1] == "contact":
@@ -436,11 +438,14 @@ if __name__ == "__main__":
         axi.axisymmetric(sys.argv[2], run_ccx, sys.argv[3:])
     if sys.argv[1] == "solid":  # optional case names after the file: only those
         solid.solid(sys.argv[2], run_ccx, sys.argv[3:])
+    if sys.argv[1] == "bearing":  # optional case names after the file: only those
+        solid.bearing(sys.argv[2], run_ccx, sys.argv[3:])
     if sys.argv[1] == "all":
         harmonic(os.path.join(sys.argv[2], "harmonic.csv"))
         contact(os.path.join(sys.argv[2], "contact.csv"))
         axi.axisymmetric(os.path.join(sys.argv[2], "axisymmetric.csv"), run_ccx)
         solid.solid(os.path.join(sys.argv[2], "solid.csv"), run_ccx)
+        solid.bearing(os.path.join(sys.argv[2], "bearing.csv"), run_ccx)
     if sys.argv[1] == "harmonic":
         for n, k in harmonic(sys.argv[2]):
             print(n, k)

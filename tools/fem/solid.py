@@ -1,5 +1,6 @@
-"""3-D CalculiX cases: bent and lobed shafts in a straight bore (tools/fem/fem.py runs them;
-docs/contact-mechanics.md says what each checks).
+"""3-D CalculiX cases: bent and lobed shafts in a straight bore, and a spherical plain bearing
+loaded across its clearance (tools/fem/fem.py runs them; docs/contact-mechanics.md and
+docs/friction.md say what each checks).
 
 The paper's pair, a solid steel shaft d1 = 20 mm flush in a hub d2 = 30 mm, both L = 20 mm long,
 with the shaft's rim drawn at radius a + delta(theta, z) over a bore of radius a:
@@ -45,10 +46,12 @@ LENGTH = 20.0  # hub and shaft, mm
 
 class PolarGrid:
     """Quadratic serendipity nodes of r in radii, theta in angles, z in zs (corner stations), in a
-    polar cell grid; a grid starting at r = 0 has one node per axial station on the axis."""
+    polar cell grid; a grid starting at r = 0 has one node per axial station on the axis. With a
+    `profile`, radii are parameters t in [0, 1] and a node lies at r = profile(t, z) (a ring
+    between two surfaces of revolution)."""
 
-    def __init__(self, radii, angles, zs, first_node):
-        self.radii, self.angles, self.zs = radii, angles, zs
+    def __init__(self, radii, angles, zs, first_node, profile=None):
+        self.radii, self.angles, self.zs, self.profile = radii, angles, zs, profile
         def half(v):  # corner stations with their midpoints between
             return np.concatenate([np.ravel(np.column_stack([v[:-1], 0.5 * (v[:-1] + v[1:])])),
                                    v[-1:]])
@@ -62,7 +65,7 @@ class PolarGrid:
                 for k, z in enumerate(zz):
                     if (i % 2) + (j % 2) + (k % 2) > 1:
                         continue  # serendipity: edge midpoints only
-                    if r == 0.0:
+                    if profile is None and r == 0.0:
                         if j % 2 == 1:
                             continue  # collapsed edge
                         if k not in axis:
@@ -71,8 +74,9 @@ class PolarGrid:
                             nid += 1
                         self.ids[(i, j, k)] = axis[k]
                         continue
+                    radius = r if profile is None else profile(r, z)
                     self.ids[(i, j, k)] = nid
-                    self.nodes.append((nid, r * math.cos(t), r * math.sin(t), z))
+                    self.nodes.append((nid, radius * math.cos(t), radius * math.sin(t), z))
                     nid += 1
         self.next_node = nid
 
@@ -90,7 +94,7 @@ class PolarGrid:
                     # The cross-section's corners and midside nodes (a wedge at the axis), then
                     # ccx's order: corners below and above, midsides below and above, the
                     # corners' edges along z.
-                    if self.radii[i] == 0.0:
+                    if self.profile is None and self.radii[i] == 0.0:
                         etype = "C3D15"
                         corners = [(i0, j0), (i1, j0), (i1, j1)]
                         mids = [(im, j0), (i1, jm), (im, j1)]
@@ -116,19 +120,21 @@ def meshes(columns, shaft_rings, hub_rings, axial):
     return shaft, hub
 
 
-def deck(delta, columns, shaft_rings, hub_rings, axial):
-    shaft, hub = meshes(columns, shaft_rings, hub_rings, axial)
-    shaft_cells = shaft.cells(1)
-    hub_cells = hub.cells(len(shaft_cells) + 1)
+def pair_deck(inner, outer, inner_radius=lambda x, y, z: 1.0):
+    """The deck's model part for two grids in frictionless contact (the inner grid's outer face
+    the slave surface, the outer grid's inner face the master), with the symmetry planes y = 0
+    and z = 0: nodes (the inner grid's scaled radially by inner_radius(x, y, z)), elements,
+    material, contact, and a *BOUNDARY block left open for the caller's holds. Returns the text
+    and both grids' cells."""
+    inner_cells = inner.cells(1)
+    outer_cells = outer.cells(len(inner_cells) + 1)
     f = io.StringIO()
     f.write("*HEADING\nfitfeel 3-D case\n*NODE\n")
-    for nid, x, y, z in shaft.nodes:
-        r, t = math.hypot(x, y), math.atan2(y, x)
-        k = 1.0 + delta(t, z) / A if r > 0.0 else 1.0  # the section scaled radially: rim exact
-        f.write(f"{nid}, {x * k:.15g}, {y * k:.15g}, {z:.15g}\n")
-    for nid, x, y, z in hub.nodes:
-        f.write(f"{nid}, {x:.15g}, {y:.15g}, {z:.15g}\n")
-    for name, cells in (("SHAFT", shaft_cells), ("HUB", hub_cells)):
+    for grid, scale in ((inner, inner_radius), (outer, lambda x, y, z: 1.0)):
+        for nid, x, y, z in grid.nodes:
+            k = scale(x, y, z)
+            f.write(f"{nid}, {x * k:.15g}, {y * k:.15g}, {z:.15g}\n")
+    for name, cells in (("INNER", inner_cells), ("OUTER", outer_cells)):
         for etype in ("C3D15", "C3D20R"):
             group = [c for c in cells if c[1] == etype]
             if not group:
@@ -140,28 +146,37 @@ def deck(delta, columns, shaft_rings, hub_rings, axial):
                 tail = ", ".join(str(v) for v in conn[15:])
                 f.write(f"{eid}, {head}" + (f",\n{tail}\n" if tail else "\n"))
     f.write("*MATERIAL, NAME=STEEL\n*ELASTIC\n" + f"{E}, {NU}\n")
-    f.write("*SOLID SECTION, ELSET=SHAFT, MATERIAL=STEEL\n*SOLID SECTION, ELSET=HUB, "
+    f.write("*SOLID SECTION, ELSET=INNER, MATERIAL=STEEL\n*SOLID SECTION, ELSET=OUTER, "
             "MATERIAL=STEEL\n")
-    rim = len(shaft.radii) - 2
-    f.write("*SURFACE, NAME=SRIM, TYPE=ELEMENT\n")
-    f.write("".join(f"{c[0]}, S4\n" for c in shaft_cells if c[3][0] == rim))
-    f.write("*SURFACE, NAME=SBORE, TYPE=ELEMENT\n")
-    f.write("".join(f"{c[0]}, S6\n" for c in hub_cells if c[3][0] == 0))
+    face = len(inner.radii) - 2
+    f.write("*SURFACE, NAME=SINNER, TYPE=ELEMENT\n")
+    f.write("".join(f"{c[0]}, S4\n" for c in inner_cells if c[3][0] == face))
+    f.write("*SURFACE, NAME=SOUTER, TYPE=ELEMENT\n")
+    f.write("".join(f"{c[0]}, S6\n" for c in outer_cells if c[3][0] == 0))
     f.write(f"*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
             f"{PENALTY:g}, 3.\n")
-    f.write("*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSRIM, SBORE\n")
-    # Symmetry planes y = 0 (theta = 0 and pi) and z = 0; the hub held in x at one node, the
-    # shaft free in x (the contact holds it).
+    f.write("*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE\nSINNER, SOUTER\n")
     f.write("*BOUNDARY\n")
-    last_j = 2 * (len(shaft.angles) - 1)
-    for grid in (shaft, hub):
+    for grid in (inner, outer):
+        last_j = 2 * (len(grid.angles) - 1)
         for (i, j, k), nid in sorted(grid.ids.items()):
             if j in (0, last_j):
                 f.write(f"{nid}, 2, 2\n")
             if k == 0:
                 f.write(f"{nid}, 3, 3\n")
+    return f, inner_cells, outer_cells
+
+
+def deck(delta, columns, shaft_rings, hub_rings, axial):
+    """A shaft drawn at A + delta(theta, z) in the hub: the hub held in x at one node, the shaft
+    free in x (the contact holds it)."""
+    shaft, hub = meshes(columns, shaft_rings, hub_rings, axial)
+
+    def rim(x, y, z):  # the section scaled radially: rim exact
+        return 1.0 + delta(math.atan2(y, x), z) / A if (x, y) != (0.0, 0.0) else 1.0
+    f, _, hub_cells = pair_deck(shaft, hub, rim)
     f.write(f"{hub.ids[(2 * (len(hub.radii) - 1), 0, 0)]}, 1, 1\n")
-    f.write("*STEP, INC=200\n*STATIC\n1., 1.\n*EL PRINT, ELSET=HUB\nS\n*END STEP\n")
+    f.write("*STEP, INC=200\n*STATIC\n1., 1.\n*EL PRINT, ELSET=OUTER\nS\n*END STEP\n")
     return f.getvalue(), hub, hub_cells
 
 
@@ -213,12 +228,72 @@ def solid(out_csv, run_ccx, only=()):
         force = hoop_integral(dat, hub, cells)
         rows.append((name, n, d0, h, force))
         print(name, force, flush=True)
+    write_csv(out_csv, "steel shaft d1 = 20 mm flush in a hub d2 = 30 mm, L = 20 mm, rim "
+              "interference delta0 + h (2z/L)^2 cos(n theta), frictionless; normal force from the "
+              "hub's hoop stress; regenerate: /usr/bin/python3 tools/fem/fem.py solid <this file>",
+              "case,order,delta0_um,amplitude_um,normal_force_N", rows)
+    return rows
+
+
+def write_csv(out_csv, about, header, rows):
+    """The cases' rows under a comment line saying what they are and how to regenerate them."""
     with open(out_csv, "w") as out:
-        out.write("# CalculiX 3-D (C3D20R, quarter model), steel shaft d1 = 20 mm flush in a hub "
-                  "d2 = 30 mm, L = 20 mm, rim interference delta0 + h (2z/L)^2 cos(n theta), "
-                  "frictionless; normal force from the hub's hoop stress; regenerate: "
-                  "/usr/bin/python3 tools/fem/fem.py solid <this file>\n")
-        out.write("case,order,delta0_um,amplitude_um,normal_force_N\n")
+        out.write(f"# CalculiX 3-D (C3D20R, quarter model), {about}\n{header}\n")
         for r in rows:
             out.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in r) + "\n")
+
+
+# GE 20 E (ISO 12240-1) loaded across its radial clearance: the inner ring's sphere (dk = 29 mm,
+# 16 mm wide, 20 mm bore) in the outer ring (12 mm wide, 35 mm outer diameter), a radial
+# clearance of 30 um (the middle of h7 in E7's 20-41 um). The outer ring sits in a rigid housing
+# (its outer surface held), the inner ring on a rigid shaft (its bore moved by the clearance plus
+# the approach, held against turning in its plane); the radial load is the bore's reaction.
+BALL_RADIUS = 14.5
+CLEARANCE = 0.030
+BEARING_CASES = [("bearing-approach-1um", 1.0), ("bearing-approach-2um", 2.0),
+                 ("bearing-approach-3um", 3.0)]
+BEARING_MESH = dict(columns=36, ball_rings=6, ring_rings=4, ball_axial=10, ring_axial=8)
+
+
+def bearing_deck(approach, columns, ball_rings, ring_rings, ball_axial, ring_axial):
+    """Quarter of the loaded bearing (symmetry planes y = 0 and z = 0), elements graded towards
+    the contact at theta = 0 and towards the contact surfaces."""
+    r1, r2 = BALL_RADIUS, BALL_RADIUS + CLEARANCE
+    angles = math.pi * axi.graded(columns, bias_lo=1.6)
+    ball = PolarGrid(axi.graded(ball_rings, bias_hi=1.5), angles, axi.stations(8.0, ball_axial),
+                     1, profile=lambda t, z: 10.0 + t * (math.sqrt(r1 * r1 - z * z) - 10.0))
+    ring = PolarGrid(axi.graded(ring_rings, bias_lo=1.5), angles, axi.stations(6.0, ring_axial),
+                     ball.next_node,
+                     profile=lambda t, z: math.sqrt(r2 * r2 - z * z) + t * (
+                         17.5 - math.sqrt(r2 * r2 - z * z)))
+    f, _, _ = pair_deck(ball, ring)
+    outer = 2 * (len(ring.radii) - 1)
+    f.write("".join(f"{nid}, 1, 3\n" for (i, _, _), nid in sorted(ring.ids.items())
+                    if i == outer))
+    bore = sorted({nid for (i, _, _), nid in ball.ids.items() if i == 0})
+    f.write("*NSET, NSET=BORE\n" + "\n".join(str(n) for n in bore) + "\n")
+    f.write("*STEP, INC=200\n*STATIC\n1., 1.\n*BOUNDARY\n")
+    shift = CLEARANCE + 1e-3 * approach
+    f.write("".join(f"{n}, 1, 1, {shift:.12g}\n{n}, 2, 2, 0.\n" for n in bore))
+    f.write("*NODE PRINT, NSET=BORE, TOTALS=ONLY\nRF\n*END STEP\n")
+    return f.getvalue()
+
+
+def bearing(out_csv, run_ccx, only=()):
+    rows = []
+    for name, approach in BEARING_CASES:
+        if only and name not in only:
+            continue
+        with tempfile.TemporaryDirectory() as work:
+            dat = run_ccx(bearing_deck(approach, **BEARING_MESH), work, "bearing")
+        # The totals line closes the print: the quarter's reaction, x first.
+        totals = [line for line in dat.splitlines() if line.strip()][-1].split()
+        load = 4.0 * float(totals[0])
+        rows.append((name, 1e3 * CLEARANCE, approach, load))
+        print(name, load, flush=True)
+    write_csv(out_csv, "GE 20 E: sphere 29 mm, radial clearance 30 um, outer ring in a rigid "
+              "housing, inner ring on a rigid shaft moved by the clearance plus the approach; "
+              "frictionless; radial load = the bore's reaction; regenerate: /usr/bin/python3 "
+              "tools/fem/fem.py bearing <this file>", "case,clearance_um,approach_um,radial_load_N",
+              rows)
     return rows

@@ -1,9 +1,11 @@
 // The thick spherical shell oracle (docs/oracles.md: a = 10 mm, b = 15 mm, steel,
 // delta = 1 um -> p = 14.07 MPa) through the analyzer and law with zero form and texture and a
 // uniform interference, and the friction torque against its integral.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -412,6 +414,38 @@ TEST(KnuckleBearing, ConformalHertzClosedForm) {
   EXPECT_EQ(ConformalHertz(10e-3, 0.0, 1e-6, e_star).load, 0.0);  // no clearance: not local
   // W grows as delta^1.5.
   EXPECT_NEAR(ConformalHertz(10e-3, 30e-6, 4e-6, e_star).load / h.load, 8.0, 1e-12);
+}
+
+// tools/fem/data/bearing.csv: CalculiX in 3-D (tools/fem/solid.py), GE 20 E loaded across a
+// radial clearance of 30 um, its outer ring in a rigid housing, its inner ring on a rigid shaft
+// moved by the clearance plus the approach; the FEM's radial load against the law's local
+// contact (conformal Hertz, Johnson 4.2, R held beyond a = 0.3 R1) at 1, 2 and 3 um of
+// approach. Not within reach yet: both rings are thinner at the equator (3 and 4.5 mm) than the
+// patch is wide (a = 3 to 4.6 mm), held on rigid surfaces, so they are stiffer than the half-spaces
+// Hertz assumes (and a ring in a softer housing would be softer): skipped saying by how much.
+TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
+  const double e_star = ContactModulus(test::Steel(), test::Steel());
+  double worst = 0.0;
+  std::string errors;
+  for (const char* name :
+       {"bearing-approach-1um", "bearing-approach-2um", "bearing-approach-3um"}) {
+    const double clearance = test_support::FemValue("bearing.csv", name, 1) * 1e-6;
+    const double approach = test_support::FemValue("bearing.csv", name, 2) * 1e-6;
+    const double fem = test_support::FemValue("bearing.csv", name, 3);
+    const double law = LocalContact(14.5e-3, clearance, approach, e_star).load;
+    std::printf("%-22s FEM %8.1f N  law (conformal Hertz) %8.1f N %+6.1f %%\n", name, fem, law,
+                100 * (law / fem - 1));
+    worst = std::max(worst, std::abs(law / fem - 1));
+    char error[48];
+    std::snprintf(error, sizeof error, "%s%+.0f %%", errors.empty() ? "" : ", ",
+                  100 * (law / fem - 1));
+    errors += error;
+  }
+  if (worst >= 0.10) {
+    GTEST_SKIP() << "open (issue 9): the loaded bearing's conformal Hertz contact is " << errors
+                 << " off CalculiX at 1, 2 and 3 um of approach (rigid housing and shaft): its "
+                    "rings are thinner than its patch is wide";
+  }
 }
 
 // The law on a loaded bearing: 30 um radial play, the ball pushed 31 um off centre, so its
