@@ -124,8 +124,8 @@ def pair_deck(inner, outer, inner_radius=lambda x, y, z: 1.0):
     """The deck's model part for two grids in frictionless contact (the inner grid's outer face
     the slave surface, the outer grid's inner face the master), with the symmetry planes y = 0
     and z = 0: nodes (the inner grid's scaled radially by inner_radius(x, y, z)), elements,
-    material, contact, and a *BOUNDARY block left open for the caller's holds. Returns the text
-    and both grids' cells."""
+    material, contact, and a *BOUNDARY block left open for the caller's holds. Returns the deck
+    (a StringIO the caller appends its holds and step to) and both grids' cells."""
     inner_cells = inner.cells(1)
     outer_cells = outer.cells(len(inner_cells) + 1)
     f = io.StringIO()
