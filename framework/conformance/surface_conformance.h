@@ -65,6 +65,12 @@ class SurfaceConformance : public ::testing::Test {
     (*law)->Prepare(scene_.inner, scene_.outer, scene_.model);
   }
 
+  // A radial offset 50 um past the largest interference (or the widest clearance) the scene's
+  // tolerances allow: a sweep from the axis to it must meet the mating part.
+  double RadialReach() const {
+    return std::abs(scene_.inner.size.upper_deviation - scene_.outer.size.lower_deviation) + 50e-6;
+  }
+
   // Largest change of the force magnitude between neighbouring samples of a sweep of `samples`
   // poses from `from` to `to`, and the largest magnitude on the way.
   struct Sweep {
@@ -169,8 +175,7 @@ TYPED_TEST_P(SurfaceConformance, ForceIsContinuousAcrossContactOnset) {
   std::unique_ptr<ResistanceLaw> law;
   this->PrepareModel(11, &analyzer, &law);
   const double length = this->scene_.inner.geometry->mating_length();
-  const double reach = this->scene_.inner.size.upper_deviation -
-                       this->scene_.outer.size.lower_deviation + 50e-6;
+  const double reach = this->RadialReach();
   // Radially from the axis to well past first contact at mid engagement, and axially on the axis
   // through the entrance, where the overlap starts. A continuous force has jumps that halve with
   // the step; a step in the force keeps its jump whatever the step. The radial sweep ends 50 um
@@ -178,7 +183,7 @@ TYPED_TEST_P(SurfaceConformance, ForceIsContinuousAcrossContactOnset) {
   // renders nothing would otherwise pass.
   MatingPose radial_from, radial_to, axial_from, axial_to;
   radial_from.depth = radial_to.depth = 0.5 * length;
-  radial_to.offset = Eigen::Vector2d(0.6, -0.8) * std::abs(reach);
+  radial_to.offset = Eigen::Vector2d(0.6, -0.8) * reach;
   axial_from.depth = -0.05 * length;
   axial_to.depth = 0.3 * length;
   bool radial = true;
@@ -272,9 +277,7 @@ TYPED_TEST_P(SurfaceConformance, ARadialJacobianIsTheRadialForcesDerivative) {
   std::unique_ptr<ResistanceLaw> law;
   this->PrepareModel(7, &analyzer, &law);
   const double length = this->scene_.inner.geometry->mating_length();
-  const double reach =
-      std::abs(this->scene_.inner.size.upper_deviation - this->scene_.outer.size.lower_deviation) +
-      50e-6;
+  const double reach = this->RadialReach();
   auto radial = [&](const MatingPose& pose, ContactState* contact) {
     analyzer->Evaluate(pose, contact);
     Wrench w;
