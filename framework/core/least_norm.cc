@@ -8,4 +8,8 @@ Eigen::VectorXd LeastNormSolve(const Eigen::MatrixXd& a, const Eigen::VectorXd& 
   return a.completeOrthogonalDecomposition().solve(b);
 }
 
+Eigen::MatrixXd LeastNormSolveColumns(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.completeOrthogonalDecomposition().solve(b);
+}
+
 }  // namespace fitfeel

@@ -11,5 +11,8 @@ namespace fitfeel {
 // observe, a direction without stiffness). Compiled here once: the decomposition's templates
 // cost a plugin's or a model file's compile about ten seconds wherever they are instantiated.
 FITFEEL_API Eigen::VectorXd LeastNormSolve(const Eigen::MatrixXd& a, const Eigen::VectorXd& b);
+// The same for every column of b at once (one decomposition).
+FITFEEL_API Eigen::MatrixXd LeastNormSolveColumns(const Eigen::MatrixXd& a,
+                                                  const Eigen::MatrixXd& b);
 
 }  // namespace fitfeel

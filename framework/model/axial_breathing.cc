@@ -6,10 +6,12 @@
 #include <string>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "framework/core/simd_clones.h"
+#include "framework/model/harmonic_compliance.h"
 
 namespace fitfeel {
 namespace {
@@ -55,29 +57,47 @@ std::vector<double> RadialStations(const BreathingBody& body, double first) {
   return r;  // increasing
 }
 
-// The axisymmetric bilinear element's stiffness per radian (u_r, u_z at its four corners,
-// counterclockwise from (r0, z0)), 2 x 2 Gauss points. Strains (e_r, e_z, e_theta, g_rz).
-Eigen::Matrix<double, 8, 8> ElementStiffness(double r0, double r1, double z0, double z1,
-                                             const Eigen::Matrix4d& d) {
-  Eigen::Matrix<double, 8, 8> k = Eigen::Matrix<double, 8, 8>::Zero();
+// The bilinear ring element's stiffness per pi (2 pi for order 0) in the Fourier mode of order n:
+// u_r = U cos(n theta), u_theta = V sin(n theta), u_z = W cos(n theta) at its four corners,
+// counterclockwise from (r0, z0), (U, W) per corner for n = 0 and (U, V, W) otherwise; 2 x 2 Gauss
+// points. Strains (e_r, e_z, e_theta, g_rz, g_rtheta, g_thetaz); each is one trigonometric factor
+// times a function of (r, z), and the products' factors integrate to the same pi, so the mode's
+// energy is that of a 2-D problem in (r, z).
+Eigen::MatrixXd ElementStiffness(double r0, double r1, double z0, double z1,
+                                 const Eigen::Matrix<double, 6, 6>& d, int order) {
+  const int per_node = order == 0 ? 2 : 3;
+  const int size = 4 * per_node;
+  const int strains = order == 0 ? 4 : 6;
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(size, size);
   const double g = 1.0 / std::sqrt(3.0);
   const double hr = 0.5 * (r1 - r0), hz = 0.5 * (z1 - z0);
+  const double n = order;
   const std::array<double, 4> xi{-1.0, 1.0, 1.0, -1.0}, eta{-1.0, -1.0, 1.0, 1.0};
+  const int w_at = per_node - 1;  // W's place in a corner's unknowns
   for (double a : {-g, g}) {
     for (double b : {-g, g}) {
       const double r = r0 + hr * (1.0 + a);
-      Eigen::Matrix<double, 4, 8> bm = Eigen::Matrix<double, 4, 8>::Zero();
-      for (int n = 0; n < 4; ++n) {
-        const double shape = 0.25 * (1.0 + xi[n] * a) * (1.0 + eta[n] * b);
-        const double dr = 0.25 * xi[n] * (1.0 + eta[n] * b) / hr;
-        const double dz = 0.25 * eta[n] * (1.0 + xi[n] * a) / hz;
-        bm(0, 2 * n) = dr;
-        bm(1, 2 * n + 1) = dz;
-        bm(2, 2 * n) = shape / r;
-        bm(3, 2 * n) = dz;
-        bm(3, 2 * n + 1) = dr;
+      Eigen::MatrixXd bm = Eigen::MatrixXd::Zero(strains, size);
+      for (int c = 0; c < 4; ++c) {
+        const double shape = 0.25 * (1.0 + xi[c] * a) * (1.0 + eta[c] * b);
+        const double dr = 0.25 * xi[c] * (1.0 + eta[c] * b) / hr;
+        const double dz = 0.25 * eta[c] * (1.0 + xi[c] * a) / hz;
+        const int u = per_node * c, w = u + w_at;
+        bm(0, u) = dr;
+        bm(1, w) = dz;
+        bm(2, u) = shape / r;
+        bm(3, u) = dz;
+        bm(3, w) = dr;
+        if (order > 0) {
+          const int v = u + 1;
+          bm(2, v) = n * shape / r;
+          bm(4, u) = -n * shape / r;
+          bm(4, v) = dr - shape / r;
+          bm(5, v) = dz;
+          bm(5, w) = -n * shape / r;
+        }
       }
-      k += bm.transpose() * d * bm * (r * hr * hz);
+      k += bm.transpose() * d.topLeftCorner(strains, strains) * bm * (r * hr * hz);
     }
   }
   return k;
@@ -141,7 +161,13 @@ class BandCholesky {
 
 }  // namespace
 
-AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double> row_edges) {
+AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double> row_edges,
+                               int order)
+    : order_(order) {
+  if (order < 0 || order > kHighestOrder) {
+    throw UserError("axial coupling is defined for orders 0 to " + std::to_string(kHighestOrder) +
+                    ", not " + std::to_string(order));
+  }
   if (!(body.inner_radius >= 0.0) || !(body.outer_radius > body.inner_radius)) {
     throw UserError("axial breathing needs 0 <= inner radius < outer radius");
   }
@@ -184,34 +210,63 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
   // Radial index fastest: the band of the stiffness is two stations wide.
   auto node = [nr](int iz, int ir) { return iz * nr + ir; };
 
-  // Degrees of freedom, -1 where held.
-  std::vector<int> dof(static_cast<std::size_t>(2 * nr * nz), 0);
+  // Degrees of freedom, -1 where held: (U, W) per node for order 0, (U, V, W) for the others.
+  // kTied: order 1's V on the axis, which is -U there (u_x single-valued).
+  constexpr int kTied = -2;
+  const int per_node = order == 0 ? 2 : 3, w_at = per_node - 1;
+  std::vector<int> dof(static_cast<std::size_t>(per_node * nr * nz), 0);
   for (int iz = 0; iz < nz; ++iz) {
-    if (body.inner_radius == 0.0) dof[2 * node(iz, 0)] = -1;  // the axis stays on it
+    if (body.inner_radius == 0.0) {
+      // The axis stays on it; for orders >= 2 nothing on it moves, for order 1 it moves as a
+      // line (W = 0, U + V = 0).
+      if (order == 1) {
+        dof[per_node * node(iz, 0) + 1] = kTied;
+        dof[per_node * node(iz, 0) + w_at] = -1;
+      } else {
+        for (int a = 0; a < (order == 0 ? 1 : per_node); ++a) {
+          dof[per_node * node(iz, 0) + a] = -1;
+        }
+      }
+    }
     if (body.held_faces && (iz == 0 || iz == nz - 1)) {
-      for (int ir = 0; ir < nr; ++ir) dof[2 * node(iz, ir) + 1] = -1;
+      for (int ir = 0; ir < nr; ++ir) dof[per_node * node(iz, ir) + w_at] = -1;
     }
   }
-  // Free faces: radial loads carry no net axial force; one node fixes the axial translation.
-  if (!body.held_faces) dof[2 * node(0, loaded) + 1] = -1;
+  // Free faces: radial loads carry no net axial force; one node fixes the axial translation (the
+  // breathing mode's only rigid motion; orders >= 2 have none).
+  if (!body.held_faces && order == 0) dof[per_node * node(0, loaded) + w_at] = -1;
+  // Order 1's rigid motions, translation (U, V, W) = (1, -1, 0) and rotation (z, -z, -r), are
+  // held by U at the face opposite the loaded one at both ends (held faces already stop the
+  // rotation: one end). The loads are balanced by body forces (below), so these supports carry
+  // nothing and the deformation does not depend on them.
+  const int opposite = body.loaded_inside ? nr - 1 : 0;
+  if (order == 1) {
+    dof[per_node * node(0, opposite)] = -1;
+    if (!body.held_faces) dof[per_node * node(nz - 1, opposite)] = -1;
+  }
   int free = 0;
-  for (int& d : dof) d = d < 0 ? -1 : free++;
+  for (int& d : dof) d = d == -1 ? -1 : (d == kTied ? kTied : free++);
+  // A node's unknown and its factor: a tied V is U's unknown, negated.
+  auto unknown = [&](int entry) -> std::pair<int, double> {
+    const int p = dof[static_cast<std::size_t>(entry)];
+    if (p == kTied) return {dof[static_cast<std::size_t>(entry - 1)], -1.0};
+    return {p, 1.0};
+  };
 
-  Eigen::Matrix4d d;
-  const double c = e / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  d << 1.0 - nu, nu, nu, 0.0,  //
-      nu, 1.0 - nu, nu, 0.0,   //
-      nu, nu, 1.0 - nu, 0.0,   //
-      0.0, 0.0, 0.0, 0.5 - nu;
-  d *= c;
+  // Isotropic elasticity on (e_r, e_z, e_theta, g_rz, g_rtheta, g_thetaz).
+  Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+  d.topLeftCorner<3, 3>().setConstant(nu);
+  d.diagonal().head<3>().setConstant(1.0 - nu);
+  d.diagonal().tail<3>().setConstant(0.5 - nu);
+  d *= e / ((1.0 + nu) * (1.0 - 2.0 * nu));
   // Half-bandwidth: the largest distance between two coupled free unknowns.
   int w = 0;
   for (int iz = 0; iz + 1 < nz; ++iz) {
     for (int ir = 0; ir + 1 < nr; ++ir) {
       int lo = free, hi = -1;
       for (int corner : {node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1), node(iz + 1, ir)}) {
-        for (int a = 0; a < 2; ++a) {
-          if (const int p = dof[2 * corner + a]; p >= 0) {
+        for (int a = 0; a < per_node; ++a) {
+          if (const int p = unknown(per_node * corner + a).first; p >= 0) {
             lo = std::min(lo, p);
             hi = std::max(hi, p);
           }
@@ -223,26 +278,30 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
   BandCholesky k(free, w);
   // An element's stiffness depends on its radii and its length only: one per layer while the
   // length stays (equal rows: one per layer for the whole part).
-  std::vector<Eigen::Matrix<double, 8, 8>> layer(static_cast<std::size_t>(nr - 1));
+  std::vector<Eigen::MatrixXd> layer(static_cast<std::size_t>(nr - 1));
   double layer_length = -1.0;
   for (int iz = 0; iz + 1 < nz; ++iz) {
-    if (z[iz + 1] - z[iz] != layer_length) {
+    // Rows of one length differ by rounding: a relative 1e-12 is the same element.
+    if (std::abs(z[iz + 1] - z[iz] - layer_length) > 1e-12 * layer_length) {
       layer_length = z[iz + 1] - z[iz];
       for (int ir = 0; ir + 1 < nr; ++ir) {
         layer[static_cast<std::size_t>(ir)] =
-            ElementStiffness(r[ir], r[ir + 1], 0.0, layer_length, d);
+            ElementStiffness(r[ir], r[ir + 1], 0.0, layer_length, d, order);
       }
     }
     for (int ir = 0; ir + 1 < nr; ++ir) {
-      const Eigen::Matrix<double, 8, 8>& ke = layer[static_cast<std::size_t>(ir)];
+      const Eigen::MatrixXd& ke = layer[static_cast<std::size_t>(ir)];
       const std::array<int, 4> corner{node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1),
                                       node(iz + 1, ir)};
-      for (int a = 0; a < 8; ++a) {
-        const int p = dof[2 * corner[a / 2] + a % 2];
+      const int size = 4 * per_node;
+      for (int a = 0; a < size; ++a) {
+        const auto [p, fa] = unknown(per_node * corner[a / per_node] + a % per_node);
         if (p < 0) continue;
-        for (int b = 0; b < 8; ++b) {
-          const int q = dof[2 * corner[b / 2] + b % 2];
-          if (q >= 0 && q <= p) k.at(p, q) += ke(a, b);
+        for (int b = 0; b < size; ++b) {
+          const auto [q, fb] = unknown(per_node * corner[b / per_node] + b % per_node);
+          // A tied pair adds its coupling to both triangles of the one unknown.
+          if (q >= 0 && q < p) k.at(p, q) += fa * fb * ke(a, b);
+          if (q == p) k.at(p, p) += fa * fb * ke(a, b);
         }
       }
     }
@@ -251,25 +310,28 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
     throw UserError("axial breathing: the part's stiffness is not positive definite");
   }
 
-  // Row j's unit pressure, per radian, is R le / 2 on each end of each element of the loaded face,
-  // pushing the face away from the other part; the same weights over the row's length average
-  // the face's radial displacement: load_j = R length_j mean_j. So F = mean' K^-1 load, and
-  // mean' reads a row's few face nodes.
+  // Row j's unit pressure (per radian for order 0, per pi for the others, as the stiffness) is
+  // p cos(n theta), R le / 2 on each end of each element of the loaded face, pushing the face away
+  // from the other part; the same weights over the row's length average the face's radial
+  // displacement: load_j = R length_j mean_j. So F = mean' K^-1 load, and mean' reads a row's few
+  // face nodes. (The Gram form R (L^-1 mean)' (L^-1 mean) diag(length) saves the back
+  // substitution but costs rows^2 per unknown where the band costs twice its width: more here.)
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   const double face = r[loaded];
   const double open = body.loaded_inside ? 1.0 : -1.0;  // outwards opens a bore, inwards a shaft
   std::vector<std::vector<std::pair<int, double>>> mean(static_cast<std::size_t>(rows));
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> u =
-      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>::Zero(free, rows);
+  RowMajor u = RowMajor::Zero(free, rows);
   std::vector<int> first(static_cast<std::size_t>(rows), free);
+  Eigen::VectorXd length(rows);
   for (int i = 0; i < rows; ++i) {
-    const double length = row_edges[i + 1] - row_edges[i];
+    length[i] = row_edges[i + 1] - row_edges[i];
     for (int s = 0; s < per_row; ++s) {
       const int iz = i * per_row + s;
       const double le = z[iz + 1] - z[iz];
       for (int end : {iz, iz + 1}) {
-        const int p = dof[2 * node(end, loaded)];
+        const int p = dof[per_node * node(end, loaded)];
         FITFEEL_DEMAND(p >= 0);  // the loaded face's radial motion is never held
-        mean[static_cast<std::size_t>(i)].emplace_back(p, open * 0.5 * le / length);
+        mean[static_cast<std::size_t>(i)].emplace_back(p, open * 0.5 * le / length[i]);
         u(p, i) += open * face * 0.5 * le;
         first[static_cast<std::size_t>(i)] = std::min(first[static_cast<std::size_t>(i)], p);
       }
@@ -282,8 +344,97 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
       influence_.row(i) += weight * u.row(p);
     }
   }
+  if (order == 1) {
+    // A load cos(theta) has a net force and moment, which the rest of the model carries by the
+    // part's rigid offset and tilt: here body forces b(z) = alpha + beta z (per unit volume,
+    // along x: U-load b, V-load -b) balance each row's (inertia relief), so the supports carry
+    // nothing. The two unit body loads once, each row's share by superposition. With them each
+    // row's centroid displacement along x, the mean of u_x = U cos^2 - V sin^2 over its volume
+    // (integral of (U - V) r dr dz / ((b^2 - a^2) L)): its line is the part's rigid motion.
+    RowMajor body_u = RowMajor::Zero(free, 2);
+    // centroid_of(i, p): row i's centroid displacement per unknown p.
+    Eigen::SparseMatrix<double, Eigen::RowMajor> centroid_of(rows, free);
+    std::vector<Eigen::Triplet<double>> entries;
+    const double a2 = body.outer_radius * body.outer_radius - body.inner_radius * body.inner_radius;
+    const double g = 1.0 / std::sqrt(3.0);
+    const std::array<double, 4> xi{-1.0, 1.0, 1.0, -1.0}, eta{-1.0, -1.0, 1.0, 1.0};
+    for (int iz = 0; iz + 1 < nz; ++iz) {
+      const int row = iz / per_row;
+      const double volume = a2 * length[row];
+      for (int ir = 0; ir + 1 < nr; ++ir) {
+        const double hr = 0.5 * (r[ir + 1] - r[ir]), hz = 0.5 * (z[iz + 1] - z[iz]);
+        const std::array<int, 4> corner{node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1),
+                                        node(iz + 1, ir)};
+        for (double ga : {-g, g}) {
+          for (double gb : {-g, g}) {
+            const double rr = r[ir] + hr * (1.0 + ga), zz = z[iz] + hz * (1.0 + gb);
+            for (int c = 0; c < 4; ++c) {
+              const double weight = 0.25 * (1.0 + xi[c] * ga) * (1.0 + eta[c] * gb) * rr * hr * hz;
+              for (int a = 0; a < 2; ++a) {  // U takes +b, V takes -b
+                const auto [p, f] = unknown(per_node * corner[c] + a);
+                if (p < 0) continue;
+                const double sign = (a == 0 ? 1.0 : -1.0) * f * weight;
+                body_u(p, 0) += sign;
+                body_u(p, 1) += sign * zz;
+                entries.emplace_back(row, p, sign / volume);
+              }
+            }
+          }
+        }
+      }
+    }
+    centroid_of.setFromTriplets(entries.begin(), entries.end());
+    k.Solve(body_u.data(), 2, std::vector<int>{0, 0});
+    Eigen::MatrixX2d body_mean = Eigen::MatrixX2d::Zero(rows, 2);
+    for (int i = 0; i < rows; ++i) {
+      for (const auto& [p, weight] : mean[static_cast<std::size_t>(i)]) {
+        body_mean.row(i) += weight * body_u.row(p);
+      }
+    }
+    const Eigen::MatrixX2d body_centroid = centroid_of * body_u;
+    Eigen::MatrixXd centroid = centroid_of * u;
+    // Generalised forces (per pi) on the rigid motions: a body load b integrates to
+    // 2 integral of b r dr dz on both; row j's face load to open R L_j and open R L_j z_j.
+    const double z0 = row_edges[0], z1 = row_edges[rows];
+    const double m0 = a2 * (z1 - z0), m1 = a2 * (z1 * z1 - z0 * z0) / 2.0,
+                 m2 = a2 * (z1 * z1 * z1 - z0 * z0 * z0) / 3.0;
+    Eigen::Matrix2d balance;
+    balance << m0, m1, m1, m2;
+    const Eigen::PartialPivLU<Eigen::Matrix2d> lu(balance);
+    for (int j = 0; j < rows; ++j) {
+      const double force = open * face * length[j];
+      const double centre = 0.5 * (row_edges[j] + row_edges[j + 1]);
+      Eigen::Vector2d coef;
+      if (body.held_faces) {
+        coef << -force / m0, 0.0;  // the held faces carry the moment
+      } else {
+        coef = lu.solve(Eigen::Vector2d(-force, -force * centre));
+      }
+      influence_.col(j) += body_mean * coef;
+      centroid.col(j) += body_centroid * coef;
+    }
+    // The part's rigid motion is its axis's, which the rigid solve owns (and each section's own
+    // order-1 compliance is its face relative to its centroid): the least-squares line in z
+    // through the rows' centroids (length-weighted; a constant with held faces) is removed.
+    Eigen::MatrixXd basis(rows, body.held_faces ? 1 : 2);
+    for (int i = 0; i < rows; ++i) {
+      basis(i, 0) = 1.0;
+      if (!body.held_faces) basis(i, 1) = 0.5 * (row_edges[i] + row_edges[i + 1]);
+    }
+    const Eigen::MatrixXd normal = basis.transpose() * length.asDiagonal() * basis;
+    influence_ -= basis * normal.ldlt().solve(basis.transpose() * length.asDiagonal() * centroid);
+  }
   extra_ = influence_;
-  extra_.diagonal() -= influence_.rowwise().sum();
+  if (order == 0) {
+    extra_.diagonal() -= influence_.rowwise().sum();
+  } else {
+    // Plane sections are not the 3-D state of a uniform load cos(n theta) (free faces: between
+    // plane stress and plane strain, 7 to 10 % stiffer than plane stress in the middle of a part
+    // as long as it is wide), so the whole of F counts, less what the sections already have.
+    extra_.diagonal().array() -=
+        RingHarmonicCompliance(body.inner_radius, body.outer_radius, body.loaded_inside,
+                               body.material, body.held_faces, order);
+  }
 }
 
 void AxialBreathing::ExtraDisplacement(const double* mean_pressure, double* out) const {

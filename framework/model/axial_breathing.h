@@ -38,12 +38,29 @@ struct BreathingBody {
 // semidefinite: plane-stress sections are a statically admissible stress field, so by
 // complementary energy the part is never softer than they say (and elements are stiffer than the
 // continuum). Held faces are not that case (plane strain constrains every section): some loads
-// find the part softer than its sections. Prepare-time only: it allocates.
+// find the part softer than its sections.
+//
+// The same for every circumferential order n: the load p cos(n theta) and the displacement
+// u_r = U cos, u_theta = V sin, u_z = W cos (n theta) in the part's Fourier mode of order n, three
+// unknowns per node. For n >= 2 plane sections are not the 3-D state of even a uniform load
+// (between plane stress and plane strain), so X = F - diag(c_n) with c_n the part's own plane
+// section compliance (RingHarmonicCompliance): the model's total is then the elements' F. Order 1
+// carries a net force and moment, which the model's rigid offset and tilt take: body forces
+// (alpha + beta z along x, per unit volume: inertia relief) balance each row's load, and the rows'
+// displacement is taken relative to the line through the rows' centroids (the part's axis), as
+// each section's c_1 is relative to its centroid (harmonic_compliance.h). Checked against
+// CalculiX in 3-D (tools/fem/solid.py): a bent shaft in partial contact, ovality and three lobes
+// growing along the axis, all within 3 % (docs/contact-mechanics.md section 6). Prepare-time only:
+// it allocates.
 class FITFEEL_API AxialBreathing {
  public:
   AxialBreathing() = default;
   // `row_edges`: the rows' axial boundaries (m, increasing; rows = row_edges.size() - 1).
-  AxialBreathing(const BreathingBody& body, std::span<const double> row_edges);
+  // `order`: the circumferential order n of the load p cos(n theta) and of the displacement the
+  // matrices give (0, the breathing mode, or 2 .. kHighestOrder).
+  AxialBreathing(const BreathingBody& body, std::span<const double> row_edges, int order = 0);
+
+  int order() const { return order_; }
 
   bool empty() const { return extra_.size() == 0; }
   int rows() const { return static_cast<int>(extra_.rows()); }
@@ -56,8 +73,12 @@ class FITFEEL_API AxialBreathing {
 
   // Rows beyond this make the influence matrix a prepare of its own (one solve per row).
   static constexpr int kMostRows = 1000;
+  // Elements a fortieth of the face's radius long resolve a load's decay along the axis over
+  // R / n to order 12.
+  static constexpr int kHighestOrder = 12;
 
  private:
+  int order_ = 0;
   Eigen::MatrixXd influence_, extra_;
 };
 

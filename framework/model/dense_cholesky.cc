@@ -123,4 +123,9 @@ Eigen::Matrix2d DenseCholesky::InverseForm(Eigen::MatrixX2d b) const {
   return b.transpose() * b;
 }
 
+Eigen::MatrixXd DenseCholesky::InverseFormOf(Eigen::MatrixXd b) const {
+  l_.topLeftCorner(size_, size_).triangularView<Eigen::Lower>().solveInPlace(b);
+  return b.transpose() * b;
+}
+
 }  // namespace fitfeel

@@ -31,6 +31,8 @@ class FITFEEL_API DenseCholesky {
   void SolveInPlace(Eigen::Ref<Eigen::VectorXd> x) const;
   // B^T A^-1 B for a B of two columns (= X^T X with X = L^-1 B).
   Eigen::Matrix2d InverseForm(Eigen::MatrixX2d b) const;
+  // The same for any number of columns.
+  Eigen::MatrixXd InverseFormOf(Eigen::MatrixXd b) const;
 
  private:
   // L in the top-left size_ x size_ lower triangle; the storage may be larger (room to append).

@@ -197,6 +197,17 @@ double HarmonicCompliance(const PressFitSection& s, int n) {
          RingDisplacement(a, b, /*load_outer=*/false, n, mh);
 }
 
+double RingHarmonicCompliance(double inner_radius, double outer_radius, bool loaded_inside,
+                              const Material& material, bool plane_strain, int n) {
+  if (!(inner_radius >= 0.0) || !(outer_radius > inner_radius) || n < 1) {
+    throw UserError("a ring's harmonic compliance needs 0 <= inner < outer radius and order >= 1");
+  }
+  const Elastic m = Effective(material, plane_strain);
+  const double u = n == 1 ? OrderOneDisplacement(inner_radius, outer_radius, !loaded_inside, m)
+                          : RingDisplacement(inner_radius, outer_radius, !loaded_inside, n, m);
+  return loaded_inside ? u : -u;
+}
+
 std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns) {
   if (n_columns < 4 || n_columns % 2 != 0) {
     throw UserError("a circulant contact needs an even number of columns >= 4");

@@ -30,6 +30,13 @@ struct PressFitSection {
 // for the steel 20 mm shaft in its 30 mm hub.
 FITFEEL_API double HarmonicCompliance(const PressFitSection& section, int n);
 
+// One part's share of HarmonicCompliance for an order n >= 1: the radial displacement opening the
+// interface of the ring inner_radius < r < outer_radius (solid when inner_radius = 0) loaded by
+// p cos(n theta) on its bore (`loaded_inside`, a hub) or on its outside (a shaft), per unit p.
+FITFEEL_API double RingHarmonicCompliance(double inner_radius, double outer_radius,
+                                          bool loaded_inside, const Material& material,
+                                          bool plane_strain, int n);
+
 // The compliance of every order 0 .. n_columns/2 a circulant contact solve on n_columns needs.
 FITFEEL_API std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns);
 

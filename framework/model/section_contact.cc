@@ -257,13 +257,64 @@ Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
   return ws.primal.cholesky.InverseForm(std::move(u));
 }
 
-RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_columns)
-    : contact_(CirculantCompliance(section, n_columns), n_columns) {
+Eigen::MatrixXd CirculantContact::ShiftStiffness(const Factorization& ws,
+                                                 const Eigen::MatrixXd& basis,
+                                                 const Eigen::MatrixXd& inverse_basis) const {
+  Eigen::MatrixXd full = basis.transpose() * inverse_basis;
+  if (ws.last_full) return full;
+  if (ws.dual) {
+    // As OffsetStiffness: B_F^T G_FF^-1 B_F = B^T H B - A_N^T H_NN^-1 A_N with A = H B.
+    const auto k = static_cast<Eigen::Index>(ws.gaps.size());
+    Eigen::MatrixXd a(k, basis.cols());
+    for (Eigen::Index r = 0; r < k; ++r) {
+      a.row(r) = inverse_basis.row(ws.gaps[static_cast<std::size_t>(r)]);
+    }
+    return full - ws.dual_factor.cholesky.InverseFormOf(std::move(a));
+  }
+  const auto m = static_cast<Eigen::Index>(ws.index.size());
+  if (m == 0) return Eigen::MatrixXd::Zero(basis.cols(), basis.cols());
+  Eigen::MatrixXd u(m, basis.cols());
+  for (Eigen::Index r = 0; r < m; ++r) u.row(r) = basis.row(ws.index[static_cast<std::size_t>(r)]);
+  return ws.primal.cholesky.InverseFormOf(std::move(u));
+}
+
+RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_columns,
+                                         std::vector<int> shift_orders)
+    : contact_(CirculantCompliance(section, n_columns), n_columns),
+      shift_orders_(std::move(shift_orders)) {
   cos_.resize(static_cast<std::size_t>(n_columns));
   sin_.resize(static_cast<std::size_t>(n_columns));
   for (int j = 0; j < n_columns; ++j) {
     cos_[static_cast<std::size_t>(j)] = std::cos(2.0 * std::numbers::pi * j / n_columns);
     sin_[static_cast<std::size_t>(j)] = std::sin(2.0 * std::numbers::pi * j / n_columns);
+  }
+  const auto components = static_cast<Eigen::Index>(1 + 2 * shift_orders_.size());
+  shift_basis_.resize(n_columns, components);
+  shift_basis_.col(0).setOnes();
+  for (std::size_t o = 0; o < shift_orders_.size(); ++o) {
+    const int order = shift_orders_[o];
+    if (order < 1 || 2 * order > n_columns) {
+      throw UserError("a section's gap shift takes orders 1 to columns / 2, not " +
+                      std::to_string(order));
+    }
+    for (int j = 0; j < n_columns; ++j) {
+      // The integer product modulo n keeps the angle exact for every order.
+      const double angle = 2.0 * std::numbers::pi * ((order * j) % n_columns) / n_columns;
+      shift_basis_(j, static_cast<Eigen::Index>(1 + 2 * o)) = std::cos(angle);
+      shift_basis_(j, static_cast<Eigen::Index>(2 + 2 * o)) = std::sin(angle);
+    }
+  }
+  // The basis with the offset's directions (cos, sin) appended, for ShiftStiffness.
+  response_basis_.resize(n_columns, components + 2);
+  response_basis_.leftCols(components) = shift_basis_;
+  for (int j = 0; j < n_columns; ++j) {
+    response_basis_(j, components) = cos_[static_cast<std::size_t>(j)];
+    response_basis_(j, components + 1) = sin_[static_cast<std::size_t>(j)];
+  }
+  inverse_response_basis_.resize(n_columns, components + 2);
+  inverse_response_basis_.col(0) = contact_.inverse_ones();
+  for (Eigen::Index c = 1; c < components + 2; ++c) {
+    contact_.InverseTimes(response_basis_.col(c).data(), inverse_response_basis_.col(c).data());
   }
 }
 
@@ -276,6 +327,7 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
   full_.resize(nn);
   pressure_.resize(sections.size() * nn);
   if (active_.size() != sections.size()) active_.assign(sections.size(), std::vector<char>(nn, 0));
+  workspace_.assign(sections.size(), nullptr);
   const Eigen::Vector2d e0 = q.head<2>(), t = q.tail<2>();
   double phi = 0.0;
   grad->setZero();
@@ -293,10 +345,12 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
     for (char a : active_[s]) none_active = none_active && !a;
     if (!any && none_active) {
       std::fill(p, p + n, 0.0);
+      workspace_[s] = nullptr;
       continue;
     }
     CirculantContact::Factorization* factors =
         sec.factorization != nullptr ? sec.factorization : &factors_[s];
+    workspace_[s] = factors;
     if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s], factors)) {
       contact_.Solve(delta_.data(), p, &active_[s], full_.data(), factors);
     } else {
@@ -377,16 +431,20 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
       active_[s][j] = w[j] && interferes;
     }
   }
-  if (!gap_shift.empty() && gap_shift.size() == sections.size() &&
+  const auto components = static_cast<std::size_t>(shift_basis_.cols());
+  if (!gap_shift.empty() && gap_shift.size() == sections.size() * components &&
       inverse_gap_ready_.size() == sections.size()) {
-    // The same sections with every gap of section s grown by gap_shift[s]: G^-1 is linear, so
-    // the products known from the last Solve move by gap_shift[s] G^-1 1 (O(n), not O(n^2)).
-    const Eigen::VectorXd& ones = contact_.inverse_ones();
+    // The same sections with every gap of section s grown by its shift's components: G^-1 is
+    // linear, so the products known from the last Solve move by the components' G^-1 b_c
+    // (O(n) each, not O(n^2)).
     for (std::size_t s = 0; s < sections.size(); ++s) {
       if (!inverse_gap_ready_[s]) continue;
-      double* out = inverse_gap_.data() + s * nn;
-      for (std::size_t j = 0; j < nn; ++j)
-        out[j] += gap_shift[s] * ones[static_cast<Eigen::Index>(j)];
+      Eigen::Map<Eigen::VectorXd> out(inverse_gap_.data() + s * nn, static_cast<Eigen::Index>(nn));
+      for (std::size_t c = 0; c < components; ++c) {
+        if (const double a = gap_shift[s * components + c]; a != 0.0) {
+          out += a * inverse_response_basis_.col(static_cast<Eigen::Index>(c));
+        }
+      }
     }
   } else {
     inverse_gap_.resize(sections.size() * nn);
@@ -490,16 +548,33 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   return r;
 }
 
+Eigen::MatrixXd RigidSectionContact::ShiftStiffness(std::size_t section) const {
+  const auto size = response_basis_.cols();
+  if (section >= workspace_.size() || workspace_[section] == nullptr) {
+    return Eigen::MatrixXd::Zero(size, size);
+  }
+  return contact_.ShiftStiffness(*workspace_[section], response_basis_, inverse_response_basis_);
+}
+
 bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> sections,
                                            std::span<const double> dp, RigidContactResult* result) {
   const auto nn = static_cast<std::size_t>(columns());
-  if (sections.size() != active_.size() || dp.size() != sections.size() ||
+  const auto components = static_cast<std::size_t>(shift_basis_.cols());
+  if (sections.size() != active_.size() || dp.size() != sections.size() * components ||
       pressure_.size() != sections.size() * nn) {
     return false;
   }
+  // Each section's pressure change column by column (the components' sum).
+  shifted_.resize(sections.size() * nn);
   for (std::size_t s = 0; s < sections.size(); ++s) {
+    Eigen::Map<Eigen::VectorXd> change(shifted_.data() + s * nn, static_cast<Eigen::Index>(nn));
+    change = shift_basis_ * Eigen::Map<const Eigen::VectorXd>(
+                                dp.data() + s * components, static_cast<Eigen::Index>(components));
     for (std::size_t j = 0; j < nn; ++j) {
-      if (!active_[s][j] || !(pressure_[s * nn + j] + dp[s] >= 0.0)) return false;
+      if (!active_[s][j] ||
+          !(pressure_[s * nn + j] + change[static_cast<Eigen::Index>(j)] >= 0.0)) {
+        return false;
+      }
     }
   }
   result->normal_force = 0.0;
@@ -507,7 +582,7 @@ bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> secti
   for (std::size_t s = 0; s < sections.size(); ++s) {
     for (std::size_t j = 0; j < nn; ++j) {
       double& p = pressure_[s * nn + j];
-      p += dp[s];
+      p += shifted_[s * nn + j];
       result->normal_force += p * sections[s].cell_area;
       result->max_pressure = std::max(result->max_pressure, p);
     }

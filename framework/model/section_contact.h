@@ -66,6 +66,11 @@ class FITFEEL_API CirculantContact {
   // After Solve: d(sum_j p_j u_j)/d(offset), the section's 2x2 radial contact stiffness per unit
   // cell area (Pa/m), for the rigid-body Newton step.
   Eigen::Matrix2d OffsetStiffness() const;
+  // The same for gap shifts along the columns of `basis` (n x k) at a fixed offset, after a solve
+  // with the workspace `ws`: d(B^T p)/d(shift) = -B_F^T G_FF^-1 B_F (k x k, Pa/m), F the contact
+  // set. `inverse_basis` = G^-1 B.
+  Eigen::MatrixXd ShiftStiffness(const Factorization& ws, const Eigen::MatrixXd& basis,
+                                 const Eigen::MatrixXd& inverse_basis) const;
 
  private:
   int n_;
@@ -136,25 +141,40 @@ struct RigidContactResult {
 // sections' gaps). Prepare-time only.
 class FITFEEL_API RigidSectionContact {
  public:
-  RigidSectionContact(const PressFitSection& section, int n_columns);
+  // `shift_orders`: the circumferential orders (1 .. n_columns / 2) a caller's gap shifts may
+  // carry besides the uniform one (Solve's `gap_shift`, ShiftFullContact).
+  RigidSectionContact(const PressFitSection& section, int n_columns,
+                      std::vector<int> shift_orders = {});
 
   int columns() const { return contact_.columns(); }
+  const std::vector<int>& shift_orders() const { return shift_orders_; }
+  // A gap shift's components as columns (n_columns x (1 + 2 orders)): 1, then cos(n theta_j) and
+  // sin(n theta_j) for each shift order n, theta_j the columns' angles from column 0.
+  const Eigen::MatrixXd& shift_basis() const { return shift_basis_; }
   const CirculantContact& contact() const { return contact_; }
   // Pressures of every section of the last Solve, section-major (Pa).
   const std::vector<double>& pressures() const { return pressure_; }
   // Contact set of every section of the last Solve (one flag per column), for warm starts.
   const std::vector<std::vector<char>>& contact_sets() const { return active_; }
-  // Moves the last Solve's pressures of every section that is in contact all round by a uniform
-  // dp[s] (Pa): the exact answer when that section's gaps all grow by -dp[s] / P0 (P0 = 1 / C_0:
-  // a uniform closure is the breathing mode alone, no net force, so the part's offset and tilt
-  // stay). Returns false, changing nothing, if a section is not in contact all round or a
-  // pressure would turn negative. The result's normal force and largest pressure follow.
+  // After a Solve: the response of section s's pressures to its gap shift and to its offset
+  // e_s, at the solve's contact set: with E = [shift_basis(), cos, sin] (the offset's
+  // directions last), S = ShiftStiffness(s) = E_F^T G_FF^-1 E_F, and
+  // d(E^T p_s) = S (-d shift; d e_s) (a section out of contact: zero).
+  Eigen::MatrixXd ShiftStiffness(std::size_t section) const;
+  // Moves the last Solve's pressures of every section that is in contact all round by dp's
+  // components (section-major, shift_basis()'s columns; Pa): the exact answer when that
+  // section's gaps grow by each component over its compliance, -dp_c / K_n (a uniform closure is
+  // the breathing mode alone, an order n >= 2 that mode alone, none with a net force, so the
+  // part's offset and tilt stay). Returns false, changing nothing, if a section is not in contact
+  // all round or a pressure would turn negative. The result's normal force and largest pressure
+  // follow.
   bool ShiftFullContact(std::span<const ContactSection> sections, std::span<const double> dp,
                         RigidContactResult* result);
 
-  // `gap_shift`, when given (one value per section): the sections are the last Solve's with every
-  // gap of section s grown since by gap_shift[s] (the caller's axial coupling), so that the
-  // products of the gaps it keeps are updated instead of computed anew. `handoff` > 0: where the
+  // `gap_shift`, when given (shift_basis()'s components per section, section-major): the sections
+  // are the last Solve's with the gaps of section s grown since by its components (the caller's
+  // axial coupling), so that the products of the gaps it keeps are updated instead of computed
+  // anew. `handoff` > 0: where the
   // unbalanced force falls below `handoff` times the forces the solve carries (but not yet to
   // its tolerance), the solve stops and returns the next Newton point unevaluated in `next`, for
   // an iteration that also moves the gaps (the axial coupling's) to take one evaluation per step
@@ -176,9 +196,14 @@ class FITFEEL_API RigidSectionContact {
   const double* InverseGap(const ContactSection& section, std::size_t index);
 
   CirculantContact contact_;
-  std::vector<double> cos_, sin_, delta_, full_, pressure_, inverse_gap_;
+  std::vector<int> shift_orders_;
+  Eigen::MatrixXd shift_basis_;                              // B
+  Eigen::MatrixXd response_basis_, inverse_response_basis_;  // E = [B, cos, sin] and G^-1 E
+  std::vector<double> cos_, sin_, delta_, full_, pressure_, inverse_gap_, shifted_;
   std::vector<char> inverse_gap_ready_;
   std::vector<CirculantContact::Factorization> factors_;  // one per section of the current Solve
+  // Per section of the last evaluation, the workspace its solve used (null: out of contact).
+  std::vector<const CirculantContact::Factorization*> workspace_;
   std::vector<std::vector<char>> active_;
 };
 

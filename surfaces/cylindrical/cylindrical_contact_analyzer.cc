@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
+#include "framework/core/least_norm.h"
 #include "framework/core/number_text.h"
 #include "framework/core/parallel.h"
 #include "framework/core/simd_clones.h"
@@ -189,11 +190,21 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     section.shaft = inner.material;
     section.hub = outer.material;
     section.plane_strain = options.plane_strain;
-    solver.emplace(section, n_ / block_);
-    breathing_stiffness_ = 1.0 / HarmonicCompliance(section, 0);
-    hub_breathing_ = AxialBreathing();
-    shaft_breathing_ = AxialBreathing();
+    hub_breathing_.clear();
+    shaft_breathing_.clear();
     axial_coupling_ = options.axial_coupling;
+    coupled_orders_.clear();
+    if (options.axial_coupling) {
+      // No order past the solve's columns can resolve.
+      for (int order = 1; order <= std::min(options.axial_orders, n_ / block_ / 2); ++order) {
+        coupled_orders_.push_back(order);
+      }
+    }
+    solver.emplace(section, n_ / block_, coupled_orders_);
+    mode_stiffness_.assign(1, 1.0 / HarmonicCompliance(section, 0));
+    for (int order : coupled_orders_) {
+      mode_stiffness_.push_back(1.0 / HarmonicCompliance(section, order));
+    }
     if (options.axial_coupling) {
       BreathingBody hub;
       hub.inner_radius = 0.5 * d.d1;
@@ -683,9 +694,14 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
-void CylinderContactAnalyzer::SolveBreathing(AxialBreathing* hub, AxialBreathing* shaft) const {
-  *hub = AxialBreathing(hub_body_, hub_coupling_rows_);
-  *shaft = AxialBreathing(shaft_body_, shaft_coupling_rows_);
+void CylinderContactAnalyzer::SolveBreathing(std::vector<AxialBreathing>* hub,
+                                             std::vector<AxialBreathing>* shaft) const {
+  hub->assign(1, AxialBreathing(hub_body_, hub_coupling_rows_));
+  shaft->assign(1, AxialBreathing(shaft_body_, shaft_coupling_rows_));
+  for (int order : coupled_orders_) {
+    hub->emplace_back(hub_body_, hub_coupling_rows_, order);
+    shaft->emplace_back(shaft_body_, shaft_coupling_rows_, order);
+  }
 }
 
 void CylinderContactAnalyzer::EnsureBreathing() {
@@ -698,12 +714,22 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     std::span<const double> length, double shift, double* gaps, const Eigen::Vector4d& warm,
     CouplingScratch* scratch, const Breathing& breathing) const {
   if (!axial_coupling_ || sections.empty()) return solver->Solve(sections, freedom_, warm);
-  assert(!breathing[0]->empty() && !breathing[1]->empty());
+  const std::size_t modes = mode_stiffness_.size();
+  assert(breathing[0]->size() == modes && breathing[1]->size() == modes);
   const auto ne = static_cast<std::size_t>(solver->columns());
   const std::size_t count = sections.size();
   const auto m = static_cast<Eigen::Index>(count);
+  // Components: the breathing mode, then cos and sin of each coupled order.
+  const Eigen::MatrixXd& basis = solver->shift_basis();
+  const auto nc = static_cast<std::size_t>(basis.cols());
+  assert(nc == 2 * modes - 1);
+  auto mode_of = [](std::size_t component) { return (component + 1) / 2; };
   CouplingScratch& c = *scratch;
-  // The parts' coupling rows and breathing, the hub's then the shaft's; a section's start in the
+  // A section's amplitudes from its column pressures: the mean, and twice the mean of p cos and
+  // p sin (the pressures' Fourier coefficients, on the basis the gap shifts use).
+  c.weights = basis / static_cast<double>(ne);
+  c.weights.rightCols(static_cast<Eigen::Index>(nc) - 1) *= 2.0;
+  // The parts' coupling rows and modes, the hub's then the shaft's; a section's start in the
   // part's coordinates is its bore coordinate less the part's offset.
   const std::array<const std::vector<double>*, 2> rows{&hub_coupling_rows_, &shaft_coupling_rows_};
   const std::array<double, 2> offset{0.0, shift};
@@ -715,7 +741,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     const std::vector<double>& edges = *rows[static_cast<std::size_t>(q)];
     // Rows keep the last solve's pressures (the last depth step's: the engaged pattern has moved
     // by a step, most rows' pressures barely change); none at the start of a chunk.
-    part.pressure.resize(edges.size() - 1, 0.0);
+    part.pressure.resize(nc * (edges.size() - 1), 0.0);
     part.extra.resize(part.pressure.size());
     // Each section's overlap with the part's coupling rows: rows, and the overlap's length.
     part.cover.clear();
@@ -736,48 +762,69 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     }
     part.first[count] = part.cover.size();
   }
-  // The rows' mean pressures from the sections' (each row's share: the overlap over its length).
-  auto add_pressure = [&](std::size_t s, double mean) {
+  // The rows' pressure amplitudes from a section's (each row's share: the overlap over its
+  // length); `amplitude` holds the section's nc components.
+  auto add_pressure = [&](std::size_t s, const double* amplitude) {
     for (int q = 0; q < 2; ++q) {
       CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+      const std::size_t part_rows = rows[static_cast<std::size_t>(q)]->size() - 1;
       for (std::size_t k = part.first[s]; k < part.first[s + 1]; ++k) {
         const auto [row, overlap] = part.cover[k];
-        part.pressure[static_cast<std::size_t>(row)] +=
-            mean * overlap / row_length(*rows[static_cast<std::size_t>(q)], row);
+        const double share = overlap / row_length(*rows[static_cast<std::size_t>(q)], row);
+        for (std::size_t comp = 0; comp < nc; ++comp) {
+          part.pressure[comp * part_rows + static_cast<std::size_t>(row)] +=
+              amplitude[comp] * share;
+        }
       }
     }
   };
-  // The extra displacement the rows' pressures give each section: the overlap-weighted mean of
-  // its rows' in either part.
+  // The extra displacement the rows' pressures give each section and component (component-major):
+  // the overlap-weighted mean of its rows' in either part.
   auto extra_at_sections = [&](double* out) {
     for (int q = 0; q < 2; ++q) {
       CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
-      breathing[static_cast<std::size_t>(q)]->ExtraDisplacement(part.pressure.data(),
-                                                                part.extra.data());
+      const std::size_t part_rows = rows[static_cast<std::size_t>(q)]->size() - 1;
+      for (std::size_t comp = 0; comp < nc; ++comp) {
+        (*breathing[static_cast<std::size_t>(q)])[mode_of(comp)].ExtraDisplacement(
+            part.pressure.data() + comp * part_rows, part.extra.data() + comp * part_rows);
+      }
     }
+    for (std::size_t comp = 0; comp < nc; ++comp) {
+      for (std::size_t s = 0; s < count; ++s) {
+        double x = 0.0;
+        for (int q = 0; q < 2; ++q) {
+          const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+          const double* extra =
+              part.extra.data() + comp * (rows[static_cast<std::size_t>(q)]->size() - 1);
+          for (std::size_t k = part.first[s]; k < part.first[s + 1]; ++k) {
+            x += extra[static_cast<std::size_t>(part.cover[k].first)] * part.cover[k].second;
+          }
+        }
+        out[comp * count + s] = x / length[s];
+      }
+    }
+  };
+  // Moves every section's gaps by the components `by` (component-major), left section-major in
+  // c.section_shift for the solver.
+  auto shift_gaps = [&](const std::vector<double>& by) {
+    c.section_shift.resize(count * nc);
     for (std::size_t s = 0; s < count; ++s) {
-      double x = 0.0;
-      for (const CouplingScratch::Part& part : c.part) {
-        for (std::size_t k = part.first[s]; k < part.first[s + 1]; ++k) {
-          x += part.extra[static_cast<std::size_t>(part.cover[k].first)] * part.cover[k].second;
+      Eigen::Map<Eigen::VectorXd> gap(gaps + s * ne, static_cast<Eigen::Index>(ne));
+      for (std::size_t comp = 0; comp < nc; ++comp) {
+        const double x = by[comp * count + s];
+        c.section_shift[s * nc + comp] = x;
+        if (x == 0.0) continue;
+        if (comp == 0) {
+          gap.array() += x;
+        } else {
+          gap += x * basis.col(static_cast<Eigen::Index>(comp));
         }
       }
-      out[s] = x / length[s];
     }
   };
-  // Moves every section's gaps by by_section[s] (the breathing mode: uniform), left in
-  // c.section_shift.
-  auto shift_gaps = [&](const auto& by_section) {
-    c.section_shift.resize(count);
-    for (std::size_t s = 0; s < count; ++s) {
-      const double x = by_section[static_cast<Eigen::Index>(s)];
-      c.section_shift[s] = x;
-      for (std::size_t j = 0; j < ne; ++j) gaps[s * ne + j] += x;
-    }
-  };
-  c.shift.resize(count);
+  c.shift.assign(nc * count, 0.0);
   extra_at_sections(c.shift.data());
-  shift_gaps(Eigen::Map<const Eigen::VectorXd>(c.shift.data(), m));
+  shift_gaps(c.shift);
   // The rigid equilibrium and the coupling are iterated together, one contact evaluation per
   // step of both: each evaluation's Newton point is where the next evaluates, with the gaps the
   // coupling's step moved (solving the rigid equilibrium to rounding for every coupling step took
@@ -789,18 +836,18 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   // steps on a light transition fit).
   constexpr double kHandoff = 1e-3;
   RigidContactResult r = solver->Solve(sections, freedom_, warm, {}, kHandoff);
-  c.target.resize(count);
-  c.mean.assign(count, 0.0);
-  c.stiffness.resize(count);
+  c.target.resize(nc * count);
   c.section_contact.resize(count);
-  c.step.setZero(m);
-  // The iteration contracts (see below); this bounds a pathological step's cost.
+  c.step.assign(nc * count, 0.0);
+  c.back.resize(nc * count);
+  // Each Newton step converges in a few solves; this bounds a pathological step's cost.
   constexpr int kMaxCouplingSolves = 20;
-  double last_change = std::numeric_limits<double>::infinity();
-  bool secants = true;
+  double last_residual = std::numeric_limits<double>::infinity(), applied = 1.0;
+  std::vector<double> amplitude(nc);
+  // An order-1 shift moves a section's net force, so the part's offset and tilt answer it: no
+  // closed form for the pressures.
+  const bool net_free = coupled_orders_.empty() || coupled_orders_.front() != 1;
   for (int solve = 0;; ++solve) {
-    c.previous.swap(c.mean);
-    c.mean.resize(count);
     for (CouplingScratch::Part& part : c.part) {
       std::fill(part.pressure.begin(), part.pressure.end(), 0.0);
     }
@@ -808,99 +855,143 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     for (std::size_t s = 0; s < count; ++s) {
       const double* p = solver->pressures().data() + s * ne;
       const std::vector<char>& set = solver->contact_sets()[s];
-      double sum = 0.0, touching = 0.0;
+      double sum = 0.0;
       for (std::size_t j = 0; j < ne; ++j) {
         sum += p[j];
-        touching += set[j] ? 1.0 : 0.0;
+        all_round = all_round && set[j];
       }
-      all_round = all_round && touching == static_cast<double>(ne);
-      c.mean[s] = sum / static_cast<double>(ne);
-      add_pressure(s, c.mean[s]);
-      // The mean pressure's response to a uniform closure: P0 over the touching columns; after a
-      // shifted solve, the measured secant, held between that and full contact's P0 (it counts
-      // the columns the shift closed).
-      const double touching_stiffness = breathing_stiffness_ * touching / static_cast<double>(ne);
-      c.stiffness[s] = touching_stiffness;
-      const double dx = c.step[static_cast<Eigen::Index>(s)];
-      if (solve > 0 && secants && dx != 0.0) {
-        c.stiffness[s] =
-            std::clamp(-(c.mean[s] - c.previous[s]) / dx, touching_stiffness, breathing_stiffness_);
-      } else if (solve == 0 && c.last_stiffness.size() == count) {
-        // The section's last secant, one depth step before (a shift closes more columns: the
-        // touching ones alone give a third to a half of the response a press fit's sections
-        // measure, and a first step that short gains nothing).
-        c.stiffness[s] = std::clamp(c.last_stiffness[s], touching_stiffness, breathing_stiffness_);
+      amplitude[0] = sum / static_cast<double>(ne);
+      const Eigen::Map<const Eigen::VectorXd> ps(p, static_cast<Eigen::Index>(ne));
+      for (std::size_t comp = 1; comp < nc; ++comp) {
+        amplitude[comp] = c.weights.col(static_cast<Eigen::Index>(comp)).dot(ps);
       }
+      add_pressure(s, amplitude.data());
     }
     extra_at_sections(c.target.data());
     double change = 0.0, size = 0.0;
-    for (std::size_t s = 0; s < count; ++s) {
-      change = std::max(change, std::abs(c.target[s] - c.shift[s]));
-      size = std::max(size, std::abs(c.target[s]));
+    for (std::size_t at = 0; at < nc * count; ++at) {
+      change = std::max(change, std::abs(c.target[at] - c.shift[at]));
+      size = std::max(size, std::abs(c.target[at]));
     }
     // A thousandth of the shift: a nanometre on micrometre shifts, below what the tables resolve.
-    if (change <= 1e-3 * size + 1e-13 || solve == kMaxCouplingSolves) {
-      c.last_stiffness = c.stiffness;
+    const double tolerance = 1e-3 * size + 1e-13;
+    if (change <= tolerance || solve == kMaxCouplingSolves) {
       // The rigid equilibrium to rounding at these gaps (its last step usually confirms it).
       if (!r.converged) {
-        c.section_dp.assign(count, 0.0);  // no gap moved since the last evaluation
+        c.section_dp.assign(count * nc, 0.0);  // no gap moved since the last evaluation
         r = solver->Solve(sections, freedom_, r.next, c.section_dp);
       }
       break;
     }
-    // A secant that made things worse (a rigid-body jump between two contact sets) is no guide:
-    // the touching columns' stiffness from here on, which cannot overshoot.
-    if (change > last_change) secants = false;
-    last_change = change;
-    // Quasi-Newton on x = M pbar(x), pbar(x) ~ pbar(x_k) - K (x - x_k) with K each section's
-    // breathing stiffness over its touching columns: (I + M K) dx = M pbar(x_k) - x_k, where M
-    // maps the sections' mean pressures to their extra displacement, per part
-    // M(s, t) = sum over the rows u of s and v of t of (overlap_su / length_s) X(u, v)
-    // (overlap_tv / length_v). Why it converges: with free faces X is negative semidefinite
-    // with X >= -diag(F 1) (axial_breathing.h: F is a compliance; the coupling only stiffens) and a
-    // section's true response to a shift lies between 0 and P0 (the other part in series), so the
-    // plain iteration x <- M pbar(x) contracts; K taken from the touching columns underestimates
-    // the response (a shift closes more of them) and keeps each step short of the root, never past
-    // it. The measured secants (held below full contact's P0) reach the root in two or three
-    // solves where the contact set grows with the shift, and are dropped once they make things
-    // worse.
-    c.system.setZero(m, m);
-    for (Eigen::Index t = 0; t < m; ++t) {
-      const auto tu = static_cast<std::size_t>(t);
-      for (int q = 0; q < 2; ++q) {
-        const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
-        const Eigen::MatrixXd& x = breathing[static_cast<std::size_t>(q)]->matrix();
-        for (std::size_t qt = part.first[tu]; qt < part.first[tu + 1]; ++qt) {
-          const int v = part.cover[qt].first;
-          const double wt = part.cover[qt].second /
-                            row_length(*rows[static_cast<std::size_t>(q)], v) * c.stiffness[tu];
-          for (Eigen::Index s = 0; s < m; ++s) {
-            const auto su = static_cast<std::size_t>(s);
-            double sum = 0.0;
-            for (std::size_t qs = part.first[su]; qs < part.first[su + 1]; ++qs) {
-              sum += part.cover[qs].second * x(part.cover[qs].first, v);
+    double residual = 0.0;
+    for (std::size_t at = 0; at < nc * count; ++at) {
+      residual += (c.target[at] - c.shift[at]) * (c.target[at] - c.shift[at]);
+    }
+    if (solve > 0 && residual > (1.0 - 1e-4 * applied) * last_residual && applied > 1.0 / 64) {
+      // The step made things worse (the contact sets it assumed changed under it): half of it
+      // back, and look again.
+      for (std::size_t at = 0; at < nc * count; ++at) c.back[at] = -0.5 * applied * c.step[at];
+      applied *= 0.5;
+      shift_gaps(c.back);
+      for (std::size_t at = 0; at < nc * count; ++at) c.shift[at] += c.back[at];
+      for (std::size_t s = 0; s < count; ++s) {
+        c.section_contact[s] = solver->contact_sets()[s];
+        sections[s].warm_contact = c.section_contact[s].data();
+      }
+      r = solver->Solve(sections, freedom_, r.next, c.section_shift, kHandoff);
+      continue;
+    }
+    last_residual = residual;
+    applied = 1.0;
+    // Newton's method on x = M a(x), x the sections' shifts and a their pressure amplitudes
+    // (component-major): (I - M J) dx = M a(x_k) - x_k, with M the rows' coupling mapped onto the
+    // sections, per part and mode M(s, t) = sum over the rows u of s and v of t of
+    // (overlap_su / length_s) X(u, v) (overlap_tv / length_v), and J = da/dx at the sections'
+    // contact sets (below). The contact sets move with the shifts, so a step that makes the
+    // residual worse is halved (a line search on |x - M a(x)|), down to a 64th.
+    CouplingSystem& system = c.newton;
+    std::vector<int> component_mode(nc);
+    for (std::size_t comp = 0; comp < nc; ++comp) {
+      component_mode[comp] = static_cast<int>(mode_of(comp));
+    }
+    system.Reset(m, std::move(component_mode));
+    for (std::size_t mode = 0; mode < modes; ++mode) {
+      Eigen::MatrixXd& coupling = system.mode_coupling(static_cast<int>(mode));
+      coupling.setZero(m, m);
+      for (Eigen::Index t = 0; t < m; ++t) {
+        const auto tu = static_cast<std::size_t>(t);
+        for (int q = 0; q < 2; ++q) {
+          const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+          const Eigen::MatrixXd& x = (*breathing[static_cast<std::size_t>(q)])[mode].matrix();
+          for (std::size_t qt = part.first[tu]; qt < part.first[tu + 1]; ++qt) {
+            const int v = part.cover[qt].first;
+            const double wt =
+                part.cover[qt].second / row_length(*rows[static_cast<std::size_t>(q)], v);
+            for (Eigen::Index s = 0; s < m; ++s) {
+              const auto su = static_cast<std::size_t>(s);
+              double sum = 0.0;
+              for (std::size_t qs = part.first[su]; qs < part.first[su + 1]; ++qs) {
+                sum += part.cover[qs].second * x(part.cover[qs].first, v);
+              }
+              coupling(s, t) += sum / length[su] * wt;
             }
-            c.system(s, t) += sum / length[su] * wt;
           }
         }
       }
     }
-    c.system.diagonal().array() += 1.0;
-    c.step = c.system.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(c.target.data(), m) -
-                                           Eigen::Map<const Eigen::VectorXd>(c.shift.data(), m));
+    // J = da/dx: each section's own, -w R_BB (its contact set's stiffness on the shift's
+    // components, w the amplitudes' weights), plus what the part's offset and tilt do in answer,
+    // which moves every section: H dq = sum_t A_t P_t^T R_UB,t dx_t (H the sections' stiffness
+    // on q, P_t = [I, y_t I] the section's offset per pose), each section's amplitudes then moving
+    // by w R_BU,s P_s dq. So I - M J = I + M diag(w R_BB) - (M L) H^-1 Q.
+    const int dofs = freedom_.tilt ? 4 : 2;
+    const auto n_all = static_cast<Eigen::Index>(nc * count);
+    Eigen::MatrixXd& pose_out = system.pose_out();  // L: amplitudes per pose step
+    pose_out.setZero(n_all, dofs);
+    Eigen::MatrixXd pose_in = Eigen::MatrixXd::Zero(dofs, n_all);  // Q: pose forces per shift
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
+    const auto ncx = static_cast<Eigen::Index>(nc);
+    Eigen::VectorXd w = Eigen::VectorXd::Constant(ncx, 2.0 / static_cast<double>(ne));
+    w[0] = 1.0 / static_cast<double>(ne);
+    for (std::size_t t = 0; t < count; ++t) {
+      const Eigen::MatrixXd r_t = solver->ShiftStiffness(t);
+      const auto ti = static_cast<Eigen::Index>(t);
+      Eigen::MatrixXd place = Eigen::MatrixXd::Zero(2, dofs);  // P_t
+      place.leftCols<2>().setIdentity();
+      if (dofs == 4) place.rightCols<2>() = sections[t].y * Eigen::Matrix2d::Identity();
+      const double area = sections[t].cell_area;
+      h += area * place.transpose() * r_t.bottomRightCorner(2, 2) * place;
+      const Eigen::MatrixXd bu = w.asDiagonal() * r_t.topRightCorner(ncx, 2) * place;
+      const Eigen::MatrixXd ub = area * place.transpose() * r_t.bottomLeftCorner(2, ncx);
+      system.response(ti) = w.asDiagonal() * r_t.topLeftCorner(ncx, ncx);
+      for (Eigen::Index comp = 0; comp < ncx; ++comp) {
+        pose_out.row(comp * m + ti) = bu.row(comp);
+        pose_in.col(comp * m + ti) = ub.col(comp);
+      }
+    }
+    if (dofs == 4) h.bottomRightCorner<2, 2>().diagonal().array() += freedom_.tilt_stiffness;
+    if (h.trace() > 0.0) {
+      system.PoseCoupled();
+      system.pose_in() = LeastNormSolveColumns(h, pose_in);
+    } else {
+      pose_out.resize(0, 0);  // nothing touches: the pose has no stiffness to answer with
+    }
+    const Eigen::VectorXd rhs = Eigen::Map<const Eigen::VectorXd>(c.target.data(), n_all) -
+                                Eigen::Map<const Eigen::VectorXd>(c.shift.data(), n_all);
+    Eigen::Map<Eigen::VectorXd>(c.step.data(), n_all) = system.Solve(rhs);
     shift_gaps(c.step);
-    for (std::size_t s = 0; s < count; ++s) c.shift[s] += c.step[static_cast<Eigen::Index>(s)];
+    for (std::size_t at = 0; at < nc * count; ++at) c.shift[at] += c.step[at];
     // In contact all round the step is exact (a uniform gap change is the breathing mode alone,
-    // P0 per unit, with no net force): the pressures move by -P0 dx without a solve, unless one
-    // would turn negative.
-    if (all_round && r.converged) {
-      c.section_dp.resize(count);
-      for (std::size_t s = 0; s < count; ++s) {
-        c.section_dp[s] = -breathing_stiffness_ * c.section_shift[s];
+    // P0 per unit, an order n's that mode alone, K_n per unit, none with a net force): the
+    // pressures move by -K dx without a solve, unless one would turn negative.
+    if (all_round && r.converged && net_free) {
+      c.section_dp.resize(count * nc);
+      for (std::size_t at = 0; at < count * nc; ++at) {
+        c.section_dp[at] = -mode_stiffness_[mode_of(at % nc)] * c.section_shift[at];
       }
       if (solver->ShiftFullContact(sections, c.section_dp, &r)) {
         // The rows' pressures at the answer, for the next depth step's start.
-        for (std::size_t s = 0; s < count; ++s) add_pressure(s, c.section_dp[s]);
+        for (std::size_t s = 0; s < count; ++s) add_pressure(s, c.section_dp.data() + s * nc);
         break;
       }
     }
@@ -953,10 +1044,10 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   const std::size_t nearest = t < 0.5 ? k : k + 1;
   Eigen::Vector4d warm;
   warm << Rotate(anchor_[nearest], -frame_), Rotate(tilt_[nearest], -frame_);
-  RigidSectionContact solver(section_, static_cast<int>(ne));
+  RigidSectionContact solver(section_, static_cast<int>(ne), coupled_orders_);
   CouplingScratch coupling;
   // The parts' elements, solved here where no depth step of the tables needed them.
-  AxialBreathing hub, shaft;
+  std::vector<AxialBreathing> hub, shaft;
   Breathing breathing{&hub_breathing_, &shaft_breathing_};
   if (axial_coupling_ && hub_breathing_.empty()) {
     SolveBreathing(&hub, &shaft);

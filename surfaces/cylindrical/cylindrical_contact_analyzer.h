@@ -13,6 +13,7 @@
 #include "framework/model/convex_polygon.h"
 #include "framework/model/section_contact.h"
 #include "framework/model/texture_contact.h"
+#include "surfaces/cylindrical/coupling_newton.h"
 
 namespace fitfeel::cylindrical {
 
@@ -103,39 +104,42 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     auto operator<=>(const RowPair&) const = default;
   };
   // What one thread of the prepare carries from step to step of a chunk: buffers and warm starts.
-  // The parts' axial coupling of one solve. Per coupling row of either part the mean pressure
-  // (kept from the last solve: the next depth step starts from its extra displacement) and that
-  // displacement; per section the rows it covers with the overlaps' lengths, the gap shift
-  // applied, its mean pressure, the breathing stiffness the update assumes and the contact set to
-  // restart from.
+  // The parts' axial coupling of one solve, by components: the breathing mode, then cos(n theta)
+  // and sin(n theta) of each coupled order (the solver's shift_basis()). Per coupling row of
+  // either part and component the pressure amplitude (kept from the last solve: the next depth
+  // step starts from its extra displacement) and that displacement; per section the rows it
+  // covers with the overlaps' lengths; per component and section (component-major) the gap shift
+  // applied, the pressure amplitude, the stiffness the update assumes; per section the contact
+  // set to restart from.
   struct CouplingScratch {
     // One per part, the hub's (bore coordinates) then the shaft's.
     struct Part {
-      std::vector<double> pressure, extra;        // per coupling row
+      std::vector<double> pressure, extra;        // per component, per coupling row
       std::vector<std::pair<int, double>> cover;  // per section: its rows and overlaps
       std::vector<std::size_t> first;             // where each section's cover starts
     };
     std::array<Part, 2> part;
-    std::vector<double> shift, target, mean, previous, stiffness, section_dp, section_shift;
-    std::vector<double> last_stiffness;  // each section's response at the last solve's end
+    std::vector<double> shift, target, step, back;
+    std::vector<double> section_dp, section_shift;  // section-major, for the solver
     std::vector<std::vector<char>> section_contact;
-    Eigen::MatrixXd system;
-    Eigen::VectorXd step;
+    Eigen::MatrixXd weights;  // columns x components: a section's pressures to its amplitudes
+    CouplingSystem newton;
   };
-  // The hub's and the shaft's elements, solved (EnsureBreathing, or the caller's own).
-  using Breathing = std::array<const AxialBreathing*, 2>;
+  // The hub's and the shaft's elements per coupled mode (the breathing mode, then each order of
+  // coupled_orders_), solved (EnsureBreathing, or the caller's own).
+  using Breathing = std::array<const std::vector<AxialBreathing>*, 2>;
   // The sections' solve with the parts' axial coupling (axial_coupling_ set): each section's gaps
   // (`gaps`, section-major, the solver's columns each) are shifted by the extra displacement of
-  // the coupling rows it covers in either part for the rows' mean pressures until they agree (a
-  // quasi-Newton iteration on the breathing mode: in full contact the second solve is the
-  // answer). Per section its start along the bore (bushing coordinates) and length; `shift` is
-  // the bushing coordinate of the shaft's coordinate 0 (depth - shaft length).
+  // the coupling rows it covers in either part for the rows' pressure amplitudes until they agree
+  // (a quasi-Newton iteration per component: in full contact the second solve is the answer).
+  // Per section its start along the bore (bushing coordinates) and length; `shift` is the
+  // bushing coordinate of the shaft's coordinate 0 (depth - shaft length).
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
                                    std::span<const double> start, std::span<const double> length,
                                    double shift, double* gaps, const Eigen::Vector4d& warm,
                                    CouplingScratch* scratch, const Breathing& breathing) const;
-  // Both parts' elements from their bodies and coupling rows.
-  void SolveBreathing(AxialBreathing* hub, AxialBreathing* shaft) const;
+  // Both parts' elements from their bodies and coupling rows, one per coupled mode.
+  void SolveBreathing(std::vector<AxialBreathing>* hub, std::vector<AxialBreathing>* shaft) const;
   // Solves them into the analyzer once, for the first depth step whose sections need them (any
   // thread of the prepare's; the others wait).
   void EnsureBreathing();
@@ -219,11 +223,14 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // and, once a depth step needed them, their elements (empty: not needed yet, or plane sections).
   bool axial_coupling_ = false;
   BreathingBody hub_body_, shaft_body_;
-  AxialBreathing hub_breathing_, shaft_breathing_;
+  std::vector<AxialBreathing> hub_breathing_, shaft_breathing_;  // per coupled mode
+  // The circumferential orders >= 2 coupled along the axes besides the breathing mode, and every
+  // mode's stiffness in contact all round (1 / C_n: the breathing mode's, then these orders').
+  std::vector<int> coupled_orders_;
+  std::vector<double> mode_stiffness_;
   std::mutex breathing_mutex_;  // prepare only: the first interfering step solves the elements
   // Their rows' edges: the grid's rows split to the shortest row of either part.
   std::vector<double> hub_coupling_rows_, shaft_coupling_rows_;
-  double breathing_stiffness_ = 0.0;  // 1 / C_0 of the section, Pa/m
   RigidFreedom freedom_;
   double frame_ = 0.0;  // angle of the elastic solve's column 0
   std::vector<double> normal_;

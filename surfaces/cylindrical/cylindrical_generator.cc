@@ -247,7 +247,7 @@ std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g,
 
 void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
   options.ExpectOnlyKeys(
-      {"size_draw", "size_limit", "tilt", "section", "columns", "axial_coupling"});
+      {"size_draw", "size_limit", "tilt", "section", "columns", "axial_coupling", "axial_orders"});
   ParseElasticOptions(options);  // the elastic law's keys, checked here so that validate sees them
   if (auto node = options.Find("size_draw")) {
     options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart

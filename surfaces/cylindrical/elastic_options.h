@@ -4,6 +4,7 @@
 
 #include "framework/core/config_node.h"
 #include "framework/core/quantity.h"
+#include "framework/model/axial_breathing.h"
 
 namespace fitfeel::cylindrical {
 
@@ -12,6 +13,7 @@ namespace fitfeel::cylindrical {
 //   section: plane_stress | plane_strain                          (default plane_stress)
 //   columns: <most columns of the elastic solve, even, 24..1440>  (default 120)
 //   axial_coupling: true | false                                  (default true)
+//   axial_orders: <highest circumferential order coupled along the axes, 0..12>     (default 6)
 struct ElasticOptions {
   // The grid's columns are averaged in blocks to at most this many for the elastic solve. Its
   // pivoting costs O(columns^3) per slice; 120 resolve harmonics to 60 (1 mm waves at d = 20 mm).
@@ -28,6 +30,12 @@ struct ElasticOptions {
   // (framework/model/axial_breathing.h); false leaves every section on its own (plane sections),
   // for comparison.
   bool axial_coupling = true;
+  // With the axial coupling, the orders 1 .. axial_orders are coupled too (0: the breathing mode
+  // alone): order 1 is the parts' bending and shear along their axes, the others their lobing.
+  // An order's coupling reaches about R / n along the axis, so high orders are local (the
+  // README's accuracy chart gives the 3-D FEM's error and the prepare's cost per setting).
+  static constexpr int kDefaultAxialOrders = 6;
+  int axial_orders = kDefaultAxialOrders;
 };
 
 inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
@@ -52,6 +60,9 @@ inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
     }
   }
   if (auto node = options.Find("axial_coupling")) o.axial_coupling = node->AsBool();
+  if (auto node = options.Find("axial_orders")) {
+    o.axial_orders = static_cast<int>(node->AsInteger(0, AxialBreathing::kHighestOrder));
+  }
   return o;
 }
 

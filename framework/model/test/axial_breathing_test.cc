@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "framework/core/error.h"
+#include "framework/model/harmonic_compliance.h"
 
 namespace fitfeel {
 namespace {
@@ -180,6 +181,84 @@ TEST(AxialBreathing, HoldsItsPropertiesOnRandomParts) {
     EXPECT_LT(eig.maxCoeff() * length.maxCoeff(), 1e-6 * scale) << trial;
     EXPECT_TRUE(c.influence().allFinite()) << trial;
   }
+}
+
+// Held faces and a uniform load cos(n theta) on every row: plane strain is then the exact 3-D
+// state, so each part's rows move by its plane-strain section compliance (Michell for n >= 2,
+// the body-force-balanced section about its centroid for n = 1), up to the elements' own
+// stiffness (measured: +0.2 % for n = 1, -0.5 to -1.0 % for n = 2 to 10). With free faces the
+// middle of this 20 mm part is stiffer than plane stress (n >= 2: the 3-D state lies between
+// plane stress and plane strain) and its ends softer; what the model adds to its plane-stress
+// sections there is X 1 = F 1 - c_n.
+TEST(AxialBreathing, EveryOrderWithHeldFacesIsItsPlaneStrainSection) {
+  const std::vector<double> edges = Edges(40, 0.5e-3);
+  const Material steel{"steel", kE, kNu};
+  for (int n : {1, 2, 3, 5, 10}) {
+    for (const BreathingBody& body : {Shaft(0.010, true), Hub(0.010, 0.015, true)}) {
+      const AxialBreathing part(body, edges, n);
+      EXPECT_EQ(part.order(), n);
+      const double plane_strain = RingHarmonicCompliance(body.inner_radius, body.outer_radius,
+                                                         body.loaded_inside, steel, true, n);
+      for (int i : {0, 20, 39}) {
+        EXPECT_NEAR(part.influence().row(i).sum(), plane_strain, 0.015 * plane_strain)
+            << "order " << n << (body.loaded_inside ? " hub" : " shaft") << " row " << i;
+      }
+    }
+    // Free faces, orders >= 2: stiffer than plane stress in the middle, softer at the ends.
+    if (n < 2) continue;
+    const BreathingBody hub = Hub(0.010, 0.015);
+    const AxialBreathing part(hub, edges, n);
+    const double plane_stress =
+        RingHarmonicCompliance(0.010, 0.015, true, steel, /*plane_strain=*/false, n);
+    EXPECT_LT(part.influence().row(20).sum(), 0.97 * plane_stress) << n;
+    EXPECT_GT(part.influence().row(0).sum(), part.influence().row(20).sum()) << n;
+    EXPECT_NEAR(part.matrix().row(20).sum(), part.influence().row(20).sum() - plane_stress,
+                1e-9 * plane_stress);
+  }
+}
+
+// Maxwell-Betti for every order >= 2 (no rigid motion to take out): F diag(1 / length) is
+// symmetric on uneven rows. A load's reach along the axis shrinks with the order (about R / n):
+// the displacement 3 mm from a loaded row, relative to the loaded row's own, falls with n.
+TEST(AxialBreathing, HigherOrdersAreReciprocalAndReachLess) {
+  std::vector<double> uneven{0.0};
+  for (int i = 0; i < 24; ++i) uneven.push_back(uneven.back() + (i % 3 == 0 ? 0.8e-3 : 0.5e-3));
+  for (int n : {2, 4, 8}) {
+    const AxialBreathing part(Hub(0.010, 0.015), uneven, n);
+    Eigen::MatrixXd scaled = part.influence();
+    for (int j = 0; j < scaled.cols(); ++j) scaled.col(j) /= uneven[j + 1] - uneven[j];
+    EXPECT_LT((scaled - scaled.transpose()).norm(), 1e-6 * scaled.norm()) << n;
+  }
+  const std::vector<double> edges = Edges(40, 0.5e-3);
+  double last = 1.0;
+  for (int n : {2, 3, 5, 8, 12}) {
+    const AxialBreathing part(Shaft(0.010), edges, n);
+    const double reach = part.influence()(26, 20) / part.influence()(20, 20);
+    EXPECT_LT(reach, last) << n;
+    last = reach;
+  }
+  EXPECT_LT(last, 0.05);
+}
+
+// Order 1 carries a net force, which the model's rigid parts take; what the coupling adds is the
+// part's bending about its axis. Three bands balanced along a free shaft (no net force or
+// moment): the pressed bands open, the pulled one closes, symmetrically about the middle.
+TEST(AxialBreathing, OrderOneIsTheDeformationAboutTheAxis) {
+  const std::vector<double> edges = Edges(40, 0.5e-3);
+  const AxialBreathing free_faces(Shaft(0.010), edges, 1);
+  // Rows 5-9 pushed one way, rows 15-24 the other way at half the pressure, rows 30-34 the first
+  // way: forces 5 - 5 = 0 per unit pressure and moments about the middle balanced by symmetry.
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(40);
+  for (int i = 5; i < 10; ++i) load[i] = 1.0;
+  for (int i = 15; i < 25; ++i) load[i] = -1.0;
+  for (int i = 30; i < 35; ++i) load[i] = 1.0;
+  const Eigen::VectorXd u = free_faces.influence() * load;
+  // The loaded bands open where pressed (the part bends away from them) and the result is
+  // symmetric about the middle.
+  EXPECT_GT(u[7], 0.0);
+  EXPECT_LT(u[20], 0.0);
+  for (int i = 0; i < 20; ++i) EXPECT_NEAR(u[i], u[39 - i], 1e-6 * std::abs(u[7])) << i;
+  EXPECT_THROW(AxialBreathing(Shaft(0.010), edges, AxialBreathing::kHighestOrder + 1), UserError);
 }
 
 TEST(AxialBreathing, RefusesWhatItCannotModel) {

@@ -105,6 +105,23 @@ TEST(HarmonicCompliance, OrderOneOfASolidShaftIsHalfItsBreathing) {
   EXPECT_GT(HarmonicCompliance(hollow, 1), HarmonicCompliance(SteelPair(), 1));
 }
 
+// The parts' shares (what the axial coupling subtracts from its elements) add up to the pair's.
+TEST(HarmonicCompliance, RingSharesAddUpToThePairs) {
+  for (bool strain : {false, true}) {
+    PressFitSection s = SteelPair();
+    s.di = 0.008;  // a hollow shaft: both shares are rings
+    s.plane_strain = strain;
+    for (int n : {1, 2, 3, 5, 10}) {
+      const double shaft = RingHarmonicCompliance(0.004, 0.010, false, s.shaft, strain, n);
+      const double hub = RingHarmonicCompliance(0.010, 0.015, true, s.hub, strain, n);
+      EXPECT_GT(shaft, 0.0) << n;
+      EXPECT_GT(hub, 0.0) << n;
+      EXPECT_NEAR(shaft + hub, HarmonicCompliance(s, n), 1e-12 * HarmonicCompliance(s, n)) << n;
+    }
+  }
+  EXPECT_THROW(RingHarmonicCompliance(0.0, 0.010, false, SteelPair().shaft, false, 0), UserError);
+}
+
 TEST(HarmonicCompliance, RefusesNegativeOrdersAndBadSections) {
   EXPECT_THROW(HarmonicCompliance(SteelPair(), -1), UserError);
   PressFitSection s = SteelPair();

@@ -45,6 +45,45 @@ TEST(CirculantContact, SolutionIsComplementary) {
   }
 }
 
+// The axial coupling's Newton step needs a section's response to harmonic gap shifts: E_F^T
+// G_FF^-1 E_F on its contact set, whichever factor (primal, dual, full contact) the solve left.
+// Against finite differences of the solve itself, on random partial and full contacts.
+TEST(CirculantContact, ShiftStiffnessIsThePressuresDerivative) {
+  const int n = 48;
+  const std::vector<double> compliance = CirculantCompliance(SteelPair(), n);
+  CirculantContact c(compliance, n);
+  Eigen::MatrixXd basis(n, 5), inverse(n, 5);
+  for (int j = 0; j < n; ++j) {
+    const double t = 2 * kPi * j / n;
+    basis.row(j) << 1.0, std::cos(2 * t), std::sin(2 * t), std::cos(t), std::sin(t);
+  }
+  for (int k = 0; k < 5; ++k) c.InverseTimes(basis.col(k).data(), inverse.col(k).data());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2e-6, 1e-6);
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<double> delta(n), p(n), q(n);
+    const double mean = trial % 4 == 0 ? 6e-6 : 0.0;  // every fourth all round
+    for (double& d : delta) d = u(rng) + mean;
+    CirculantContact::Factorization ws;
+    std::vector<char> active, again;
+    c.Solve(delta.data(), p.data(), &active, nullptr, &ws);
+    const Eigen::MatrixXd s = c.ShiftStiffness(ws, basis, inverse);
+    const double h = 1e-13;  // small enough to keep the contact set
+    for (int k = 0; k < 5; ++k) {
+      std::vector<double> shifted(delta);
+      for (int j = 0; j < n; ++j) shifted[j] -= h * basis(j, k);
+      again = active;
+      c.Solve(shifted.data(), q.data(), &again);
+      ASSERT_EQ(again, active) << trial;
+      const Eigen::VectorXd dp = (Eigen::Map<const Eigen::VectorXd>(q.data(), n) -
+                                  Eigen::Map<const Eigen::VectorXd>(p.data(), n)) /
+                                 h;
+      const Eigen::VectorXd response = basis.transpose() * dp;
+      EXPECT_LT((response + s.col(k)).norm(), 1e-5 * s.norm()) << trial << " " << k;
+    }
+  }
+}
+
 TEST(RigidSectionContact, OvalFieldInFullContactCarriesOnlyItsMean) {
   // delta0 + delta2 cos 2 theta with delta0 >= 0.145 delta2 stays in full contact, and the normal
   // force is P0 delta0 pi d L exactly: cos 2 theta integrates to zero.

@@ -162,7 +162,8 @@ TEST(ElasticLaw, InterferenceBelowTheSmoothingLeavesOnlyTheWeight) {
 TEST(ElasticLaw, OvalInterferenceCarriesOnlyItsMean) {
   // delta0 + delta2 cos 2 theta with delta0 >= 0.145 delta2: full contact, normal force exactly
   // P0 delta0 pi d L on plane sections (no roughness here, so nothing is smoothed). With the axial
-  // coupling, exactly what the uniform delta0 gives: the ovality adds nothing to the breathing.
+  // coupling (where the contact stays all round), exactly what the uniform delta0 gives: the
+  // ovality adds nothing to the breathing.
   const double p0 = 5.8333e12;
   ModelSettings plane = Elastic(TextureMode::kSampled);
   plane.extra = ConfigNode::Parse("{axial_coupling: false}", "test", "model.options");
@@ -173,6 +174,9 @@ TEST(ElasticLaw, OvalInterferenceCarriesOnlyItsMean) {
         oval, [](int, int) { return 0.0; }, plane, 360);
     const Outcome r = OutcomeAt(q.analyzer, q.law, 30e-3, {0, 0});
     EXPECT_NEAR(r.state.normal_force / (p0 * d0 * kPi * 0.020 * 0.020), 1.0, 1e-4) << ratio;
+    // In 3-D the ovality of a 20 mm part is 7 % stiffer than its plane-stress sections in the
+    // middle (axial_breathing_test.cc), so 0.15 is no longer all round there.
+    if (ratio < 0.2) continue;
     ElasticPair coupled(
         oval, [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), 360);
     ElasticPair uniform([&](int, int) { return d0; }, [](int, int) { return 0.0; },
@@ -433,11 +437,10 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
 // 20 mm, d2 = 30 mm), its rim drawn at delta0 + h (2 z / L)^2 cos(n theta) over a true bore: for
 // n = 1 a shaft bent in a parabola of sagitta h, for n >= 2 lobes growing towards the ends; each
 // part held only against rigid motion. Where the contact is partial the sections' loads change
-// along the axis (for n = 1, net radial loads that balance only over the length); the model
-// carries each section's on its own but for the breathing mode (an order-1 load through the rigid
-// part, each section deforming about its centroid), the FEM by the parts' deformation in 3-D.
-// Returns the model's error against the FEM; prints it and the paper law's.
-double SolidCaseError(const char* name) {
+// along the axis (for n = 1, net radial loads that balance only over the length), which the parts
+// carry by deforming along their axes in every order (axial_breathing.h). Returns the model's
+// error against the FEM (with the model's `options`); prints it and the paper law's.
+double SolidCaseError(const char* name, const char* options = "{}") {
   using test_support::FemValue;
   const int n = static_cast<int>(FemValue("solid.csv", name, 1));
   const double d0 = FemValue("solid.csv", name, 2) * kUm;
@@ -447,70 +450,48 @@ double SolidCaseError(const char* name) {
     const double z = (i + 0.5) * 0.020 / 40 - 0.010;
     return d0 + h * std::pow(2.0 * z / 0.020, 2) * std::cos(n * 2 * kPi * j / 72);
   };
-  const double model = NormalForce(shaft, 0.020, 0.020, "{}");
+  const double model = NormalForce(shaft, 0.020, 0.020, options);
   const double paper = PaperLawNormalForce(shaft, 0.020, 0.020);
   std::printf("%-20s FEM %8.1f N  elastic model %8.1f N %+6.2f %%  paper law %8.1f N %+6.2f %%\n",
               name, fem, model, 100 * (model / fem - 1), paper, 100 * (paper / fem - 1));
   // Per mm of the 20 mm engagement, as the sections' rows of the same chart.
-  ChartRow("FITFEEL_FEM_ACCURACY_CSV", name, fem / 20, model / 20, paper / 20);
+  if (std::string(options) == "{}") {
+    ChartRow("FITFEEL_FEM_ACCURACY_CSV", name, fem / 20, model / 20, paper / 20);
+  }
   return model / fem - 1.0;
 }
 
-// The uniform press fit (the 3-D mesh against the axisymmetric one too), the bent shaft in full
-// contact (the bend's order-1 load adds nothing to the normal force, in the FEM to seven digits)
-// and on a clearance, touching in three short bands (measured +3.3 %; the paper law -33.7 %, and
-// the elastic model with order 1 at the breathing mode's compliance -35.4 %). Asserted: 10 %.
-TEST(ElasticLaw, AgreesWithCalculixOnABentShaft) {
+// Every 3-D case: the uniform press fit (the 3-D mesh against the axisymmetric one too), the
+// bent shaft in full contact (the bend's order-1 load adds nothing to the normal force, in the
+// FEM to seven digits), on a clearance touching in three short bands, and in partial contact all
+// along; an ovality and three lobes growing from nothing in the middle to the ends. Measured:
+// within 2.2 % (the paper law: -34 to +4 %). Asserted: 5 % (the issue asks 10).
+TEST(ElasticLaw, AgreesWithCalculixInThreeDimensions) {
   EXPECT_NEAR(test_support::FemValue("solid.csv", "uniform-flush", 4) /
                   test_support::AxisymmetricFemForce("cylinder-flush"),
               1.0, 0.005);
-  for (const char* name : {"uniform-flush", "bent-full", "bent-clearance"}) {
-    EXPECT_LT(std::abs(SolidCaseError(name)), 0.10) << name;
+  for (const char* name : {"uniform-flush", "bent-full", "bent-clearance", "bent-partial",
+                           "oval-ends-partial", "lobed3-ends-partial"}) {
+    EXPECT_LT(std::abs(SolidCaseError(name)), 0.05) << name;
   }
 }
 
-// A 3-D case the model does not meet yet: skipped saying by how much and why (`what`), until the
-// model is within the issue's 10 % (then it passes).
-void ExpectWithinTenPercentOrSkip(const char* name, const char* what) {
-  const double error = SolidCaseError(name);
-  if (std::abs(error) >= 0.10) {
-    char percent[32];
-    std::snprintf(percent, sizeof percent, "%+.1f %%", 100 * error);
-    GTEST_SKIP() << "open (issue 9): the elastic model is " << percent << " off CalculiX on "
-                 << what;
-  }
-}
-
-// Not yet within reach: the bent shaft in partial contact all along its length. The model's
-// parts are rigid along their axes (each section deforms about its own centroid, order 1
-// included), while the FEM's shaft and hub also bend and shear along the axis under the bend's
-// loads, which change sign along it: the model is too stiff here (+13 %; with order 1 at the
-// breathing mode's compliance it was -6.4 %, but -35 % on the clearance above).
-TEST(ElasticLaw, AgreesWithCalculixOnABentShaftInPartialContactAllAlong) {
-  ExpectWithinTenPercentOrSkip("bent-partial",
-                               "a bent shaft in partial contact all along; its parts are rigid "
-                               "along their axes, where the FEM's bend and shear under the "
-                               "bend's loads");
-}
-
-// Not yet within reach: an oval shaft whose ovality grows from nothing in the middle to 8 um at
-// the ends, on 0.5 um of interference (round and in full contact in the middle, touching at two
-// bands at the ends). Each model section ovalizes on its own, at K_2 = 0.145 P0; in 3-D the
-// tube that is round in the middle resists ovalizing at its ends, bending along its axis, so the
-// model is about half the FEM's force (-53 %; the paper law's per-cell P0 happens to land at
-// +4 %). The shipped parts' lobing changes from section to section (the generator draws it
-// at sampling rows), so this reaches the shipped scenarios' forces.
-TEST(ElasticLaw, AgreesWithCalculixOnAnOvalityThatGrowsAlongTheAxis) {
-  ExpectWithinTenPercentOrSkip("oval-ends-partial",
-                               "an ovality growing along the axis; its sections ovalize on their "
-                               "own, with no coupling along the axis for orders n >= 1");
-}
-
-// The same with three lobes growing to 4 um at the ends, on 1 um.
-TEST(ElasticLaw, AgreesWithCalculixOnThreeLobesThatGrowAlongTheAxis) {
-  ExpectWithinTenPercentOrSkip("lobed3-ends-partial",
-                               "three lobes growing along the axis; its sections deform on their "
-                               "own, with no coupling along the axis for orders n >= 1");
+// What the orders' coupling along the axis buys, on the same cases: with the breathing mode alone
+// (axial_orders: 0; each section's other orders on their own, order 1 about its centroid) the
+// bent shaft in partial contact all along is 13 % too stiff (the parts do not bend along their
+// axes) and the ovality growing along the axis carries half the FEM's force (each section
+// ovalizes on its own at K_2 = 0.145 P0, where a tube that stays round in the middle resists
+// ovalizing at its ends); with order 1 alone coupled the bend comes right and the ovality not;
+// ovality and three lobes need their own orders.
+TEST(ElasticLaw, EachOrdersCouplingIsWhatItsCaseNeeds) {
+  EXPECT_GT(SolidCaseError("bent-partial", "{axial_orders: 0}"), 0.10);
+  EXPECT_LT(SolidCaseError("oval-ends-partial", "{axial_orders: 0}"), -0.40);
+  EXPECT_LT(SolidCaseError("lobed3-ends-partial", "{axial_orders: 0}"), -0.10);
+  EXPECT_LT(std::abs(SolidCaseError("bent-partial", "{axial_orders: 1}")), 0.05);
+  EXPECT_LT(SolidCaseError("oval-ends-partial", "{axial_orders: 1}"), -0.40);
+  EXPECT_LT(std::abs(SolidCaseError("oval-ends-partial", "{axial_orders: 2}")), 0.05);
+  EXPECT_LT(SolidCaseError("lobed3-ends-partial", "{axial_orders: 2}"), -0.10);
+  EXPECT_LT(std::abs(SolidCaseError("lobed3-ends-partial", "{axial_orders: 3}")), 0.05);
 }
 
 // The shaft (20 mm long, the rest of it outside the entrance) part way in: the hub's unloaded
