@@ -16,6 +16,7 @@
 #include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/elastic_options.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
+#include "surfaces/cylindrical/test/solid_cases.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
 #include <gtest/gtest.h>
@@ -433,25 +434,17 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
   }
 }
 
-// tools/fem/data/solid.csv: CalculiX in 3-D (tools/fem/solid.py), the shaft flush in the hub (both
-// 20 mm, d2 = 30 mm), its rim drawn at delta0 + h (2 z / L)^2 cos(n theta) over a true bore: for
-// n = 1 a shaft bent in a parabola of sagitta h, for n >= 2 lobes growing towards the ends; each
-// part held only against rigid motion. Where the contact is partial the sections' loads change
-// along the axis (for n = 1, net radial loads that balance only over the length), which the parts
-// carry by deforming along their axes in every order (axial_breathing.h). Returns the model's
-// error against the FEM (with the model's `options`); prints it and the paper law's.
+// tools/fem/data/solid.csv: CalculiX in 3-D (solid_cases.h), each part held only against rigid
+// motion. Where the contact is partial the sections' loads change along the axis (for n = 1, net
+// radial loads that balance only over the length), which the parts carry by deforming along their
+// axes in every order (axial_breathing.h). Returns the model's error against the FEM (with the
+// model's `options`); prints it and the paper law's.
 double SolidCaseError(const char* name, const char* options = "{}") {
-  using test_support::FemValue;
-  const int n = static_cast<int>(FemValue("solid.csv", name, 1));
-  const double d0 = FemValue("solid.csv", name, 2) * kUm;
-  const double h = FemValue("solid.csv", name, 3) * kUm;
-  const double fem = FemValue("solid.csv", name, 4);
-  auto shaft = [&](int i, int j) {
-    const double z = (i + 0.5) * 0.020 / 40 - 0.010;
-    return d0 + h * std::pow(2.0 * z / 0.020, 2) * std::cos(n * 2 * kPi * j / 72);
-  };
-  const double model = NormalForce(shaft, 0.020, 0.020, options);
-  const double paper = PaperLawNormalForce(shaft, 0.020, 0.020);
+  const SolidCase c(name);
+  const double model = SolidCaseElasticForce(c, options);
+  const double paper =
+      PaperLawNormalForce([&](int i, int j) { return c.ShaftDeviation(i, j); }, 0.020, 0.020);
+  const double fem = c.fem_force;
   std::printf("%-20s FEM %8.1f N  elastic model %8.1f N %+6.2f %%  paper law %8.1f N %+6.2f %%\n",
               name, fem, model, 100 * (model / fem - 1), paper, 100 * (paper / fem - 1));
   // Per mm of the 20 mm engagement, as the sections' rows of the same chart.
@@ -470,9 +463,8 @@ TEST(ElasticLaw, AgreesWithCalculixInThreeDimensions) {
   EXPECT_NEAR(test_support::FemValue("solid.csv", "uniform-flush", 4) /
                   test_support::AxisymmetricFemForce("cylinder-flush"),
               1.0, 0.005);
-  for (const char* name : {"uniform-flush", "bent-full", "bent-clearance", "bent-partial",
-                           "oval-ends-partial", "lobed3-ends-partial"}) {
-    EXPECT_LT(std::abs(SolidCaseError(name)), 0.05) << name;
+  for (const std::string& name : SolidCaseNames()) {
+    EXPECT_LT(std::abs(SolidCaseError(name.c_str())), 0.05) << name;
   }
 }
 
