@@ -259,8 +259,8 @@ Eigen::Matrix2d CirculantContact::OffsetStiffness() const {
 
 Eigen::MatrixXd CirculantContact::ShiftStiffness(const Factorization& ws,
                                                  const Eigen::MatrixXd& basis,
-                                                 const Eigen::MatrixXd& inverse_basis) const {
-  Eigen::MatrixXd full = basis.transpose() * inverse_basis;
+                                                 const Eigen::MatrixXd& inverse_basis,
+                                                 const Eigen::MatrixXd& full) const {
   if (ws.last_full) return full;
   if (ws.dual) {
     // As OffsetStiffness: B_F^T G_FF^-1 B_F = B^T H B - A_N^T H_NN^-1 A_N with A = H B.
@@ -316,6 +316,7 @@ RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_c
   for (Eigen::Index c = 1; c < components + 2; ++c) {
     contact_.InverseTimes(response_basis_.col(c).data(), inverse_response_basis_.col(c).data());
   }
+  full_response_ = response_basis_.transpose() * inverse_response_basis_;
 }
 
 double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
@@ -434,18 +435,7 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   const auto components = static_cast<std::size_t>(shift_basis_.cols());
   if (!gap_shift.empty() && gap_shift.size() == sections.size() * components &&
       inverse_gap_ready_.size() == sections.size()) {
-    // The same sections with every gap of section s grown by its shift's components: G^-1 is
-    // linear, so the products known from the last Solve move by the components' G^-1 b_c
-    // (O(n) each, not O(n^2)).
-    for (std::size_t s = 0; s < sections.size(); ++s) {
-      if (!inverse_gap_ready_[s]) continue;
-      Eigen::Map<Eigen::VectorXd> out(inverse_gap_.data() + s * nn, static_cast<Eigen::Index>(nn));
-      for (std::size_t c = 0; c < components; ++c) {
-        if (const double a = gap_shift[s * components + c]; a != 0.0) {
-          out += a * inverse_response_basis_.col(static_cast<Eigen::Index>(c));
-        }
-      }
-    }
+    ShiftInverseGaps(gap_shift);
   } else {
     inverse_gap_.resize(sections.size() * nn);
     inverse_gap_ready_.assign(sections.size(), 0);
@@ -553,37 +543,90 @@ Eigen::MatrixXd RigidSectionContact::ShiftStiffness(std::size_t section) const {
   if (section >= workspace_.size() || workspace_[section] == nullptr) {
     return Eigen::MatrixXd::Zero(size, size);
   }
-  return contact_.ShiftStiffness(*workspace_[section], response_basis_, inverse_response_basis_);
+  return contact_.ShiftStiffness(*workspace_[section], response_basis_, inverse_response_basis_,
+                                 full_response_);
 }
 
-bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> sections,
-                                           std::span<const double> dp, RigidContactResult* result) {
+void RigidSectionContact::ShiftInverseGaps(std::span<const double> shift) {
+  // The same sections with every gap of section s grown by its shift's components: G^-1 is
+  // linear, so the products known from the last Solve move by the components' G^-1 b_c (O(n)
+  // each, not O(n^2)).
   const auto nn = static_cast<std::size_t>(columns());
   const auto components = static_cast<std::size_t>(shift_basis_.cols());
-  if (sections.size() != active_.size() || dp.size() != sections.size() * components ||
-      pressure_.size() != sections.size() * nn) {
-    return false;
-  }
-  // Each section's pressure change column by column (the components' sum).
-  shifted_.resize(sections.size() * nn);
-  for (std::size_t s = 0; s < sections.size(); ++s) {
-    Eigen::Map<Eigen::VectorXd> change(shifted_.data() + s * nn, static_cast<Eigen::Index>(nn));
-    change = shift_basis_ * Eigen::Map<const Eigen::VectorXd>(
-                                dp.data() + s * components, static_cast<Eigen::Index>(components));
-    for (std::size_t j = 0; j < nn; ++j) {
-      if (!active_[s][j] ||
-          !(pressure_[s * nn + j] + change[static_cast<Eigen::Index>(j)] >= 0.0)) {
-        return false;
+  for (std::size_t s = 0; s < inverse_gap_ready_.size(); ++s) {
+    if (!inverse_gap_ready_[s]) continue;
+    Eigen::Map<Eigen::VectorXd> out(inverse_gap_.data() + s * nn, static_cast<Eigen::Index>(nn));
+    for (std::size_t c = 0; c < components; ++c) {
+      if (const double a = shift[s * components + c]; a != 0.0) {
+        out += a * inverse_response_basis_.col(static_cast<Eigen::Index>(c));
       }
     }
   }
+}
+
+bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> sections,
+                                           const RigidFreedom& freedom,
+                                           std::span<const double> shift,
+                                           RigidContactResult* result) {
+  const auto nn = static_cast<std::size_t>(columns());
+  const auto nc = shift_basis_.cols();
+  const auto components = static_cast<std::size_t>(nc);
+  if (sections.size() != active_.size() || shift.size() != sections.size() * components ||
+      pressure_.size() != sections.size() * nn) {
+    return false;
+  }
+  for (const std::vector<char>& set : active_) {
+    for (char a : set) {
+      if (!a) return false;
+    }
+  }
+  // In contact all round everything is linear: the pressures move by -G^-1 B x_s, and by
+  // G^-1 U P_s dq where the part's offset and tilt answer the net forces the shifts make
+  // (order 1's; the others have none), H dq = sum_s A_s P_s^T U^T G^-1 B x_s.
+  const int dofs = freedom.tilt ? 4 : 2;
+  const auto inverse_b = inverse_response_basis_.leftCols(nc);
+  const auto inverse_u = inverse_response_basis_.rightCols(2);
+  const Eigen::MatrixXd ub = response_basis_.rightCols(2).transpose() * inverse_b;
+  const Eigen::Matrix2d uu = response_basis_.rightCols(2).transpose() * inverse_u;
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(dofs);
+  auto place = [&](const ContactSection& section) {
+    Eigen::MatrixXd p = Eigen::MatrixXd::Zero(2, dofs);
+    p.leftCols<2>().setIdentity();
+    if (dofs == 4) p.rightCols<2>() = section.y * Eigen::Matrix2d::Identity();
+    return p;
+  };
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    const Eigen::MatrixXd p = place(sections[s]);
+    const Eigen::Map<const Eigen::VectorXd> x(shift.data() + s * components, nc);
+    h += sections[s].cell_area * p.transpose() * uu * p;
+    rhs += sections[s].cell_area * p.transpose() * (ub * x);
+  }
+  if (dofs == 4) h.bottomRightCorner<2, 2>().diagonal().array() += freedom.tilt_stiffness;
+  const Eigen::VectorXd dq = LeastNormSolve(h, rhs);
+  shifted_.resize(sections.size() * nn);
+  for (std::size_t s = 0; s < sections.size(); ++s) {
+    Eigen::Map<Eigen::VectorXd> change(shifted_.data() + s * nn, static_cast<Eigen::Index>(nn));
+    const Eigen::Map<const Eigen::VectorXd> x(shift.data() + s * components, nc);
+    change = inverse_u * (place(sections[s]) * dq) - inverse_b * x;
+    for (std::size_t j = 0; j < nn; ++j) {
+      if (!(pressure_[s * nn + j] + change[static_cast<Eigen::Index>(j)] >= 0.0)) return false;
+    }
+  }
+  // The gaps the caller moved: what a later Solve with a shift from here starts from.
+  if (inverse_gap_ready_.size() == sections.size()) ShiftInverseGaps(shift);
+  result->offset += dq.head<2>();
+  if (dofs == 4) result->tilt += dq.tail<2>();
+  result->next << result->offset, result->tilt;
   result->normal_force = 0.0;
   result->max_pressure = 0.0;
+  result->resultant.setZero();
   for (std::size_t s = 0; s < sections.size(); ++s) {
     for (std::size_t j = 0; j < nn; ++j) {
       double& p = pressure_[s * nn + j];
       p += shifted_[s * nn + j];
       result->normal_force += p * sections[s].cell_area;
+      result->resultant += p * sections[s].cell_area * Eigen::Vector2d(cos_[j], sin_[j]);
       result->max_pressure = std::max(result->max_pressure, p);
     }
   }

@@ -68,9 +68,10 @@ class FITFEEL_API CirculantContact {
   Eigen::Matrix2d OffsetStiffness() const;
   // The same for gap shifts along the columns of `basis` (n x k) at a fixed offset, after a solve
   // with the workspace `ws`: d(B^T p)/d(shift) = -B_F^T G_FF^-1 B_F (k x k, Pa/m), F the contact
-  // set. `inverse_basis` = G^-1 B.
+  // set. `inverse_basis` = G^-1 B, `full` = B^T G^-1 B (the answer in contact all round).
   Eigen::MatrixXd ShiftStiffness(const Factorization& ws, const Eigen::MatrixXd& basis,
-                                 const Eigen::MatrixXd& inverse_basis) const;
+                                 const Eigen::MatrixXd& inverse_basis,
+                                 const Eigen::MatrixXd& full) const;
 
  private:
   int n_;
@@ -161,15 +162,15 @@ class FITFEEL_API RigidSectionContact {
   // directions last), S = ShiftStiffness(s) = E_F^T G_FF^-1 E_F, and
   // d(E^T p_s) = S (-d shift; d e_s) (a section out of contact: zero).
   Eigen::MatrixXd ShiftStiffness(std::size_t section) const;
-  // Moves the last Solve's pressures of every section that is in contact all round by dp's
-  // components (section-major, shift_basis()'s columns; Pa): the exact answer when that
-  // section's gaps grow by each component over its compliance, -dp_c / K_n (a uniform closure is
-  // the breathing mode alone, an order n >= 2 that mode alone, none with a net force, so the
-  // part's offset and tilt stay). Returns false, changing nothing, if a section is not in contact
-  // all round or a pressure would turn negative. The result's normal force and largest pressure
-  // follow.
-  bool ShiftFullContact(std::span<const ContactSection> sections, std::span<const double> dp,
-                        RigidContactResult* result);
+  // After a Solve that left every section in contact all round: the exact answer when the
+  // gaps of section s grow by its shift components (section-major, shift_basis()'s columns; m).
+  // All round the contact is linear, so the pressures move by -G^-1 B x_s, and the part's offset
+  // and tilt (`freedom`'s) move to balance the net forces the shifts make (order 1's; a uniform or
+  // order n >= 2 change has none and leaves the part where it was). Updates the result's pose,
+  // normal force, resultant and largest pressure. Returns false, changing nothing, if a section
+  // is not in contact all round or a pressure would turn negative.
+  bool ShiftFullContact(std::span<const ContactSection> sections, const RigidFreedom& freedom,
+                        std::span<const double> shift, RigidContactResult* result);
 
   // `gap_shift`, when given (shift_basis()'s components per section, section-major): the sections
   // are the last Solve's with the gaps of section s grown since by its components (the caller's
@@ -192,6 +193,8 @@ class FITFEEL_API RigidSectionContact {
   double DistanceToContact(std::span<const ContactSection> sections, const RigidFreedom& freedom,
                            const Eigen::Vector4d& q, const Eigen::Vector4d& dir) const;
 
+  // Moves the kept G^-1 gap of every section by its shift's components (section-major).
+  void ShiftInverseGaps(std::span<const double> shift);
   // G^-1 gap of each section of the current Solve, computed when first needed.
   const double* InverseGap(const ContactSection& section, std::size_t index);
 
@@ -199,6 +202,7 @@ class FITFEEL_API RigidSectionContact {
   std::vector<int> shift_orders_;
   Eigen::MatrixXd shift_basis_;                              // B
   Eigen::MatrixXd response_basis_, inverse_response_basis_;  // E = [B, cos, sin] and G^-1 E
+  Eigen::MatrixXd full_response_;                            // E^T G^-1 E
   std::vector<double> cos_, sin_, delta_, full_, pressure_, inverse_gap_, shifted_;
   std::vector<char> inverse_gap_ready_;
   std::vector<CirculantContact::Factorization> factors_;  // one per section of the current Solve

@@ -845,9 +845,6 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   constexpr int kMaxCouplingSolves = 20;
   double last_residual = std::numeric_limits<double>::infinity(), applied = 1.0;
   std::vector<double> amplitude(nc);
-  // An order-1 shift moves a section's net force, so the part's offset and tilt answer it: no
-  // closed form for the pressures.
-  const bool net_free = coupled_orders_.empty() || coupled_orders_.front() != 1;
   for (int solve = 0;; ++solve) {
     for (CouplingScratch::Part& part : c.part) {
       std::fill(part.pressure.begin(), part.pressure.end(), 0.0);
@@ -982,19 +979,12 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     Eigen::Map<Eigen::VectorXd>(c.step.data(), n_all) = system.Solve(rhs);
     shift_gaps(c.step);
     for (std::size_t at = 0; at < nc * count; ++at) c.shift[at] += c.step[at];
-    // In contact all round the step is exact (a uniform gap change is the breathing mode alone,
-    // P0 per unit, an order n's that mode alone, K_n per unit, none with a net force): the
-    // pressures move by -K dx without a solve, unless one would turn negative.
-    if (all_round && r.converged && net_free) {
-      c.section_dp.resize(count * nc);
-      for (std::size_t at = 0; at < count * nc; ++at) {
-        c.section_dp[at] = -mode_stiffness_[mode_of(at % nc)] * c.section_shift[at];
-      }
-      if (solver->ShiftFullContact(sections, c.section_dp, &r)) {
-        // The rows' pressures at the answer, for the next depth step's start.
-        for (std::size_t s = 0; s < count; ++s) add_pressure(s, c.section_dp.data() + s * nc);
-        break;
-      }
+    // In contact all round the step is exact without a solve (linear: the pressures move by
+    // -G^-1 B dx, the part's offset and tilt by what order 1's net forces ask), unless a pressure
+    // would turn negative; the next pass checks the shifts against it.
+    if (all_round && r.converged &&
+        solver->ShiftFullContact(sections, freedom_, c.section_shift, &r)) {
+      continue;
     }
     for (std::size_t s = 0; s < count; ++s) {
       c.section_contact[s] = solver->contact_sets()[s];

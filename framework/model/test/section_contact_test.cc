@@ -67,7 +67,7 @@ TEST(CirculantContact, ShiftStiffnessIsThePressuresDerivative) {
     CirculantContact::Factorization ws;
     std::vector<char> active, again;
     c.Solve(delta.data(), p.data(), &active, nullptr, &ws);
-    const Eigen::MatrixXd s = c.ShiftStiffness(ws, basis, inverse);
+    const Eigen::MatrixXd s = c.ShiftStiffness(ws, basis, inverse, basis.transpose() * inverse);
     const double h = 1e-13;  // small enough to keep the contact set
     for (int k = 0; k < 5; ++k) {
       std::vector<double> shifted(delta);
@@ -160,48 +160,65 @@ TEST(RigidSectionContact, WeightIsCarriedInClearance) {
   EXPECT_NEAR(r.offset.y(), -5e-6, 1e-7);
 }
 
-// A uniform gap change of a section in contact all round moves its pressures by -P0 per unit
-// (the breathing mode alone) and leaves the part where it was: ShiftFullContact against a solve
-// of the shifted gaps, and its refusals.
-TEST(RigidSectionContact, ShiftFullContactIsTheSolveOfUniformlyShiftedGaps) {
+// Gap changes of sections in contact all round are linear: ShiftFullContact against a solve of
+// the shifted gaps, for a uniform change (the breathing mode alone: the part stays where it was)
+// and for changes with orders 1 and 2 (order 1's net forces move the part's offset and tilt),
+// and its refusals.
+TEST(RigidSectionContact, ShiftFullContactIsTheSolveOfShiftedGaps) {
   const int n = 48, rows = 6;
-  const double l = 0.012, p0 = 1.0 / HarmonicCompliance(SteelPair(), 0);
-  std::vector<std::vector<double>> gaps(rows, std::vector<double>(n)), shifted = gaps;
-  std::vector<ContactSection> before, after;
-  std::vector<double> dx(rows), dp(rows);
-  for (int i = 0; i < rows; ++i) {
-    dx[i] = 0.1e-6 * (i - 2);  // some grow, some shrink
-    dp[i] = -p0 * dx[i];
-    for (int j = 0; j < n; ++j) {
-      gaps[i][j] = -4e-6 + 1e-6 * std::cos(3 * 2 * kPi * j / n) + 0.2e-6 * i;
-      shifted[i][j] = gaps[i][j] + dx[i];
+  const double l = 0.012;
+  for (const std::vector<int>& orders : {std::vector<int>{}, std::vector<int>{1, 2}}) {
+    const std::size_t components = 1 + 2 * orders.size();
+    std::vector<std::vector<double>> gaps(rows, std::vector<double>(n)), shifted = gaps;
+    std::vector<ContactSection> before, after;
+    std::vector<double> dx(rows * components, 0.0);
+    for (int i = 0; i < rows; ++i) {
+      dx[i * components] = 0.1e-6 * (i - 2);  // some grow, some shrink
+      if (!orders.empty()) {
+        dx[i * components + 1] = 0.05e-6 * (i - 3);  // cos theta: a bend
+        dx[i * components + 4] = 0.2e-6;             // sin 2 theta
+      }
+      for (int j = 0; j < n; ++j) {
+        const double t = 2 * kPi * j / n;
+        gaps[i][j] = -4e-6 + 1e-6 * std::cos(3 * t) + 0.2e-6 * i;
+        shifted[i][j] = gaps[i][j] + dx[i * components];
+        if (!orders.empty()) {
+          shifted[i][j] += dx[i * components + 1] * std::cos(t) + 0.2e-6 * std::sin(2 * t);
+        }
+      }
+      ContactSection s = Slice(gaps[i], l / rows);
+      s.y = (i + 0.5) * l / rows - l / 2;
+      before.push_back(s);
+      s.gap = shifted[i].data();
+      after.push_back(s);
     }
-    ContactSection s = Slice(gaps[i], l / rows);
-    s.y = (i + 0.5) * l / rows - l / 2;
-    before.push_back(s);
-    s.gap = shifted[i].data();
-    after.push_back(s);
+    RigidFreedom freedom;
+    freedom.tilt = true;
+    RigidSectionContact solver(SteelPair(), n, orders), reference(SteelPair(), n);
+    RigidContactResult r = solver.Solve(before, freedom, Eigen::Vector4d::Zero());
+    ASSERT_TRUE(solver.ShiftFullContact(before, freedom, dx, &r));
+    const RigidContactResult expected = reference.Solve(after, freedom, Eigen::Vector4d::Zero());
+    EXPECT_NEAR(r.normal_force, expected.normal_force, 1e-9 * expected.normal_force);
+    EXPECT_NEAR(r.max_pressure, expected.max_pressure, 1e-9 * expected.max_pressure);
+    EXPECT_LT((r.offset - expected.offset).norm(), 1e-12);
+    EXPECT_LT((r.tilt - expected.tilt).norm(), 1e-10);
+    if (!orders.empty()) {
+      EXPECT_GT(r.tilt.norm(), 1e-6);  // order 1 did move the part
+    }
+    for (std::size_t k = 0; k < solver.pressures().size(); ++k) {
+      EXPECT_NEAR(solver.pressures()[k], reference.pressures()[k], 1e-6 * expected.max_pressure);
+    }
+    // A pressure that would turn negative, or a section not in contact all round: refused,
+    // unchanged.
+    const std::vector<double> kept = solver.pressures();
+    std::vector<double> too_much(rows * components, 0.0);
+    for (int i = 0; i < rows; ++i) too_much[i * components] = 10e-6;
+    EXPECT_FALSE(solver.ShiftFullContact(before, freedom, too_much, &r));
+    EXPECT_EQ(solver.pressures(), kept);
+    for (int j = 0; j < n; ++j) gaps[0][j] += 10e-6 * std::cos(2 * kPi * j / n) + 3e-6;
+    solver.Solve(before, freedom, Eigen::Vector4d::Zero());
+    EXPECT_FALSE(solver.ShiftFullContact(before, freedom, dx, &r));
   }
-  RigidFreedom freedom;
-  freedom.tilt = true;
-  RigidSectionContact solver(SteelPair(), n), reference(SteelPair(), n);
-  RigidContactResult r = solver.Solve(before, freedom, Eigen::Vector4d::Zero());
-  ASSERT_TRUE(solver.ShiftFullContact(before, dp, &r));
-  const RigidContactResult expected = reference.Solve(after, freedom, Eigen::Vector4d::Zero());
-  EXPECT_NEAR(r.normal_force, expected.normal_force, 1e-9 * expected.normal_force);
-  EXPECT_NEAR(r.max_pressure, expected.max_pressure, 1e-9 * expected.max_pressure);
-  EXPECT_LT((r.offset - expected.offset).norm(), 1e-15);
-  for (std::size_t k = 0; k < solver.pressures().size(); ++k) {
-    EXPECT_NEAR(solver.pressures()[k], reference.pressures()[k], 1e-6 * expected.max_pressure);
-  }
-  // A pressure that would turn negative, or a section not in contact all round: refused, unchanged.
-  const std::vector<double> kept = solver.pressures();
-  std::vector<double> too_much(rows, -2.0 * expected.max_pressure);
-  EXPECT_FALSE(solver.ShiftFullContact(before, too_much, &r));
-  EXPECT_EQ(solver.pressures(), kept);
-  for (int j = 0; j < n; ++j) gaps[0][j] += 10e-6 * std::cos(2 * kPi * j / n) + 3e-6;
-  solver.Solve(before, freedom, Eigen::Vector4d::Zero());
-  EXPECT_FALSE(solver.ShiftFullContact(before, dp, &r));
 }
 
 // A solve that hands off (returns the next Newton point unevaluated once the unbalanced force is
