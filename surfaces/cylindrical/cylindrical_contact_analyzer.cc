@@ -201,10 +201,6 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       }
     }
     solver.emplace(section, n_ / block_, coupled_orders_);
-    mode_stiffness_.assign(1, 1.0 / HarmonicCompliance(section, 0));
-    for (int order : coupled_orders_) {
-      mode_stiffness_.push_back(1.0 / HarmonicCompliance(section, order));
-    }
     if (options.axial_coupling) {
       BreathingBody hub;
       hub.inner_radius = 0.5 * d.d1;
@@ -715,7 +711,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     std::span<const double> length, double shift, double* gaps, const Eigen::Vector4d& warm,
     CouplingScratch* scratch, const Breathing& breathing) const {
   if (!axial_coupling_ || sections.empty()) return solver->Solve(sections, freedom_, warm);
-  const std::size_t modes = mode_stiffness_.size();
+  const std::size_t modes = coupled_orders_.size() + 1;  // the breathing mode, then the orders
   assert(breathing[0]->size() == modes && breathing[1]->size() == modes);
   const auto ne = static_cast<std::size_t>(solver->columns());
   const std::size_t count = sections.size();

@@ -109,8 +109,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // either part and component the pressure amplitude (kept from the last solve: the next depth
   // step starts from its extra displacement) and that displacement; per section the rows it
   // covers with the overlaps' lengths; per component and section (component-major) the gap shift
-  // applied, the pressure amplitude, the stiffness the update assumes; per section the contact
-  // set to restart from.
+  // applied, its target and the Newton step; per section the contact set to restart from; and the
+  // Newton system.
   struct CouplingScratch {
     // One per part, the hub's (bore coordinates) then the shaft's.
     struct Part {
@@ -224,10 +224,9 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   bool axial_coupling_ = false;
   BreathingBody hub_body_, shaft_body_;
   std::vector<AxialBreathing> hub_breathing_, shaft_breathing_;  // per coupled mode
-  // The circumferential orders >= 2 coupled along the axes besides the breathing mode, and every
-  // mode's stiffness in contact all round (1 / C_n: the breathing mode's, then these orders').
+  // The circumferential orders (1 .. axial_orders) coupled along the axes besides the breathing
+  // mode.
   std::vector<int> coupled_orders_;
-  std::vector<double> mode_stiffness_;
   std::mutex breathing_mutex_;  // prepare only: the first interfering step solves the elements
   // Their rows' edges: the grid's rows split to the shortest row of either part.
   std::vector<double> hub_coupling_rows_, shaft_coupling_rows_;

@@ -26,7 +26,7 @@ struct ElasticOptions {
   double tilt_stiffness = 0.0;  // what holds its tilt, N*m/rad (0 = nothing)
   bool plane_strain = false;
   int columns = kDefaultColumns;
-  // The hub's and the shaft's breathing modes coupled along their axes
+  // The hub's and the shaft's deformation coupled along their axes
   // (framework/model/axial_breathing.h); false leaves every section on its own (plane sections),
   // for comparison.
   bool axial_coupling = true;
