@@ -8,6 +8,7 @@
 
 #include "framework/core/error.h"
 #include "surfaces/cylindrical/cylindrical_generator.h"
+#include "surfaces/cylindrical/elastic_options.h"
 #include "surfaces/cylindrical/test/test_parts.h"
 
 namespace fitfeel::cylindrical {
@@ -40,7 +41,8 @@ TEST(CylindricalGeometry, ParsesShaftAndHub) {
   EXPECT_DOUBLE_EQ(hub->outer_diameter(), 0.03);
   EXPECT_EQ(hub->Describe(), "bore d=20 mm l=20 mm hub outer d=30 mm");
   // Lead-in chamfers: a length is ISO 13715's 45 degree "C" edge; or length and angle.
-  auto c = ParseCylindricalGeometry(Spec(Role::kInner, 0.02), Node("{length: 60 mm, chamfer: 0.5 mm}"));
+  auto c =
+      ParseCylindricalGeometry(Spec(Role::kInner, 0.02), Node("{length: 60 mm, chamfer: 0.5 mm}"));
   EXPECT_DOUBLE_EQ(c->chamfer().length, 0.5e-3);
   EXPECT_NEAR(c->chamfer().width(), 0.5e-3, 1e-15);
   EXPECT_EQ(c->Describe(), "shaft d=20 mm l=60 mm chamfer 0.5 mm x 45 deg");
@@ -73,7 +75,8 @@ TEST(CylindricalGeometry, RefusesBadGeometryAtTheKey) {
       {Role::kInner, "{length: 60 mm, chamfer: 11 mm}", "parts.p.geometry.chamfer"},
       {Role::kOuter, "{length: 20 mm, outer_diameter: 30 mm, chamfer: 6 mm}",
        "parts.p.geometry.chamfer"},
-      {Role::kOuter, "{length: 20 mm, outer_diameter: 30 mm, chamfer: {length: 1 mm, angle: 85 deg}}",
+      {Role::kOuter,
+       "{length: 20 mm, outer_diameter: 30 mm, chamfer: {length: 1 mm, angle: 85 deg}}",
        "parts.p.geometry.chamfer.angle"},
       {Role::kInner, "{length: 20 mm, chamfer: {angle: 30 deg}}", "parts.p.geometry.chamfer"},
       {Role::kInner, "{length: 20 mm, chamfer: -1 mm}", "parts.p.geometry.chamfer"},
@@ -103,6 +106,15 @@ TEST(CylindricalVariationGenerator, ReadsItsModelOptions) {
   EXPECT_EQ(g.options().size_limit, SizeLimit::kRadial);
   EXPECT_THROW(g.Configure(Node("{size_draw: per_row}", "model.options")), ScenarioError);
   EXPECT_THROW(g.Configure(Node("{sizes: per_cell}", "model.options")), ScenarioError);
+  // The elastic law's keys are checked here too: axial_orders is an order from 0 to 12.
+  g.Configure(Node("{axial_orders: 0}", "model.options"));
+  g.Configure(Node("{axial_orders: 12}", "model.options"));
+  for (const char* bad : {"{axial_orders: 13}", "{axial_orders: -1}", "{axial_orders: two}"}) {
+    EXPECT_THROW(g.Configure(Node(bad, "model.options")), ScenarioError) << bad;
+  }
+  EXPECT_EQ(ParseElasticOptions(Node("{axial_orders: 3}", "model.options")).axial_orders, 3);
+  EXPECT_EQ(ParseElasticOptions(Node("{}", "model.options")).axial_orders,
+            ElasticOptions::kDefaultAxialOrders);
 }
 
 }  // namespace
