@@ -547,6 +547,13 @@ Eigen::MatrixXd RigidSectionContact::ShiftStiffness(std::size_t section) const {
                                  full_response_);
 }
 
+Eigen::MatrixXd SectionPlacement(const ContactSection& section, const RigidFreedom& freedom) {
+  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(2, freedom.tilt ? 4 : 2);
+  p.leftCols<2>().setIdentity();
+  if (freedom.tilt) p.rightCols<2>() = section.y * Eigen::Matrix2d::Identity();
+  return p;
+}
+
 void RigidSectionContact::ShiftInverseGaps(std::span<const double> shift) {
   // The same sections with every gap of section s grown by its shift's components: G^-1 is
   // linear, so the products known from the last Solve move by the components' G^-1 b_c (O(n)
@@ -590,12 +597,7 @@ bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> secti
   const Eigen::Matrix2d uu = response_basis_.rightCols(2).transpose() * inverse_u;
   Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(dofs);
-  auto place = [&](const ContactSection& section) {
-    Eigen::MatrixXd p = Eigen::MatrixXd::Zero(2, dofs);
-    p.leftCols<2>().setIdentity();
-    if (dofs == 4) p.rightCols<2>() = section.y * Eigen::Matrix2d::Identity();
-    return p;
-  };
+  auto place = [&](const ContactSection& section) { return SectionPlacement(section, freedom); };
   for (std::size_t s = 0; s < sections.size(); ++s) {
     const Eigen::MatrixXd p = place(sections[s]);
     const Eigen::Map<const Eigen::VectorXd> x(shift.data() + s * components, nc);

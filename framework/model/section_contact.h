@@ -119,6 +119,11 @@ struct RigidFreedom {
   Eigen::Vector2d moment{0.0, 0.0};  // its first moment about the reference point, N*m
 };
 
+// A section's offset per step of the part's pose q = (offset, tilt): P = [I, y I] (2 x 4), or I
+// (2 x 2) where the part may not tilt.
+FITFEEL_API Eigen::MatrixXd SectionPlacement(const ContactSection& section,
+                                             const RigidFreedom& freedom);
+
 struct RigidContactResult {
   Eigen::Vector2d offset{0.0, 0.0};     // axis offset at the reference point, m
   Eigen::Vector2d tilt{0.0, 0.0};       // axis slope (dx/dy, dz/dy), rad

@@ -950,9 +950,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     for (std::size_t t = 0; t < count; ++t) {
       const Eigen::MatrixXd r_t = solver->ShiftStiffness(t);
       const auto ti = static_cast<Eigen::Index>(t);
-      Eigen::MatrixXd place = Eigen::MatrixXd::Zero(2, dofs);  // P_t
-      place.leftCols<2>().setIdentity();
-      if (dofs == 4) place.rightCols<2>() = sections[t].y * Eigen::Matrix2d::Identity();
+      const Eigen::MatrixXd place = SectionPlacement(sections[t], freedom_);  // P_t
       const double area = sections[t].cell_area;
       h += area * place.transpose() * r_t.bottomRightCorner(2, 2) * place;
       const Eigen::MatrixXd bu = w.asDiagonal() * r_t.topRightCorner(ncx, 2) * place;
