@@ -143,7 +143,7 @@ struct RigidContactResult {
 // e_s = offset + y_s tilt and phi_s the section's stored elastic energy at its LCP solution, by
 // Newton's method with backtracking (the gradient is the unbalanced force, the Hessian the
 // sections' contact stiffness). Each section deforms on its own (plane sections; the parts'
-// deformation along their axes, order by order, is coupled by the caller, axial_breathing.h,
+// deformation along their axes, order by order, is coupled by the caller, axial_coupling.h,
 // through the sections' gaps: gap_shift, ShiftStiffness, ShiftFullContact). Prepare-time only.
 class FITFEEL_API RigidSectionContact {
  public:

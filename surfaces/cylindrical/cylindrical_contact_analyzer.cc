@@ -190,8 +190,8 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     section.shaft = inner.material;
     section.hub = outer.material;
     section.plane_strain = options.plane_strain;
-    hub_breathing_.clear();
-    shaft_breathing_.clear();
+    hub_modes_.clear();
+    shaft_modes_.clear();
     axial_coupling_ = options.axial_coupling;
     coupled_orders_.clear();
     if (options.axial_coupling) {
@@ -202,13 +202,13 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     }
     solver.emplace(section, n_ / block_, coupled_orders_);
     if (options.axial_coupling) {
-      BreathingBody hub;
+      AxialBody hub;
       hub.inner_radius = 0.5 * d.d1;
       hub.outer_radius = 0.5 * d.d2;
       hub.loaded_inside = true;
       hub.material = outer.material;
       hub.held_faces = options.plane_strain;
-      BreathingBody shaft = hub;
+      AxialBody shaft = hub;
       shaft.inner_radius = 0.5 * d.di;
       shaft.outer_radius = 0.5 * d.d1;
       shaft.loaded_inside = false;
@@ -236,9 +236,9 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       for (const auto& [part, rows] :
            {std::pair{"bushing", static_cast<int>(hub_coupling_rows_.size()) - 1},
             {"shaft", static_cast<int>(shaft_coupling_rows_.size()) - 1}}) {
-        if (rows > AxialBreathing::kMostRows) {
+        if (rows > AxialCoupling::kMostRows) {
           throw UserError(std::string("the elastic model's axial coupling takes at most ") +
-                          std::to_string(AxialBreathing::kMostRows) +
+                          std::to_string(AxialCoupling::kMostRows) +
                           " rows per part (grid rows split to the shortest row of either part); "
                           "the " +
                           part + " has " + std::to_string(rows) +
@@ -246,7 +246,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
                           "model.options.axial_coupling: false (plane sections)");
         }
       }
-      // The elements are solved when a depth step first needs them (EnsureBreathing): a
+      // The elements are solved when a depth step first needs them (EnsurePartModes): a
       // clearance fit's tables may have none that interferes.
       hub_body_ = hub;
       shaft_body_ = shaft;
@@ -495,11 +495,11 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       sec.factorization = &s->row_factors[row];
       s->section_length[sl] = slices[sl].length;
     }
-    if (axial_coupling_) EnsureBreathing();
+    if (axial_coupling_) EnsurePartModes();
     const RigidContactResult r =
         SolveSections(&*s->solver, s->sections, s->section_start, s->section_length,
                       depth - shaft_length_, s->elastic_gap.data(), s->elastic_warm, &s->coupling,
-                      Breathing{&hub_breathing_, &shaft_breathing_});
+                      PartModes{&hub_modes_, &shaft_modes_});
     for (std::size_t sl = 0; sl < slices.size(); ++sl) {
       const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
       s->row_contact[row] = s->solver->contact_sets()[sl];
@@ -691,28 +691,28 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   }
 }
 
-void CylinderContactAnalyzer::SolveBreathing(std::vector<AxialBreathing>* hub,
-                                             std::vector<AxialBreathing>* shaft) const {
-  hub->assign(1, AxialBreathing(hub_body_, hub_coupling_rows_));
-  shaft->assign(1, AxialBreathing(shaft_body_, shaft_coupling_rows_));
+void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
+                                             std::vector<AxialCoupling>* shaft) const {
+  hub->assign(1, AxialCoupling(hub_body_, hub_coupling_rows_));
+  shaft->assign(1, AxialCoupling(shaft_body_, shaft_coupling_rows_));
   for (int order : coupled_orders_) {
     hub->emplace_back(hub_body_, hub_coupling_rows_, order);
     shaft->emplace_back(shaft_body_, shaft_coupling_rows_, order);
   }
 }
 
-void CylinderContactAnalyzer::EnsureBreathing() {
-  const std::lock_guard<std::mutex> lock(breathing_mutex_);
-  if (hub_breathing_.empty()) SolveBreathing(&hub_breathing_, &shaft_breathing_);
+void CylinderContactAnalyzer::EnsurePartModes() {
+  const std::lock_guard<std::mutex> lock(modes_mutex_);
+  if (hub_modes_.empty()) SolvePartModes(&hub_modes_, &shaft_modes_);
 }
 
 RigidContactResult CylinderContactAnalyzer::SolveSections(
     RigidSectionContact* solver, std::span<ContactSection> sections, std::span<const double> start,
     std::span<const double> length, double shift, double* gaps, const Eigen::Vector4d& warm,
-    CouplingScratch* scratch, const Breathing& breathing) const {
+    CouplingScratch* scratch, const PartModes& part_modes) const {
   if (!axial_coupling_ || sections.empty()) return solver->Solve(sections, freedom_, warm);
   const std::size_t modes = coupled_orders_.size() + 1;  // the breathing mode, then the orders
-  assert(breathing[0]->size() == modes && breathing[1]->size() == modes);
+  assert(part_modes[0]->size() == modes && part_modes[1]->size() == modes);
   const auto ne = static_cast<std::size_t>(solver->columns());
   const std::size_t count = sections.size();
   const auto m = static_cast<Eigen::Index>(count);
@@ -782,7 +782,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
       CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
       const std::size_t part_rows = rows[static_cast<std::size_t>(q)]->size() - 1;
       for (std::size_t comp = 0; comp < nc; ++comp) {
-        (*breathing[static_cast<std::size_t>(q)])[mode_of(comp)].ExtraDisplacement(
+        (*part_modes[static_cast<std::size_t>(q)])[mode_of(comp)].ExtraDisplacement(
             part.pressure.data() + comp * part_rows, part.extra.data() + comp * part_rows);
       }
     }
@@ -916,7 +916,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
         const auto tu = static_cast<std::size_t>(t);
         for (int q = 0; q < 2; ++q) {
           const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
-          const Eigen::MatrixXd& x = (*breathing[static_cast<std::size_t>(q)])[mode].matrix();
+          const Eigen::MatrixXd& x = (*part_modes[static_cast<std::size_t>(q)])[mode].matrix();
           for (std::size_t qt = part.first[tu]; qt < part.first[tu + 1]; ++qt) {
             const int v = part.cover[qt].first;
             const double wt =
@@ -1032,14 +1032,14 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
   RigidSectionContact solver(section_, static_cast<int>(ne), coupled_orders_);
   CouplingScratch coupling;
   // The parts' elements, solved here where no depth step of the tables needed them.
-  std::vector<AxialBreathing> hub, shaft;
-  Breathing breathing{&hub_breathing_, &shaft_breathing_};
-  if (axial_coupling_ && hub_breathing_.empty()) {
-    SolveBreathing(&hub, &shaft);
-    breathing = {&hub, &shaft};
+  std::vector<AxialCoupling> hub, shaft;
+  PartModes part_modes{&hub_modes_, &shaft_modes_};
+  if (axial_coupling_ && hub_modes_.empty()) {
+    SolvePartModes(&hub, &shaft);
+    part_modes = {&hub, &shaft};
   }
   SolveSections(&solver, sections, starts, lengths, pose.depth - shaft_length_, gaps.data(), warm,
-                &coupling, breathing);
+                &coupling, part_modes);
   // A shaft row's cells take the length-weighted mean of its sections' pressures.
   for (std::size_t s = 0; s < count; ++s) {
     const auto i = static_cast<std::size_t>(shaft_rows[s]);

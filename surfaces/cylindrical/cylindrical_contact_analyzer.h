@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "framework/model/axial_breathing.h"
+#include "framework/model/axial_coupling.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/convex_polygon.h"
 #include "framework/model/section_contact.h"
@@ -67,7 +67,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   bool interference_at(int k) const { return empty_[static_cast<std::size_t>(k)] != 0; }
   int newton_iterations() const { return newton_iterations_; }
   // Whether the last prepare solved the parts' axial elements (some depth step interfered).
-  bool axial_elements_solved() const { return !hub_breathing_.empty(); }
+  bool axial_elements_solved() const { return !hub_modes_.empty(); }
   // Elastic model (law `elastic`): equilibrium normal force and tilt at step k, the DIN 7190
   // smoothing added to every gap (texture din7190), and the columns of the elastic solve.
   bool elastic() const { return elastic_; }
@@ -126,8 +126,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     CouplingSystem newton;
   };
   // The hub's and the shaft's elements per coupled mode (the breathing mode, then each order of
-  // coupled_orders_), solved (EnsureBreathing, or the caller's own).
-  using Breathing = std::array<const std::vector<AxialBreathing>*, 2>;
+  // coupled_orders_), solved (EnsurePartModes, or the caller's own).
+  using PartModes = std::array<const std::vector<AxialCoupling>*, 2>;
   // The sections' solve with the parts' axial coupling (axial_coupling_ set): each section's gaps
   // (`gaps`, section-major, the solver's columns each) are shifted by the extra displacement of
   // the coupling rows it covers in either part for the rows' pressure amplitudes until they agree
@@ -137,12 +137,12 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
                                    std::span<const double> start, std::span<const double> length,
                                    double shift, double* gaps, const Eigen::Vector4d& warm,
-                                   CouplingScratch* scratch, const Breathing& breathing) const;
+                                   CouplingScratch* scratch, const PartModes& part_modes) const;
   // Both parts' elements from their bodies and coupling rows, one per coupled mode.
-  void SolveBreathing(std::vector<AxialBreathing>* hub, std::vector<AxialBreathing>* shaft) const;
+  void SolvePartModes(std::vector<AxialCoupling>* hub, std::vector<AxialCoupling>* shaft) const;
   // Solves them into the analyzer once, for the first depth step whose sections need them (any
   // thread of the prepare's; the others wait).
-  void EnsureBreathing();
+  void EnsurePartModes();
 
   struct StepScratch {
     std::vector<std::vector<Slice>> chunk_slices;  // per step of the chunk
@@ -222,12 +222,12 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // The hub's and the shaft's breathing along their axes: with the axial coupling, the bodies
   // and, once a depth step needed them, their elements (empty: not needed yet, or plane sections).
   bool axial_coupling_ = false;
-  BreathingBody hub_body_, shaft_body_;
-  std::vector<AxialBreathing> hub_breathing_, shaft_breathing_;  // per coupled mode
+  AxialBody hub_body_, shaft_body_;
+  std::vector<AxialCoupling> hub_modes_, shaft_modes_;  // per coupled mode
   // The circumferential orders (1 .. axial_orders) coupled along the axes besides the breathing
   // mode.
   std::vector<int> coupled_orders_;
-  std::mutex breathing_mutex_;  // prepare only: the first interfering step solves the elements
+  std::mutex modes_mutex_;  // prepare only: the first interfering step solves the elements
   // Their rows' edges: the grid's rows split to the shortest row of either part.
   std::vector<double> hub_coupling_rows_, shaft_coupling_rows_;
   RigidFreedom freedom_;

@@ -4,7 +4,7 @@
 
 #include "framework/core/config_node.h"
 #include "framework/core/quantity.h"
-#include "framework/model/axial_breathing.h"
+#include "framework/model/axial_coupling.h"
 
 namespace fitfeel::cylindrical {
 
@@ -27,7 +27,7 @@ struct ElasticOptions {
   bool plane_strain = false;
   int columns = kDefaultColumns;
   // The hub's and the shaft's deformation coupled along their axes
-  // (framework/model/axial_breathing.h); false leaves every section on its own (plane sections),
+  // (framework/model/axial_coupling.h); false leaves every section on its own (plane sections),
   // for comparison.
   bool axial_coupling = true;
   // With the axial coupling, the orders 1 .. axial_orders are coupled too (0: the breathing mode
@@ -61,7 +61,7 @@ inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
   }
   if (auto node = options.Find("axial_coupling")) o.axial_coupling = node->AsBool();
   if (auto node = options.Find("axial_orders")) {
-    o.axial_orders = static_cast<int>(node->AsInteger(0, AxialBreathing::kHighestOrder));
+    o.axial_orders = static_cast<int>(node->AsInteger(0, AxialCoupling::kHighestOrder));
   }
   return o;
 }

@@ -74,7 +74,7 @@ struct ElasticPair {
 // The axial coupling solves each part's elements once per row: a grid past its limit is refused
 // saying what to change, and plane sections take it.
 TEST(ElasticLaw, AxialCouplingRefusesAGridItCannotSolveInTime) {
-  const int rows = AxialBreathing::kMostRows + 1;
+  const int rows = AxialCoupling::kMostRows + 1;
   const PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
   auto prepare = [&](const char* options) {
     ModelSettings settings = Elastic(TextureMode::kSampled);
@@ -176,7 +176,7 @@ TEST(ElasticLaw, OvalInterferenceCarriesOnlyItsMean) {
     const Outcome r = OutcomeAt(q.analyzer, q.law, 30e-3, {0, 0});
     EXPECT_NEAR(r.state.normal_force / (p0 * d0 * kPi * 0.020 * 0.020), 1.0, 1e-4) << ratio;
     // In 3-D the ovality of a 20 mm part is 7 % stiffer than its plane-stress sections in the
-    // middle (axial_breathing_test.cc), so 0.15 is no longer all round there.
+    // middle (axial_coupling_test.cc), so 0.15 is no longer all round there.
     if (ratio < 0.2) continue;
     ElasticPair coupled(
         oval, [](int, int) { return 0.0; }, Elastic(TextureMode::kSampled), 360);
@@ -437,7 +437,7 @@ TEST(ElasticLaw, AgreesWithCalculixOnTheFullyEngagedFiniteHub) {
 // tools/fem/data/solid.csv: CalculiX in 3-D (solid_cases.h), each part held only against rigid
 // motion. Where the contact is partial the sections' loads change along the axis (for n = 1, net
 // radial loads that balance only over the length), which the parts carry by deforming along their
-// axes in every order (axial_breathing.h). Returns the model's error against the FEM (with the
+// axes in every order (axial_coupling.h). Returns the model's error against the FEM (with the
 // model's `options`); prints it and the paper law's.
 double SolidCaseError(const char* name, const char* options = "{}") {
   const SolidCase c(name);
@@ -488,7 +488,7 @@ TEST(ElasticLaw, EachOrdersCouplingIsWhatItsCaseNeeds) {
 
 // The shaft (20 mm long, the rest of it outside the entrance) part way in: the hub's unloaded
 // length and the shaft's length still outside stiffen the loaded band. Plane sections give 10 to
-// 78 % too little; with both parts' axial coupling (axial_breathing.h) the model is within
+// 78 % too little; with both parts' axial coupling (axial_coupling.h) the model is within
 // +0.15 % (half a millimetre, 1 and 2 mm, a quarter, half and three quarters of the 20 mm hub;
 // walls of 2, 5 and 10 mm). Asserted: 1 % (the issue asks 10).
 struct PartlyEngaged {

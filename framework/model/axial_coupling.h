@@ -12,7 +12,7 @@ namespace fitfeel {
 
 // One part of a press fit as a solid of revolution: the ring between two radii, loaded by the
 // interface pressure on one of its two cylindrical faces over the rows of the part's grid.
-struct BreathingBody {
+struct AxialBody {
   double inner_radius = 0.0;  // m; 0: solid
   double outer_radius = 0.0;  // m
   bool loaded_inside = true;  // the bore (a hub) is loaded, else the outside (a shaft)
@@ -52,13 +52,13 @@ struct BreathingBody {
 // CalculiX in 3-D (tools/fem/solid.py): a bent shaft in partial contact, ovality and three lobes
 // growing along the axis, all within 3 % (docs/contact-mechanics.md section 6). Prepare-time only:
 // it allocates.
-class FITFEEL_API AxialBreathing {
+class FITFEEL_API AxialCoupling {
  public:
-  AxialBreathing() = default;
+  AxialCoupling() = default;
   // `row_edges`: the rows' axial boundaries (m, increasing; rows = row_edges.size() - 1).
   // `order`: the circumferential order n of the load p cos(n theta) and of the displacement the
   // matrices give (0, the breathing mode, or 2 .. kHighestOrder).
-  AxialBreathing(const BreathingBody& body, std::span<const double> row_edges, int order = 0);
+  AxialCoupling(const AxialBody& body, std::span<const double> row_edges, int order = 0);
 
   int order() const { return order_; }
 

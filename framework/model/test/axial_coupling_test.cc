@@ -1,4 +1,4 @@
-#include "framework/model/axial_breathing.h"
+#include "framework/model/axial_coupling.h"
 
 #include <cmath>
 #include <random>
@@ -15,8 +15,8 @@ namespace {
 
 constexpr double kE = 210e9, kNu = 0.3;
 
-BreathingBody Shaft(double radius, bool held = false) {
-  BreathingBody b;
+AxialBody Shaft(double radius, bool held = false) {
+  AxialBody b;
   b.inner_radius = 0.0;
   b.outer_radius = radius;
   b.loaded_inside = false;
@@ -25,8 +25,8 @@ BreathingBody Shaft(double radius, bool held = false) {
   return b;
 }
 
-BreathingBody Hub(double bore, double outside, bool held = false) {
-  BreathingBody b = Shaft(outside, held);
+AxialBody Hub(double bore, double outside, bool held = false) {
+  AxialBody b = Shaft(outside, held);
   b.inner_radius = bore;
   b.loaded_inside = true;
   return b;
@@ -41,10 +41,10 @@ std::vector<double> Edges(int rows, double pitch) {
 // A uniform pressure on the whole length is the Lame state, which the bilinear elements hold
 // exactly in a solid shaft (u_r linear in r, u_z in z): u = p a (1 - nu) / E with free faces,
 // p a (1 + nu)(1 - 2 nu) / E with held ones (plane strain).
-TEST(AxialBreathing, AUniformlyPressedSolidShaftIsLames) {
+TEST(AxialCoupling, AUniformlyPressedSolidShaftIsLames) {
   const double a = 0.010;
-  const AxialBreathing free_faces(Shaft(a), Edges(40, 1e-3));
-  const AxialBreathing held(Shaft(a, true), Edges(40, 1e-3));
+  const AxialCoupling free_faces(Shaft(a), Edges(40, 1e-3));
+  const AxialCoupling held(Shaft(a, true), Edges(40, 1e-3));
   const Eigen::VectorXd u = free_faces.influence().rowwise().sum();
   const Eigen::VectorXd v = held.influence().rowwise().sum();
   for (int i = 0; i < 40; ++i) {
@@ -57,10 +57,10 @@ TEST(AxialBreathing, AUniformlyPressedSolidShaftIsLames) {
 // elements approximate: 0.25 % low at the free faces, less inside), u(a) = p a / E ((b^2 + a^2) /
 // (b^2 - a^2) + nu) with free faces and p a (1 + nu) ((1 - 2 nu) a^2 + b^2) / (E (b^2 - a^2)) with
 // held ones.
-TEST(AxialBreathing, AUniformlyPressedHubIsLames) {
+TEST(AxialCoupling, AUniformlyPressedHubIsLames) {
   const double a = 0.010, b = 0.015;
-  const AxialBreathing free_faces(Hub(a, b), Edges(40, 0.5e-3));
-  const AxialBreathing held(Hub(a, b, true), Edges(40, 0.5e-3));
+  const AxialCoupling free_faces(Hub(a, b), Edges(40, 0.5e-3));
+  const AxialCoupling held(Hub(a, b, true), Edges(40, 0.5e-3));
   const double plane_stress = a / kE * ((b * b + a * a) / (b * b - a * a) + kNu);
   const double plane_strain =
       a * (1 + kNu) * ((1 - 2 * kNu) * a * a + b * b) / (kE * (b * b - a * a));
@@ -77,13 +77,13 @@ TEST(AxialBreathing, AUniformlyPressedHubIsLames) {
 // admissible stress field), and a band load's section expands axially into its unloaded
 // neighbours, so some loads find the part softer (X's largest eigenvalue about +9 % of the
 // sections' compliance here).
-TEST(AxialBreathing, IsReciprocalAndNeverSofterThanPlaneSections) {
+TEST(AxialCoupling, IsReciprocalAndNeverSofterThanPlaneSections) {
   std::vector<double> uneven{0.0};
   for (int i = 0; i < 30; ++i) uneven.push_back(uneven.back() + (i % 3 == 0 ? 0.8e-3 : 0.5e-3));
-  for (const BreathingBody& body :
+  for (const AxialBody& body :
        {Shaft(0.010), Hub(0.010, 0.015), Hub(0.010, 0.012, true), Shaft(0.010, true)}) {
     for (const std::vector<double>& edges : {Edges(40, 0.5e-3), uneven}) {
-      const AxialBreathing c(body, edges);
+      const AxialCoupling c(body, edges);
       const auto m = static_cast<Eigen::Index>(edges.size() - 1);
       Eigen::VectorXd length(m);
       for (Eigen::Index i = 0; i < m; ++i) length[i] = edges[i + 1] - edges[i];
@@ -109,10 +109,10 @@ TEST(AxialBreathing, IsReciprocalAndNeverSofterThanPlaneSections) {
 // foundation (Timoshenko and Woinowsky-Krieger, Theory of Plates and Shells, section 114): away
 // from its ends the displacement beyond the load's edge is w0 / 2 e^(-beta x) cos(beta x) and
 // w0 (1 - e^(-beta x) cos(beta x) / 2) under the load, beta^4 = 3 (1 - nu^2) / (R t)^2.
-TEST(AxialBreathing, AHalfLoadedThinTubeIsHetenyisBeam) {
+TEST(AxialCoupling, AHalfLoadedThinTubeIsHetenyisBeam) {
   const double a = 0.020, t = 0.001, pitch = 0.25e-3;
   const int rows = 240;  // 60 mm: 17 decay lengths
-  const AxialBreathing c(Hub(a, a + t), Edges(rows, pitch));
+  const AxialCoupling c(Hub(a, a + t), Edges(rows, pitch));
   const double radius = a + 0.5 * t;
   const double beta = std::pow(3 * (1 - kNu * kNu) / (radius * radius * t * t), 0.25);
   Eigen::VectorXd p = Eigen::VectorXd::Zero(rows);
@@ -136,10 +136,10 @@ TEST(AxialBreathing, AHalfLoadedThinTubeIsHetenyisBeam) {
 // entry for F and 0.7 % for X, the part the sections use (measured 0.89 and 0.62 % for the
 // shaft, 0.40 and 0.14 % for the hub; with two elements per row instead of one per 0.25 mm,
 // 2.9 and 2.0 % for the shaft).
-TEST(AxialBreathing, ConvergesUnderRefinement) {
-  for (const BreathingBody& body : {Shaft(0.010), Hub(0.010, 0.015)}) {
-    const AxialBreathing coarse(body, Edges(20, 1e-3));
-    const AxialBreathing fine(body, Edges(160, 0.125e-3));
+TEST(AxialCoupling, ConvergesUnderRefinement) {
+  for (const AxialBody& body : {Shaft(0.010), Hub(0.010, 0.015)}) {
+    const AxialCoupling coarse(body, Edges(20, 1e-3));
+    const AxialCoupling fine(body, Edges(160, 0.125e-3));
     Eigen::MatrixXd pool = Eigen::MatrixXd::Zero(20, 160);  // fine rows to coarse ones: the mean
     for (int i = 0; i < 20; ++i) pool.block(i, 8 * i, 1, 8).setConstant(1.0 / 8);
     const Eigen::MatrixXd f = pool * fine.influence() * pool.transpose() * 8.0;
@@ -155,19 +155,19 @@ TEST(AxialBreathing, ConvergesUnderRefinement) {
 
 // The properties above on parts drawn at random (radii, walls, materials' Poisson ratios, row
 // counts and unequal rows): reciprocity, X 1 = 0, and X negative semidefinite with free faces.
-TEST(AxialBreathing, HoldsItsPropertiesOnRandomParts) {
+TEST(AxialCoupling, HoldsItsPropertiesOnRandomParts) {
   std::mt19937_64 rng(2711);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 24; ++trial) {
     const double radius = 0.003 + 0.03 * unit(rng);
-    BreathingBody body = unit(rng) < 0.5 ? Shaft(radius) : Hub(radius, radius * (1.1 + unit(rng)));
+    AxialBody body = unit(rng) < 0.5 ? Shaft(radius) : Hub(radius, radius * (1.1 + unit(rng)));
     if (!body.loaded_inside && unit(rng) < 0.3) body.inner_radius = radius * 0.6 * unit(rng);
     body.material.poisson = 0.1 + 0.35 * unit(rng);
     const int rows = 4 + static_cast<int>(unit(rng) * 30);
     std::vector<double> edges{0.0};
     for (int i = 0; i < rows; ++i)
       edges.push_back(edges.back() + radius * (0.02 + 0.2 * unit(rng)));
-    const AxialBreathing c(body, edges);
+    const AxialCoupling c(body, edges);
     Eigen::VectorXd length(rows);
     for (int i = 0; i < rows; ++i) length[i] = edges[i + 1] - edges[i];
     const Eigen::MatrixXd f = c.influence() * length.cwiseInverse().asDiagonal();
@@ -190,12 +190,12 @@ TEST(AxialBreathing, HoldsItsPropertiesOnRandomParts) {
 // middle of this 20 mm part is stiffer than plane stress (n >= 2: the 3-D state lies between
 // plane stress and plane strain) and its ends softer; what the model adds to its plane-stress
 // sections there is X 1 = F 1 - c_n.
-TEST(AxialBreathing, EveryOrderWithHeldFacesIsItsPlaneStrainSection) {
+TEST(AxialCoupling, EveryOrderWithHeldFacesIsItsPlaneStrainSection) {
   const std::vector<double> edges = Edges(40, 0.5e-3);
   const Material steel{"steel", kE, kNu};
   for (int n : {1, 2, 3, 5, 10}) {
-    for (const BreathingBody& body : {Shaft(0.010, true), Hub(0.010, 0.015, true)}) {
-      const AxialBreathing part(body, edges, n);
+    for (const AxialBody& body : {Shaft(0.010, true), Hub(0.010, 0.015, true)}) {
+      const AxialCoupling part(body, edges, n);
       EXPECT_EQ(part.order(), n);
       const double plane_strain = RingHarmonicCompliance(body.inner_radius, body.outer_radius,
                                                          body.loaded_inside, steel, true, n);
@@ -206,8 +206,8 @@ TEST(AxialBreathing, EveryOrderWithHeldFacesIsItsPlaneStrainSection) {
     }
     // Free faces, orders >= 2: stiffer than plane stress in the middle, softer at the ends.
     if (n < 2) continue;
-    const BreathingBody hub = Hub(0.010, 0.015);
-    const AxialBreathing part(hub, edges, n);
+    const AxialBody hub = Hub(0.010, 0.015);
+    const AxialCoupling part(hub, edges, n);
     const double plane_stress =
         RingHarmonicCompliance(0.010, 0.015, true, steel, /*plane_strain=*/false, n);
     EXPECT_LT(part.influence().row(20).sum(), 0.97 * plane_stress) << n;
@@ -220,11 +220,11 @@ TEST(AxialBreathing, EveryOrderWithHeldFacesIsItsPlaneStrainSection) {
 // Maxwell-Betti for every order >= 2 (no rigid motion to take out): F diag(1 / length) is
 // symmetric on uneven rows. A load's reach along the axis shrinks with the order (about R / n):
 // the displacement 3 mm from a loaded row, relative to the loaded row's own, falls with n.
-TEST(AxialBreathing, HigherOrdersAreReciprocalAndReachLess) {
+TEST(AxialCoupling, HigherOrdersAreReciprocalAndReachLess) {
   std::vector<double> uneven{0.0};
   for (int i = 0; i < 24; ++i) uneven.push_back(uneven.back() + (i % 3 == 0 ? 0.8e-3 : 0.5e-3));
   for (int n : {2, 4, 8}) {
-    const AxialBreathing part(Hub(0.010, 0.015), uneven, n);
+    const AxialCoupling part(Hub(0.010, 0.015), uneven, n);
     Eigen::MatrixXd scaled = part.influence();
     for (int j = 0; j < scaled.cols(); ++j) scaled.col(j) /= uneven[j + 1] - uneven[j];
     EXPECT_LT((scaled - scaled.transpose()).norm(), 1e-6 * scaled.norm()) << n;
@@ -232,7 +232,7 @@ TEST(AxialBreathing, HigherOrdersAreReciprocalAndReachLess) {
   const std::vector<double> edges = Edges(40, 0.5e-3);
   double last = 1.0;
   for (int n : {2, 3, 5, 8, 12}) {
-    const AxialBreathing part(Shaft(0.010), edges, n);
+    const AxialCoupling part(Shaft(0.010), edges, n);
     const double reach = part.influence()(26, 20) / part.influence()(20, 20);
     EXPECT_LT(reach, last) << n;
     last = reach;
@@ -243,9 +243,9 @@ TEST(AxialBreathing, HigherOrdersAreReciprocalAndReachLess) {
 // Order 1 carries a net force, which the model's rigid parts take; what the coupling adds is the
 // part's bending about its axis. Three bands balanced along a free shaft (no net force or
 // moment): the pressed bands open, the pulled one closes, symmetrically about the middle.
-TEST(AxialBreathing, OrderOneIsTheDeformationAboutTheAxis) {
+TEST(AxialCoupling, OrderOneIsTheDeformationAboutTheAxis) {
   const std::vector<double> edges = Edges(40, 0.5e-3);
-  const AxialBreathing free_faces(Shaft(0.010), edges, 1);
+  const AxialCoupling free_faces(Shaft(0.010), edges, 1);
   // Rows 5-9 pushed one way, rows 15-24 the other way at half the pressure, rows 30-34 the first
   // way: forces 5 - 5 = 0 per unit pressure and moments about the middle balanced by symmetry.
   Eigen::VectorXd load = Eigen::VectorXd::Zero(40);
@@ -258,19 +258,19 @@ TEST(AxialBreathing, OrderOneIsTheDeformationAboutTheAxis) {
   EXPECT_GT(u[7], 0.0);
   EXPECT_LT(u[20], 0.0);
   for (int i = 0; i < 20; ++i) EXPECT_NEAR(u[i], u[39 - i], 1e-6 * std::abs(u[7])) << i;
-  EXPECT_THROW(AxialBreathing(Shaft(0.010), edges, AxialBreathing::kHighestOrder + 1), UserError);
+  EXPECT_THROW(AxialCoupling(Shaft(0.010), edges, AxialCoupling::kHighestOrder + 1), UserError);
 }
 
-TEST(AxialBreathing, RefusesWhatItCannotModel) {
+TEST(AxialCoupling, RefusesWhatItCannotModel) {
   const std::vector<double> edges = Edges(10, 1e-3);
-  EXPECT_THROW(AxialBreathing(Hub(0.010, 0.010), edges), UserError);
-  EXPECT_THROW(AxialBreathing(Hub(0.0, 0.010), edges), UserError);  // a bore loaded, but none
-  BreathingBody rubber = Shaft(0.010);
+  EXPECT_THROW(AxialCoupling(Hub(0.010, 0.010), edges), UserError);
+  EXPECT_THROW(AxialCoupling(Hub(0.0, 0.010), edges), UserError);  // a bore loaded, but none
+  AxialBody rubber = Shaft(0.010);
   rubber.material.poisson = 0.5;
-  EXPECT_THROW(AxialBreathing(rubber, edges), UserError);
-  EXPECT_THROW(AxialBreathing(Shaft(0.010), std::vector<double>{0.0}), UserError);
-  EXPECT_THROW(AxialBreathing(Shaft(0.010), std::vector<double>{0.0, 1e-3, 1e-3}), UserError);
-  EXPECT_THROW(AxialBreathing(Shaft(0.010), Edges(AxialBreathing::kMostRows + 1, 1e-5)), UserError);
+  EXPECT_THROW(AxialCoupling(rubber, edges), UserError);
+  EXPECT_THROW(AxialCoupling(Shaft(0.010), std::vector<double>{0.0}), UserError);
+  EXPECT_THROW(AxialCoupling(Shaft(0.010), std::vector<double>{0.0, 1e-3, 1e-3}), UserError);
+  EXPECT_THROW(AxialCoupling(Shaft(0.010), Edges(AxialCoupling::kMostRows + 1, 1e-5)), UserError);
 }
 
 }  // namespace

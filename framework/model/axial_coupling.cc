@@ -1,4 +1,4 @@
-#include "framework/model/axial_breathing.h"
+#include "framework/model/axial_coupling.h"
 
 #include <algorithm>
 #include <array>
@@ -22,7 +22,7 @@ namespace {
 constexpr int kFewestElementsPerRow = 2;
 constexpr double kRadiusOverElement = 40.0;
 // Growth of the radial layers away from the loaded face, where the load's edges concentrate the
-// strain; the tests measure what the mesh leaves (AxialBreathing.ConvergesUnderRefinement, and
+// strain; the tests measure what the mesh leaves (AxialCoupling.ConvergesUnderRefinement, and
 // every axisymmetric CalculiX case within 0.15 %).
 constexpr double kLayerGrowth = 1.25;
 // At least this many layers through a wall: a thin hub carries its load by bending across it.
@@ -36,7 +36,7 @@ FITFEEL_SIMD_CLONES void SubtractScaled(double* __restrict y, const double* __re
 }
 
 // Radial stations from the loaded face into the body, first layer `first` thick.
-std::vector<double> RadialStations(const BreathingBody& body, double first) {
+std::vector<double> RadialStations(const AxialBody& body, double first) {
   const double wall = body.outer_radius - body.inner_radius;
   double step = std::min(first, wall / kFewestLayers);
   std::vector<double> depth{0.0};
@@ -161,31 +161,30 @@ class BandCholesky {
 
 }  // namespace
 
-AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double> row_edges,
-                               int order)
+AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_edges, int order)
     : order_(order) {
   if (order < 0 || order > kHighestOrder) {
     throw UserError("axial coupling is defined for orders 0 to " + std::to_string(kHighestOrder) +
                     ", not " + std::to_string(order));
   }
   if (!(body.inner_radius >= 0.0) || !(body.outer_radius > body.inner_radius)) {
-    throw UserError("axial breathing needs 0 <= inner radius < outer radius");
+    throw UserError("axial coupling needs 0 <= inner radius < outer radius");
   }
   if (body.loaded_inside && !(body.inner_radius > 0.0)) {
-    throw UserError("axial breathing: a part loaded on its bore needs a bore (inner radius > 0)");
+    throw UserError("axial coupling: a part loaded on its bore needs a bore (inner radius > 0)");
   }
   const double e = body.material.youngs_modulus, nu = body.material.poisson;
   if (!(e > 0.0) || !(nu > -1.0) || !(nu < 0.5)) {
-    throw UserError("axial breathing needs the part's Young's modulus and Poisson's ratio");
+    throw UserError("axial coupling needs the part's Young's modulus and Poisson's ratio");
   }
   const int rows = static_cast<int>(row_edges.size()) - 1;
   if (rows < 1 || rows > kMostRows) {
-    throw UserError("axial breathing needs 1 to " + std::to_string(kMostRows) + " rows, got " +
+    throw UserError("axial coupling needs 1 to " + std::to_string(kMostRows) + " rows, got " +
                     std::to_string(std::max(rows, 0)));
   }
   for (int i = 0; i < rows; ++i) {
     if (!(row_edges[i + 1] > row_edges[i]) || !std::isfinite(row_edges[i + 1] - row_edges[i])) {
-      throw UserError("axial breathing needs increasing row edges");
+      throw UserError("axial coupling needs increasing row edges");
     }
   }
 
@@ -307,7 +306,7 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
     }
   }
   if (!k.Factor()) {
-    throw UserError("axial breathing: the part's stiffness is not positive definite");
+    throw UserError("axial coupling: the part's stiffness is not positive definite");
   }
 
   // Row j's unit pressure (per radian for order 0, per pi for the others, as the stiffness) is
@@ -437,7 +436,7 @@ AxialBreathing::AxialBreathing(const BreathingBody& body, std::span<const double
   }
 }
 
-void AxialBreathing::ExtraDisplacement(const double* mean_pressure, double* out) const {
+void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out) const {
   Eigen::Map<Eigen::VectorXd>(out, extra_.rows()) =
       extra_ * Eigen::Map<const Eigen::VectorXd>(mean_pressure, extra_.cols());
 }
