@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <list>
+#include <mutex>
 #include <string>
 
 #include <Eigen/Dense>
@@ -434,6 +436,41 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
         RingHarmonicCompliance(body.inner_radius, body.outer_radius, body.loaded_inside,
                                body.material, body.held_faces, order);
   }
+}
+
+AxialCoupling AxialCoupling::Shared(const AxialBody& body, std::span<const double> row_edges,
+                                    int order) {
+  struct Entry {
+    AxialBody body;
+    std::vector<double> edges;
+    int order;
+    AxialCoupling value;
+  };
+  static std::mutex mutex;
+  static std::list<Entry> memo;  // most recently used first
+  auto same = [&](const Entry& e) {
+    return e.order == order && e.body.inner_radius == body.inner_radius &&
+           e.body.outer_radius == body.outer_radius && e.body.loaded_inside == body.loaded_inside &&
+           e.body.held_faces == body.held_faces &&
+           e.body.material.youngs_modulus == body.material.youngs_modulus &&
+           e.body.material.poisson == body.material.poisson &&
+           std::equal(e.edges.begin(), e.edges.end(), row_edges.begin(), row_edges.end());
+  };
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = memo.begin(); it != memo.end(); ++it) {
+      if (same(*it)) {
+        memo.splice(memo.begin(), memo, it);
+        return memo.front().value;
+      }
+    }
+  }
+  AxialCoupling value(body, row_edges, order);  // outside the lock: other parts go on
+  const std::lock_guard<std::mutex> lock(mutex);
+  memo.push_front(
+      Entry{body, std::vector<double>(row_edges.begin(), row_edges.end()), order, value});
+  if (memo.size() > kMemoEntries) memo.pop_back();
+  return value;
 }
 
 void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out) const {

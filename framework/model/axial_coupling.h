@@ -57,8 +57,16 @@ class FITFEEL_API AxialCoupling {
   AxialCoupling() = default;
   // `row_edges`: the rows' axial boundaries (m, increasing; rows = row_edges.size() - 1).
   // `order`: the circumferential order n of the load p cos(n theta) and of the displacement the
-  // matrices give (0, the breathing mode, or 2 .. kHighestOrder).
+  // matrices give (0, the breathing mode, to kHighestOrder).
   AxialCoupling(const AxialBody& body, std::span<const double> row_edges, int order = 0);
+
+  // The same, from a process-wide memo of the last kMemoEntries parts solved: a fit study
+  // prepares many pairs of one geometry, whose elements are the same. The memo hands back a copy
+  // of what the constructor computed for equal arguments (compared exactly), so a result never
+  // depends on what was prepared before. Thread-safe.
+  static AxialCoupling Shared(const AxialBody& body, std::span<const double> row_edges,
+                              int order = 0);
+  static constexpr std::size_t kMemoEntries = 64;
 
   int order() const { return order_; }
 
@@ -66,7 +74,7 @@ class FITFEEL_API AxialCoupling {
   int rows() const { return static_cast<int>(extra_.rows()); }
   // F: mean radial displacement of each row per unit pressure on each row, m/Pa.
   const Eigen::MatrixXd& influence() const { return influence_; }
-  // X = F - diag(F 1), m/Pa.
+  // X, m/Pa: F - diag(F 1) for order 0, F - diag(c_n) for the others.
   const Eigen::MatrixXd& matrix() const { return extra_; }
   // out[i] = sum_j X(i, j) mean_pressure[j] (rows() values each; Pa in, m out).
   void ExtraDisplacement(const double* mean_pressure, double* out) const;

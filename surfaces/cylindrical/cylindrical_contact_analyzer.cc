@@ -693,11 +693,11 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
 
 void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
                                              std::vector<AxialCoupling>* shaft) const {
-  hub->assign(1, AxialCoupling(hub_body_, hub_coupling_rows_));
-  shaft->assign(1, AxialCoupling(shaft_body_, shaft_coupling_rows_));
+  hub->assign(1, AxialCoupling::Shared(hub_body_, hub_coupling_rows_));
+  shaft->assign(1, AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_));
   for (int order : coupled_orders_) {
-    hub->emplace_back(hub_body_, hub_coupling_rows_, order);
-    shaft->emplace_back(shaft_body_, shaft_coupling_rows_, order);
+    hub->push_back(AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order));
+    shaft->push_back(AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order));
   }
 }
 
