@@ -131,7 +131,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // The sections' solve with the parts' axial coupling (axial_coupling_ set): each section's gaps
   // (`gaps`, section-major, the solver's columns each) are shifted by the extra displacement of
   // the coupling rows it covers in either part for the rows' pressure amplitudes until they agree
-  // (a quasi-Newton iteration per component: in full contact the second solve is the answer).
+  // (Newton's method on the sections' exact contact-set response and the part's pose, with a
+  // line search; in contact all round a step is exact without a solve).
   // Per section its start along the bore (bushing coordinates) and length; `shift` is the
   // bushing coordinate of the shaft's coordinate 0 (depth - shaft length).
   RigidContactResult SolveSections(RigidSectionContact* solver, std::span<ContactSection> sections,
