@@ -438,17 +438,37 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
   }
 }
 
+namespace {
+
+struct MemoEntry {
+  AxialBody body;
+  std::vector<double> edges;
+  int order;
+  AxialCoupling value;
+};
+
+struct Memo {
+  std::mutex mutex;
+  std::list<MemoEntry> entries;  // most recently used first
+};
+
+Memo& SharedMemo() {
+  static Memo memo;
+  return memo;
+}
+
+}  // namespace
+
+void AxialCoupling::ForgetShared() {
+  Memo& memo = SharedMemo();
+  const std::lock_guard<std::mutex> lock(memo.mutex);
+  memo.entries.clear();
+}
+
 AxialCoupling AxialCoupling::Shared(const AxialBody& body, std::span<const double> row_edges,
                                     int order) {
-  struct Entry {
-    AxialBody body;
-    std::vector<double> edges;
-    int order;
-    AxialCoupling value;
-  };
-  static std::mutex mutex;
-  static std::list<Entry> memo;  // most recently used first
-  auto same = [&](const Entry& e) {
+  Memo& memo = SharedMemo();
+  auto same = [&](const MemoEntry& e) {
     return e.order == order && e.body.inner_radius == body.inner_radius &&
            e.body.outer_radius == body.outer_radius && e.body.loaded_inside == body.loaded_inside &&
            e.body.held_faces == body.held_faces &&
@@ -457,19 +477,19 @@ AxialCoupling AxialCoupling::Shared(const AxialBody& body, std::span<const doubl
            std::equal(e.edges.begin(), e.edges.end(), row_edges.begin(), row_edges.end());
   };
   {
-    const std::lock_guard<std::mutex> lock(mutex);
-    for (auto it = memo.begin(); it != memo.end(); ++it) {
+    const std::lock_guard<std::mutex> lock(memo.mutex);
+    for (auto it = memo.entries.begin(); it != memo.entries.end(); ++it) {
       if (same(*it)) {
-        memo.splice(memo.begin(), memo, it);
-        return memo.front().value;
+        memo.entries.splice(memo.entries.begin(), memo.entries, it);
+        return memo.entries.front().value;
       }
     }
   }
   AxialCoupling value(body, row_edges, order);  // outside the lock: other parts go on
-  const std::lock_guard<std::mutex> lock(mutex);
-  memo.push_front(
-      Entry{body, std::vector<double>(row_edges.begin(), row_edges.end()), order, value});
-  if (memo.size() > kMemoEntries) memo.pop_back();
+  const std::lock_guard<std::mutex> lock(memo.mutex);
+  memo.entries.push_front(
+      MemoEntry{body, std::vector<double>(row_edges.begin(), row_edges.end()), order, value});
+  if (memo.entries.size() > kMemoEntries) memo.entries.pop_back();
   return value;
 }
 

@@ -281,6 +281,9 @@ TEST(AxialCoupling, SharedIsWhatSolvingGives) {
   EXPECT_NE(AxialCoupling::Shared(Hub(0.010, 0.015), Edges(12, 1.1e-3), 3).influence(),
             AxialCoupling(Hub(0.010, 0.015), edges, 3).influence());
   EXPECT_THROW(AxialCoupling::Shared(Hub(0.010, 0.010), edges), UserError);
+  AxialCoupling::ForgetShared();
+  EXPECT_EQ(AxialCoupling::Shared(Hub(0.010, 0.015), edges, 3).influence(),
+            AxialCoupling(Hub(0.010, 0.015), edges, 3).influence());
 }
 
 TEST(AxialCoupling, RefusesWhatItCannotModel) {
