@@ -188,13 +188,9 @@ double HarmonicCompliance(const PressFitSection& s, int n) {
     const double c_hub = (b * b + a * a) / (b * b - a * a) + mh.nu;
     return a * (c_shaft / ms.e + c_hub / mh.e);
   }
-  if (n == 1) {
-    return -OrderOneDisplacement(c, a, /*load_outer=*/true, ms) +
-           OrderOneDisplacement(a, b, /*load_outer=*/false, mh);
-  }
-  // The shaft moves inward (its displacement along +r is negative under pressure), the hub out.
-  return -RingDisplacement(c, a, /*load_outer=*/true, n, ms) +
-         RingDisplacement(a, b, /*load_outer=*/false, n, mh);
+  // The shaft's share and the hub's, each opening the interface.
+  return RingHarmonicCompliance(c, a, /*loaded_inside=*/false, s.shaft, s.plane_strain, n) +
+         RingHarmonicCompliance(a, b, /*loaded_inside=*/true, s.hub, s.plane_strain, n);
 }
 
 double RingHarmonicCompliance(double inner_radius, double outer_radius, bool loaded_inside,
@@ -205,6 +201,7 @@ double RingHarmonicCompliance(double inner_radius, double outer_radius, bool loa
   const Elastic m = Effective(material, plane_strain);
   const double u = n == 1 ? OrderOneDisplacement(inner_radius, outer_radius, !loaded_inside, m)
                           : RingDisplacement(inner_radius, outer_radius, !loaded_inside, n, m);
+  // A shaft moves inward (its displacement along +r is negative under pressure), a hub out.
   return loaded_inside ? u : -u;
 }
 
