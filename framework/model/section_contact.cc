@@ -279,20 +279,19 @@ Eigen::MatrixXd CirculantContact::ShiftStiffness(const Factorization& ws,
 }
 
 RigidSectionContact::RigidSectionContact(const PressFitSection& section, int n_columns,
-                                         std::vector<int> shift_orders)
-    : contact_(CirculantCompliance(section, n_columns), n_columns),
-      shift_orders_(std::move(shift_orders)) {
+                                         const std::vector<int>& shift_orders)
+    : contact_(CirculantCompliance(section, n_columns), n_columns) {
   cos_.resize(static_cast<std::size_t>(n_columns));
   sin_.resize(static_cast<std::size_t>(n_columns));
   for (int j = 0; j < n_columns; ++j) {
     cos_[static_cast<std::size_t>(j)] = std::cos(2.0 * std::numbers::pi * j / n_columns);
     sin_[static_cast<std::size_t>(j)] = std::sin(2.0 * std::numbers::pi * j / n_columns);
   }
-  const auto components = static_cast<Eigen::Index>(1 + 2 * shift_orders_.size());
+  const auto components = static_cast<Eigen::Index>(1 + 2 * shift_orders.size());
   shift_basis_.resize(n_columns, components);
   shift_basis_.col(0).setOnes();
-  for (std::size_t o = 0; o < shift_orders_.size(); ++o) {
-    const int order = shift_orders_[o];
+  for (std::size_t o = 0; o < shift_orders.size(); ++o) {
+    const int order = shift_orders[o];
     if (order < 1 || 2 * order > n_columns) {
       throw UserError("a section's gap shift takes orders 1 to columns / 2, not " +
                       std::to_string(order));
@@ -593,8 +592,9 @@ bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> secti
   const int dofs = freedom.tilt ? 4 : 2;
   const auto inverse_b = inverse_response_basis_.leftCols(nc);
   const auto inverse_u = inverse_response_basis_.rightCols(2);
-  const Eigen::MatrixXd ub = response_basis_.rightCols(2).transpose() * inverse_b;
-  const Eigen::Matrix2d uu = response_basis_.rightCols(2).transpose() * inverse_u;
+  // U^T G^-1 B and U^T G^-1 U: E^T G^-1 E's last two rows.
+  const auto ub = full_response_.bottomLeftCorner(2, nc);
+  const Eigen::Matrix2d uu = full_response_.bottomRightCorner<2, 2>();
   Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(dofs);
   auto place = [&](const ContactSection& section) { return SectionPlacement(section, freedom); };

@@ -150,10 +150,9 @@ class FITFEEL_API RigidSectionContact {
   // `shift_orders`: the circumferential orders (1 .. n_columns / 2) a caller's gap shifts may
   // carry besides the uniform one (Solve's `gap_shift`, ShiftFullContact).
   RigidSectionContact(const PressFitSection& section, int n_columns,
-                      std::vector<int> shift_orders = {});
+                      const std::vector<int>& shift_orders = {});
 
   int columns() const { return contact_.columns(); }
-  const std::vector<int>& shift_orders() const { return shift_orders_; }
   // A gap shift's components as columns (n_columns x (1 + 2 orders)): 1, then cos(n theta_j) and
   // sin(n theta_j) for each shift order n, theta_j the columns' angles from column 0.
   const Eigen::MatrixXd& shift_basis() const { return shift_basis_; }
@@ -204,7 +203,6 @@ class FITFEEL_API RigidSectionContact {
   const double* InverseGap(const ContactSection& section, std::size_t index);
 
   CirculantContact contact_;
-  std::vector<int> shift_orders_;
   Eigen::MatrixXd shift_basis_;                              // B
   Eigen::MatrixXd response_basis_, inverse_response_basis_;  // E = [B, cos, sin] and G^-1 E
   Eigen::MatrixXd full_response_;                            // E^T G^-1 E
