@@ -726,6 +726,10 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   // p sin (the pressures' Fourier coefficients, on the basis the gap shifts use).
   c.weights = basis / static_cast<double>(ne);
   c.weights.rightCols(static_cast<Eigen::Index>(nc) - 1) *= 2.0;
+  // The same weights per component, for the amplitudes' response in the Newton system.
+  Eigen::VectorXd w =
+      Eigen::VectorXd::Constant(static_cast<Eigen::Index>(nc), 2.0 / static_cast<double>(ne));
+  w[0] = 1.0 / static_cast<double>(ne);
   // The parts' coupling rows and modes, the hub's then the shaft's; a section's start in the
   // part's coordinates is its bore coordinate less the part's offset.
   const std::array<const std::vector<double>*, 2> rows{&hub_coupling_rows_, &shaft_coupling_rows_};
@@ -841,6 +845,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   constexpr int kMaxCouplingSolves = 20;
   double last_residual = std::numeric_limits<double>::infinity(), applied = 1.0;
   std::vector<double> amplitude(nc);
+  bool coupling_built = false;  // the Newton system's M, built at the first step that needs it
   for (int solve = 0;; ++solve) {
     for (CouplingScratch::Part& part : c.part) {
       std::fill(part.pressure.begin(), part.pressure.end(), 0.0);
@@ -904,34 +909,38 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     // contact sets (below). The contact sets move with the shifts, so a step that makes the
     // residual worse is halved (a line search on |x - M a(x)|), down to a 64th.
     CouplingSystem& system = c.newton;
-    std::vector<int> component_mode(nc);
-    for (std::size_t comp = 0; comp < nc; ++comp) {
-      component_mode[comp] = static_cast<int>(mode_of(comp));
-    }
-    system.Reset(m, std::move(component_mode));
-    for (std::size_t mode = 0; mode < modes; ++mode) {
-      Eigen::MatrixXd& coupling = system.mode_coupling(static_cast<int>(mode));
-      coupling.setZero(m, m);
-      for (Eigen::Index t = 0; t < m; ++t) {
-        const auto tu = static_cast<std::size_t>(t);
-        for (int q = 0; q < 2; ++q) {
-          const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
-          const Eigen::MatrixXd& x = (*part_modes[static_cast<std::size_t>(q)])[mode].matrix();
-          for (std::size_t qt = part.first[tu]; qt < part.first[tu + 1]; ++qt) {
-            const int v = part.cover[qt].first;
-            const double wt =
-                part.cover[qt].second / row_length(*rows[static_cast<std::size_t>(q)], v);
-            for (Eigen::Index s = 0; s < m; ++s) {
-              const auto su = static_cast<std::size_t>(s);
-              double sum = 0.0;
-              for (std::size_t qs = part.first[su]; qs < part.first[su + 1]; ++qs) {
-                sum += part.cover[qs].second * x(part.cover[qs].first, v);
+    if (!coupling_built) {
+      // M depends only on the sections' covers, fixed for this solve: built at its first step.
+      std::vector<int> component_mode(nc);
+      for (std::size_t comp = 0; comp < nc; ++comp) {
+        component_mode[comp] = static_cast<int>(mode_of(comp));
+      }
+      system.Reset(m, std::move(component_mode));
+      for (std::size_t mode = 0; mode < modes; ++mode) {
+        Eigen::MatrixXd& coupling = system.mode_coupling(static_cast<int>(mode));
+        coupling.setZero(m, m);
+        for (Eigen::Index t = 0; t < m; ++t) {
+          const auto tu = static_cast<std::size_t>(t);
+          for (int q = 0; q < 2; ++q) {
+            const CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
+            const Eigen::MatrixXd& x = (*part_modes[static_cast<std::size_t>(q)])[mode].matrix();
+            for (std::size_t qt = part.first[tu]; qt < part.first[tu + 1]; ++qt) {
+              const int v = part.cover[qt].first;
+              const double wt =
+                  part.cover[qt].second / row_length(*rows[static_cast<std::size_t>(q)], v);
+              for (Eigen::Index s = 0; s < m; ++s) {
+                const auto su = static_cast<std::size_t>(s);
+                double sum = 0.0;
+                for (std::size_t qs = part.first[su]; qs < part.first[su + 1]; ++qs) {
+                  sum += part.cover[qs].second * x(part.cover[qs].first, v);
+                }
+                coupling(s, t) += sum / length[su] * wt;
               }
-              coupling(s, t) += sum / length[su] * wt;
             }
           }
         }
       }
+      coupling_built = true;
     }
     // J = da/dx: each section's own, -w R_BB (its contact set's stiffness on the shift's
     // components, w the amplitudes' weights), plus what the part's offset and tilt do in answer,
@@ -945,8 +954,6 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     Eigen::MatrixXd pose_in = Eigen::MatrixXd::Zero(dofs, n_all);  // Q: pose forces per shift
     Eigen::MatrixXd h = Eigen::MatrixXd::Zero(dofs, dofs);
     const auto ncx = static_cast<Eigen::Index>(nc);
-    Eigen::VectorXd w = Eigen::VectorXd::Constant(ncx, 2.0 / static_cast<double>(ne));
-    w[0] = 1.0 / static_cast<double>(ne);
     for (std::size_t t = 0; t < count; ++t) {
       const Eigen::MatrixXd r_t = solver->ShiftStiffness(t);
       const auto ti = static_cast<Eigen::Index>(t);
