@@ -59,6 +59,36 @@ std::vector<double> RadialStations(const AxialBody& body, double first) {
   return r;  // increasing
 }
 
+// One of the bilinear element's 2 x 2 Gauss points on (r0, r1) x (z0, z1): where it lies, the four
+// corners' shape functions and their derivatives there (corners counterclockwise from (r0, z0)),
+// and the half-widths that scale its weight r hr hz.
+struct GaussPoint {
+  double r, z, hr, hz;
+  std::array<double, 4> shape, dr, dz;
+};
+
+std::array<GaussPoint, 4> GaussPoints(double r0, double r1, double z0, double z1) {
+  const double g = 1.0 / std::sqrt(3.0);
+  const std::array<double, 4> xi{-1.0, 1.0, 1.0, -1.0}, eta{-1.0, -1.0, 1.0, 1.0};
+  std::array<GaussPoint, 4> points{};
+  int k = 0;
+  for (double a : {-g, g}) {
+    for (double b : {-g, g}) {
+      GaussPoint& p = points[static_cast<std::size_t>(k++)];
+      p.hr = 0.5 * (r1 - r0);
+      p.hz = 0.5 * (z1 - z0);
+      p.r = r0 + p.hr * (1.0 + a);
+      p.z = z0 + p.hz * (1.0 + b);
+      for (std::size_t c = 0; c < 4; ++c) {
+        p.shape[c] = 0.25 * (1.0 + xi[c] * a) * (1.0 + eta[c] * b);
+        p.dr[c] = 0.25 * xi[c] * (1.0 + eta[c] * b) / p.hr;
+        p.dz[c] = 0.25 * eta[c] * (1.0 + xi[c] * a) / p.hz;
+      }
+    }
+  }
+  return points;
+}
+
 // The bilinear ring element's stiffness per pi (2 pi for order 0) in the Fourier mode of order n:
 // u_r = U cos(n theta), u_theta = V sin(n theta), u_z = W cos(n theta) at its four corners,
 // counterclockwise from (r0, z0), (U, W) per corner for n = 0 and (U, V, W) otherwise; 2 x 2 Gauss
@@ -71,36 +101,30 @@ Eigen::MatrixXd ElementStiffness(double r0, double r1, double z0, double z1,
   const int size = 4 * per_node;
   const int strains = order == 0 ? 4 : 6;
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(size, size);
-  const double g = 1.0 / std::sqrt(3.0);
-  const double hr = 0.5 * (r1 - r0), hz = 0.5 * (z1 - z0);
   const double n = order;
-  const std::array<double, 4> xi{-1.0, 1.0, 1.0, -1.0}, eta{-1.0, -1.0, 1.0, 1.0};
   const int w_at = per_node - 1;  // W's place in a corner's unknowns
-  for (double a : {-g, g}) {
-    for (double b : {-g, g}) {
-      const double r = r0 + hr * (1.0 + a);
-      Eigen::MatrixXd bm = Eigen::MatrixXd::Zero(strains, size);
-      for (int c = 0; c < 4; ++c) {
-        const double shape = 0.25 * (1.0 + xi[c] * a) * (1.0 + eta[c] * b);
-        const double dr = 0.25 * xi[c] * (1.0 + eta[c] * b) / hr;
-        const double dz = 0.25 * eta[c] * (1.0 + xi[c] * a) / hz;
-        const int u = per_node * c, w = u + w_at;
-        bm(0, u) = dr;
-        bm(1, w) = dz;
-        bm(2, u) = shape / r;
-        bm(3, u) = dz;
-        bm(3, w) = dr;
-        if (order > 0) {
-          const int v = u + 1;
-          bm(2, v) = n * shape / r;
-          bm(4, u) = -n * shape / r;
-          bm(4, v) = dr - shape / r;
-          bm(5, v) = dz;
-          bm(5, w) = -n * shape / r;
-        }
+  for (const GaussPoint& p : GaussPoints(r0, r1, z0, z1)) {
+    const double r = p.r;
+    Eigen::MatrixXd bm = Eigen::MatrixXd::Zero(strains, size);
+    for (int c = 0; c < 4; ++c) {
+      const auto cc = static_cast<std::size_t>(c);
+      const double shape = p.shape[cc], dr = p.dr[cc], dz = p.dz[cc];
+      const int u = per_node * c, w = u + w_at;
+      bm(0, u) = dr;
+      bm(1, w) = dz;
+      bm(2, u) = shape / r;
+      bm(3, u) = dz;
+      bm(3, w) = dr;
+      if (order > 0) {
+        const int v = u + 1;
+        bm(2, v) = n * shape / r;
+        bm(4, u) = -n * shape / r;
+        bm(4, v) = dr - shape / r;
+        bm(5, v) = dz;
+        bm(5, w) = -n * shape / r;
       }
-      k += bm.transpose() * d.topLeftCorner(strains, strains) * bm * (r * hr * hz);
     }
+    k += bm.transpose() * d.topLeftCorner(strains, strains) * bm * (r * p.hr * p.hz);
   }
   return k;
 }
@@ -357,28 +381,22 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
     Eigen::SparseMatrix<double, Eigen::RowMajor> centroid_of(rows, free);
     std::vector<Eigen::Triplet<double>> entries;
     const double a2 = body.outer_radius * body.outer_radius - body.inner_radius * body.inner_radius;
-    const double g = 1.0 / std::sqrt(3.0);
-    const std::array<double, 4> xi{-1.0, 1.0, 1.0, -1.0}, eta{-1.0, -1.0, 1.0, 1.0};
     for (int iz = 0; iz + 1 < nz; ++iz) {
       const int row = iz / per_row;
       const double volume = a2 * length[row];
       for (int ir = 0; ir + 1 < nr; ++ir) {
-        const double hr = 0.5 * (r[ir + 1] - r[ir]), hz = 0.5 * (z[iz + 1] - z[iz]);
         const std::array<int, 4> corner{node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1),
                                         node(iz + 1, ir)};
-        for (double ga : {-g, g}) {
-          for (double gb : {-g, g}) {
-            const double rr = r[ir] + hr * (1.0 + ga), zz = z[iz] + hz * (1.0 + gb);
-            for (int c = 0; c < 4; ++c) {
-              const double weight = 0.25 * (1.0 + xi[c] * ga) * (1.0 + eta[c] * gb) * rr * hr * hz;
-              for (int a = 0; a < 2; ++a) {  // U takes +b, V takes -b
-                const auto [p, f] = unknown(per_node * corner[c] + a);
-                if (p < 0) continue;
-                const double sign = (a == 0 ? 1.0 : -1.0) * f * weight;
-                body_u(p, 0) += sign;
-                body_u(p, 1) += sign * zz;
-                entries.emplace_back(row, p, sign / volume);
-              }
+        for (const GaussPoint& g : GaussPoints(r[ir], r[ir + 1], z[iz], z[iz + 1])) {
+          for (int c = 0; c < 4; ++c) {
+            const double weight = g.shape[static_cast<std::size_t>(c)] * g.r * g.hr * g.hz;
+            for (int a = 0; a < 2; ++a) {  // U takes +b, V takes -b
+              const auto [p, f] = unknown(per_node * corner[c] + a);
+              if (p < 0) continue;
+              const double sign = (a == 0 ? 1.0 : -1.0) * f * weight;
+              body_u(p, 0) += sign;
+              body_u(p, 1) += sign * g.z;
+              entries.emplace_back(row, p, sign / volume);
             }
           }
         }
