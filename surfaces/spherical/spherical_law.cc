@@ -3,10 +3,12 @@
 #include <cmath>
 
 #include <algorithm>
+#include <limits>
 #include <numbers>
 
 #include "framework/core/error.h"
 #include "framework/model/elastic_limit.h"
+#include "surfaces/spherical/gauss_legendre.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
 namespace fitfeel::spherical {
@@ -46,40 +48,20 @@ double BandPressurePerInterference(double dk, double band_width, double outer_di
   }
   // Composite 4-point Gauss-Legendre over the band; the integrands are smooth (r >= its value at
   // the band's edge), so 32 panels reach double precision.
-  constexpr double kNodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                                0.8611363115940526};
-  constexpr double kWeights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                                  0.3478548451374538};
   constexpr int kPanels = 32;
   const double panel = band_width / kPanels;
   double pressure = 0.0, radius = 0.0;
   for (int k = 0; k < kPanels; ++k) {
     const double centre = -h + (k + 0.5) * panel;
     for (int g = 0; g < 4; ++g) {
-      const double y = centre + 0.5 * panel * kNodes[g];
+      const double y = centre + 0.5 * panel * kGaussNodes4[g];
       const double r = std::sqrt(a * a - y * y);
-      pressure +=
-          kWeights[g] * RingPressurePerInterference(2.0 * r, outer_diameter, ball, ring, ball_bore);
-      radius += kWeights[g] * r;
+      pressure += kGaussWeights4[g] *
+                  RingPressurePerInterference(2.0 * r, outer_diameter, ball, ring, ball_bore);
+      radius += kGaussWeights4[g] * r;
     }
   }
   return a * pressure / radius;
-}
-
-double ContactModulus(const Material& a, const Material& b) {
-  return 1.0 / ((1.0 - a.poisson * a.poisson) / a.youngs_modulus +
-                (1.0 - b.poisson * b.poisson) / b.youngs_modulus);
-}
-
-HertzContact ConformalHertz(double ball_radius, double clearance, double approach,
-                            double contact_modulus) {
-  HertzContact h;
-  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
-  const double r = ball_radius * (ball_radius + clearance) / clearance;
-  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach);
-  h.radius = std::sqrt(r * approach);
-  h.peak_pressure = 1.5 * h.load / (std::numbers::pi * h.radius * h.radius);
-  return h;
 }
 
 void KnuckleBearingLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
@@ -93,7 +75,11 @@ void KnuckleBearingLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   pressure_per_interference_ =
       BandPressurePerInterference(dk, socket.width(), socket.outer_diameter(), ball.bore_diameter(),
                                   inner.material, outer.material);
-  contact_modulus_ = ContactModulus(inner.material, outer.material);
+  // The walls at the equator: the outer ring's to its housing, the inner ring's to its shaft.
+  const double ball_wall = ball.bore_diameter() > 0.0 ? ball.radius() - 0.5 * ball.bore_diameter()
+                                                      : std::numeric_limits<double>::infinity();
+  local_ = LayeredConformalContact(radius_, {inner.material, ball_wall},
+                                   {outer.material, 0.5 * socket.outer_diameter() - radius_});
   const double ring_re = outer.material.yield_strength, ball_re = inner.material.yield_strength;
   ring_yield_pressure_ =
       ring_re > 0.0 ? HubYieldPressure(dk, socket.outer_diameter(), ring_re) : 0.0;
@@ -105,21 +91,6 @@ void KnuckleBearingLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   hertz_yield_part_ = weaker == ring_re ? 1 : 2;
 }
 
-HertzContact LocalContact(double ball_radius, double clearance, double approach,
-                          double contact_modulus) {
-  HertzContact h;
-  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
-  // Hertz's R = R1 R2 / c, held to the radius that keeps a = sqrt(R delta) at 0.3 R1.
-  const double r =
-      std::min(ball_radius * (ball_radius + clearance) / clearance,
-               kHertzMaxSpread * kHertzMaxSpread * ball_radius * ball_radius / approach);
-  h.radius = std::sqrt(r * approach);
-  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach) *
-           std::min(1.0, clearance / approach);
-  h.peak_pressure = 1.5 * h.load / (std::numbers::pi * h.radius * h.radius);
-  return h;
-}
-
 double KnuckleBearingLaw::Normal(const ContactState& contact, Wrench* out,
                                  HertzContact* hertz) const noexcept {
   out->SetZero();
@@ -128,8 +99,7 @@ double KnuckleBearingLaw::Normal(const ContactState& contact, Wrench* out,
   const Eigen::Vector2d bed = -pressure_per_interference_ * contact.pressure_resultant;
   const double bed_load = bed.norm();
   const double clearance = contact.offset_distance - contact.max_interference;
-  const HertzContact local =
-      LocalContact(radius_, clearance, contact.max_interference, contact_modulus_);
+  const HertzContact local = local_.Load(clearance, contact.max_interference);
   if (local.load > bed_load && bed_load > 0.0) {
     *hertz = local;
     const Eigen::Vector2d f = (local.load / bed_load) * bed;

@@ -2,6 +2,7 @@
 
 #include "framework/model/gps_spec.h"
 #include "framework/model/resistance_law.h"
+#include "surfaces/spherical/local_contact.h"
 
 namespace fitfeel::spherical {
 
@@ -40,39 +41,18 @@ double RingPressurePerInterference(double dk, double outer_diameter, const Mater
 double BandPressurePerInterference(double dk, double band_width, double outer_diameter,
                                    double ball_bore, const Material& ball, const Material& ring);
 
-// A loaded plain bearing with radial clearance c = R2 - R1 touches over a small patch: a
-// conformal Hertz contact of the two spheres (Johnson, Contact Mechanics, 1985, section 4.2),
-// effective radius R = R1 R2 / (R2 - R1), contact modulus E* = 1 / ((1 - nu1^2)/E1 +
-// (1 - nu2^2)/E2): load W = (4/3) E* sqrt(R) delta^(3/2) at the approach delta, contact radius
-// a = sqrt(R delta), peak pressure p0 = 3 W / (2 pi a^2).
-struct HertzContact {
-  double load = 0.0;           // W, N
-  double radius = 0.0;         // a, m
-  double peak_pressure = 0.0;  // p0, Pa
-};
-HertzContact ConformalHertz(double ball_radius, double clearance, double approach,
-                            double contact_modulus);
-// Hertz needs a patch small against the ball; a / R1 = 0.3 is taken as the end of its validity.
-inline constexpr double kHertzMaxSpread = 0.3;
-// The local contact the law uses: Hertz while a <= 0.3 R1; beyond, R is held at the value that
-// keeps a = 0.3 R1 (a load linear in delta), and once the approach exceeds the clearance (the
-// patch wraps round the ball) the load is scaled by c / delta, so that it fades into the ring's
-// bed as c -> 0. Non-decreasing in delta at a given clearance, continuous everywhere.
-HertzContact LocalContact(double ball_radius, double clearance, double approach,
-                          double contact_modulus);
-double ContactModulus(const Material& a, const Material& b);  // E*, Pa
-
 // Knuckle (spherical plain) bearing. Two contact regimes, each carried by the closed form that
 // holds there:
 //  - interference all round (ball larger than the socket) or a contact wrapped round the ball:
 //    each socket cell's pressure is p = P_ring * delta (P_ring the band's coefficient above), so
 //    sum p ds = P_ring * interference_volume and the radial force is -P_ring * sum(delta ds n);
 //  - the ball pushed across the clearance onto one side (a loaded plain bearing): the local
-//    (conformal Hertz) load W of the approach delta = the largest interference, with the
-//    clearance there c = e - delta (e the centre's offset), along minus the resultant's
+//    load W of the approach delta = the largest interference (LayeredConformalContact:
+//    conformal Hertz with the rings' walls as layers bonded to a rigid housing and shaft), with
+//    the clearance there c = e - delta (e the centre's offset), along minus the resultant's
 //    direction; normal force W. A local patch is carried by the material under it, not by the
-//    ring's breathing: Hertz is stiffer than the per-cell bed there (GE 20 E at 1 um of
-//    approach: 288 N against about 84 N).
+//    ring's breathing: the local load is stiffer than the per-cell bed there (GE 20 E at 1 um of
+//    approach and 61 um of clearance: 499 N against about 84 N).
 // The larger of the two loads is taken: both grow with the offset, so the support stays monotone
 // (the settling search needs that) and continuous; as c -> 0 the local load fades (LocalContact)
 // and the bed remains.
@@ -82,8 +62,8 @@ double ContactModulus(const Material& a, const Material& b);  // E*, Pa
 // mu * integral of p * (distance from the axis) ds (a cell's arm is a cos(latitude), not a, so
 // mu * sum p ds * a would overstate the torque by 3 % for GE 20 E's outer ring).
 // Elastic limit: per cell P_ring * delta against the ring's bore (DIN 7190 hub form with
-// Q = dk / D) and the ball's (a hollow shaft with the inner ring's bore); a Hertz contact's p0
-// against 1.61 R_e (elastic_limit.h).
+// Q = dk / D) and the ball's (a hollow shaft with the inner ring's bore); the local contact's
+// peak pressure against Hertz's 1.61 R_e (elastic_limit.h).
 // Tilting (omega_x, omega_z) and the axial force are not modelled: the bearing's mating motion is
 // the rotation about its axis, and the ball is captive along it.
 class KnuckleBearingLaw final : public ResistanceLaw {
@@ -101,19 +81,19 @@ class KnuckleBearingLaw final : public ResistanceLaw {
   void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
                            Wrench* out) const noexcept override;
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
-  // The ring's bed: -P times the pressure resultant; none where the Hertz regime carries the
+  // The ring's bed: -P times the pressure resultant; none where the local contact carries the
   // load (Normal).
   bool DoRadialJacobian(const ContactState& contact,
                         Eigen::Matrix2d* jacobian) const noexcept override;
 
  private:
-  // Radial force into `out`; returns the normal force and, when the Hertz regime carries the
-  // load, its contact in `hertz` (load 0 otherwise).
+  // Radial force into `out`; returns the normal force and, when the local contact carries the
+  // load, it in `hertz` (load 0 otherwise).
   double Normal(const ContactState& contact, Wrench* out, HertzContact* hertz) const noexcept;
 
   StickSlipFriction friction_;
   double radius_ = 0.0;
-  double contact_modulus_ = 0.0;
+  LayeredConformalContact local_;
   double ring_yield_pressure_ = 0.0;  // 0: no yield strength given
   double ball_yield_pressure_ = 0.0;
   double hertz_yield_pressure_ = 0.0;

@@ -417,14 +417,16 @@ TEST(KnuckleBearing, ConformalHertzClosedForm) {
 }
 
 // tools/fem/data/bearing.csv: CalculiX in 3-D (tools/fem/solid.py), GE 20 E loaded across a
-// radial clearance of 30 um, its outer ring in a rigid housing, its inner ring on a rigid shaft
-// moved by the clearance plus the approach; the FEM's radial load against the law's local
-// contact (conformal Hertz, Johnson 4.2, R held beyond a = 0.3 R1) at 1, 2 and 3 um of
-// approach. Not within reach yet: both rings are thinner at the equator (3 and 4.5 mm) than the
-// patch is wide (a = 3 to 4.6 mm), held on rigid surfaces, so they are stiffer than the half-spaces
-// Hertz assumes (and a ring in a softer housing would be softer): skipped saying by how much.
+// radial clearance of 30 um, its outer ring held in a rigid housing, its inner ring held on a
+// rigid shaft moved by the clearance plus the approach; the FEM's radial load against the law's
+// local contact (its rings' walls, 4.5 and 2.97 mm at the equator, as layers bonded to their
+// supports; R held beyond a = 0.3 R1) and against conformal Hertz (half-spaces) at 1, 2 and 3 um
+// of approach. Held to 15 % (Hertz is 50 to 68 % soft); the issue's 10 % is not reached at 2 um:
+// the layers have no edges, while the rings' bands (12 and 16 mm wide) end within a patch radius
+// or two of a patch up to 9.5 mm across: skipped saying by how much.
 TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
   const double e_star = ContactModulus(test::Steel(), test::Steel());
+  const LayeredConformalContact walls(14.5e-3, {test::Steel(), 4.5e-3}, {test::Steel(), 2.97e-3});
   double worst = 0.0;
   std::string errors;
   for (const char* name :
@@ -432,43 +434,52 @@ TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
     const double clearance = test_support::FemValue("bearing.csv", name, 1) * 1e-6;
     const double approach = test_support::FemValue("bearing.csv", name, 2) * 1e-6;
     const double fem = test_support::FemValue("bearing.csv", name, 3);
-    const double law = LocalContact(14.5e-3, clearance, approach, e_star).load;
-    std::printf("%-22s FEM %8.1f N  law (conformal Hertz) %8.1f N %+6.1f %%\n", name, fem, law,
-                100 * (law / fem - 1));
+    const double hertz = LocalContact(14.5e-3, clearance, approach, e_star).load;
+    const double law = walls.Load(clearance, approach).load;
+    std::printf(
+        "%-22s FEM %7.1f N  walls %7.1f N %+5.1f %%  half-spaces (Hertz) %7.1f N %+5.1f %%\n", name,
+        fem, law, 100 * (law / fem - 1), hertz, 100 * (hertz / fem - 1));
+    EXPECT_LT(std::abs(law / fem - 1), 0.15) << name;
+    EXPECT_LT(hertz / fem, 0.55) << name;
     worst = std::max(worst, std::abs(law / fem - 1));
     char error[48];
-    std::snprintf(error, sizeof error, "%s%+.0f %%", errors.empty() ? "" : ", ",
+    std::snprintf(error, sizeof error, "%s%+.1f %%", errors.empty() ? "" : ", ",
                   100 * (law / fem - 1));
     errors += error;
   }
   if (worst >= 0.10) {
-    GTEST_SKIP() << "open (issue 9): the loaded bearing's conformal Hertz contact is " << errors
-                 << " off CalculiX at 1, 2 and 3 um of approach (rigid housing and shaft): its "
-                    "rings are thinner than its patch is wide";
+    GTEST_SKIP() << "open (issue 9): the loaded bearing's local contact is " << errors
+                 << " off CalculiX at 1, 2 and 3 um of approach (rings held in a rigid housing "
+                    "and on a rigid shaft): its walls are layers without the rings' free edges";
   }
 }
 
 // The law on a loaded bearing: 30 um radial play, the ball pushed 31 um off centre, so its
-// approach is 1 um over a patch of a / R1 = 0.18: Hertz alone carries it, 281.3 N back along the
-// offset, and the friction torque is mu W rho while turning.
-TEST(KnuckleBearing, LoadedPlainBearingIsAConformalHertzContact) {
+// approach is 1 um over a patch of a / R1 = 0.18: the local contact alone carries it, conformal
+// Hertz (281.3 N) stiffened by the socket's 5 mm wall on its housing (the solid ball is a
+// half-space), back along the offset, and the friction torque is mu W rho while turning.
+TEST(KnuckleBearing, LoadedPlainBearingIsALocalContact) {
   Model model;
   Prepare(&model, test::Ball(), test::Socket(), Resolution{40, 360}, -30e-6);
   ContactState contact;
   const Wrench w = Evaluate(model, 0.0, 10.0, Eigen::Vector2d(0.0, -31e-6), &contact);
   // Cell centres sit half a column (0.5 deg) and half a row off the load line: delta = 0.999 um.
   EXPECT_NEAR(contact.max_interference, 1e-6, 3e-9);
-  const double load =
-      ConformalHertz(10e-3, 31e-6 - contact.max_interference, contact.max_interference,
-                     ContactModulus(test::Steel(), test::Steel()))
-          .load;
-  EXPECT_NEAR(load, 281.3, 1.5);
+  const double clearance = 31e-6 - contact.max_interference;
+  const double hertz = ConformalHertz(10e-3, clearance, contact.max_interference,
+                                      ContactModulus(test::Steel(), test::Steel()))
+                           .load;
+  EXPECT_NEAR(hertz, 281.3, 1.5);
+  const LayeredConformalContact walls(10e-3, {test::Steel()}, {test::Steel(), 5e-3});
+  const double load = walls.Load(clearance, contact.max_interference).load;
+  EXPECT_GT(load, 1.05 * hertz);
+  EXPECT_LT(load, 1.5 * hertz);
   EXPECT_NEAR(w.force.norm(), load, 1e-9 * load);
   EXPECT_NEAR(w.force.z(), load, 1e-3 * load);  // along the offset, back
   EXPECT_NEAR(w.torque.y(), -kMu * load * model.law.friction_arm(), 1e-9 * load);
   // The per-cell ring bed would carry it far softer (the ring's breathing is not a local patch).
   EXPECT_LT(model.law.pressure_per_interference() * contact.pressure_resultant.norm(), 0.8 * 281.3);
-  // Hertz's load is not a linear map of the resultant: no stiffness in closed form there.
+  // The local load is not a linear map of the resultant: no stiffness in closed form there.
   Eigen::Matrix2d jacobian;
   EXPECT_FALSE(model.law.RadialJacobian(contact, &jacobian));
 }
