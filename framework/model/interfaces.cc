@@ -1,5 +1,7 @@
 // Out-of-line destructors (one vtable per interface, in the framework library) and the checking
 // wrappers of the Drake-style public/protected-virtual pairs.
+#include <cmath>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -197,6 +199,23 @@ void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode
 void SurfaceType::CheckOptions(const ConfigNode& options) const { DoCheckOptions(options); }
 
 void SurfaceType::DoCheckOptions(const ConfigNode& options) const { options.ExpectOnlyKeys({}); }
+
+double SurfaceType::EstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
+                                           const GridShape& outer, double depth_steps) const {
+  if (inner.rows < 0 || inner.columns < 0 || outer.rows < 0 || outer.columns < 0 ||
+      !(depth_steps >= 0.0) || !std::isfinite(depth_steps)) {
+    throw UserError("a prepare estimate needs non-negative grids and a finite, non-negative "
+                    "number of depth steps");
+  }
+  const double seconds = DoEstimatePrepareSeconds(model, inner, outer, depth_steps);
+  FITFEEL_DEMAND(seconds >= 0.0 && std::isfinite(seconds));
+  return seconds;
+}
+
+double SurfaceType::DoEstimatePrepareSeconds(const ModelSettings&, const GridShape&,
+                                             const GridShape&, double) const {
+  return 0.0;
+}
 
 std::vector<CharacteristicCheck> SurfaceType::EvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {

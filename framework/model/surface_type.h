@@ -13,6 +13,7 @@
 #include "framework/model/discretizer.h"
 #include "framework/model/render_mesh.h"
 #include "framework/model/gps_spec.h"
+#include "framework/model/model_settings.h"
 #include "framework/model/resistance_law.h"
 #include "framework/model/variation_generator.h"
 
@@ -79,6 +80,15 @@ class FITFEEL_API SurfaceType {
   // Throws UserError naming the offered laws if `name` is not one of them.
   std::unique_ptr<ResistanceLaw> MakeLaw(std::string_view name) const;
 
+  // What preparing the scene's law costs beyond the loader's per-cell estimate (scene.h
+  // SceneCost), in seconds on one core of the reference machine, for the loader's admission: a
+  // law whose prepare is not proportional to the cells says so here (the cylinder's elastic
+  // solve grows with the rows cubed). The grids are the parts' (Discretizer::Shape), `depth_steps`
+  // the depth tables' rows. Throws UserError for negative or non-finite inputs, ScenarioError
+  // from a surface's own option keys; the estimate is finite and non-negative.
+  double EstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
+                                const GridShape& outer, double depth_steps) const;
+
   // The parts' coarse meshes for collision in free motion (the positioning stage's FCL query),
   // in the frames CoarseMeshes describes; built once before a run, never in the tick. Default:
   // empty meshes, meaning this surface type models no collision in free motion (the moving part
@@ -120,6 +130,9 @@ class FITFEEL_API SurfaceType {
   virtual void DoCheckOptions(const ConfigNode& options) const;
   // Default: an empty mesh (no render mesh for this surface type).
   virtual RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const;
+  // Default: 0 (the per-cell estimate covers the surface's laws).
+  virtual double DoEstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
+                                          const GridShape& outer, double depth_steps) const;
   // Default: throws UnsupportedError (a surface type without a metrology binding yet).
   virtual std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const;

@@ -41,7 +41,9 @@ struct SceneCost {
   long inner_cells = 0, outer_cells = 0;
   double depth_steps = 0.0;     // rows of the contact analyzer's depth tables
   double prepare_bytes = 0.0;   // grids, skin model shapes, analyzer tables
-  double prepare_seconds = 0.0; // on one core of the reference machine (docs/scenario-format.md)
+  // On one core of the reference machine: the cells', the tables' and the law's own estimate
+  // (SurfaceType::EstimatePrepareSeconds; docs/scenario-format.md).
+  double prepare_seconds = 0.0;
   double run_bytes = 0.0;       // what the run keeps per tick (kStreamBytesPerTick each)
 };
 inline constexpr double kLargeSceneBytes = 1.0 * 1024 * 1024 * 1024;

@@ -1,6 +1,8 @@
 #include "surfaces/cylindrical/cylindrical_surface.h"
 
 #include <cmath>
+
+#include <algorithm>
 #include <string>
 
 #include "framework/metrology/sms_conformance.h"
@@ -10,6 +12,7 @@
 #include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/elastic_cost.h"
 
 namespace fitfeel::cylindrical {
 std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const {
@@ -52,6 +55,15 @@ std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view na
 void CylindricalSurface::DoCheckOptions(const ConfigNode& options) const {
   CylindricalVariationGenerator generator;
   generator.Configure(options);
+}
+
+double CylindricalSurface::DoEstimatePrepareSeconds(const ModelSettings& model,
+                                                    const GridShape& inner, const GridShape& outer,
+                                                    double depth_steps) const {
+  if (model.law != "elastic") return 0.0;
+  const ElasticOptions options = model.extra ? ParseElasticOptions(*model.extra) : ElasticOptions{};
+  return ElasticPrepareSeconds(options, std::max(inner.rows, outer.rows),
+                               std::max(inner.columns, outer.columns), depth_steps);
 }
 
 std::vector<CharacteristicCheck> CylindricalSurface::DoEvaluateCharacteristics(

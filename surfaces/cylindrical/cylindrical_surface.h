@@ -28,6 +28,9 @@ class CylindricalSurface final : public SurfaceType {
   RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const override;
   // model.options: the generator's keys (size_draw, size_limit), checked by configuring one.
   void DoCheckOptions(const ConfigNode& options) const override;
+  // The elastic law's worst case (elastic_cost.h); the other laws' prepare is the cells'.
+  double DoEstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
+                                  const GridShape& outer, double depth_steps) const override;
   // framework/metrology's evaluation (EvaluateCylindricalSms): two-point sizes as
   // two_point_size_min / two_point_size_max against the size limits, then each specified form
   // tolerance.
