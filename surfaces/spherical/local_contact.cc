@@ -158,6 +158,13 @@ Patch SolvePatch(double a_h, double delta, const ContactSide& ball, const Contac
   return patch;
 }
 
+// a + t (b - a), field by field.
+LayeredConformalContact::Ratios Mix(const LayeredConformalContact::Ratios& a,
+                                    const LayeredConformalContact::Ratios& b, double t) {
+  return {a.load + t * (b.load - a.load), a.radius + t * (b.radius - a.radius),
+          a.peak_pressure + t * (b.peak_pressure - a.peak_pressure)};
+}
+
 }  // namespace
 
 LayeredConformalContact::LayeredConformalContact(double ball_radius, const ContactSide& ball,
@@ -191,9 +198,7 @@ LayeredConformalContact::Ratios LayeredConformalContact::RatiosAt(double s) cons
   const double x = (std::log(s) - log_lowest_) / log_step_;
   if (x <= 0.0) {
     // Below the table the walls' effect fades as a / h, i.e. sqrt(s).
-    const double f = std::sqrt(s / std::exp(log_lowest_));
-    return {1.0 + (table_[0].load - 1.0) * f, 1.0 + (table_[0].radius - 1.0) * f,
-            1.0 + (table_[0].peak_pressure - 1.0) * f};
+    return Mix(Ratios{}, table_[0], std::sqrt(s / std::exp(log_lowest_)));
   }
   if (x >= kPoints - 1) {
     // A bed's load and peak pressure grow as a / h against Hertz's, its patch as Hertz's.
@@ -202,11 +207,7 @@ LayeredConformalContact::Ratios LayeredConformalContact::RatiosAt(double s) cons
     return {top.load * f, top.radius, top.peak_pressure * f};
   }
   const int k = static_cast<int>(x);
-  const double t = x - k;
-  const Ratios& lo = table_[k];
-  const Ratios& hi = table_[k + 1];
-  return {lo.load + t * (hi.load - lo.load), lo.radius + t * (hi.radius - lo.radius),
-          lo.peak_pressure + t * (hi.peak_pressure - lo.peak_pressure)};
+  return Mix(table_[k], table_[k + 1], x - k);
 }
 
 HertzContact LayeredConformalContact::Load(double clearance, double approach) const noexcept {
