@@ -79,7 +79,6 @@ class LayeredConformalContact {
     double load = 1.0, radius = 1.0, peak_pressure = 1.0;
   };
   Ratios RatiosAt(double s) const noexcept;
-  double wall() const { return wall_; }  // h, the thinner wall (m; infinity: two half-spaces)
 
   // Table points over log s, from kSpan below the largest s the cap a <= 0.3 R1 allows (or kBed)
   // to that. Beyond s = kBed (a = 10 h) the walls are a bed (p = M delta / h): the load and peak
@@ -93,7 +92,7 @@ class LayeredConformalContact {
  private:
   double ball_radius_ = 0.0;
   double contact_modulus_ = 0.0;
-  double wall_ = std::numeric_limits<double>::infinity();
+  double wall_ = std::numeric_limits<double>::infinity();  // h, the thinner wall
   double log_lowest_ = 0.0, log_step_ = 1.0;
   std::array<Ratios, kPoints> table_{};
 };

@@ -105,6 +105,13 @@ TEST(LocalContact, ThinWallsGiveAWinklerBed) {
   EXPECT_NEAR(h.radius / std::sqrt(2.0 * r * delta), 1.0, 0.03);
   EXPECT_NEAR(h.peak_pressure / (k * delta), 1.0, 0.03);
   EXPECT_GT(h.load, 5.0 * LocalContact(1.0, 1e-3, delta, ContactModulus(steel, steel)).load);
+  // Past s = kBed the ratios carry on from the table's last point without a step.
+  const double bed = LayeredConformalContact::kBed;
+  const auto below = walls.RatiosAt(bed * (1.0 - 1e-9));
+  const auto above = walls.RatiosAt(bed * (1.0 + 1e-9));
+  EXPECT_NEAR(below.load / above.load, 1.0, 1e-8);
+  EXPECT_NEAR(below.radius / above.radius, 1.0, 1e-8);
+  EXPECT_NEAR(below.peak_pressure / above.peak_pressure, 1.0, 1e-8);
 }
 
 // The settling search needs the support monotone in the approach, at every clearance, and the
