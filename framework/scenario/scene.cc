@@ -388,6 +388,7 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
   const double law_seconds = Located(grid_key, "a grid the law can estimate", [&] {
     return surface.EstimatePrepareSeconds(model, shapes[0], shapes[1], cost.depth_steps);
   });
+  cost.law_prepare_seconds = law_seconds;
   cost.prepare_seconds = cells * kSecondsPerCell + vertices * kSecondsPerTableVertex + law_seconds;
   cost.run_bytes = std::round(run.duration * run.rate) * kStreamBytesPerTick;
   if (!options.allow_large &&

@@ -44,6 +44,7 @@ struct SceneCost {
   // On one core of the reference machine: the cells', the tables' and the law's own estimate
   // (SurfaceType::EstimatePrepareSeconds; docs/scenario-format.md).
   double prepare_seconds = 0.0;
+  double law_prepare_seconds = 0.0;  // of it, the law's own worst case (0: none of its own)
   double run_bytes = 0.0;       // what the run keeps per tick (kStreamBytesPerTick each)
 };
 inline constexpr double kLargeSceneBytes = 1.0 * 1024 * 1024 * 1024;

@@ -100,6 +100,16 @@ std::string DescribeScene(const Scene& scene) {
          " ticks), seed " + std::to_string(run.seed) + ", clock " +
          (run.clock == ClockMode::kVirtual ? "virtual" : "realtime") + ", outputs " +
          (outputs.empty() ? "none" : outputs) + "\n";
+  // The loader's estimate (docs/scenario-format.md, cost admission), before anything is drawn.
+  const SceneCost& cost = scene.cost;
+  out += "cost         " + std::to_string(cost.inner_cells) + " + " +
+         std::to_string(cost.outer_cells) + " cells, " + Number(cost.depth_steps, "%.0f") +
+         " depth steps: about " + Number(cost.prepare_bytes / (1 << 20), "%.3g") + " MiB and " +
+         Number(cost.prepare_seconds, "%.3g") + " s to prepare" +
+         (cost.law_prepare_seconds > 0.0
+              ? " (" + Number(cost.law_prepare_seconds, "%.3g") + " s of it the law's, at worst)"
+              : std::string()) +
+         ", " + Number(cost.run_bytes / (1 << 20), "%.3g") + " MiB for the run\n";
   return out;
 }
 

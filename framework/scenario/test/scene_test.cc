@@ -18,6 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using ::testing::Not;
 using ::testing::StartsWith;
 
 const fs::path kTestDir = fs::path(FITFEEL_TEST_SOURCE_DIR) / "framework" / "scenario" / "test";
@@ -648,6 +649,9 @@ TEST_F(SceneTest, SummaryNamesPartsLimitsModelDeviceAndRun) {
   EXPECT_THAT(summary, HasSubstr("device       test.device.fake\n"));
   EXPECT_THAT(summary, HasSubstr("run          2 kHz for 5 s (10000 ticks), seed 42, clock "
                                  "realtime, outputs trace, summary, recording\n"));
+  // 40 x 72 cells a part; the fake law has no estimate of its own.
+  EXPECT_THAT(summary, HasSubstr("cost         2880 + 2880 cells, "));
+  EXPECT_THAT(summary, Not(HasSubstr("the law's")));
 }
 
 }  // namespace
