@@ -423,7 +423,7 @@ TEST(KnuckleBearing, ConformalHertzClosedForm) {
 // supports; R held beyond a = 0.3 R1) and against conformal Hertz (half-spaces) at 1, 2 and 3 um
 // of approach. Held to 15 % (Hertz is 50 to 68 % soft); the 10 % is not reached at 2 um:
 // the layers have no edges, while the rings' bands (12 and 16 mm wide) end within a patch radius
-// or two of a patch up to 9.5 mm across: skipped saying by how much.
+// or two of the patch (9.5 mm across at 2 um): skipped saying by how much.
 TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
   const double e_star = ContactModulus(test::Steel(), test::Steel());
   const LayeredConformalContact walls(14.5e-3, {test::Steel(), 4.5e-3}, {test::Steel(), 2.97e-3});
