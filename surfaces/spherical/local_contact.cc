@@ -34,9 +34,10 @@ HertzContact LocalContact(double ball_radius, double clearance, double approach,
                           double contact_modulus) {
   HertzContact h;
   if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
-  // Hertz's R = R1 R2 / c, held to the radius that keeps a = sqrt(R delta) at 0.3 R1.
+  // The gap's curvature R = R1 R2 / e (e = c + delta, the centres' distance), held to the radius
+  // that keeps a = sqrt(R delta) at 0.3 R1.
   const double r =
-      std::min(ball_radius * (ball_radius + clearance) / clearance,
+      std::min(ball_radius * (ball_radius + clearance) / (clearance + approach),
                kHertzMaxSpread * kHertzMaxSpread * ball_radius * ball_radius / approach);
   h.radius = std::sqrt(r * approach);
   h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach) *

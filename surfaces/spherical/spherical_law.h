@@ -52,7 +52,7 @@ double BandPressurePerInterference(double dk, double band_width, double outer_di
 //    the clearance there c = e - delta (e the centre's offset), along minus the resultant's
 //    direction; normal force W. A local patch is carried by the material under it, not by the
 //    ring's breathing: the local load is stiffer than the per-cell bed there (GE 20 E at 1 um of
-//    approach and 61 um of clearance: 499 N against about 84 N).
+//    approach and 61 um of clearance: 492 N against about 84 N).
 // The larger of the two loads is taken: both grow with the offset, so the support stays monotone
 // (the settling search needs that) and continuous; as c -> 0 the local load fades (LocalContact)
 // and the bed remains.

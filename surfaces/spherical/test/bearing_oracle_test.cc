@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <string>
 
 #include <gtest/gtest.h>
 
@@ -420,15 +419,12 @@ TEST(KnuckleBearing, ConformalHertzClosedForm) {
 // radial clearance of 30 um, its outer ring held in a rigid housing, its inner ring held on a
 // rigid shaft moved by the clearance plus the approach; the FEM's radial load against the law's
 // local contact (its rings' walls, 4.5 and 2.97 mm at the equator, as layers bonded to their
-// supports; R held beyond a = 0.3 R1) and against conformal Hertz (half-spaces) at 1, 2 and 3 um
-// of approach. Held to 15 % (Hertz is 50 to 68 % soft); the issue's 10 % is not reached at 2 um:
-// the layers have no edges, while the rings' bands (12 and 16 mm wide) end within a patch radius
-// or two of the patch (9.5 mm across at 2 um): skipped saying by how much.
+// supports; the gap's curvature R = R1 R2 / (c + delta), held beyond a = 0.3 R1) at 1, 2 and 3 um
+// of approach, within issue 9's 10 %; the same geometry with half-spaces (Hertz) is 50 to 70 %
+// soft.
 TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
   const double e_star = ContactModulus(test::Steel(), test::Steel());
   const LayeredConformalContact walls(14.5e-3, {test::Steel(), 4.5e-3}, {test::Steel(), 2.97e-3});
-  double worst = 0.0;
-  std::string errors;
   for (const char* name :
        {"bearing-approach-1um", "bearing-approach-2um", "bearing-approach-3um"}) {
     const double clearance = test_support::FemValue("bearing.csv", name, 1) * 1e-6;
@@ -439,18 +435,8 @@ TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
     std::printf(
         "%-22s FEM %7.1f N  walls %7.1f N %+5.1f %%  half-spaces (Hertz) %7.1f N %+5.1f %%\n", name,
         fem, law, 100 * (law / fem - 1), hertz, 100 * (hertz / fem - 1));
-    EXPECT_LT(std::abs(law / fem - 1), 0.15) << name;
-    EXPECT_LT(hertz / fem, 0.55) << name;
-    worst = std::max(worst, std::abs(law / fem - 1));
-    char error[48];
-    std::snprintf(error, sizeof error, "%s%+.1f %%", errors.empty() ? "" : ", ",
-                  100 * (law / fem - 1));
-    errors += error;
-  }
-  if (worst >= 0.10) {
-    GTEST_SKIP() << "open (issue 9): the loaded bearing's local contact is " << errors
-                 << " off CalculiX at 1, 2 and 3 um of approach (rings held in a rigid housing "
-                    "and on a rigid shaft): its walls are layers without the rings' free edges";
+    EXPECT_LT(std::abs(law / fem - 1), 0.10) << name;
+    EXPECT_LT(hertz / fem, 0.5) << name;
   }
 }
 

@@ -89,16 +89,33 @@ TEST(LocalContact, ThickWallsGiveConformalHertz) {
   EXPECT_EQ(solid.Load(30e-6, 1e-6).load, LocalContact(14.5e-3, 30e-6, 1e-6, e_star).load);
 }
 
+// The gap's curvature is the offset's: spheres R1 = 14.5 mm and R2 = R1 + c with their centres
+// e = c + delta apart, the exact gap along the socket's normal at the angle phi,
+// R2 - |R2 (cos phi, sin phi) - (e, 0)| - R1 (sign: positive open), against r^2 / (2R) - delta
+// with r = R1 phi at small phi: R = R1 R2 / e, not Hertz's R1 R2 / c.
+TEST(LocalContact, GapCurvatureIsTheCentresDistances) {
+  const double r1 = 14.5e-3, c = 30e-6, delta = 2e-6, e = c + delta, r2 = r1 + c;
+  const double phi = 0.02;
+  const double to_ball = std::hypot(r2 * std::cos(phi) - e, r2 * std::sin(phi));
+  const double gap = to_ball - r1;  // the ball's surface along the same ray
+  const double curvature = 2.0 * (gap + delta) / std::pow(r1 * phi, 2);  // 1 / R
+  EXPECT_NEAR(1.0 / curvature, r1 * r2 / e, 0.005 * r1 * r2 / e);        // to first order in e / R
+  EXPECT_GT(std::abs(1.0 / curvature - r1 * r2 / c), 0.05 * r1 * r2 / c);
+  // LocalContact's patch radius is sqrt(R delta) with that R.
+  const HertzContact h = LocalContact(r1, c, delta, ContactModulus(test::Steel(), test::Steel()));
+  EXPECT_NEAR(h.radius, std::sqrt(r1 * r2 / e * delta), 1e-12);
+}
+
 // Walls far thinner than the patch: each a bed of stiffness M / h (M = E (1 - nu) / ((1 + nu)
 // (1 - 2 nu)), the confined modulus), so p = k (delta - r^2 / (2R)) out to sqrt(2 R delta) and
-// W = pi k R delta^2. R1 = 1 m, c = 1 mm (R = 1001 m), delta = 1 um: a = 45 mm over walls of
-// 0.3 and 0.5 mm; the edges' transition costs O(h / a).
+// W = pi k R delta^2. R1 = 1 m, c = 1 mm, delta = 1 um (R = R1 R2 / (c + delta) = 1000 m): a = 45
+// mm over walls of 0.3 and 0.5 mm; the edges' transition costs O(h / a).
 TEST(LocalContact, ThinWallsGiveAWinklerBed) {
   const Material steel = test::Steel();
   const double m = steel.youngs_modulus * (1.0 - kNu) / ((1.0 + kNu) * (1.0 - 2.0 * kNu));
   const double k = m / (0.3e-3 + 0.5e-3);
   const LayeredConformalContact walls(1.0, {steel, 0.3e-3}, {steel, 0.5e-3});
-  const double r = 1.0 * 1.001 / 1e-3, delta = 1e-6;
+  const double r = 1.0 * 1.001 / 1.001e-3, delta = 1e-6;
   const HertzContact h = walls.Load(1e-3, delta);
   const double winkler = std::numbers::pi * k * r * delta * delta;
   EXPECT_NEAR(h.load / winkler, 1.0, 0.03);
