@@ -84,6 +84,7 @@ fem-check: fem-deps
 	  tools/fem/data/axisymmetric.csv && \
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/solid.csv" tools/fem/data/solid.csv && \
 	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/bearing.csv" tools/fem/data/bearing.csv && \
+	/usr/bin/python3 tools/fem/fem.py compare "$$tmp/key.csv" tools/fem/data/key.csv && \
 	echo "fem-check: CalculiX reproduces tools/fem/data within 0.5 %"
 
 # Not part of `make test`: a sanitized build of everything takes about as long again as the

@@ -15,9 +15,13 @@ tests compare the model against (docs/contact-mechanics.md says what each case c
                                                         case)
   /usr/bin/python3 tools/fem/fem.py bearing OUT.csv     a loaded plain bearing in 3-D
                                                         (tools/fem/solid.py; minutes a case)
-  /usr/bin/python3 tools/fem/fem.py all DIR             all five, into DIR/harmonic.csv,
+  /usr/bin/python3 tools/fem/fem.py key OUT.csv         a parallel key between two keyway walls
+                                                        in 3-D (tools/fem/key.py; a minute a
+                                                        case)
+  /usr/bin/python3 tools/fem/fem.py all DIR             all six, into DIR/harmonic.csv,
                                                         DIR/contact.csv, DIR/axisymmetric.csv,
-                                                        DIR/solid.csv, DIR/bearing.csv
+                                                        DIR/solid.csv, DIR/bearing.csv,
+                                                        DIR/key.csv
   /usr/bin/python3 tools/fem/fem.py compare NEW OLD      every number of two such CSV files
                                                         within 0.5 % (of 1e-3 for smaller ones;
                                                         exit 1 otherwise)
@@ -36,6 +40,7 @@ import tempfile
 import numpy as np
 
 import axisymmetric as axi
+import key
 import solid
 
 # The reference section: solid steel shaft d1 = 20 mm in a steel hub d2 = 30 mm (the paper's
@@ -429,7 +434,7 @@ if __name__ == "__main__":
     if sys.argv[1:2] == ["compare"] and len(sys.argv) == 4:
         sys.exit(0 if compare(sys.argv[2], sys.argv[3]) else 1)
     if len(sys.argv) < 3 or sys.argv[1] not in ("harmonic", "contact", "axisymmetric", "solid",
-                                                "bearing", "all"):
+                                                "bearing", "key", "all"):
         sys.stderr.write(__doc__)
         sys.exit(2)
     if sys.argv[1] == "contact":
@@ -440,12 +445,15 @@ if __name__ == "__main__":
         solid.solid(sys.argv[2], run_ccx, sys.argv[3:])
     if sys.argv[1] == "bearing":  # optional case names after the file: only those
         solid.bearing(sys.argv[2], run_ccx, sys.argv[3:])
+    if sys.argv[1] == "key":  # optional case names after the file: only those
+        key.key(sys.argv[2], run_ccx, sys.argv[3:])
     if sys.argv[1] == "all":
         harmonic(os.path.join(sys.argv[2], "harmonic.csv"))
         contact(os.path.join(sys.argv[2], "contact.csv"))
         axi.axisymmetric(os.path.join(sys.argv[2], "axisymmetric.csv"), run_ccx)
         solid.solid(os.path.join(sys.argv[2], "solid.csv"), run_ccx)
         solid.bearing(os.path.join(sys.argv[2], "bearing.csv"), run_ccx)
+        key.key(os.path.join(sys.argv[2], "key.csv"), run_ccx)
     if sys.argv[1] == "harmonic":
         for n, k in harmonic(sys.argv[2]):
             print(n, k)

@@ -44,6 +44,21 @@ B = 15.0     # hub outer radius, mm
 LENGTH = 20.0  # hub and shaft, mm
 
 
+def with_midpoints(v):
+    """Corner stations with their midpoints between: a quadratic grid's node stations."""
+    return np.concatenate([np.ravel(np.column_stack([v[:-1], 0.5 * (v[:-1] + v[1:])])), v[-1:]])
+
+
+def quadratic_cell(ids, corners, mids, k):
+    """Node ids of a quadratic cell in ccx's order: the cross-section's corners in layer k's
+    lower and upper plane, its midsides in both, then the corners' edges across the layer; `ids`
+    maps the node indices (i, j, k) of the midpoint-refined grid to node ids."""
+    k0, km, k1 = 2 * k, 2 * k + 1, 2 * k + 2
+    return [ids[(a, b, kz)] for points, kz in ((corners, k0), (corners, k1), (mids, k0),
+                                               (mids, k1), (corners, km))
+            for a, b in points]
+
+
 class PolarGrid:
     """Quadratic serendipity nodes of r in radii, theta in angles, z in zs (corner stations), in a
     polar cell grid; a grid starting at r = 0 has one node per axial station on the axis. With a
@@ -52,10 +67,7 @@ class PolarGrid:
 
     def __init__(self, radii, angles, zs, first_node, profile=None):
         self.radii, self.angles, self.zs, self.profile = radii, angles, zs, profile
-        def half(v):  # corner stations with their midpoints between
-            return np.concatenate([np.ravel(np.column_stack([v[:-1], 0.5 * (v[:-1] + v[1:])])),
-                                   v[-1:]])
-        rr, tt, zz = half(radii), half(angles), half(zs)
+        rr, tt, zz = with_midpoints(radii), with_midpoints(angles), with_midpoints(zs)
         self.ids = {}
         self.nodes = []  # (id, x, y, z)
         nid = first_node
@@ -90,10 +102,7 @@ class PolarGrid:
                 for k in range(len(self.zs) - 1):
                     i0, im, i1 = 2 * i, 2 * i + 1, 2 * i + 2
                     j0, jm, j1 = 2 * j, 2 * j + 1, 2 * j + 2
-                    k0, km, k1 = 2 * k, 2 * k + 1, 2 * k + 2
-                    # The cross-section's corners and midside nodes (a wedge at the axis), then
-                    # ccx's order: corners below and above, midsides below and above, the
-                    # corners' edges along z.
+                    # The cross-section's corners and midside nodes (a wedge at the axis).
                     if self.profile is None and self.radii[i] == 0.0:
                         etype = "C3D15"
                         corners = [(i0, j0), (i1, j0), (i1, j1)]
@@ -102,11 +111,7 @@ class PolarGrid:
                         etype = "C3D20R"
                         corners = [(i0, j0), (i1, j0), (i1, j1), (i0, j1)]
                         mids = [(im, j0), (i1, jm), (im, j1), (i0, jm)]
-                    conn = [g[(a, b, kz)] for points, kz in ((corners, k0), (corners, k1),
-                                                             (mids, k0), (mids, k1),
-                                                             (corners, km))
-                            for a, b in points]
-                    out.append((eid, etype, conn, (i, j, k)))
+                    out.append((eid, etype, quadratic_cell(g, corners, mids, k), (i, j, k)))
                     eid += 1
         return out
 

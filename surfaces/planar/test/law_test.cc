@@ -1,10 +1,12 @@
 // The planar law against hand calculations of its elastic model (README.md).
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/fem_data.h"
 #include "surfaces/planar/planar_contact_analyzer.h"
 #include "surfaces/planar/planar_generator.h"
 #include "surfaces/planar/planar_discretizer.h"
@@ -37,6 +39,25 @@ TEST(PlanarElasticModelTest, KeyOfEightMillimetresHandCalculation) {
   EXPECT_NEAR(HalfSpaceStripCompliance(3e-3, 40e-3, 210e9, 0.3), 3.151672e-14, 1e-19);
   const double p = 1e-6 * PressurePerInterference(8e-3, 3e-3, 40e-3, 210e9, 0.3, 210e9, 0.3);
   EXPECT_NEAR(p, 20.4708e6, 0.0001e6);
+}
+
+// tools/fem/data/key.csv: CalculiX in 3-D (tools/fem/key.py), the 8 mm key pressed over a 2.6 mm
+// flank (the key-parallel scene's) between two steel walls far larger than the strip, 5 um of
+// interference per face, engaged over 40 and 10 mm: the flank's normal force against the law's
+// P(L) delta h L, within issue 9's 10 % (measured +0.7 % and +2.9 %).
+TEST(PlanarElasticModelTest, FlankForceAgreesWithCalculix) {
+  for (const char* name : {"key-8x2.6-L40", "key-8x2.6-L10"}) {
+    const double width = test_support::FemValue("key.csv", name, 1) * 1e-3;
+    const double height = test_support::FemValue("key.csv", name, 2) * 1e-3;
+    const double length = test_support::FemValue("key.csv", name, 3) * 1e-3;
+    const double delta = test_support::FemValue("key.csv", name, 4) * 1e-6;
+    const double fem = test_support::FemValue("key.csv", name, 5);
+    const double law = PressurePerInterference(width, height, length, 210e9, 0.3, 210e9, 0.3) *
+                       delta * height * length;
+    std::printf("%s: FEM %.1f N, law %.1f N (%+.1f %%)\n", name, fem, law,
+                100.0 * (law / fem - 1.0));
+    EXPECT_LT(std::abs(law / fem - 1.0), 0.10) << name;
+  }
 }
 
 TEST(PlanarLawTest, UniformInterferencePressInForceMatchesTheHandCalculation) {
