@@ -13,7 +13,7 @@
 #   make campaign  the generated-input campaign over scenarios, recordings and command lines
 #               (tools/campaign/run.py; CAMPAIGN_CASES, default 10000)
 #   make fem-check  rerun the CalculiX reference of the elastic contact model (tools/fem) and
-#               compare it with the committed data the tests use (about 90 minutes, most of
+#               compare it with the committed data the tests use (about two hours, most of
 #               it the 3-D cases; needs no build)
 
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \

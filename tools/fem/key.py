@@ -31,8 +31,11 @@ PENALTY = axi.PENALTY
 WIDTH, HEIGHT = 8.0, 2.6   # DIN 6885-1 8 x 7 key, its flat flank height in the hub keyway (mm)
 FAR = 200.0                # the wall's extent (mm)
 DELTA = 5e-3               # interference per face (mm)
-# (case, engaged length L in mm): the key-parallel scenario at full engagement and a quarter of it.
-KEY_CASES = [("key-8x2.6-L40", 40.0), ("key-8x2.6-L10", 10.0)]
+# (case, engaged length L in mm, the key's Young's modulus over the walls'): the key-parallel
+# scenario at full engagement and a quarter of it, and a rigid key (1000 times stiffer), whose
+# flank force is the wall's alone: delta h L / c_wall, the law's lateral stiffness per flank.
+KEY_CASES = [("key-8x2.6-L40", 40.0, 1.0), ("key-8x2.6-L10", 10.0, 1.0),
+             ("key-rigid-8x2.6-L40", 40.0, 1000.0)]
 
 
 class BoxGrid:
@@ -70,8 +73,9 @@ class BoxGrid:
         return out
 
 
-def key_deck(length):
-    """The eighth model's deck for an engaged length `length` (mm)."""
+def key_deck(length, key_stiffening=1.0):
+    """The eighth model's deck for an engaged length `length` (mm), the key's Young's modulus
+    `key_stiffening` times the walls'."""
     b2, h2, l2 = WIDTH / 2, HEIGHT / 2, length / 2
     # Near the strip: its edges graded (the pressure concentrates there); beyond: growing to FAR.
     ys = np.unique(np.concatenate([axi.stations(l2, 10, bias_hi=1.5),
@@ -97,7 +101,8 @@ def key_deck(length):
             f.write(f"{eid}, " + ", ".join(str(v) for v in conn[:15]) + ",\n" +
                     ", ".join(str(v) for v in conn[15:]) + "\n")
     f.write("*MATERIAL, NAME=STEEL\n*ELASTIC\n" + f"{E}, {NU}\n")
-    f.write("*SOLID SECTION, ELSET=KEY, MATERIAL=STEEL\n*SOLID SECTION, ELSET=WALL, "
+    f.write("*MATERIAL, NAME=KEYSTEEL\n*ELASTIC\n" + f"{E * key_stiffening}, {NU}\n")
+    f.write("*SOLID SECTION, ELSET=KEY, MATERIAL=KEYSTEEL\n*SOLID SECTION, ELSET=WALL, "
             "MATERIAL=STEEL\n")
     # ccx's C3D20 faces: S4 the cell's x-max face, S6 its x-min face.
     f.write("*SURFACE, NAME=SKEY, TYPE=ELEMENT\n")
@@ -128,21 +133,21 @@ def key_deck(length):
 
 def key(out_csv, run_ccx, only=()):
     rows = []
-    for name, length in KEY_CASES:
+    for name, length, stiffening in KEY_CASES:
         if only and name not in only:
             continue
         with tempfile.TemporaryDirectory() as work:
-            dat = run_ccx(key_deck(length), work, "key")
+            dat = run_ccx(key_deck(length, stiffening), work, "key")
         totals = [line for line in dat.splitlines() if line.strip()][-1].split()
         force = 4.0 * abs(float(totals[0]))  # the quarter of one flank
-        rows.append((name, WIDTH, HEIGHT, length, 1e3 * DELTA, force))
+        rows.append((name, WIDTH, HEIGHT, length, 1e3 * DELTA, stiffening, force))
         print(name, force, flush=True)
     with open(out_csv, "w") as out:
         out.write("# CalculiX 3-D (C3D20R, eighth model), a steel key pressed between two steel "
                   "walls far larger than its flank strip, interference per face delta, "
                   "frictionless; normal force on one flank; regenerate: /usr/bin/python3 "
                   "tools/fem/fem.py key <this file>\n")
-        out.write("case,width_mm,height_mm,length_mm,delta_um,flank_force_N\n")
+        out.write("case,width_mm,height_mm,length_mm,delta_um,key_stiffening,flank_force_N\n")
         for r in rows:
             out.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in r) + "\n")
     return rows
