@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <numbers>
-#include <vector>
 
 #include <Eigen/Dense>
 
@@ -19,35 +18,38 @@ double ContactModulus(const Material& a, const Material& b) {
                 (1.0 - b.poisson * b.poisson) / b.youngs_modulus);
 }
 
-HertzContact ConformalHertz(double ball_radius, double clearance, double approach,
-                            double contact_modulus) {
+namespace {
+
+// Hertz's contact at the curvature radius r and the approach, its load times `share`.
+HertzContact Hertz(double r, double approach, double contact_modulus, double share) {
   HertzContact h;
-  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
-  const double r = ball_radius * (ball_radius + clearance) / clearance;
-  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach);
   h.radius = std::sqrt(r * approach);
+  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach) * share;
   h.peak_pressure = 1.5 * h.load / (std::numbers::pi * h.radius * h.radius);
   return h;
 }
 
+}  // namespace
+
+HertzContact ConformalHertz(double ball_radius, double clearance, double approach,
+                            double contact_modulus) {
+  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return {};
+  return Hertz(ball_radius * (ball_radius + clearance) / clearance, approach, contact_modulus, 1.0);
+}
+
 HertzContact LocalContact(double ball_radius, double clearance, double approach,
                           double contact_modulus) {
-  HertzContact h;
-  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return h;
+  if (!(ball_radius > 0.0) || !(clearance > 0.0) || !(approach > 0.0)) return {};
   // The gap's curvature R = R1 R2 / e (e = c + delta, the centres' distance), held to the radius
   // that keeps a = sqrt(R delta) at 0.3 R1.
   const double r =
       std::min(ball_radius * (ball_radius + clearance) / (clearance + approach),
                kHertzMaxSpread * kHertzMaxSpread * ball_radius * ball_radius / approach);
-  h.radius = std::sqrt(r * approach);
-  h.load = 4.0 / 3.0 * contact_modulus * std::sqrt(r) * approach * std::sqrt(approach) *
-           std::min(1.0, clearance / approach);
-  h.peak_pressure = 1.5 * h.load / (std::numbers::pi * h.radius * h.radius);
-  return h;
+  return Hertz(r, approach, contact_modulus, std::min(1.0, clearance / approach));
 }
 
 double BondedLayerFactor(double kh, double poisson) {
-  // Beyond kh = 20 the layer's face is a half-space's to 1e-16 (and cosh would overflow later).
+  // Beyond kh = 20 the layer's face is a half-space's to 1e-14 (and cosh would overflow later).
   if (kh > 20.0) return 1.0;
   const double kappa = 3.0 - 4.0 * poisson;
   return (kappa * std::sinh(2.0 * kh) - 2.0 * kh) /
