@@ -23,7 +23,7 @@ import tempfile
 import numpy as np
 
 import axisymmetric as axi
-from solid import quadratic_cell, with_midpoints
+from solid import print_totals, quadratic_cell, with_midpoints, write_csv
 
 E = axi.E
 NU = axi.NU
@@ -138,16 +138,12 @@ def key(out_csv, run_ccx, only=()):
             continue
         with tempfile.TemporaryDirectory() as work:
             dat = run_ccx(key_deck(length, stiffening), work, "key")
-        totals = [line for line in dat.splitlines() if line.strip()][-1].split()
-        force = 4.0 * abs(float(totals[0]))  # the quarter of one flank
+        force = 4.0 * abs(print_totals(dat)[0])  # the quarter of one flank
         rows.append((name, WIDTH, HEIGHT, length, 1e3 * DELTA, stiffening, force))
         print(name, force, flush=True)
-    with open(out_csv, "w") as out:
-        out.write("# CalculiX 3-D (C3D20R, eighth model), a steel key pressed between two steel "
-                  "walls far larger than its flank strip, interference per face delta, "
-                  "frictionless; normal force on one flank; regenerate: /usr/bin/python3 "
-                  "tools/fem/fem.py key <this file>\n")
-        out.write("case,width_mm,height_mm,length_mm,delta_um,key_stiffening,flank_force_N\n")
-        for r in rows:
-            out.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in r) + "\n")
+    write_csv(out_csv, "a steel key pressed between two steel walls far larger than its flank "
+              "strip, interference per face delta, frictionless; normal force on one flank; "
+              "regenerate: /usr/bin/python3 tools/fem/fem.py key <this file>",
+              "case,width_mm,height_mm,length_mm,delta_um,key_stiffening,flank_force_N", rows,
+              model="eighth model")
     return rows

@@ -240,10 +240,10 @@ def solid(out_csv, run_ccx, only=()):
     return rows
 
 
-def write_csv(out_csv, about, header, rows):
+def write_csv(out_csv, about, header, rows, model="quarter model"):
     """The cases' rows under a comment line saying what they are and how to regenerate them."""
     with open(out_csv, "w") as out:
-        out.write(f"# CalculiX 3-D (C3D20R, quarter model), {about}\n{header}\n")
+        out.write(f"# CalculiX 3-D (C3D20R, {model}), {about}\n{header}\n")
         for r in rows:
             out.write(",".join(f"{v:.6g}" if isinstance(v, float) else str(v) for v in r) + "\n")
 
@@ -300,6 +300,11 @@ def bearing_deck(approach, columns, ball_rings, ring_rings, ball_axial, ring_axi
     return f.getvalue()
 
 
+def print_totals(dat):
+    """(fx, fy, fz) of the *NODE PRINT ..., TOTALS=ONLY that closes a deck's .dat."""
+    return [float(v) for v in [line for line in dat.splitlines() if line.strip()][-1].split()]
+
+
 def bearing(out_csv, run_ccx, only=()):
     rows = []
     for name, approach, changes in BEARING_CASES:
@@ -307,9 +312,7 @@ def bearing(out_csv, run_ccx, only=()):
             continue
         with tempfile.TemporaryDirectory() as work:
             dat = run_ccx(bearing_deck(approach, **{**BEARING_MESH, **changes}), work, "bearing")
-        # The totals line closes the print: the quarter's reaction, x first.
-        totals = [line for line in dat.splitlines() if line.strip()][-1].split()
-        load = 4.0 * float(totals[0])
+        load = 4.0 * print_totals(dat)[0]  # the quarter's reaction
         rows.append((name, 1e3 * CLEARANCE, approach, load))
         print(name, load, flush=True)
     write_csv(out_csv, "GE 20 E: sphere 29 mm, radial clearance 30 um, outer ring held in a rigid "
