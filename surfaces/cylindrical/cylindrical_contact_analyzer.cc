@@ -174,8 +174,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         throw UserError("the elastic model needs equally spaced columns");
       }
     }
-    const ElasticOptions options =
-        settings.extra ? ParseElasticOptions(*settings.extra) : ElasticOptions{};
+    const ElasticOptions options = ElasticOptionsOf(settings);
     block_ = 1;
     while (n_ / block_ > options.columns || n_ % block_ != 0 || (n_ / block_) % 2 != 0) {
       ++block_;

@@ -61,8 +61,7 @@ double CylindricalSurface::DoEstimatePrepareSeconds(const ModelSettings& model,
                                                     const GridShape& inner, const GridShape& outer,
                                                     double depth_steps) const {
   if (model.law != "elastic") return 0.0;
-  const ElasticOptions options = model.extra ? ParseElasticOptions(*model.extra) : ElasticOptions{};
-  return ElasticPrepareSeconds(options, std::max(inner.rows, outer.rows),
+  return ElasticPrepareSeconds(ElasticOptionsOf(model), std::max(inner.rows, outer.rows),
                                std::max(inner.columns, outer.columns), depth_steps);
 }
 

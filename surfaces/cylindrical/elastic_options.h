@@ -5,6 +5,7 @@
 #include "framework/core/config_node.h"
 #include "framework/core/quantity.h"
 #include "framework/model/axial_coupling.h"
+#include "framework/model/model_settings.h"
 
 namespace fitfeel::cylindrical {
 
@@ -64,6 +65,11 @@ inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
     o.axial_orders = static_cast<int>(node->AsInteger(0, AxialCoupling::kHighestOrder));
   }
   return o;
+}
+
+// The scene's elastic options: its `model.options`, or the defaults without any.
+inline ElasticOptions ElasticOptionsOf(const ModelSettings& settings) {
+  return settings.extra ? ParseElasticOptions(*settings.extra) : ElasticOptions{};
 }
 
 }  // namespace fitfeel::cylindrical
