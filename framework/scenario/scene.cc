@@ -385,11 +385,11 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
   }
   cost.prepare_bytes = cells * kBytesPerCell + cost.depth_steps * kBytesPerDepthStep +
                        vertices * kBytesPerTableVertex;
-  const double law_seconds = Located(grid_key, "a grid the law can estimate", [&] {
+  cost.law_prepare_seconds = Located(grid_key, "a grid the law can estimate", [&] {
     return surface.EstimatePrepareSeconds(model, shapes[0], shapes[1], cost.depth_steps);
   });
-  cost.law_prepare_seconds = law_seconds;
-  cost.prepare_seconds = cells * kSecondsPerCell + vertices * kSecondsPerTableVertex + law_seconds;
+  cost.prepare_seconds =
+      cells * kSecondsPerCell + vertices * kSecondsPerTableVertex + cost.law_prepare_seconds;
   cost.run_bytes = std::round(run.duration * run.rate) * kStreamBytesPerTick;
   if (!options.allow_large &&
       (cost.prepare_bytes > kLargeSceneBytes || cost.prepare_seconds > kLargeSceneSeconds)) {
@@ -403,9 +403,9 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
         key.Describe() + ": " + ThreeDigits(cells) + " cells, " + ThreeDigits(cost.depth_steps) +
             " depth steps, about " + ThreeDigits(cost.prepare_bytes / (1 << 20)) + " MiB and " +
             ThreeDigits(cost.prepare_seconds) + " s to prepare" +
-            (law_seconds > 0.0
-                 ? " (" + ThreeDigits(law_seconds) + " s of it the law's own, at worst)"
-                 : std::string()));
+            (cost.law_prepare_seconds > 0.0 ? " (" + ThreeDigits(cost.law_prepare_seconds) +
+                                                  " s of it the law's own, at worst)"
+                                            : std::string()));
   }
   return cost;
 }
