@@ -220,7 +220,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   int block_ = 1;           // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;  // m, added to every gap
   PressFitSection section_;
-  // The hub's and the shaft's breathing along their axes: with the axial coupling, the bodies
+  // The hub's and the shaft's deformation along their axes: with the axial coupling, the bodies
   // and, once a depth step needed them, their elements (empty: not needed yet, or plane sections).
   bool axial_coupling_ = false;
   AxialBody hub_body_, shaft_body_;
