@@ -434,14 +434,18 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
     }
     // The part's rigid motion is its axis's, which the rigid solve owns (and each section's own
     // order-1 compliance is its face relative to its centroid): the least-squares line in z
-    // through the rows' centroids (length-weighted; a constant with held faces) is removed.
+    // through the rows' centroids (length-weighted; a constant with held faces) is removed. The
+    // centroids move along x and F opens the interface: a shaft's face opens as its axis moves
+    // the other way (open = -1), so the line is removed with that sign, and a rigid motion,
+    // whatever holds the part, leaves F as it was.
     Eigen::MatrixXd basis(rows, body.held_faces ? 1 : 2);
     for (int i = 0; i < rows; ++i) {
       basis(i, 0) = 1.0;
       if (!body.held_faces) basis(i, 1) = 0.5 * (row_edges[i] + row_edges[i + 1]);
     }
     const Eigen::MatrixXd normal = basis.transpose() * length.asDiagonal() * basis;
-    influence_ -= basis * normal.ldlt().solve(basis.transpose() * length.asDiagonal() * centroid);
+    influence_ -=
+        open * basis * normal.ldlt().solve(basis.transpose() * length.asDiagonal() * centroid);
   }
   extra_ = influence_;
   if (order == 0) {
