@@ -345,11 +345,21 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
   const double face = r[loaded];
   const double open = body.loaded_inside ? 1.0 : -1.0;  // outwards opens a bore, inwards a shaft
   std::vector<std::vector<std::pair<int, double>>> mean(static_cast<std::size_t>(rows));
-  RowMajor u = RowMajor::Zero(free, rows);
-  std::vector<int> first(static_cast<std::size_t>(rows), free);
   Eigen::VectorXd length(rows);
+  for (int i = 0; i < rows; ++i) length[i] = row_edges[i + 1] - row_edges[i];
+  // A part whose rows mirror about its middle is the same body loaded from either end (the
+  // elements, the supports' effect and the body loads all mirror): F(i, j) = F(R-1-i, R-1-j), so
+  // only the loads of the far half are solved. Their right-hand sides are zero until that half,
+  // which the forward pass skips: 2.4 times fewer operations than every row's.
+  bool mirrored = rows > 1;
+  for (int i = 0; i < rows && mirrored; ++i) {
+    mirrored = std::abs(length[i] - length[rows - 1 - i]) <= 1e-12 * length[i];
+  }
+  const int solved_from = mirrored ? rows / 2 : 0;  // the first row whose load is solved
+  const int solved = rows - solved_from;
+  RowMajor u = RowMajor::Zero(free, solved);
+  std::vector<int> first(static_cast<std::size_t>(solved), free);
   for (int i = 0; i < rows; ++i) {
-    length[i] = row_edges[i + 1] - row_edges[i];
     for (int s = 0; s < per_row; ++s) {
       const int iz = i * per_row + s;
       const double le = z[iz + 1] - z[iz];
@@ -357,16 +367,19 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
         const int p = dof[per_node * node(end, loaded)];
         FITFEEL_DEMAND(p >= 0);  // the loaded face's radial motion is never held
         mean[static_cast<std::size_t>(i)].emplace_back(p, open * 0.5 * le / length[i]);
-        u(p, i) += open * face * 0.5 * le;
-        first[static_cast<std::size_t>(i)] = std::min(first[static_cast<std::size_t>(i)], p);
+        if (i < solved_from) continue;
+        const int c = i - solved_from;
+        u(p, c) += open * face * 0.5 * le;
+        first[static_cast<std::size_t>(c)] = std::min(first[static_cast<std::size_t>(c)], p);
       }
     }
   }
-  k.Solve(u.data(), rows, first);
-  influence_.setZero(rows, rows);
+  k.Solve(u.data(), solved, first);
+  // The solved loads' columns of F (column c is row solved_from + c's load).
+  Eigen::MatrixXd half = Eigen::MatrixXd::Zero(rows, solved);
   for (int i = 0; i < rows; ++i) {
     for (const auto& [p, weight] : mean[static_cast<std::size_t>(i)]) {
-      influence_.row(i) += weight * u.row(p);
+      half.row(i) += weight * u.row(p);
     }
   }
   if (order == 1) {
@@ -420,7 +433,8 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
     Eigen::Matrix2d balance;
     balance << m0, m1, m1, m2;
     const Eigen::PartialPivLU<Eigen::Matrix2d> lu(balance);
-    for (int j = 0; j < rows; ++j) {
+    for (int c = 0; c < solved; ++c) {
+      const int j = solved_from + c;
       const double force = open * face * length[j];
       const double centre = 0.5 * (row_edges[j] + row_edges[j + 1]);
       Eigen::Vector2d coef;
@@ -429,8 +443,8 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
       } else {
         coef = lu.solve(Eigen::Vector2d(-force, -force * centre));
       }
-      influence_.col(j) += body_mean * coef;
-      centroid.col(j) += body_centroid * coef;
+      half.col(c) += body_mean * coef;
+      centroid.col(c) += body_centroid * coef;
     }
     // The part's rigid motion is its axis's, which the rigid solve owns (and each section's own
     // order-1 compliance is its face relative to its centroid): the least-squares line in z
@@ -444,8 +458,12 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
       if (!body.held_faces) basis(i, 1) = 0.5 * (row_edges[i] + row_edges[i + 1]);
     }
     const Eigen::MatrixXd normal = basis.transpose() * length.asDiagonal() * basis;
-    influence_ -=
-        open * basis * normal.ldlt().solve(basis.transpose() * length.asDiagonal() * centroid);
+    half -= open * basis * normal.ldlt().solve(basis.transpose() * length.asDiagonal() * centroid);
+  }
+  influence_.resize(rows, rows);
+  influence_.rightCols(solved) = half;
+  for (int j = 0; j < solved_from; ++j) {
+    for (int i = 0; i < rows; ++i) influence_(i, j) = influence_(rows - 1 - i, rows - 1 - j);
   }
   extra_ = influence_;
   if (order == 0) {
