@@ -37,6 +37,21 @@ FITFEEL_SIMD_CLONES void SubtractScaled(double* __restrict y, const double* __re
   for (int j = 0; j < n; ++j) y[j] -= a * x[j];
 }
 
+// sum of a[k] b[k] over [0, n): the band factor's inner products, in eight fixed lanes added in a
+// fixed order (the same sum whichever instruction set runs it; simd_clones.h).
+FITFEEL_SIMD_CLONES double Dot(const double* __restrict a, const double* __restrict b, int n) {
+  FITFEEL_NO_FP_CONTRACT
+  double lane[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    for (int q = 0; q < 8; ++q) lane[q] += a[k + q] * b[k + q];
+  }
+  double tail = 0.0;
+  for (; k < n; ++k) tail += a[k] * b[k];
+  return ((lane[0] + lane[1]) + (lane[2] + lane[3])) + ((lane[4] + lane[5]) + (lane[6] + lane[7])) +
+         tail;
+}
+
 // Radial stations from the loaded face into the body, first layer `first` thick.
 std::vector<double> RadialStations(const AxialBody& body, double first) {
   const double wall = body.outer_radius - body.inner_radius;
@@ -138,18 +153,22 @@ class BandCholesky {
   // Row i, column j <= i, j >= i - w.
   double& at(int i, int j) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (j - i + w_)]; }
   // Factors in place (Cholesky-Banachiewicz, row by row); false if a pivot is not positive.
+  // Each entry of a row needs the one before it, so the row is a chain of inner products and
+  // scalings: the pivots' reciprocals make each scaling a product instead of a division, which
+  // took half the factor's time.
   bool Factor() {
+    std::vector<double> inverse_pivot(static_cast<std::size_t>(n_));
     for (int i = 0; i < n_; ++i) {
-      for (int j = std::max(0, i - w_); j <= i; ++j) {
-        double sum = at(i, j);
-        for (int k = std::max(0, i - w_); k < j; ++k) {
-          sum -= at(i, k) * at(j, k);
-        }
+      const int lo = std::max(0, i - w_);
+      for (int j = lo; j <= i; ++j) {
+        // Rows i and j of the band both hold columns lo .. j - 1, contiguously.
+        const double sum = at(i, j) - Dot(&at(i, lo), &at(j, lo), j - lo);
         if (j == i) {
           if (!(sum > 0.0)) return false;
           at(i, i) = std::sqrt(sum);
+          inverse_pivot[static_cast<std::size_t>(i)] = 1.0 / at(i, i);
         } else {
-          at(i, j) = sum / at(j, j);
+          at(i, j) = sum * inverse_pivot[static_cast<std::size_t>(j)];
         }
       }
     }
