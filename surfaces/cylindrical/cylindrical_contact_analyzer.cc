@@ -229,9 +229,10 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       };
       hub_coupling_rows_ = refine(bushing_edges_);
       shaft_coupling_rows_ = refine(shaft_edges_);
-      // One finite-element solve per row and mode (and a coupled solve over every engaged
-      // section): past this the prepare takes minutes (the breathing mode alone: 1000 rows 6 min,
-      // 400 rows 20 s on this machine; each further order's elements cost about twice its own).
+      // One finite-element solve per row (half of them where the rows mirror) and mode, and a
+      // coupled solve over every engaged section: past this the prepare takes minutes (the
+      // breathing mode alone: 1000 rows 6 min, 400 rows 20 s on this machine in stop 30; each
+      // further order's elements cost about twice its own).
       for (const auto& [part, rows] :
            {std::pair{"bushing", static_cast<int>(hub_coupling_rows_.size()) - 1},
             {"shaft", static_cast<int>(shaft_coupling_rows_.size()) - 1}}) {
