@@ -16,12 +16,11 @@ namespace fitfeel::cylindrical {
 //   axial_coupling: true | false                                  (default true)
 //   axial_orders: <highest circumferential order coupled along the axes, 0..12>     (default 6)
 struct ElasticOptions {
-  // The grid's columns are averaged in blocks to at most this many for the elastic solve. Its
-  // pivoting costs O(columns^3) per slice; 120 resolve harmonics to 60 (1 mm waves at d = 20 mm).
-  // A feature narrower than about two solve columns is averaged away (a 0.5 mm bump at d = 20 mm
-  // needs 240: docs/contact-mechanics.md), and so are the crests of waviness near order 60, on
-  // which a transition fit bears: 13 to 34 % of its force at 120 against 360 (README, "Accuracy
-  // against cost over the elastic solve's columns").
+  // The grid's columns reach the elastic solve in blocks, at most this many (the grid's Fourier
+  // series to the solve's highest harmonic, at the blocks' centres). Its pivoting costs
+  // O(columns^3) per slice; 120 resolve harmonics to 60 (1 mm waves at d = 20 mm). A feature
+  // narrower than about two solve columns lies past that (a 0.5 mm bump at d = 20 mm needs 240:
+  // docs/contact-mechanics.md; the README charts the force against the cost over `columns`).
   static constexpr int kDefaultColumns = 120;
   static constexpr int kFewestColumns = 24;
   static constexpr int kMostColumns = 1440;

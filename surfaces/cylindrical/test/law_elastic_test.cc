@@ -267,6 +267,32 @@ TEST(ElasticLaw, ColumnsOptionSetsTheSolveResolution) {
   }
 }
 
+// Blocks of grid columns reach the elastic solve as the grid's Fourier series up to the solve's
+// highest harmonic: a bore's waviness of order 20 or 50 on 360 columns, pressed at its crests
+// (the shaft 0.5 um over the bore's mean radius, the waviness 2 um high), carries on 120 solve
+// columns the force it carries on all 360 within 8 % (order 50: -7.0 %, its crests sampled 2.4
+// times a wave). Blocks' means flattened order 50 to 74 % of its height: -21 %.
+TEST(ElasticLaw, SolveColumnsKeepTheHarmonicsTheyResolve) {
+  for (int order : {20, 50}) {
+    auto force = [order](const char* options) {
+      ModelSettings s = Elastic(TextureMode::kSampled);
+      s.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+      ElasticPair p([](int, int) { return 0.5 * kUm; },
+                    [order](int, int j) {
+                      return 1.0 * kUm * std::cos(order * 2.0 * std::numbers::pi * j / 360.0);
+                    },
+                    s, 360);
+      // The shaft through the whole bore.
+      const int k = static_cast<int>(std::lround(0.030 / p.analyzer.depth_step()));
+      EXPECT_TRUE(p.analyzer.interference_at(k));
+      return p.analyzer.normal_force(k);
+    };
+    const double all = force("{columns: 360}"), solve = force("{}");
+    EXPECT_GT(all, 0.0);
+    EXPECT_NEAR(solve, all, 0.08 * all) << "order " << order;
+  }
+}
+
 // A row of the accuracy chart's data, appended to the file the variable `table` names when set
 // (docs/figures/regenerate.sh sets it and writes the header): case, FEM, elastic model, its
 // error, the comparison (the paper law, or plane sections: the paper law's per-cell Lame for a
