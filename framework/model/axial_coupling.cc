@@ -12,6 +12,7 @@
 
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
+#include "framework/core/fixed_lane_dot.h"
 #include "framework/core/simd_clones.h"
 #include "framework/model/harmonic_compliance.h"
 
@@ -35,21 +36,6 @@ FITFEEL_SIMD_CLONES void SubtractScaled(double* __restrict y, const double* __re
                                         int n) {
   FITFEEL_NO_FP_CONTRACT
   for (int j = 0; j < n; ++j) y[j] -= a * x[j];
-}
-
-// sum of a[k] b[k] over [0, n): the band factor's inner products, in eight fixed lanes added in a
-// fixed order (the same sum whichever instruction set runs it; simd_clones.h).
-FITFEEL_SIMD_CLONES double Dot(const double* __restrict a, const double* __restrict b, int n) {
-  FITFEEL_NO_FP_CONTRACT
-  double lane[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  int k = 0;
-  for (; k + 8 <= n; k += 8) {
-    for (int q = 0; q < 8; ++q) lane[q] += a[k + q] * b[k + q];
-  }
-  double tail = 0.0;
-  for (; k < n; ++k) tail += a[k] * b[k];
-  return ((lane[0] + lane[1]) + (lane[2] + lane[3])) + ((lane[4] + lane[5]) + (lane[6] + lane[7])) +
-         tail;
 }
 
 // Radial stations from the loaded face into the body, first layer `first` thick.
@@ -162,7 +148,7 @@ class BandCholesky {
       const int lo = std::max(0, i - w_);
       for (int j = lo; j <= i; ++j) {
         // Rows i and j of the band both hold columns lo .. j - 1, contiguously.
-        const double sum = at(i, j) - Dot(&at(i, lo), &at(j, lo), j - lo);
+        const double sum = at(i, j) - FixedLaneDot(&at(i, lo), &at(j, lo), j - lo);
         if (j == i) {
           if (!(sum > 0.0)) return false;
           at(i, i) = std::sqrt(sum);

@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
+#include "framework/core/fixed_lane_dot.h"
 #include "framework/core/least_norm.h"
 #include "framework/core/number_text.h"
 #include "framework/core/parallel.h"
@@ -110,15 +111,16 @@ Eigen::MatrixXd OnSolveColumns(const Eigen::VectorXd& v, int rows, int n, int bl
     }
     kernel[static_cast<std::size_t>(d)] = sum / n;
   }
+  // kernel((m - j) mod n) over j = 0 .. n-1 is wrapped[n - m + j]: a contiguous inner product.
+  std::vector<double> wrapped(2 * static_cast<std::size_t>(n));
+  for (int t = 0; t < 2 * n; ++t) {
+    wrapped[static_cast<std::size_t>(t)] = kernel[static_cast<std::size_t>((2 * n - t) % n)];
+  }
   Eigen::MatrixXd out(solve, rows);
   for (int r = 0; r < rows; ++r) {
     const double* row = v.data() + static_cast<std::ptrdiff_t>(r) * n;
     for (int i = 0; i < solve; ++i) {
-      double sum = 0.0;
-      for (int j = 0; j < n; ++j) {
-        sum += kernel[static_cast<std::size_t>(((i * block - j) % n + n) % n)] * row[j];
-      }
-      out(i, r) = sum;
+      out(i, r) = FixedLaneDot(wrapped.data() + (n - i * block), row, n);
     }
   }
   return out;
