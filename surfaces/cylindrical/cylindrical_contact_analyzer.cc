@@ -527,7 +527,7 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       sec.y = pos + 0.5 * slices[sl].length - middle;
       s->section_start[sl] = pos;
       pos += slices[sl].length;
-      SolveGaps(slices[sl], s->st.data() + sl * n, s->elastic_gap.data() + sl * ne);
+      SolveGaps(slices[sl], s->elastic_gap.data() + sl * ne);
       sec.cell_area = s->w[sl * n] * block_;  // equal cells along a slice
       const auto row = static_cast<std::size_t>(slices[sl].bushing_row);
       // Only from the step just before (the row's set of older steps is no guide).
@@ -610,13 +610,14 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
   }
 }
 
-void CylinderContactAnalyzer::SolveGaps(const Slice& slice, const double* cell_gaps,
-                                        double* out) const {
-  const auto ne = static_cast<Eigen::Index>(n_ / block_);
+void CylinderContactAnalyzer::SolveGaps(const Slice& slice, double* out) const {
   if (block_ == 1) {
-    std::copy(cell_gaps, cell_gaps + n_, out);
+    const double* vb = v_bushing_.data() + static_cast<std::ptrdiff_t>(slice.bushing_row) * n_;
+    const double* vs = v_shaft_.data() + static_cast<std::ptrdiff_t>(slice.shaft_row) * n_;
+    for (int j = 0; j < n_; ++j) out[j] = vb[j] - vs[j] + smoothing_;
     return;
   }
+  const auto ne = static_cast<Eigen::Index>(n_ / block_);
   Eigen::Map<Eigen::VectorXd>(out, ne) = solve_bushing_.col(slice.bushing_row) -
                                          solve_shaft_.col(slice.shaft_row) +
                                          Eigen::VectorXd::Constant(ne, smoothing_);
@@ -1075,13 +1076,7 @@ bool CylinderContactAnalyzer::PressureMap(const MatingPose& pose, Eigen::VectorX
     starts[s] = pos;
     const auto i = static_cast<std::size_t>(sl.shaft_row);
     const double share = sl.length / (shaft_edges_[i + 1] - shaft_edges_[i]);
-    std::vector<double> cell_gaps(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const auto jj = static_cast<Eigen::Index>(j);
-      cell_gaps[j] =
-          v_bushing_[sl.bushing_row * n_ + jj] - v_shaft_[sl.shaft_row * n_ + jj] + smoothing_;
-    }
-    SolveGaps(sl, cell_gaps.data(), gaps.data() + s * ne);
+    SolveGaps(sl, gaps.data() + s * ne);
     sections[s].gap = gaps.data() + s * ne;
     sections[s].cell_area = shaft_area_[sl.shaft_row * n_] * share * block_;
     sections[s].y = pos + 0.5 * sl.length - (lo + 0.5 * engaged);

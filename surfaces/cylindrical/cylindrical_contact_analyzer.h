@@ -98,10 +98,10 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     double length;
   };
   void SlicesAt(double depth, std::vector<Slice>* slices) const;
-  // A slice's gaps on the elastic solve's columns (n / block_ values into `out`) from its cells'
-  // (`cell_gaps`, n values: bore less shaft variation plus the smoothing): the cells' own with
-  // one column per cell, else the parts' rows on the solve's columns (OnSolveColumns).
-  void SolveGaps(const Slice& slice, const double* cell_gaps, double* out) const;
+  // A slice's gaps on the elastic solve's columns (n / block_ values into `out`): bore less shaft
+  // variation plus the smoothing, the cells' own with one column per cell, else from the parts'
+  // rows on the solve's columns (OnSolveColumns).
+  void SolveGaps(const Slice& slice, double* out) const;
   // A shaft row meeting a bore row at one step of a chunk, ordered for ChunkMinima's pass.
   struct RowPair {
     int block, shaft_row, step, bushing_row;  // step: index within the chunk; block: its group
