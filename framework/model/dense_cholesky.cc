@@ -5,6 +5,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "framework/core/fixed_lane_dot.h"
 #include "framework/core/simd_clones.h"
 
 namespace fitfeel {
@@ -31,8 +32,8 @@ FITFEEL_SIMD_CLONES void ForwardSubstituteTwo(const double* __restrict l, Eigen:
 }
 
 // x <- (L L^T)^-1 x for the same block of l: L y = x column by column, then L^T x = y row by row
-// of L^T (a column of L, contiguous), each row's sum kept in eight fixed lanes combined in a fixed
-// order, so that every instruction set's vectors add the same numbers in the same order.
+// of L^T (a column of L, contiguous), each row's sum a FixedLaneDot, which adds the same numbers
+// in the same order on every instruction set.
 FITFEEL_SIMD_CLONES void SolveLowerThenTransposed(const double* __restrict l, Eigen::Index ld,
                                                   Eigen::Index m, double* __restrict x) {
   FITFEEL_NO_FP_CONTRACT
@@ -44,16 +45,8 @@ FITFEEL_SIMD_CLONES void SolveLowerThenTransposed(const double* __restrict l, Ei
   }
   for (Eigen::Index j = m - 1; j >= 0; --j) {
     const double* __restrict column = l + j * ld;
-    double lane[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    Eigen::Index i = j + 1;
-    for (; i + 8 <= m; i += 8) {
-      for (int q = 0; q < 8; ++q) lane[q] += column[i + q] * x[i + q];
-    }
-    double tail = 0.0;
-    for (; i < m; ++i) tail += column[i] * x[i];
-    const double sum =
-        ((lane[0] + lane[1]) + (lane[2] + lane[3])) + ((lane[4] + lane[5]) + (lane[6] + lane[7]));
-    x[j] = (x[j] - (sum + tail)) / column[j];
+    const double sum = FixedLaneDot(column + j + 1, x + j + 1, static_cast<int>(m - j - 1));
+    x[j] = (x[j] - sum) / column[j];
   }
 }
 
