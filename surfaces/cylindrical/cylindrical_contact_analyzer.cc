@@ -1,6 +1,7 @@
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -747,12 +748,25 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
 
 void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
                                              std::vector<AxialCoupling>* shaft) const {
-  hub->assign(1, AxialCoupling::Shared(hub_body_, hub_coupling_rows_));
-  shaft->assign(1, AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_));
-  for (int order : coupled_orders_) {
-    hub->push_back(AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order));
-    shaft->push_back(AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order));
-  }
+  const std::size_t modes = coupled_orders_.size() + 1;  // the breathing mode, then the orders
+  hub->assign(modes, AxialCoupling());
+  shaft->assign(modes, AxialCoupling());
+  // Each part's modes are independent solves of a few milliseconds, which would otherwise hold
+  // every other thread of the prepare waiting (EnsurePartModes): the threads take them in turn
+  // from a shared counter, each into its own slot, so the result does not depend on who took what.
+  const auto jobs = static_cast<int>(2 * modes);
+  std::atomic<int> next{0};
+  ParallelFor(std::min(PrepareThreads(), jobs), [&](int, int) {
+    for (int job = next++; job < jobs; job = next++) {
+      const auto mode = static_cast<std::size_t>(job / 2);
+      const int order = mode == 0 ? 0 : coupled_orders_[mode - 1];
+      if (job % 2 == 0) {
+        (*shaft)[mode] = AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order);
+      } else {
+        (*hub)[mode] = AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order);
+      }
+    }
+  });
 }
 
 void CylinderContactAnalyzer::EnsurePartModes() {
