@@ -1,5 +1,7 @@
 #pragma once
 
+#include <span>
+
 #include <Eigen/Core>
 
 #include "framework/core/export.h"
@@ -11,14 +13,17 @@ namespace fitfeel {
 // 120 rows in one prepare, each used for one or two solves and for the 2x2 form B^T A^-1 B of the
 // contact stiffness, and most differing from the one before by a few rows and columns. So the
 // factor is updated by rows (Append, Remove: O(m^2) each instead of O(m^3 / 3) for a new
-// factorization), and the form is a forward substitution over contiguous columns (Eigen's
-// triangular solve for two right-hand sides spends about four times as long on blocking at
-// these sizes, measured in a prepare). Prepare-time only.
+// factorization), a new factorization reads the principal submatrix in place, and the form is a
+// forward substitution over contiguous columns (Eigen's LLT and its triangular solve for two
+// right-hand sides spend much of these sizes on blocking and copies, measured in a prepare).
+// Prepare-time only.
 class FITFEEL_API DenseCholesky {
  public:
   // Factors `a` (only its lower triangle is read). False when a pivot is not positive: the
   // matrix is not positive definite (to rounding), and the factor must not be used.
   bool Compute(const Eigen::MatrixXd& a);
+  // The same for the principal submatrix a(index, index), read in place.
+  bool Compute(const Eigen::MatrixXd& a, std::span<const int> index);
   // Extends A by one row and column at the end: `column` = the new column's entries in the rows of
   // A (size() values), `diagonal` its own. False (and the factor unchanged) when the extended
   // matrix is not safely positive definite: the caller factors it anew.
@@ -35,6 +40,9 @@ class FITFEEL_API DenseCholesky {
   Eigen::MatrixXd InverseFormOf(Eigen::MatrixXd b) const;
 
  private:
+  // Fills the lower triangle from entry(i, j) (i >= j) and factors it.
+  template <typename Entry>
+  bool Factor(Eigen::Index m, const Entry& entry);
   // L in the top-left size_ x size_ lower triangle; the storage may be larger (room to append).
   Eigen::MatrixXd l_;
   Eigen::Index size_ = 0;

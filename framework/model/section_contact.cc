@@ -136,7 +136,7 @@ void CirculantContact::Refactor(const Eigen::MatrixXd& a, std::vector<int>* targ
     }
   }
   held = *target;
-  factor->valid = chol.Compute(a(held, held));  // principal submatrix (Eigen's indexed view)
+  factor->valid = chol.Compute(a, held);
   if (!factor->valid) throw UserError(kNotDefinite);
 }
 

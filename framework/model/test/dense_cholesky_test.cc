@@ -86,6 +86,31 @@ TEST(DenseCholesky, RowUpdatesSolveAsAFreshFactorization) {
   }
 }
 
+// The principal submatrix read in place is the factor of the submatrix copied out: the same
+// numbers bit for bit (the section solver factors its contact sets so).
+TEST(DenseCholesky, FactorsAPrincipalSubmatrixInPlace) {
+  std::mt19937_64 rng(13);
+  std::normal_distribution<double> normal;
+  const Eigen::MatrixXd a = RandomSpd(90, &rng);
+  for (const std::vector<int>& index :
+       {std::vector<int>{0}, std::vector<int>{5, 2, 88, 40}, std::vector<int>{89, 0, 44, 1, 7}}) {
+    std::vector<int> all = index;
+    for (int i = 12; i < 80; i += 3) all.push_back(i);  // none of the listed ones
+    DenseCholesky in_place, copied;
+    ASSERT_TRUE(in_place.Compute(a, all));
+    ASSERT_TRUE(copied.Compute(Eigen::MatrixXd(a(all, all))));
+    ASSERT_EQ(in_place.size(), static_cast<Eigen::Index>(all.size()));
+    Eigen::VectorXd x(in_place.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = normal(rng);
+    Eigen::VectorXd y = x;
+    in_place.SolveInPlace(x);
+    copied.SolveInPlace(y);
+    EXPECT_EQ(x, y);
+    const Eigen::VectorXd b = a(all, all) * x;
+    EXPECT_LT((Eigen::LLT<Eigen::MatrixXd>(a(all, all)).solve(b) - x).norm(), 1e-9 * x.norm());
+  }
+}
+
 // Appending a column that makes the matrix singular is refused and leaves the factor as it was.
 TEST(DenseCholesky, RefusesAnAppendThatLosesDefiniteness) {
   Eigen::Matrix2d a;
