@@ -102,9 +102,9 @@ bool DenseCholesky::Factor(Eigen::Index m, const Entry& entry) {
   for (Eigen::Index j = 0; j < m; ++j) {
     for (Eigen::Index i = j; i < m; ++i) l_(i, j) = entry(i, j);
   }
-  if (!FactorLower(l_.data(), ld, m)) return false;
-  size_ = m;
-  return true;
+  const bool ok = FactorLower(l_.data(), ld, m);
+  size_ = ok ? m : 0;  // a failed factor holds nothing usable
+  return ok;
 }
 
 bool DenseCholesky::Append(const Eigen::Ref<const Eigen::VectorXd>& column, double diagonal) {

@@ -20,7 +20,7 @@ namespace fitfeel {
 class FITFEEL_API DenseCholesky {
  public:
   // Factors `a` (only its lower triangle is read). False when a pivot is not positive: the
-  // matrix is not positive definite (to rounding), and the factor must not be used.
+  // matrix is not positive definite (to rounding), and the factor is left empty.
   bool Compute(const Eigen::MatrixXd& a);
   // The same for the principal submatrix a(index, index), read in place.
   bool Compute(const Eigen::MatrixXd& a, std::span<const int> index);

@@ -129,7 +129,9 @@ TEST(DenseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   DenseCholesky chol;
   Eigen::Matrix3d a;
   a << 4, 2, 0, 2, 1, 0, 0, 0, 1;  // singular: the second pivot is 0
+  ASSERT_TRUE(chol.Compute(Eigen::Matrix2d::Identity()));
   EXPECT_FALSE(chol.Compute(a));
+  EXPECT_EQ(chol.size(), 0);  // nothing half-factored to use
   a(1, 1) = 0.5;  // indefinite
   EXPECT_FALSE(chol.Compute(a));
   a(1, 1) = 2.0;
