@@ -3,9 +3,11 @@
 #include <charconv>
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <system_error>
 #include <utility>
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include "framework/core/quantity_parse.h"
@@ -27,6 +29,52 @@ std::string Join(const std::vector<std::string_view>& items) {
 SourceLocation LocationOf(const YAML::Mark& mark, const std::string& file) {
   if (mark.is_null() || mark.line < 0) return SourceLocation{file, 0, 0};
   return SourceLocation{file, mark.line + 1, mark.column + 1};
+}
+
+// Where the root node of each YAML document of `text` is, up to the third (a caller refuses a
+// second document; the third tells a second document from a token the parser cannot get past).
+// A document whose root is where the one before it was is such a token: refused as the syntax
+// error it is, where it is.
+std::vector<YAML::Mark> DocumentRoots(const std::string& text) {
+  class Roots final : public YAML::EventHandler {
+   public:
+    std::vector<YAML::Mark> marks;
+    void OnDocumentStart(const YAML::Mark&) override { root_ = true; }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { Node(mark); }
+    void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { Node(mark); }
+    void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  const std::string&) override {
+      Node(mark);
+    }
+    void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {
+      Node(mark);
+    }
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                    YAML::EmitterStyle::value) override {
+      Node(mark);
+    }
+    void OnMapEnd() override {}
+
+   private:
+    void Node(const YAML::Mark& mark) {
+      if (root_) marks.push_back(mark);
+      root_ = false;
+    }
+    bool root_ = false;
+  };
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  Roots roots;
+  while (roots.marks.size() < 3 && parser.HandleNextDocument(roots)) {
+    const std::size_t n = roots.marks.size();
+    if (n >= 2 && roots.marks[n - 1].pos == roots.marks[n - 2].pos) {
+      throw YAML::ParserException(roots.marks[n - 1], "a token that starts no YAML node");
+    }
+  }
+  return roots.marks;
 }
 
 std::string RangeText(Dimension dimension, double min, double max, bool min_inclusive) {
@@ -60,19 +108,25 @@ ConfigNode::ConfigNode(const YAML::Node& node, std::string file, std::string pat
       path_(std::move(path)) {}
 
 ConfigNode ConfigNode::Parse(std::string_view text, std::string file, std::string path) {
-  std::vector<YAML::Node> documents;
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(std::string(text));
+    // The documents are counted by their roots first, then the first is built (YAML::Load reads
+    // one document). Not LoadAll: yaml-cpp 0.7 (Debian 12's) never ends it on a document that
+    // starts with a token no node can start with (",", "!,", "&a ,"): each document comes back
+    // empty at that token without consuming it, and LoadAll keeps them until memory runs out
+    // (fixed upstream after 0.8, yaml-cpp pull request 1319; found here by the scenario fuzzer).
+    const std::string owned(text);
+    const std::vector<YAML::Mark> roots = DocumentRoots(owned);
+    if (roots.size() > 1) {
+      throw ScenarioError(LocationOf(roots[1], file), path,
+                          "one scene per file (a single YAML document)", "a second document");
+    }
+    root = YAML::Load(owned);
   } catch (const YAML::Exception& e) {
     // yaml-cpp's own wording of the syntax error (e.g. "end of map not found") is what was found.
     throw ScenarioError(LocationOf(e.mark, file), path, "valid YAML", e.msg);
   }
-  if (documents.size() > 1) {
-    throw ScenarioError(LocationOf(documents[1].Mark(), file), path,
-                        "one scene per file (a single YAML document)", "a second document");
-  }
-  return ConfigNode(documents.empty() ? YAML::Node() : documents.front(), std::move(file),
-                    std::move(path));
+  return ConfigNode(root, std::move(file), std::move(path));
 }
 
 const YAML::Node& ConfigNode::node() const { return *node_; }
