@@ -110,10 +110,14 @@ fuzz: deps fuzz-deps
 	  mkdir -p build-fuzz/corpus/$$f; \
 	  echo "fuzz: $$f for $(FUZZ_SECONDS) s"; \
 	  rc=0; ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  timeout -s KILL $$(( $(FUZZ_SECONDS) + 300 )) \
 	  build-fuzz/fuzz/$$f build-fuzz/corpus/$$f $$seeds $$extra -max_total_time=$(FUZZ_SECONDS) \
 	    -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
 	    -artifact_prefix=build-fuzz/artifacts/$$f- > build-fuzz/$$f.log 2>&1 || rc=$$?; \
 	  tail -n 12 build-fuzz/$$f.log; \
+	  [ $$rc != 137 ] || echo "fuzz: $$f killed 300 s past its time: libFuzzer's own report hung \
+	    (its out-of-memory heap profile can, on a large heap) before saving the input; the input \
+	    it was running is the newest $${TMPDIR:-/tmp}/fitfeel-fuzz-*"; \
 	  [ $$rc = 0 ] || { echo "fuzz: $$f found a problem (build-fuzz/$$f.log, artifacts/)"; exit 1; }; \
 	done; echo "fuzz: no finding in $(FUZZERS)"
 
