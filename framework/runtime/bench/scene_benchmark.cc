@@ -6,10 +6,10 @@
 // One benchmark iteration is one whole run of a scenario (a fresh scene, prepare, every tick).
 // Counters: prepare_ms, CPU time of the process during Prepare (all threads: a parallel prepare
 // counts both cores' work); prepare_wall_ms, its wall time (what a user waits for, on this
-// shared machine also other jobs' time slices); tick_p50_us, tick_p99_us, tick_max_us, thread CPU time of each
-// Scheduler::Tick, less the clock's own cost (measured once, the median of back-to-back reads);
-// evaluations_p50, _p99, _max, the contact analyzer's evaluations per tick (the run's
-// statistics: the same on every machine, where the times are this one's).
+// shared machine also other jobs' time slices); tick_p50_us, tick_p99_us, tick_max_us, thread
+// CPU time of each Scheduler::Tick, less the clock's own cost (measured once, the median of
+// back-to-back reads); evaluations_p50, _p99, _max, the contact analyzer's evaluations per tick
+// (the run's statistics: the same on every machine, where the times are this one's).
 // Repetitions give the median of each counter. Scenes whose surface keeps its per-tick scan
 // (conical, spherical) run again with the scan analyzer in place of the tables ("/scan"), for
 // the ratio.
@@ -211,8 +211,9 @@ class TableReporter final : public benchmark::ConsoleReporter {
         "|---|---|---|---|---|---|---|\n");
     for (const auto& [name, row] : rows_) {
       std::printf("| `%s` | %.1f | %.1f | %.2f / %.2f / %.0f | %.0f / %.0f / %.0f |", name.c_str(),
-                  row.table.prepare_ms, row.table.prepare_wall_ms, row.table.p50, row.table.p99, row.table.max,
-                  row.table.evaluations_p50, row.table.evaluations_p99, row.table.evaluations_max);
+                  row.table.prepare_ms, row.table.prepare_wall_ms, row.table.p50, row.table.p99,
+                  row.table.max, row.table.evaluations_p50, row.table.evaluations_p99,
+                  row.table.evaluations_max);
       if (row.scan.present) {
         std::printf(" %.1f / %.0f | %.0f |\n", row.scan.p50, row.scan.p99,
                     row.scan.p99 / row.table.p99);
