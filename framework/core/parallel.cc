@@ -1,6 +1,7 @@
 #include "framework/core/parallel.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <exception>
 #include <thread>
@@ -42,6 +43,23 @@ void ParallelFor(int count, const std::function<void(int begin, int end)>& body,
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }
+}
+
+void ParallelForEach(int count, const std::function<void(int item)>& body, int threads) {
+  std::atomic<int> next{0};
+  ParallelFor(
+      std::clamp(threads, 1, std::max(count, 1)),
+      [&](int, int) {
+        for (int item = next++; item < count; item = next++) {
+          try {
+            body(item);
+          } catch (...) {
+            next = count;  // the other threads take nothing more
+            throw;
+          }
+        }
+      },
+      threads);
 }
 
 }  // namespace fitfeel

@@ -17,4 +17,12 @@ FITFEEL_API int PrepareThreads();
 FITFEEL_API void ParallelFor(int count, const std::function<void(int begin, int end)>& body,
                              int threads = PrepareThreads());
 
+// Calls body(i) for every i in [0, count) on `threads` threads that each take the next item no
+// thread has taken yet: for a few items of uneven cost, where contiguous chunks would leave one
+// thread with the expensive ones. Returns when all are done; rethrows a failed item's exception
+// (items not yet taken then are skipped). An item that writes only its own results gives the
+// same result whichever thread took it.
+FITFEEL_API void ParallelForEach(int count, const std::function<void(int item)>& body,
+                                 int threads = PrepareThreads());
+
 }  // namespace fitfeel

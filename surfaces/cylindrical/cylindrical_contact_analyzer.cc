@@ -1,7 +1,6 @@
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -752,19 +751,15 @@ void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
   hub->assign(modes, AxialCoupling());
   shaft->assign(modes, AxialCoupling());
   // Each part's modes are independent solves of a few milliseconds, which would otherwise hold
-  // every other thread of the prepare waiting (EnsurePartModes): the threads take them in turn
-  // from a shared counter, each into its own slot, so the result does not depend on who took what.
-  const auto jobs = static_cast<int>(2 * modes);
-  std::atomic<int> next{0};
-  ParallelFor(std::min(PrepareThreads(), jobs), [&](int, int) {
-    for (int job = next++; job < jobs; job = next++) {
-      const auto mode = static_cast<std::size_t>(job / 2);
-      const int order = mode == 0 ? 0 : coupled_orders_[mode - 1];
-      if (job % 2 == 0) {
-        (*shaft)[mode] = AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order);
-      } else {
-        (*hub)[mode] = AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order);
-      }
+  // every other thread of the prepare waiting (EnsurePartModes): the threads take them in turn,
+  // each into its own slot.
+  ParallelForEach(static_cast<int>(2 * modes), [&](int job) {
+    const auto mode = static_cast<std::size_t>(job / 2);
+    const int order = mode == 0 ? 0 : coupled_orders_[mode - 1];
+    if (job % 2 == 0) {
+      (*shaft)[mode] = AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order);
+    } else {
+      (*hub)[mode] = AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order);
     }
   });
 }
