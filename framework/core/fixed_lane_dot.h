@@ -7,7 +7,7 @@ namespace fitfeel {
 // sum of a[k] b[k] over [0, n), in eight fixed lanes combined in a fixed order, compiled also for
 // AVX2 and AVX-512 (simd_clones.h): the same sum on every machine, where a compiler's own
 // vectorised reduction would add in an order that depends on the vector width. For prepare-time
-// inner products (a band factor's, a resampling's, a dense factor's back substitution).
+// inner products (a resampling's, a dense factor's back substitution).
 FITFEEL_API double FixedLaneDot(const double* a, const double* b, int n);
 
 }  // namespace fitfeel

@@ -12,7 +12,6 @@
 
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
-#include "framework/core/fixed_lane_dot.h"
 #include "framework/core/simd_clones.h"
 #include "framework/model/harmonic_compliance.h"
 
@@ -31,11 +30,32 @@ constexpr double kLayerGrowth = 1.25;
 // At least this many layers through a wall: a thin hub carries its load by bending across it.
 constexpr int kFewestLayers = 4;
 
-// y[0, n) -= a x[0, n): the band solves' row operation, over every right-hand side at once.
-FITFEEL_SIMD_CLONES void SubtractScaled(double* __restrict y, const double* __restrict x, double a,
-                                        int n) {
+// y[0, n) -= sum over t < terms of c[t] x_t[0, n), x_t = x + t * stride, subtracted in the order
+// of t: a band solve's step for one row over every right-hand side at once, in one call (a call
+// per term was a third of the elements' cost on the shipped parts).
+FITFEEL_SIMD_CLONES void SubtractCombination(double* __restrict y, const double* __restrict x,
+                                             std::ptrdiff_t stride, const double* __restrict c,
+                                             int terms, int n) {
   FITFEEL_NO_FP_CONTRACT
-  for (int j = 0; j < n; ++j) y[j] -= a * x[j];
+  for (int t = 0; t < terms; ++t) {
+    const double* __restrict xt = x + t * stride;
+    const double a = c[t];
+    for (int j = 0; j < n; ++j) y[j] -= a * xt[j];
+  }
+}
+
+// A band factor's trailing update for one pivot: row r of `rows` (r < count; row r starts r *
+// stride further on, the band's rows one column further right each) loses c[r] c[j] at columns
+// j <= r. Each entry subtracts its pivots' products in pivot order (no contraction), so every
+// instruction set gives the same factor.
+FITFEEL_SIMD_CLONES void RankOneUpdate(double* __restrict rows, int stride,
+                                       const double* __restrict c, int count) {
+  FITFEEL_NO_FP_CONTRACT
+  for (int r = 0; r < count; ++r) {
+    double* __restrict row = rows + static_cast<std::ptrdiff_t>(r) * stride;
+    const double l = c[r];
+    for (int j = 0; j <= r; ++j) row[j] -= l * c[j];
+  }
 }
 
 // Radial stations from the loaded face into the body, first layer `first` thick.
@@ -138,25 +158,24 @@ class BandCholesky {
   BandCholesky(int n, int w) : n_(n), w_(w), band_(static_cast<std::size_t>(n) * (w + 1), 0.0) {}
   // Row i, column j <= i, j >= i - w.
   double& at(int i, int j) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (j - i + w_)]; }
-  // Factors in place (Cholesky-Banachiewicz, row by row); false if a pivot is not positive.
-  // Each entry of a row needs the one before it, so the row is a chain of inner products and
-  // scalings: the pivots' reciprocals make each scaling a product instead of a division, whose
-  // latency was the factor's largest cost (perf annotate, on the pin's 25 elements per row).
+  // Factors in place (right-looking: each pivot's column scaled, then the trailing band's rank-one
+  // update); false if a pivot is not positive. A row-by-row factor makes every entry wait for the
+  // inner product of the one before it in the row (latency-bound: a third of the elements' cost
+  // on the shipped parts); the rank-one update has no such chain, its rows run vectorised.
   bool Factor() {
-    std::vector<double> inverse_pivot(static_cast<std::size_t>(n_));
-    for (int i = 0; i < n_; ++i) {
-      const int lo = std::max(0, i - w_);
-      for (int j = lo; j <= i; ++j) {
-        // Rows i and j of the band both hold columns lo .. j - 1, contiguously.
-        const double sum = at(i, j) - FixedLaneDot(&at(i, lo), &at(j, lo), j - lo);
-        if (j == i) {
-          if (!(sum > 0.0)) return false;
-          at(i, i) = std::sqrt(sum);
-          inverse_pivot[static_cast<std::size_t>(i)] = 1.0 / at(i, i);
-        } else {
-          at(i, j) = sum * inverse_pivot[static_cast<std::size_t>(j)];
-        }
+    std::vector<double> column(static_cast<std::size_t>(w_));
+    for (int k = 0; k < n_; ++k) {
+      const double pivot = at(k, k);
+      if (!(pivot > 0.0)) return false;
+      at(k, k) = std::sqrt(pivot);
+      const double inverse = 1.0 / at(k, k);
+      const int below = std::min(w_, n_ - 1 - k);
+      for (int r = 0; r < below; ++r) {
+        double& l = at(k + 1 + r, k);
+        l *= inverse;
+        column[static_cast<std::size_t>(r)] = l;
       }
+      if (below > 0) RankOneUpdate(&at(k + 1, k + 1), w_, column.data(), below);
     }
     return true;
   }
@@ -169,19 +188,22 @@ class BandCholesky {
     for (int i = 0; i < n_; ++i) {
       while (live < cols && first[static_cast<std::size_t>(live)] <= i) ++live;
       double* xi = x + static_cast<std::size_t>(i) * cols;
-      for (int k = std::max(0, i - w_); k < i; ++k) {
-        SubtractScaled(xi, x + static_cast<std::size_t>(k) * cols, at(i, k), live);
-      }
+      const int lo = std::max(0, i - w_);
+      // Row i of L holds columns lo .. i - 1 contiguously, the rows of X they take are adjacent.
+      SubtractCombination(xi, x + static_cast<std::size_t>(lo) * cols, cols, &at(i, lo), i - lo,
+                          live);
       const double d = at(i, i);
       for (int j = 0; j < live; ++j) xi[j] /= d;
     }
+    // Backwards, row i takes column i of L below the diagonal (strided in the band: gathered).
+    std::vector<double> below(static_cast<std::size_t>(w_));
     for (int i = n_ - 1; i >= 0; --i) {
       double* xi = x + static_cast<std::size_t>(i) * cols;
+      const int count = std::min(w_, n_ - 1 - i);
+      for (int t = 0; t < count; ++t) below[static_cast<std::size_t>(t)] = at(i + 1 + t, i);
+      SubtractCombination(xi, xi + cols, cols, below.data(), count, cols);
       const double d = at(i, i);
       for (int j = 0; j < cols; ++j) xi[j] /= d;
-      for (int k = std::max(0, i - w_); k < i; ++k) {
-        SubtractScaled(x + static_cast<std::size_t>(k) * cols, xi, at(i, k), cols);
-      }
     }
   }
 
@@ -324,14 +346,18 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
       const std::array<int, 4> corner{node(iz, ir), node(iz, ir + 1), node(iz + 1, ir + 1),
                                       node(iz + 1, ir)};
       const int size = 4 * per_node;
+      std::array<std::pair<int, double>, 12> unknowns;
       for (int a = 0; a < size; ++a) {
-        const auto [p, fa] = unknown(per_node * corner[a / per_node] + a % per_node);
+        unknowns[static_cast<std::size_t>(a)] =
+            unknown(per_node * corner[a / per_node] + a % per_node);
+      }
+      for (int a = 0; a < size; ++a) {
+        const auto [p, fa] = unknowns[static_cast<std::size_t>(a)];
         if (p < 0) continue;
         for (int b = 0; b < size; ++b) {
-          const auto [q, fb] = unknown(per_node * corner[b / per_node] + b % per_node);
+          const auto [q, fb] = unknowns[static_cast<std::size_t>(b)];
           // A tied pair adds its coupling to both triangles of the one unknown.
-          if (q >= 0 && q < p) k.at(p, q) += fa * fb * ke(a, b);
-          if (q == p) k.at(p, p) += fa * fb * ke(a, b);
+          if (q >= 0 && q <= p) k.at(p, q) += fa * fb * ke(a, b);
         }
       }
     }
