@@ -155,7 +155,10 @@ Eigen::MatrixXd ElementStiffness(double r0, double r1, double z0, double z1,
 // factor has no fill outside it: N w^2 / 2 operations, no reordering.
 class BandCholesky {
  public:
-  BandCholesky(int n, int w) : n_(n), w_(w), band_(static_cast<std::size_t>(n) * (w + 1), 0.0) {}
+  // The band lives in `storage` (zeroed here), which the caller keeps.
+  BandCholesky(int n, int w, std::vector<double>* storage) : n_(n), w_(w), band_(*storage) {
+    band_.assign(static_cast<std::size_t>(n) * (w + 1), 0.0);
+  }
   // Row i, column j <= i, j >= i - w.
   double& at(int i, int j) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (j - i + w_)]; }
   // Factors in place (right-looking: each pivot's column scaled, then the trailing band's rank-one
@@ -209,7 +212,22 @@ class BandCholesky {
 
  private:
   int n_, w_;
-  std::vector<double> band_;
+  std::vector<double>& band_;
+};
+
+// The element solves' two large buffers (the band and the loads' right-hand sides, megabytes
+// each), kept by each thread from one solve to the next instead of handed back to the kernel and
+// faulted in again, zeroed, for each of a scene's fourteen solves (with two threads faulting at
+// once, their page faults also wait on each other). Up to kKeptBytes each; a larger one is handed
+// back after its solve.
+struct ElementBuffers {
+  std::vector<double> band, loads;
+  static constexpr std::size_t kKeptBytes = std::size_t{32} << 20;
+  void Trim() {
+    for (std::vector<double>* b : {&band, &loads}) {
+      if (b->capacity() * sizeof(double) > kKeptBytes) std::vector<double>().swap(*b);
+    }
+  }
 };
 
 }  // namespace
@@ -327,7 +345,12 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
       w = std::max(w, hi - lo);
     }
   }
-  BandCholesky k(free, w);
+  thread_local ElementBuffers buffers;
+  struct TrimOnExit {
+    ElementBuffers& buffers;
+    ~TrimOnExit() { buffers.Trim(); }
+  } trim{buffers};
+  BandCholesky k(free, w, &buffers.band);
   // An element's stiffness depends on its radii and its length only: one per layer while the
   // length stays (equal rows: one per layer for the whole part).
   std::vector<Eigen::MatrixXd> layer(static_cast<std::size_t>(nr - 1));
@@ -388,7 +411,8 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
   }
   const int solved_from = mirrored ? rows / 2 : 0;  // the first row whose load is solved
   const int solved = rows - solved_from;
-  RowMajor u = RowMajor::Zero(free, solved);
+  buffers.loads.assign(static_cast<std::size_t>(free) * solved, 0.0);
+  Eigen::Map<RowMajor> u(buffers.loads.data(), free, solved);
   std::vector<int> first(static_cast<std::size_t>(solved), free);
   for (int i = 0; i < rows; ++i) {
     for (int s = 0; s < per_row; ++s) {
