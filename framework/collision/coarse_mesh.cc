@@ -1,8 +1,10 @@
 #include "framework/collision/coarse_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "framework/core/error.h"
 
@@ -48,6 +50,24 @@ void AddWallQuad(TriangleMesh* mesh, int a, int b, int i, int facets, bool outwa
     mesh->triangles.emplace_back(a + i, b + j, b + i);
     mesh->triangles.emplace_back(a + i, a + j, b + j);
   }
+}
+
+// The planar quad of corners first + corner[0..3] (in cyclic order) of the convex solid made of
+// the eight corners from `first` on, as two triangles wound counter-clockwise from outside (seen
+// from the solid's centre, whichever way the corners were listed).
+void AddConvexQuad(TriangleMesh* mesh, int first, const std::array<int, 4>& corner) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 8; ++k) centre += mesh->vertices[static_cast<std::size_t>(first + k)] / 8.0;
+  std::array<int, 4> q;
+  for (int k = 0; k < 4; ++k)
+    q[static_cast<std::size_t>(k)] = first + corner[static_cast<std::size_t>(k)];
+  auto at = [&](int k) {
+    return mesh->vertices[static_cast<std::size_t>(q[static_cast<std::size_t>(k)])];
+  };
+  const Eigen::Vector3d normal = (at(1) - at(0)).cross(at(2) - at(0));
+  if (normal.dot(at(0) - centre) < 0.0) std::swap(q[1], q[3]);
+  mesh->triangles.emplace_back(q[0], q[1], q[2]);
+  mesh->triangles.emplace_back(q[0], q[2], q[3]);
 }
 
 }  // namespace
@@ -114,22 +134,30 @@ TriangleMesh MakeTaperedTube(double inner_radius0, double inner_radius1, double 
       !(ChordalError(outer_radius, facets) + widest < outer_radius)) {
     throw UserError("tube: needs 0 < inner radii and the inner polygon inside the outer one");
   }
+  // One closed, convex sector per facet: its bore facet, its outer facet and the two planes
+  // through the axis at the facet's ends (a tube as a whole is not convex; its sectors are, and a
+  // collider separates convex solids cheaply).
   TriangleMesh mesh;
-  mesh.vertices.reserve(4 * facets);
-  mesh.triangles.reserve(8 * facets);
-  const int outer_low = AddRing(&mesh, outer_radius, y0, facets);
-  const int outer_high = AddRing(&mesh, outer_radius, y1, facets);
-  const int inner_low = AddRing(&mesh, inner_radius0 / std::cos(M_PI / facets), y0, facets);
-  const int inner_high = AddRing(&mesh, inner_radius1 / std::cos(M_PI / facets), y1, facets);
+  mesh.vertices.reserve(8 * static_cast<std::size_t>(facets));
+  mesh.triangles.reserve(12 * static_cast<std::size_t>(facets));
+  const double c = std::cos(M_PI / facets);
   for (int i = 0; i < facets; ++i) {
-    const int j = (i + 1) % facets;
-    AddWallQuad(&mesh, outer_low, outer_high, i, facets, /*outward=*/true);
-    AddWallQuad(&mesh, inner_low, inner_high, i, facets, /*outward=*/false);
-    // Low annulus faces -y, high annulus +y.
-    mesh.triangles.emplace_back(inner_low + i, outer_low + i, outer_low + j);
-    mesh.triangles.emplace_back(inner_low + i, outer_low + j, inner_low + j);
-    mesh.triangles.emplace_back(inner_high + i, outer_high + j, outer_high + i);
-    mesh.triangles.emplace_back(inner_high + i, inner_high + j, outer_high + j);
+    const int first = static_cast<int>(mesh.vertices.size());
+    for (const auto& [y, inner] : {std::pair{y0, inner_radius0}, std::pair{y1, inner_radius1}}) {
+      for (int k : {i, i + 1}) {
+        const double angle = 2.0 * M_PI * (k % facets) / facets;
+        const Eigen::Vector3d direction(std::cos(angle), 0.0, std::sin(angle));
+        mesh.vertices.push_back(inner / c * direction + Eigen::Vector3d(0.0, y, 0.0));
+        mesh.vertices.push_back(outer_radius * direction + Eigen::Vector3d(0.0, y, 0.0));
+      }
+    }
+    // Corners: 0 / 1 inner / outer at the facet's start, 2 / 3 at its end, at y0; 4-7 at y1.
+    AddConvexQuad(&mesh, first, {0, 1, 3, 2});  // low end
+    AddConvexQuad(&mesh, first, {4, 5, 7, 6});  // high end
+    AddConvexQuad(&mesh, first, {0, 2, 6, 4});  // bore facet
+    AddConvexQuad(&mesh, first, {1, 3, 7, 5});  // outer facet
+    AddConvexQuad(&mesh, first, {0, 1, 5, 4});  // plane at the facet's start
+    AddConvexQuad(&mesh, first, {2, 3, 7, 6});  // plane at its end
   }
   return mesh;
 }

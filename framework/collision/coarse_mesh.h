@@ -17,9 +17,11 @@ struct TriangleMesh {
   bool empty() const { return triangles.empty(); }
 };
 
-// The coarse meshes of a mating pair for free-motion collision (docs/architecture.md, section 4: only
-// mating surfaces get a skin model shape; the rest of a part is a coarse mesh for FCL). Each is in
-// the scene's mating frame as it would be were the inner part the moving one:
+// The coarse meshes of a mating pair for free-motion collision (docs/architecture.md, section 4:
+// only mating surfaces get a skin model shape; the rest of a part is a coarse mesh for
+// MeshCollider, which takes a mesh made of convex solids, its connected components, as convex
+// pieces, and any other to FCL). Each is in the scene's mating frame as it would be were the
+// inner part the moving one:
 //  - inner: the moving part's frame, its leading end at the origin, its axis +y (the direction of
 //    insertion), so its body lies at y <= 0;
 //  - outer: the fixed part's frame, its entrance at y = 0, its body at y >= 0.
@@ -49,8 +51,10 @@ FITFEEL_API TriangleMesh MakeClosedCylinder(double radius, double y0, double y1,
 // A closed tube about the y axis from y = y0 to y = y1: its outer wall's vertices on the circle
 // of `outer_radius`, its inner wall a polygon whose facets are tangent to the circle of
 // `inner_radius` (its vertices at inner_radius / cos(pi / n), first at angle 0), so that the
-// tube's material lies wholly outside that circle; annular faces at both ends. Throws UserError
-// for bad dimensions (the inner polygon must fit inside the outer one).
+// tube's material lies wholly outside that circle; annular faces at both ends. Made of one closed,
+// convex sector per facet (eight corners each: the bore's facet, the outer facet, the two planes
+// through the axis at the facet's ends), so that a collider can take it as convex pieces. Throws
+// UserError for bad dimensions (the inner polygon must fit inside the outer one).
 FITFEEL_API TriangleMesh MakeTube(double inner_radius, double outer_radius, double y0, double y1,
                                   int facets);
 

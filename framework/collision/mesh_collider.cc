@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/narrowphase/collision.h>
 
+#include "framework/collision/convex_pieces.h"
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
 
@@ -17,19 +19,27 @@ namespace {
 
 using Bvh = fcl::BVHModel<fcl::OBBRSSd>;
 
-std::shared_ptr<Bvh> BuildBvh(const TriangleMesh& mesh, const char* which) {
+void CheckMesh(const TriangleMesh& mesh, const char* which) {
   if (mesh.empty()) throw UserError(std::string("mesh collider: the ") + which + " mesh is empty");
   const int n = static_cast<int>(mesh.vertices.size());
-  std::vector<fcl::Vector3d> points(mesh.vertices.begin(), mesh.vertices.end());
-  std::vector<fcl::Triangle> triangles;
-  triangles.reserve(mesh.triangles.size());
   for (const Eigen::Vector3i& t : mesh.triangles) {
     if (t.minCoeff() < 0 || t.maxCoeff() >= n) {
       throw UserError(std::string("mesh collider: the ") + which +
                       " mesh has a vertex index out of range");
     }
-    triangles.emplace_back(t[0], t[1], t[2]);
   }
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    if (!v.allFinite()) {
+      throw UserError(std::string("mesh collider: the ") + which + " mesh has a vertex not finite");
+    }
+  }
+}
+
+std::shared_ptr<Bvh> BuildBvh(const TriangleMesh& mesh, const char* which) {
+  std::vector<fcl::Vector3d> points(mesh.vertices.begin(), mesh.vertices.end());
+  std::vector<fcl::Triangle> triangles;
+  triangles.reserve(mesh.triangles.size());
+  for (const Eigen::Vector3i& t : mesh.triangles) triangles.emplace_back(t[0], t[1], t[2]);
   auto model = std::make_shared<Bvh>();
   if (model->beginModel() != fcl::BVH_OK || model->addSubModel(points, triangles) != fcl::BVH_OK ||
       model->endModel() != fcl::BVH_OK) {
@@ -40,20 +50,32 @@ std::shared_ptr<Bvh> BuildBvh(const TriangleMesh& mesh, const char* which) {
 
 }  // namespace
 
-// Immutable after construction: the BVHs, which every query only reads. Queries go through FCL's
+// Immutable after construction, only read by queries: the meshes as convex pieces when both are
+// made of convex solids, else FCL's hierarchies. FCL's queries go through its
 // geometry-and-transform overload of collide: a CollisionObject would hold the pose (state of a
 // run) and recompute the shared geometry's local bounding box whenever one is made.
 struct MeshCollider::Impl {
-  Impl(const TriangleMesh& fixed_mesh, const TriangleMesh& moving_mesh)
-      : fixed_vertices(fixed_mesh.vertices),
-        fixed_triangles(fixed_mesh.triangles),
-        moving_vertices(moving_mesh.vertices),
-        moving_triangles(moving_mesh.triangles),
-        fixed(BuildBvh(fixed_mesh, "fixed")),
-        moving(BuildBvh(moving_mesh, "moving")) {
+  Impl(const TriangleMesh& fixed_mesh, const TriangleMesh& moving_mesh) {
+    CheckMesh(fixed_mesh, "fixed");
+    CheckMesh(moving_mesh, "moving");
+    std::optional<std::vector<ConvexPiece>> f = ConvexPieces(fixed_mesh);
+    std::optional<std::vector<ConvexPiece>> m = f ? ConvexPieces(moving_mesh) : std::nullopt;
+    if (f && m) {
+      fixed_pieces = std::move(*f);
+      moving_pieces = std::move(*m);
+      return;
+    }
+    fixed_vertices = fixed_mesh.vertices;
+    fixed_triangles = fixed_mesh.triangles;
+    moving_vertices = moving_mesh.vertices;
+    moving_triangles = moving_mesh.triangles;
+    fixed = BuildBvh(fixed_mesh, "fixed");
+    moving = BuildBvh(moving_mesh, "moving");
     fixed->computeLocalAABB();
     moving->computeLocalAABB();
   }
+  bool pieces() const { return !fixed_pieces.empty(); }
+  std::vector<ConvexPiece> fixed_pieces, moving_pieces;
   // The meshes again, for the separating-axis projections (FCL reports triangle indices).
   std::vector<Eigen::Vector3d> fixed_vertices;
   std::vector<Eigen::Vector3i> fixed_triangles;
@@ -64,12 +86,15 @@ struct MeshCollider::Impl {
 };
 
 struct CollisionScratch::Impl {
-  explicit Impl(int max_contacts) : request(max_contacts, /*enable_contact=*/true) {
+  // With FCL (`contacts` > 0) its request and result; the pieces' scratch is reserved by
+  // MakeScratch.
+  explicit Impl(int contacts) : request(std::max(contacts, 1), /*enable_contact=*/true) {
     // The contact buffer the query fills, grown here so that the tick only reuses it: the vector
     // is private to FCL, but clear() keeps its capacity, so filling it once reserves it.
-    for (int i = 0; i < max_contacts; ++i) result.addContact(fcl::Contactd());
+    for (int i = 0; i < contacts; ++i) result.addContact(fcl::Contactd());
     result.clear();
   }
+  ConvexPiecesScratch pieces;
   fcl::CollisionRequestd request;
   fcl::CollisionResultd result;
 };
@@ -87,9 +112,12 @@ MeshCollider::MeshCollider(const TriangleMesh& fixed, const TriangleMesh& moving
 
 MeshCollider::~MeshCollider() = default;
 
+bool MeshCollider::convex_pieces() const { return impl_->pieces(); }
+
 std::unique_ptr<CollisionScratch> MeshCollider::MakeScratch() const {
   std::unique_ptr<CollisionScratch> scratch(new CollisionScratch(
-      std::make_unique<CollisionScratch::Impl>(max_contacts_)));
+      std::make_unique<CollisionScratch::Impl>(impl_->pieces() ? 0 : max_contacts_)));
+  if (impl_->pieces()) scratch->impl_->pieces.Reserve(impl_->moving_pieces, impl_->fixed_pieces);
   scratch->owner_ = this;
   return scratch;
 }
@@ -101,6 +129,12 @@ void MeshCollider::Query(const Eigen::Isometry3d& moving_pose, CollisionScratch*
   *out = Penetration{};
   const Impl& impl = *impl_;
   CollisionScratch::Impl& query = *scratch->impl_;
+  if (impl.pieces()) {
+    out->contacts = PenetrationOfPieces(impl.moving_pieces, impl.fixed_pieces, moving_pose,
+                                        &query.pieces, &out->depth, &out->normal, &out->point);
+    out->contact = out->contacts > 0;
+    return;
+  }
   // clear() keeps the contact vector's capacity: collide's push_backs then reuse the buffer.
   query.result.clear();
   try {

@@ -13,20 +13,24 @@ namespace fitfeel {
 // Result of one collision query between a moving and a fixed coarse mesh, in the scene frame.
 struct Penetration {
   bool contact = false;
-  int contacts = 0;  // triangle pairs FCL reported (at most the collider's max_contacts)
+  // Overlapping pairs of convex pieces, or triangle pairs FCL reported (at most max_contacts).
+  int contacts = 0;
   // Penetration, m (0 when free): the overlap along `normal` (see MeshCollider).
   double depth = 0.0;
   // Unit direction in which the moving part must move to leave the fixed one (the chosen
   // contact's normal, turned to point from the fixed part to the moving one); zero when free.
   Eigen::Vector3d normal{0.0, 0.0, 0.0};
-  Eigen::Vector3d point{0.0, 0.0, 0.0};  // a point of the chosen contact (FCL's contact position)
+  // Where the force acts: the overlapping pieces' box intersections' centre (convex_pieces.h),
+  // or a point of FCL's chosen contact.
+  Eigen::Vector3d point{0.0, 0.0, 0.0};
 };
 
 class MeshCollider;
 
-// What one query changes: FCL's request, its result with a contact buffer reserved up front, and
-// the moving part's collision object (which holds the pose). One scratch serves one thread at a
-// time; a collider serves any number of them at once (see MeshCollider::MakeScratch).
+// What one query changes: the moving pieces placed and the overlaps found (sized for the pair up
+// front), or FCL's request and its result with a contact buffer reserved up front. One scratch
+// serves one thread at a time; a collider serves any number of them at once (see
+// MeshCollider::MakeScratch).
 class FITFEEL_API CollisionScratch {
  public:
   ~CollisionScratch();
@@ -41,12 +45,20 @@ class FITFEEL_API CollisionScratch {
   const MeshCollider* owner_ = nullptr;
 };
 
-// FCL mesh-mesh collision between a fixed and a moving coarse mesh (OBBRSS bounding volume
-// hierarchies, built once here and only read afterwards). Query is the per-tick path; what it
-// changes lives in a CollisionScratch, so one collider serves several threads, each with its own
-// scratch.
+// Collision between a fixed and a moving coarse mesh, built once here and only read afterwards.
+// Query is the per-tick path; what it changes lives in a CollisionScratch, so one collider serves
+// several threads, each with its own scratch.
 //
-// Depth: FCL reports, per intersecting triangle pair (fcl::detail::Intersect::intersect_Triangle),
+// Meshes made of convex solids (every shipped surface's: prisms, frustums, boxes, tubes as convex
+// sectors) are taken as convex pieces and collided by separating axes (convex_pieces.h): each
+// overlapping pair's overlap along every face normal of both pieces, and the way out of all of
+// them along the summed and the deepest pairs' axes. positioning_tick_benchmark, the 20 mm pair
+// in 50 facets, in contact: 14-16 us a query, where FCL's hierarchies took 190 us (a face) and
+// 180 us (a tilted part in the bore), and FCL's own convex-convex test (GJK, libccd) 0.85 us a
+// pair of pieces before its penetration depth (EPA), 43 us for the face's 50 sectors.
+//
+// Other meshes go to FCL's mesh-mesh collision (OBBRSS bounding volume hierarchies). Depth: FCL
+// reports, per intersecting triangle pair (fcl::detail::Intersect::intersect_Triangle),
 // one triangle's plane normal and a depth through it; FCL has no mesh-mesh minimum translation.
 // Query estimates the way out (see mesh_collider.cc): along each reported normal d it takes, per
 // pair, the smaller of the plane bound (depth / cos) and the projection bound of the pair's two
@@ -74,6 +86,9 @@ class FITFEEL_API MeshCollider {
              Penetration* out) const noexcept;
 
   int max_contacts() const { return max_contacts_; }
+  // True when both meshes are made of convex solids (connected components): queried by separating
+  // axes (convex_pieces.h); otherwise by FCL's hierarchies.
+  bool convex_pieces() const;
 
  private:
   struct Impl;

@@ -35,12 +35,12 @@ class CollisionScratch;
 // (CoarseMeshes): its tip at y = 0, its body at y >= 0, and the device reports the outer part's
 // mating start at (y, o), which then has the inner part's tip y past it and |o| off its axis: the
 // (y, r) of an inner part moved to (y, o). So the same region and god object serve both roles,
-// and neither queries FCL.
+// and neither queries the collider.
 //
-// Otherwise it collides the parts' coarse
-// meshes with FCL (docs/architecture.md, section 4: FCL here and only here, since mesh-mesh queries
-// between mated surfaces cost 1-35 ms) and renders a penalty force k_free * depth along the
-// contact normal, zero when free. Hands over to the constrained stage once the leading end has
+// Otherwise it collides the parts' coarse meshes (MeshCollider: meshes made of convex solids, as
+// every shipped surface's are, by separating axes; others with FCL; docs/architecture.md,
+// section 4: here and only here, since mesh-mesh queries between mated surfaces cost 1-35 ms) and
+// renders a penalty force k_free * depth along the way out, zero when free. Hands over to the constrained stage once the leading end has
 // reached the entrance (depth >= 0) with the part's axis aligned with the mating axis and inside
 // the entrance's capture radius; on the hand-over tick it renders nothing, since inside the
 // capture radius the entrance's edge break (which the coarse meshes do not model) guides the part
@@ -49,11 +49,12 @@ class CollisionScratch;
 // Without coarse meshes (the default constructor, or a surface type whose MakeCoarseMeshes keeps
 // the default), free motion is collision-free: the part passes through the fixed one's face.
 //
-// Limits: the penalty uses the deepest of the first `max_contacts` triangle pairs FCL reports
-// (FCL stops at that count, so on a deep, wide overlap the deepest pair may not be among them);
-// for a flat end on a flat face the depth is exact, across faceted walls it is exact to within
-// the meshes' chordal error, and a wall-through-wall overlap (a tilted part well inside a bore)
-// reports FCL's triangle-pair depth, not a true minimum translation. `gap` stays unknown
+// Limits: the way out is searched along a few axes (convex pieces: the overlapping pairs' summed
+// and deepest axes; FCL: the normals of the first `max_contacts` triangle pairs it reports), so it
+// is a translation that frees the part from what it overlaps, not always the least one: for a flat
+// end on a flat face the depth is exact, across faceted walls it is exact to within the meshes'
+// chordal error, and a part tilted across a bore, touching both sides, may have no way out by
+// translation at all (the penalty then pushes along the best axis found). `gap` stays unknown
 // (infinity): no distance query is made.
 class FITFEEL_API PositioningStage final : public Stage {
  public:
@@ -70,11 +71,12 @@ class FITFEEL_API PositioningStage final : public Stage {
     // Stiffness k_free of the free-motion penalty, N/m (see FreeMotionStiffness). 0 renders no
     // force (the contact is still detected).
     double free_stiffness = 0.0;
-    // Most triangle pairs one FCL query reports (its contact buffer is reserved for them). FCL's
-    // cost grows with it (positioning_tick_benchmark, 20 mm pair, 50 facets: about 0.17 ms CPU
-    // per tick in contact at 64, 0.09 us free); 64 keeps a face contact exact and a part pressed
-    // sideways into the bore within 20 degrees and one chordal error of the true way out (all
-    // pairs, 256: within 2 pi / n), at a quarter of the cost of enumerating them all.
+    // Meshes that are not made of convex solids only (FCL): most triangle pairs one query reports
+    // (its contact buffer is reserved for them). FCL's cost grows with it (positioning tick, 20 mm
+    // pair, 50 facets: about 0.17 ms CPU per tick in contact at 64, 0.09 us free); 64 keeps a face
+    // contact exact and a part pressed sideways into the bore within 20 degrees and one chordal
+    // error of the true way out (all pairs, 256: within 2 pi / n), at a quarter of the cost of
+    // enumerating them all.
     int max_contacts = 64;
   };
 
@@ -82,10 +84,10 @@ class FITFEEL_API PositioningStage final : public Stage {
   PositioningStage();
   // Throws UserError for a negative or non-finite option.
   explicit PositioningStage(const Options& options);
-  // Builds the FCL hierarchies of `meshes` once (see CoarseMeshes for their frames); `moving` is
-  // the part the device moves: when it is the outer one, both meshes are turned half a turn about
-  // z into the scene frame. Empty meshes mean no collision. Throws UserError for bad options or a
-  // mesh FCL refuses.
+  // Builds the collider of `meshes` once (see CoarseMeshes for their frames); `moving` is the part
+  // the device moves: when it is the outer one, both meshes are turned half a turn about z into
+  // the scene frame. Empty meshes mean no collision. Throws UserError for bad options or a mesh
+  // the collider refuses.
   PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving);
   // As above, with a lead-in, which takes the place of the meshes when it is not empty (either
   // part moving: see above).
@@ -105,7 +107,7 @@ class FITFEEL_API PositioningStage final : public Stage {
   double depth_origin() const { return lead_in_.empty() ? 0.0 : lead_in_.capture_depth(); }
 
  protected:
-  // The run's state holds the collider's scratch (FCL's request and reserved result buffer).
+  // The run's state holds the collider's scratch (its buffers, reserved up front).
   std::unique_ptr<StageState> DoMakeState() const override;
   void DoEvaluate(const DeviceState& device, StageState* state,
                   StageOutput* out) const noexcept override;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/collision/coarse_mesh.h"
+#include "framework/collision/mesh_collider.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/positioning_stage.h"
@@ -50,6 +51,8 @@ TEST_P(PositioningEverySurface, CollidesBeforeMatingAndHandsOverAtTheEntrance) {
       LoadScene(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / c.scenario, registry);
   const CoarseMeshes meshes = scene.surface->MakeCoarseMeshes(scene.inner, scene.outer);
   ASSERT_FALSE(meshes.empty()) << c.scenario << ": the surface gives no coarse meshes";
+  // Every shipped surface builds its meshes of convex solids: the collider's fast path.
+  EXPECT_TRUE(MeshCollider(meshes.outer, meshes.inner).convex_pieces()) << c.scenario;
 
   constexpr double k = 1e3;  // N/m
   PositioningStage::Options options;

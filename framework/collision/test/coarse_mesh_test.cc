@@ -60,15 +60,24 @@ TEST(CoarseMeshTest, TubeKeepsItsMaterialOutsideTheInnerCircle) {
   const int n = 54;
   const double ri = 10e-3, ro = 20e-3;
   const TriangleMesh m = MakeTube(ri, ro, 0.0, 40e-3, n);
-  EXPECT_EQ(m.triangles.size(), 8u * n);
+  // A closed hexahedron per facet: eight corners, twelve triangles.
+  ASSERT_EQ(m.vertices.size(), 8u * n);
+  EXPECT_EQ(m.triangles.size(), 12u * n);
   const double inner_vertex = ri / std::cos(M_PI / n);
   EXPECT_NEAR(SignedVolume(m), (PolygonArea(ro, n) - PolygonArea(inner_vertex, n)) * 40e-3, 1e-15);
-  // Every inner-wall facet's mid-point (its closest point to the axis) is on the inner circle.
   for (int i = 0; i < n; ++i) {
+    // Each sector closed and wound outward on its own: its volume is the tube's n-th.
+    TriangleMesh sector;
+    sector.vertices.assign(m.vertices.begin() + 8 * i, m.vertices.begin() + 8 * i + 8);
+    for (int t = 0; t < 12; ++t) {
+      sector.triangles.push_back(m.triangles[static_cast<std::size_t>(12 * i + t)] -
+                                 Eigen::Vector3i::Constant(8 * i));
+    }
+    EXPECT_NEAR(SignedVolume(sector),
+                (PolygonArea(ro, n) - PolygonArea(inner_vertex, n)) * 40e-3 / n, 1e-16);
+    // Its bore facet's mid-point (its closest point to the axis) is on the inner circle.
     const double mid = 2.0 * M_PI * (i + 0.5) / n;
-    const Eigen::Vector3d a = m.vertices[2 * n + i];
-    const Eigen::Vector3d b = m.vertices[2 * n + (i + 1) % n];
-    const Eigen::Vector3d c = 0.5 * (a + b);
+    const Eigen::Vector3d c = 0.5 * (m.vertices[8 * i] + m.vertices[8 * i + 2]);
     EXPECT_NEAR(std::hypot(c.x(), c.z()), ri, 1e-12);
     EXPECT_NEAR(std::atan2(c.z(), c.x()), std::remainder(mid, 2.0 * M_PI), 1e-9);
   }

@@ -34,9 +34,10 @@ TEST(CylindricalCoarseMeshScenario, ThePluginsMeshesReachThePositioningStage) {
   const CoarseMeshes meshes = scene.surface->MakeCoarseMeshes(scene.inner, scene.outer);
   ASSERT_FALSE(meshes.empty());
   // H7/g6 at 20 mm: 54 facets (see cylindrical_coarse_mesh.h): a 40 mm prism and the frustum
-  // of its C0.5 end; a tube and the tapered tube of its C1 entrance.
+  // of its C0.5 end; a tube and the tapered tube of its C1 entrance, each a convex sector per
+  // facet (so the collider takes convex pieces).
   EXPECT_EQ(meshes.inner.triangles.size(), 8u * 54);
-  EXPECT_EQ(meshes.outer.triangles.size(), 16u * 54);
+  EXPECT_EQ(meshes.outer.triangles.size(), 24u * 54);
 
   PositioningStage::Options options;
   options.free_stiffness = 1e3;
