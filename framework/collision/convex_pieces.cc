@@ -41,21 +41,32 @@ FITFEEL_SIMD_CLONES void LeastOnPlanes(const double* __restrict nx, const double
   }
 }
 
-void LeastOnPlanes(const ConvexPiece& planes, const ConvexPiece& points, double* least) {
-  // Axes in the lanes where there are many of them, else the points.
-  if (planes.plane_count() >= 16) {
-    LeastOnPlanes(planes.nx.data(), planes.ny.data(), planes.nz.data(), planes.plane_count(),
-                  points.x.data(), points.y.data(), points.z.data(), points.vertex_count(), least);
-  } else {
-    // Few planes, many points: plane by plane, the points' projections and their least as
-    // Eigen's packets (a least is the same whatever order the points are taken in).
-    const auto n = static_cast<Eigen::Index>(points.vertex_count());
-    const Eigen::Map<const Eigen::ArrayXd> x(points.x.data(), n), y(points.y.data(), n),
-        z(points.z.data(), n);
-    for (std::size_t k = 0; k < planes.nx.size(); ++k) {
-      least[k] = (planes.nx[k] * x + planes.ny[k] * y + planes.nz[k] * z).minCoeff();
+// t[k] = offset_k - least of n_k . p over the points: how far the points' piece must go along
+// n_k to leave the planes' piece, for each of its face planes. False (t partly written) as soon as
+// one is not positive: a separating plane.
+bool OverlapsAlong(const ConvexPiece& planes, const ConvexPiece& points, double* t, double* least) {
+  const int m = planes.plane_count();
+  if (m >= 16) {
+    // Many planes: all of them at once, the planes in the lanes.
+    LeastOnPlanes(planes.nx.data(), planes.ny.data(), planes.nz.data(), m, points.x.data(),
+                  points.y.data(), points.z.data(), points.vertex_count(), least);
+    for (int k = 0; k < m; ++k) {
+      t[k] = planes.offsets[static_cast<std::size_t>(k)] - least[k];
+      if (!(t[k] > 0.0)) return false;
     }
+    return true;
   }
+  // Few planes, many points: plane by plane, the points' projections and their least as Eigen's
+  // packets (a least is the same whatever order the points are taken in), stopping at the first
+  // that separates.
+  const auto n = static_cast<Eigen::Index>(points.vertex_count());
+  const Eigen::Map<const Eigen::ArrayXd> x(points.x.data(), n), y(points.y.data(), n),
+      z(points.z.data(), n);
+  for (std::size_t k = 0; k < planes.nx.size(); ++k) {
+    t[k] = planes.offsets[k] - (planes.nx[k] * x + planes.ny[k] * y + planes.nz[k] * z).minCoeff();
+    if (!(t[k] > 0.0)) return false;
+  }
+  return true;
 }
 
 // The least of u . v over a piece's vertices.
@@ -230,28 +241,17 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
       ConvexPiecesScratch::Overlap o{static_cast<int>(a), static_cast<int>(b), cursor, kInfinity,
                                      Eigen::Vector3d::Zero()};
       double* t = s.axis_overlaps.data() + cursor;
-      bool apart = false;
-      LeastOnPlanes(f, m, s.least.data());
-      for (std::size_t k = 0; k < f.nx.size() && !apart; ++k) {
-        t[k] = f.offsets[k] - s.least[k];
-        apart = !(t[k] > 0.0);
+      if (!OverlapsAlong(f, m, t, s.least.data()) ||
+          !OverlapsAlong(m, f, t + f.nx.size(), s.least.data())) {
+        continue;
+      }
+      const std::size_t axes = f.nx.size() + m.nx.size();
+      for (std::size_t k = 0; k < axes; ++k) {
         if (t[k] < o.depth) {
           o.depth = t[k];
-          o.axis = Normal(f, k);
+          o.axis = k < f.nx.size() ? Normal(f, k) : Eigen::Vector3d(-Normal(m, k - f.nx.size()));
         }
       }
-      if (apart) continue;
-      LeastOnPlanes(m, f, s.least.data());
-      t += f.nx.size();
-      for (std::size_t k = 0; k < m.nx.size() && !apart; ++k) {
-        t[k] = m.offsets[k] - s.least[k];
-        apart = !(t[k] > 0.0);
-        if (t[k] < o.depth) {
-          o.depth = t[k];
-          o.axis = -Normal(m, k);
-        }
-      }
-      if (apart) continue;
       s.overlaps.push_back(o);
       cursor += f.nx.size() + m.nx.size();
     }

@@ -6,6 +6,7 @@
 
 #include "framework/core/error.h"
 #include "framework/testing/allocation_counter.h"
+#include "framework/testing/solid_tube.h"
 
 #include <gtest/gtest.h>
 
@@ -23,38 +24,11 @@ Eigen::Isometry3d At(double x, double y, double z) {
   return t;
 }
 
-// The tube as one solid (its walls and annular faces, not convex), as a plugin may give it: the
-// collider takes such a mesh to FCL's hierarchies. MakeTube gives convex sectors instead.
-TriangleMesh SolidTube(double inner_radius, double outer_radius, double y0, double y1, int n) {
-  TriangleMesh mesh;
-  for (const double radius : {outer_radius, inner_radius / std::cos(M_PI / n)}) {
-    for (const double y : {y0, y1}) {
-      for (int i = 0; i < n; ++i) {
-        const double a = 2.0 * M_PI * i / n;
-        mesh.vertices.emplace_back(radius * std::cos(a), y, radius * std::sin(a));
-      }
-    }
-  }
-  const int outer_low = 0, outer_high = n, inner_low = 2 * n, inner_high = 3 * n;
-  for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
-    mesh.triangles.emplace_back(outer_low + i, outer_high + i, outer_high + j);
-    mesh.triangles.emplace_back(outer_low + i, outer_high + j, outer_low + j);
-    mesh.triangles.emplace_back(inner_low + i, inner_high + j, inner_high + i);
-    mesh.triangles.emplace_back(inner_low + i, inner_low + j, inner_high + j);
-    mesh.triangles.emplace_back(inner_low + i, outer_low + i, outer_low + j);
-    mesh.triangles.emplace_back(inner_low + i, outer_low + j, inner_low + j);
-    mesh.triangles.emplace_back(inner_high + i, outer_high + j, outer_high + i);
-    mesh.triangles.emplace_back(inner_high + i, inner_high + j, outer_high + j);
-  }
-  return mesh;
-}
-
 // A 20 mm bushing (hub 40 mm, 40 mm long) and a 60 mm shaft of the same nominal diameter: as
 // convex pieces, or with the bushing one solid (FCL).
 MeshCollider MakePair(bool pieces = true, int max_contacts = 64) {
   return MeshCollider(pieces ? MakeTube(kRadius, 20e-3, 0.0, 40e-3, kFacets)
-                             : SolidTube(kRadius, 20e-3, 0.0, 40e-3, kFacets),
+                             : test_support::SolidTube(kRadius, 20e-3, 0.0, 40e-3, kFacets),
                       MakeClosedCylinder(kRadius, -60e-3, 0.0, kFacets), max_contacts);
 }
 
