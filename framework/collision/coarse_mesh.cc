@@ -59,8 +59,9 @@ void AddConvexQuad(TriangleMesh* mesh, int first, const std::array<int, 4>& corn
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (int k = 0; k < 8; ++k) centre += mesh->vertices[static_cast<std::size_t>(first + k)] / 8.0;
   std::array<int, 4> q;
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 4; ++k) {
     q[static_cast<std::size_t>(k)] = first + corner[static_cast<std::size_t>(k)];
+  }
   auto at = [&](int k) {
     return mesh->vertices[static_cast<std::size_t>(q[static_cast<std::size_t>(k)])];
   };

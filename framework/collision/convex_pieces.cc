@@ -187,8 +187,10 @@ void ConvexPiecesScratch::Reserve(std::span<const ConvexPiece> moving_pieces,
                                   std::span<const ConvexPiece> fixed) {
   moving.assign(moving_pieces.begin(), moving_pieces.end());
   placed.assign(moving.size(), 0);
+  first_plane.clear();
   std::size_t axes = 0, planes = 0, most = 0;
   for (const ConvexPiece& a : moving) {
+    first_plane.push_back(planes);
     planes += a.nx.size();
     most = std::max(most, a.nx.size());
     for (const ConvexPiece& b : fixed) axes += a.nx.size() + b.nx.size();
@@ -266,22 +268,19 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
   // t <= overlap(n) / (n . u) where n . u > 0, and the least of these bounds over the pair's face
   // normals is never short of it (edge-edge normals left out). The largest over the pairs clears
   // them all.
-  std::array<Eigen::Vector3d, kCandidates + 1> tried;
+  std::array<Eigen::Vector3d, kDeepestAxesTried + 1> tried;
   int candidates = 0;
   double best = kInfinity;
   Eigen::Vector3d best_axis = Eigen::Vector3d::Zero();
   auto try_axis = [&](const Eigen::Vector3d& u) {
     tried[static_cast<std::size_t>(candidates++)] = u;
     // The moving pieces' reversed normals' cosines with u, once for all their pairs.
-    std::size_t base = 0;
     for (std::size_t a = 0; a < moving.size(); ++a) {
       const ConvexPiece& m = s.moving[a];
-      if (s.placed[a]) {
-        for (std::size_t k = 0; k < m.nx.size(); ++k) {
-          s.cosines[base + k] = -(m.nx[k] * u.x() + m.ny[k] * u.y() + m.nz[k] * u.z());
-        }
+      if (!s.placed[a]) continue;
+      for (std::size_t k = 0; k < m.nx.size(); ++k) {
+        s.cosines[s.first_plane[a] + k] = -(m.nx[k] * u.x() + m.ny[k] * u.y() + m.nz[k] * u.z());
       }
-      base += m.nx.size();
     }
     double required = 0.0;
     for (const ConvexPiecesScratch::Overlap& o : s.overlaps) {
@@ -293,12 +292,10 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
         if (c > 1e-12 && t[k] < exit * c) exit = t[k] / c;
       }
       t += f.nx.size();
-      std::size_t first = 0;
-      for (int a = 0; a < o.moving; ++a) first += s.moving[static_cast<std::size_t>(a)].nx.size();
-      const auto planes =
-          static_cast<Eigen::Index>(s.moving[static_cast<std::size_t>(o.moving)].nx.size());
+      const auto a = static_cast<std::size_t>(o.moving);
+      const auto planes = static_cast<Eigen::Index>(s.moving[a].nx.size());
       const Eigen::Map<const Eigen::ArrayXd> overlap(t, planes),
-          cosine(s.cosines.data() + first, planes);
+          cosine(s.cosines.data() + s.first_plane[a], planes);
       exit = std::min(exit, (cosine > 1e-12).select(overlap / cosine, kInfinity).minCoeff());
       required = std::max(required, exit);
     }
@@ -310,7 +307,7 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const ConvexPiecesScratch::Overlap& o : s.overlaps) sum += o.depth * o.axis;
   if (sum.norm() > 0.0) try_axis(sum.normalized());
-  while (candidates < kCandidates + 1) {
+  while (candidates < kDeepestAxesTried + 1) {
     const ConvexPiecesScratch::Overlap* next = nullptr;
     for (const ConvexPiecesScratch::Overlap& o : s.overlaps) {
       bool seen = false;

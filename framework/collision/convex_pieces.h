@@ -32,6 +32,7 @@ struct ConvexPiecesScratch {
   // The moving pieces in the scene frame (as ConvexPiece; low / high: their boxes).
   std::vector<ConvexPiece> moving;
   std::vector<char> placed;  // per moving piece: its vertices and planes are this query's
+  std::vector<std::size_t> first_plane;  // per moving piece: where its planes start in `cosines`
   struct Overlap {
     int moving, fixed;
     std::size_t first_axis;  // its overlap along each face normal, from here in axis_overlaps
@@ -40,7 +41,8 @@ struct ConvexPiecesScratch {
   };
   std::vector<Overlap> overlaps;
   std::vector<double> axis_overlaps;
-  std::vector<double> least, cosines;  // per plane of a piece: projections, cosines with an axis
+  std::vector<double> least;    // per plane of one piece: the other's least projection on it
+  std::vector<double> cosines;  // per plane of every moving piece: its cosine with an axis tried
   void Reserve(std::span<const ConvexPiece> moving_pieces, std::span<const ConvexPiece> fixed);
 };
 
@@ -49,8 +51,8 @@ struct ConvexPiecesScratch {
 // (separating-axis test; the edge-edge axes are left out, so a pair crossing edge on edge
 // reports more than its true overlap, never less). The way out of every overlap at once is
 // searched along the pairs' axes summed with their depths and along the deepest pairs' axes (up
-// to kCandidates distinct): along each, the translation that clears every overlapping pair (each
-// pair's exit from its Minkowski difference, bounded by its face normals), and the least of
+// to kDeepestAxesTried distinct): along each, the translation that clears every overlapping pair
+// (each pair's exit from its Minkowski difference, bounded by its face normals), and the least of
 // these is the answer. Returns the number of overlapping pairs (0: free); with at least one,
 // `depth` > 0 is that translation, `normal` its direction (the moving part's way out) and
 // `point` the overlapping pairs' box intersections' centre, weighted by their overlaps. No
@@ -59,6 +61,6 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
                         const Eigen::Isometry3d& pose, ConvexPiecesScratch* scratch, double* depth,
                         Eigen::Vector3d* normal, Eigen::Vector3d* point) noexcept;
 
-inline constexpr int kCandidates = 2;
+inline constexpr int kDeepestAxesTried = 2;
 
 }  // namespace fitfeel
