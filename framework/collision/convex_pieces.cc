@@ -69,6 +69,61 @@ bool OverlapsAlong(const ConvexPiece& planes, const ConvexPiece& points, double*
   return true;
 }
 
+// As OverlapsAlong for a fixed piece's planes against a placed moving piece, each plane's least
+// found by walking the moving piece's vertices from where its last walk ended (`start`, one per
+// plane, updated): the same least as a scan of every vertex (a convex solid's), in a few steps.
+bool OverlapsAlongByWalks(const ConvexPiece& planes, const ConvexPiece& points, int* start,
+                          double* t) {
+  for (std::size_t k = 0; k < planes.nx.size(); ++k) {
+    const Eigen::Vector3d u(planes.nx[k], planes.ny[k], planes.nz[k]);
+    t[k] = planes.offsets[k] - LeastByWalk(points, u, &start[k]);
+    if (!(t[k] > 0.0)) return false;
+  }
+  return true;
+}
+
+// The piece's corners (vertices on three of its face planes or more) and their neighbours (two
+// corners on two common face planes share the edge where those faces meet): first_neighbour,
+// neighbours and corner.
+void Connect(ConvexPiece* piece) {
+  const double tolerance = 1e-9 * (piece->high - piece->low).norm();
+  const int count = piece->vertex_count();
+  std::vector<std::vector<int>> on(static_cast<std::size_t>(count));  // each vertex's planes
+  for (int i = 0; i < count; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    for (std::size_t k = 0; k < piece->nx.size(); ++k) {
+      const double p =
+          piece->nx[k] * piece->x[ii] + piece->ny[k] * piece->y[ii] + piece->nz[k] * piece->z[ii];
+      if (std::abs(p - piece->offsets[k]) <= tolerance) on[ii].push_back(static_cast<int>(k));
+    }
+  }
+  piece->corner = -1;
+  piece->first_neighbour.assign(1, 0);
+  piece->neighbours.clear();
+  for (int i = 0; i < count; ++i) {
+    const std::vector<int>& a = on[static_cast<std::size_t>(i)];
+    for (int j = 0; j < count && a.size() >= 3; ++j) {
+      const std::vector<int>& b = on[static_cast<std::size_t>(j)];
+      if (j == i || b.size() < 3) continue;
+      std::size_t shared = 0;
+      for (std::size_t p = 0, q = 0; p < a.size() && q < b.size();) {
+        if (a[p] == b[q]) {
+          ++shared;
+          ++p;
+          ++q;
+        } else if (a[p] < b[q]) {
+          ++p;
+        } else {
+          ++q;
+        }
+      }
+      if (shared >= 2) piece->neighbours.push_back(j);
+    }
+    if (a.size() >= 3 && piece->corner < 0) piece->corner = i;
+    piece->first_neighbour.push_back(static_cast<int>(piece->neighbours.size()));
+  }
+}
+
 // The least of u . v over a piece's vertices.
 double LeastProjection(const ConvexPiece& piece, const Eigen::Vector3d& u) {
   double least = kInfinity;
@@ -112,6 +167,30 @@ Eigen::Vector3d Normal(const ConvexPiece& piece, std::size_t k) {
 }
 
 }  // namespace
+
+double LeastByWalk(const ConvexPiece& piece, const Eigen::Vector3d& u, int* start) {
+  auto along = [&](int v) {
+    const auto i = static_cast<std::size_t>(v);
+    return u.x() * piece.x[i] + u.y() * piece.y[i] + u.z() * piece.z[i];
+  };
+  int at = *start;
+  double least = along(at);
+  for (bool moved = true; moved;) {
+    moved = false;
+    const int end = piece.first_neighbour[static_cast<std::size_t>(at) + 1];
+    for (int e = piece.first_neighbour[static_cast<std::size_t>(at)]; e < end; ++e) {
+      const int next = piece.neighbours[static_cast<std::size_t>(e)];
+      const double p = along(next);
+      if (p < least) {
+        least = p;
+        at = next;
+        moved = true;
+      }
+    }
+  }
+  *start = at;
+  return least;
+}
 
 std::optional<std::vector<ConvexPiece>> ConvexPieces(const TriangleMesh& mesh) {
   const int n = static_cast<int>(mesh.vertices.size());
@@ -180,6 +259,10 @@ std::optional<std::vector<ConvexPiece>> ConvexPieces(const TriangleMesh& mesh) {
   for (const ConvexPiece& piece : pieces) {
     if (piece.plane_count() < 4) return std::nullopt;  // flat: no solid
   }
+  for (ConvexPiece& piece : pieces) {
+    Connect(&piece);
+    if (piece.corner < 0) return std::nullopt;  // no corner found to rounding: leave it to FCL
+  }
   return pieces;
 }
 
@@ -188,7 +271,13 @@ void ConvexPiecesScratch::Reserve(std::span<const ConvexPiece> moving_pieces,
   moving.assign(moving_pieces.begin(), moving_pieces.end());
   placed.assign(moving.size(), 0);
   first_plane.clear();
-  std::size_t axes = 0, planes = 0, most = 0;
+  std::size_t axes = 0, planes = 0, most = 0, fixed_planes = 0;
+  for (const ConvexPiece& b : fixed) fixed_planes = std::max(fixed_planes, b.nx.size());
+  walk_stride = fixed_planes;
+  walk_start.clear();
+  for (const ConvexPiece& a : moving) {
+    walk_start.insert(walk_start.end(), fixed.size() * walk_stride, a.corner);
+  }
   for (const ConvexPiece& a : moving) {
     first_plane.push_back(planes);
     planes += a.nx.size();
@@ -243,7 +332,8 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
       ConvexPiecesScratch::Overlap o{static_cast<int>(a), static_cast<int>(b), cursor, kInfinity,
                                      Eigen::Vector3d::Zero()};
       double* t = s.axis_overlaps.data() + cursor;
-      if (!OverlapsAlong(f, m, t, s.least.data()) ||
+      int* start = s.walk_start.data() + (a * fixed.size() + b) * s.walk_stride;
+      if (!OverlapsAlongByWalks(f, m, start, t) ||
           !OverlapsAlong(m, f, t + f.nx.size(), s.least.data())) {
         continue;
       }

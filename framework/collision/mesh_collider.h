@@ -53,11 +53,11 @@ class FITFEEL_API CollisionScratch {
 // sectors) are taken as convex pieces and collided by separating axes (convex_pieces.h): each
 // overlapping pair's overlap along every face normal of both pieces, and the way out of all of
 // them along the summed and the deepest pairs' axes. positioning_tick_benchmark, the 20 mm pair
-// in 50 facets, in contact: 13.5-14.5 us a query, where FCL's hierarchies take 190 us (a face)
-// and 180 us (a tilted part in the bore), and FCL's own convex-convex test (GJK, libccd) 0.85 us a
+// in 50 facets, in contact: 8.4-8.5 us a query, where FCL's hierarchies take 190 us (a face) and
+// 180 us (a tilted part in the bore), and FCL's own convex-convex test (GJK, libccd) 0.85 us a
 // pair of pieces before its penetration depth (EPA), 43 us for the face's 50 sectors. The pieces'
 // cost grows with the facets squared (each facet's sector against each face of the shaft): at
-// 200 facets 0.19-0.22 ms, FCL's 0.12-0.48 ms.
+// 200 facets 0.11-0.12 ms, FCL's 0.12-0.48 ms.
 //
 // Other meshes go to FCL's mesh-mesh collision (OBBRSS bounding volume hierarchies). Depth: FCL
 // reports, per intersecting triangle pair (fcl::detail::Intersect::intersect_Triangle),
