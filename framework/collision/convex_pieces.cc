@@ -97,29 +97,40 @@ void Connect(ConvexPiece* piece) {
       if (std::abs(p - piece->offsets[k]) <= tolerance) on[ii].push_back(static_cast<int>(k));
     }
   }
+  // Corners on the same two planes, grouped by that pair of planes (each corner lies on three or
+  // more, so on three pairs or more): the two ends of an edge.
+  std::vector<std::array<int, 3>> on_pairs;  // (plane, plane, corner)
   piece->corner = -1;
+  for (int i = 0; i < count; ++i) {
+    const std::vector<int>& planes = on[static_cast<std::size_t>(i)];
+    if (planes.size() < 3) continue;
+    if (piece->corner < 0) piece->corner = i;
+    for (std::size_t p = 0; p < planes.size(); ++p) {
+      for (std::size_t q = p + 1; q < planes.size(); ++q)
+        on_pairs.push_back({planes[p], planes[q], i});
+    }
+  }
+  std::sort(on_pairs.begin(), on_pairs.end());
+  std::vector<std::vector<int>> adjacent(static_cast<std::size_t>(count));
+  for (std::size_t g = 0; g < on_pairs.size();) {
+    std::size_t end = g;
+    while (end < on_pairs.size() && on_pairs[end][0] == on_pairs[g][0] &&
+           on_pairs[end][1] == on_pairs[g][1]) {
+      ++end;
+    }
+    for (std::size_t a = g; a < end; ++a) {
+      for (std::size_t b = g; b < end; ++b) {
+        if (a != b) adjacent[static_cast<std::size_t>(on_pairs[a][2])].push_back(on_pairs[b][2]);
+      }
+    }
+    g = end;
+  }
   piece->first_neighbour.assign(1, 0);
   piece->neighbours.clear();
-  for (int i = 0; i < count; ++i) {
-    const std::vector<int>& a = on[static_cast<std::size_t>(i)];
-    for (int j = 0; j < count && a.size() >= 3; ++j) {
-      const std::vector<int>& b = on[static_cast<std::size_t>(j)];
-      if (j == i || b.size() < 3) continue;
-      std::size_t shared = 0;
-      for (std::size_t p = 0, q = 0; p < a.size() && q < b.size();) {
-        if (a[p] == b[q]) {
-          ++shared;
-          ++p;
-          ++q;
-        } else if (a[p] < b[q]) {
-          ++p;
-        } else {
-          ++q;
-        }
-      }
-      if (shared >= 2) piece->neighbours.push_back(j);
-    }
-    if (a.size() >= 3 && piece->corner < 0) piece->corner = i;
+  for (std::vector<int>& list : adjacent) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    piece->neighbours.insert(piece->neighbours.end(), list.begin(), list.end());
     piece->first_neighbour.push_back(static_cast<int>(piece->neighbours.size()));
   }
 }
