@@ -52,12 +52,11 @@ void AddWallQuad(TriangleMesh* mesh, int a, int b, int i, int facets, bool outwa
   }
 }
 
-// The planar quad of corners first + corner[0..3] (in cyclic order) of the convex solid made of
-// the eight corners from `first` on, as two triangles wound counter-clockwise from outside (seen
-// from the solid's centre, whichever way the corners were listed).
-void AddConvexQuad(TriangleMesh* mesh, int first, const std::array<int, 4>& corner) {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 8; ++k) centre += mesh->vertices[static_cast<std::size_t>(first + k)] / 8.0;
+// The planar quad of corners first + corner[0..3] (in cyclic order) of a convex solid whose
+// centre is `centre`, as two triangles wound counter-clockwise from outside (seen from the
+// centre, whichever way the corners were listed).
+void AddConvexQuad(TriangleMesh* mesh, int first, const std::array<int, 4>& corner,
+                   const Eigen::Vector3d& centre) {
   std::array<int, 4> q;
   for (int k = 0; k < 4; ++k) {
     q[static_cast<std::size_t>(k)] = first + corner[static_cast<std::size_t>(k)];
@@ -152,13 +151,15 @@ TriangleMesh MakeTaperedTube(double inner_radius0, double inner_radius1, double 
         mesh.vertices.push_back(outer_radius * direction + Eigen::Vector3d(0.0, y, 0.0));
       }
     }
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 8; ++k) centre += mesh.vertices[static_cast<std::size_t>(first + k)] / 8.0;
     // Corners: 0 / 1 inner / outer at the facet's start, 2 / 3 at its end, at y0; 4-7 at y1.
-    AddConvexQuad(&mesh, first, {0, 1, 3, 2});  // low end
-    AddConvexQuad(&mesh, first, {4, 5, 7, 6});  // high end
-    AddConvexQuad(&mesh, first, {0, 2, 6, 4});  // bore facet
-    AddConvexQuad(&mesh, first, {1, 3, 7, 5});  // outer facet
-    AddConvexQuad(&mesh, first, {0, 1, 5, 4});  // plane at the facet's start
-    AddConvexQuad(&mesh, first, {2, 3, 7, 6});  // plane at its end
+    AddConvexQuad(&mesh, first, {0, 1, 3, 2}, centre);  // low end
+    AddConvexQuad(&mesh, first, {4, 5, 7, 6}, centre);  // high end
+    AddConvexQuad(&mesh, first, {0, 2, 6, 4}, centre);  // bore facet
+    AddConvexQuad(&mesh, first, {1, 3, 7, 5}, centre);  // outer facet
+    AddConvexQuad(&mesh, first, {0, 1, 5, 4}, centre);  // plane at the facet's start
+    AddConvexQuad(&mesh, first, {2, 3, 7, 6}, centre);  // plane at its end
   }
   return mesh;
 }

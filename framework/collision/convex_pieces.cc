@@ -22,6 +22,23 @@ int Root(std::vector<int>* parent, int v) {
   return v;
 }
 
+// u . (vertex i of the piece).
+double Along(const ConvexPiece& piece, std::size_t i, const Eigen::Vector3d& u) {
+  return u.x() * piece.x[i] + u.y() * piece.y[i] + u.z() * piece.z[i];
+}
+
+Eigen::Vector3d Normal(const ConvexPiece& piece, std::size_t k) {
+  return {piece.nx[k], piece.ny[k], piece.nz[k]};
+}
+
+// The least over a pair's face normals of overlap(n) / cos(n, u) where the cosine is positive:
+// how far along u its Minkowski difference reaches (see PenetrationOfPieces).
+template <typename Cosines>
+double LeastExit(const double* overlaps, const Cosines& cosine) {
+  const Eigen::Map<const Eigen::ArrayXd> overlap(overlaps, cosine.size());
+  return (cosine > 1e-12).select(overlap / cosine, kInfinity).minCoeff();
+}
+
 // least[k] = min over the n points of n_k . p, for each of the m planes' normals n_k: the points'
 // projections on many axes at once, the axes in the inner loop (independent lanes, vectorised;
 // compiled also for AVX2 and AVX-512, each lane's sum in the same order: the same numbers).
@@ -75,8 +92,7 @@ bool OverlapsAlong(const ConvexPiece& planes, const ConvexPiece& points, double*
 bool OverlapsAlongByWalks(const ConvexPiece& planes, const ConvexPiece& points, int* start,
                           double* t) {
   for (std::size_t k = 0; k < planes.nx.size(); ++k) {
-    const Eigen::Vector3d u(planes.nx[k], planes.ny[k], planes.nz[k]);
-    t[k] = planes.offsets[k] - LeastByWalk(points, u, &start[k]);
+    t[k] = planes.offsets[k] - LeastByWalk(points, Normal(planes, k), &start[k]);
     if (!(t[k] > 0.0)) return false;
   }
   return true;
@@ -92,8 +108,7 @@ void Connect(ConvexPiece* piece) {
   for (int i = 0; i < count; ++i) {
     const auto ii = static_cast<std::size_t>(i);
     for (std::size_t k = 0; k < piece->nx.size(); ++k) {
-      const double p =
-          piece->nx[k] * piece->x[ii] + piece->ny[k] * piece->y[ii] + piece->nz[k] * piece->z[ii];
+      const double p = Along(*piece, ii, Normal(*piece, k));
       if (std::abs(p - piece->offsets[k]) <= tolerance) on[ii].push_back(static_cast<int>(k));
     }
   }
@@ -139,7 +154,7 @@ void Connect(ConvexPiece* piece) {
 double LeastProjection(const ConvexPiece& piece, const Eigen::Vector3d& u) {
   double least = kInfinity;
   for (std::size_t i = 0; i < piece.x.size(); ++i) {
-    const double p = u.x() * piece.x[i] + u.y() * piece.y[i] + u.z() * piece.z[i];
+    const double p = Along(piece, i, u);
     least = p < least ? p : least;
   }
   return least;
@@ -173,17 +188,10 @@ bool BoxesApart(const ConvexPiece& a, const ConvexPiece& b) {
   return (a.low.array() >= b.high.array()).any() || (b.low.array() >= a.high.array()).any();
 }
 
-Eigen::Vector3d Normal(const ConvexPiece& piece, std::size_t k) {
-  return {piece.nx[k], piece.ny[k], piece.nz[k]};
-}
-
 }  // namespace
 
 double LeastByWalk(const ConvexPiece& piece, const Eigen::Vector3d& u, int* start) {
-  auto along = [&](int v) {
-    const auto i = static_cast<std::size_t>(v);
-    return u.x() * piece.x[i] + u.y() * piece.y[i] + u.z() * piece.z[i];
-  };
+  auto along = [&](int v) { return Along(piece, static_cast<std::size_t>(v), u); };
   int at = *start;
   double least = along(at);
   for (bool moved = true; moved;) {
@@ -281,21 +289,18 @@ void ConvexPiecesScratch::Reserve(std::span<const ConvexPiece> moving_pieces,
                                   std::span<const ConvexPiece> fixed) {
   moving.assign(moving_pieces.begin(), moving_pieces.end());
   placed.assign(moving.size(), 0);
-  first_plane.clear();
-  std::size_t axes = 0, planes = 0, most = 0, fixed_planes = 0;
-  for (const ConvexPiece& b : fixed) fixed_planes = std::max(fixed_planes, b.nx.size());
-  walk_stride = fixed_planes;
+  walk_stride = 0;
+  for (const ConvexPiece& b : fixed) walk_stride = std::max(walk_stride, b.nx.size());
   walk_start.clear();
+  first_plane.clear();
+  std::size_t axes = 0, planes = 0, most = 0;
   for (const ConvexPiece& a : moving) {
     walk_start.insert(walk_start.end(), fixed.size() * walk_stride, a.corner);
-  }
-  for (const ConvexPiece& a : moving) {
     first_plane.push_back(planes);
     planes += a.nx.size();
     most = std::max(most, a.nx.size());
     for (const ConvexPiece& b : fixed) axes += a.nx.size() + b.nx.size();
   }
-  for (const ConvexPiece& b : fixed) most = std::max(most, b.nx.size());
   overlaps.clear();
   overlaps.reserve(moving.size() * fixed.size());
   axis_overlaps.resize(axes);
@@ -387,17 +392,14 @@ int PenetrationOfPieces(std::span<const ConvexPiece> moving, std::span<const Con
     for (const ConvexPiecesScratch::Overlap& o : s.overlaps) {
       const ConvexPiece& f = fixed[static_cast<std::size_t>(o.fixed)];
       const double* t = s.axis_overlaps.data() + o.first_axis;
-      double exit = kInfinity;
-      for (std::size_t k = 0; k < f.nx.size(); ++k) {
-        const double c = f.nx[k] * u.x() + f.ny[k] * u.y() + f.nz[k] * u.z();
-        if (c > 1e-12 && t[k] < exit * c) exit = t[k] / c;
-      }
-      t += f.nx.size();
+      const auto fixed_planes = static_cast<Eigen::Index>(f.nx.size());
+      const Eigen::Map<const Eigen::ArrayXd> fx(f.nx.data(), fixed_planes),
+          fy(f.ny.data(), fixed_planes), fz(f.nz.data(), fixed_planes);
       const auto a = static_cast<std::size_t>(o.moving);
-      const auto planes = static_cast<Eigen::Index>(s.moving[a].nx.size());
-      const Eigen::Map<const Eigen::ArrayXd> overlap(t, planes),
-          cosine(s.cosines.data() + s.first_plane[a], planes);
-      exit = std::min(exit, (cosine > 1e-12).select(overlap / cosine, kInfinity).minCoeff());
+      const Eigen::Map<const Eigen::ArrayXd> moving_cosines(
+          s.cosines.data() + s.first_plane[a], static_cast<Eigen::Index>(s.moving[a].nx.size()));
+      const double exit = std::min(LeastExit(t, fx * u.x() + fy * u.y() + fz * u.z()),
+                                   LeastExit(t + f.nx.size(), moving_cosines));
       required = std::max(required, exit);
     }
     if (required < best) {

@@ -56,7 +56,7 @@ struct ConvexPiecesScratch {
   };
   std::vector<Overlap> overlaps;
   std::vector<double> axis_overlaps;
-  std::vector<double> least;    // per plane of one piece: the other's least projection on it
+  std::vector<double> least;    // per plane of a moving piece: a fixed piece's least projection
   std::vector<double> cosines;  // per plane of every moving piece: its cosine with an axis tried
   void Reserve(std::span<const ConvexPiece> moving_pieces, std::span<const ConvexPiece> fixed);
 };
