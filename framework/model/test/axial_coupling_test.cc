@@ -305,6 +305,37 @@ TEST(AxialCoupling, MirroredRowsGiveWhatSolvingEveryRowGives) {
   }
 }
 
+// The condensed elimination (equal groups of rows eliminated inside once, then the lines between
+// them) is the same K^-1 as the whole band: the same F to rounding for every kind of part and
+// support, order and grouping (one group, a group per row, several), mirrored or not.
+TEST(AxialCoupling, TheCondensedEliminationIsTheBands) {
+  using Elimination = AxialCoupling::Elimination;
+  for (int rows : {1, 4, 6, 9, 12}) {
+    for (double pitch : {0.6e-3, 2.0e-3}) {  // two and eight elements per row on a 10 mm face
+      for (int n : {0, 1, 2, 5}) {
+        for (bool held : {false, true}) {
+          for (const AxialBody& body : {Shaft(0.010, held), Hub(0.010, 0.015, held)}) {
+            const std::vector<double> edges = Edges(rows, pitch);
+            const Eigen::MatrixXd band =
+                AxialCoupling(body, edges, n, Elimination::kBand).influence();
+            const Eigen::MatrixXd condensed =
+                AxialCoupling(body, edges, n, Elimination::kCondensed).influence();
+            EXPECT_LT((band - condensed).cwiseAbs().maxCoeff(), 1e-9 * band.cwiseAbs().maxCoeff())
+                << "order " << n << (body.loaded_inside ? " hub" : " shaft") << " held " << held
+                << " rows " << rows << " pitch " << pitch;
+          }
+        }
+      }
+    }
+  }
+  // Rows of two lengths have no equal groups: refused when asked for, the band otherwise.
+  std::vector<double> uneven = Edges(6, 1e-3);
+  uneven[3] += 0.2e-3;
+  EXPECT_THROW(AxialCoupling(Shaft(0.010), uneven, 2, Elimination::kCondensed), UserError);
+  EXPECT_EQ(AxialCoupling(Shaft(0.010), uneven, 2).influence(),
+            AxialCoupling(Shaft(0.010), uneven, 2, Elimination::kBand).influence());
+}
+
 // The memo gives what solving gives, bit for bit, first and again, and tells parts apart by
 // every argument (a stiffer material, another order, other rows).
 TEST(AxialCoupling, SharedIsWhatSolvingGives) {
