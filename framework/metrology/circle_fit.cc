@@ -14,21 +14,44 @@
 namespace fitfeel::metrology {
 namespace {
 
+// The least-squares solution of the n x 3 system a x = b by its normal equations a'a x = a'b,
+// accumulated row by row (`row(i, &v, &b)` gives row i and its right-hand side): a tenth of a QR's
+// cost on a section's few hundred points. Squaring the condition costs the fits nothing they
+// keep: the algebraic circle only starts the geometric fits, and Gauss-Newton's fixed point is the
+// stationary point whatever the rounding of its steps (tested on arcs down to 0.2 degrees). Where
+// the normal matrix is singular to rounding (points on a line), the QR's rank-revealing solve.
+template <typename Row>
+Eigen::Vector3d SolveThreeColumns(long n, const Row& row) {
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v;
+  double b = 0.0;
+  for (long i = 0; i < n; ++i) {
+    row(i, &v, &b);
+    ata.noalias() += v * v.transpose();
+    atb += b * v;
+  }
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(ata);
+  if (ldlt.info() == Eigen::Success && ldlt.rcond() > 1e-12) return ldlt.solve(atb);
+  Eigen::MatrixXd a(n, 3);
+  Eigen::VectorXd rhs(n);
+  for (long i = 0; i < n; ++i) {
+    row(i, &v, &b);
+    a.row(i) = v.transpose();
+    rhs(i) = b;
+  }
+  return a.colPivHouseholderQr().solve(rhs);
+}
+
 Circle AlgebraicCircle(const Eigen::Matrix2Xd& p) {
   // x^2 + y^2 + D x + E y + F = 0 in the least-squares sense, in coordinates about the centroid
   // for conditioning.
   const Eigen::Vector2d mean = p.rowwise().mean();
-  const long n = p.cols();
-  Eigen::MatrixXd A(n, 3);
-  Eigen::VectorXd rhs(n);
-  for (long i = 0; i < n; ++i) {
+  const Eigen::Vector3d s = SolveThreeColumns(p.cols(), [&](long i, Eigen::Vector3d* v, double* b) {
     const Eigen::Vector2d q = p.col(i) - mean;
-    A(i, 0) = q.x();
-    A(i, 1) = q.y();
-    A(i, 2) = 1.0;
-    rhs(i) = -q.squaredNorm();
-  }
-  const Eigen::Vector3d s = A.colPivHouseholderQr().solve(rhs);
+    *v << q.x(), q.y(), 1.0;
+    *b = -q.squaredNorm();
+  });
   Circle c;
   c.centre = mean + Eigen::Vector2d(-s(0) / 2.0, -s(1) / 2.0);
   const double r2 = (s(0) * s(0) + s(1) * s(1)) / 4.0 - s(2);
@@ -137,19 +160,15 @@ Circle LeastSquaresCircle(const Eigen::Matrix2Xd& points) {
   }
   Circle c = AlgebraicCircle(points);
   const long n = points.cols();
-  Eigen::MatrixXd J(n, 3);
-  Eigen::VectorXd res(n);
   for (int it = 0; it < 100; ++it) {
-    for (long i = 0; i < n; ++i) {
+    // Gauss-Newton on the radial residuals d_i - R: rows (-q / d, -1) of the Jacobian.
+    const Eigen::Vector3d step = SolveThreeColumns(n, [&](long i, Eigen::Vector3d* v, double* b) {
       const Eigen::Vector2d q = points.col(i) - c.centre;
       const double d = q.norm();
       if (d == 0.0) throw std::invalid_argument("circle fit: a point lies at the centre");
-      res(i) = d - c.radius;
-      J(i, 0) = -q.x() / d;
-      J(i, 1) = -q.y() / d;
-      J(i, 2) = -1.0;
-    }
-    const Eigen::Vector3d step = J.colPivHouseholderQr().solve(-res);
+      *v << -q.x() / d, -q.y() / d, -1.0;
+      *b = -(d - c.radius);
+    });
     c.centre += step.head<2>();
     c.radius += step(2);
     if (step.norm() <= 1e-15 * (c.radius + c.centre.norm())) break;

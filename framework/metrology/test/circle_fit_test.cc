@@ -105,33 +105,50 @@ TEST(MinimumZoneRoundness, NoPointProgramImprovesOnTheZoneFound) {
   }
 }
 
-TEST(LeastSquaresCircle, RecoversAKnownGeometricFitOnAPartialArc) {
-  // NIST cir2d1 is not available offline. Instead: points c + (r + e_i) u(theta_i) on a 70-degree
-  // arc with residuals e orthogonal to {1, cos, sin}: then (c, r) is exactly a stationary point of
-  // the geometric least-squares objective (its gradient is -2 sum e_i (1, u_i)), so the fit must
-  // return it. The algebraic fit is biased on such an arc and must not be what we return.
+// Points c + (r + e_i) u(theta_i) on an arc with residuals e orthogonal to {1, cos, sin}: then
+// (c, r) is exactly a stationary point of the geometric least-squares objective (its gradient is
+// -2 sum e_i (1, u_i)), so the fit must return it. The algebraic fit is biased on such an arc and
+// must not be what we return. (NIST cir2d1 is not available offline.)
+Circle FitOnArc(double degrees, const Eigen::Vector2d& c, double r, double noise_amplitude) {
   const int n = 38;
-  const Eigen::Vector2d c(-560.3177272525, 34.2390233302);
-  const double r = 13.29077564385;
   Eigen::MatrixXd basis(n, 3);
   Eigen::VectorXd noise(n);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Eigen::VectorXd theta(n);
   for (int i = 0; i < n; ++i) {
-    theta(i) = 0.2 + (70.0 * kPi / 180.0) * i / (n - 1);
+    theta(i) = 0.2 + (degrees * kPi / 180.0) * i / (n - 1);
     basis.row(i) << 1.0, std::cos(theta(i)), std::sin(theta(i));
-    noise(i) = 0.05 * u(rng);
+    noise(i) = noise_amplitude * u(rng);
   }
   const Eigen::MatrixXd Q = basis.householderQr().householderQ() * Eigen::MatrixXd::Identity(n, 3);
   const Eigen::VectorXd e = noise - Q * (Q.transpose() * noise);
   Eigen::Matrix2Xd p(2, n);
   for (int i = 0; i < n; ++i)
     p.col(i) = c + (r + e(i)) * Eigen::Vector2d(std::cos(theta(i)), std::sin(theta(i)));
-  const Circle fit = LeastSquaresCircle(p);
+  return LeastSquaresCircle(p);
+}
+
+TEST(LeastSquaresCircle, RecoversAKnownGeometricFitOnAPartialArc) {
+  const Eigen::Vector2d c(-560.3177272525, 34.2390233302);
+  const double r = 13.29077564385;
+  const Circle fit = FitOnArc(70.0, c, r, 0.05);
   EXPECT_NEAR(fit.centre.x(), c.x(), 1e-9);
   EXPECT_NEAR(fit.centre.y(), c.y(), 1e-9);
   EXPECT_NEAR(fit.radius, r, 1e-9);
+}
+
+// A short arc leaves the fit's three columns nearly dependent (the Gauss-Newton steps solve their
+// normal equations, which square the condition): the fit still converges to the stationary point.
+TEST(LeastSquaresCircle, RecoversItOnAShortArc) {
+  const Eigen::Vector2d c(0.3, -0.2);
+  const double r = 10.0;
+  for (double degrees : {20.0, 5.0, 1.0, 0.2}) {
+    const Circle fit = FitOnArc(degrees, c, r, 1e-4);
+    EXPECT_NEAR(fit.centre.x(), c.x(), 1e-7) << degrees;
+    EXPECT_NEAR(fit.centre.y(), c.y(), 1e-7) << degrees;
+    EXPECT_NEAR(fit.radius, r, 1e-7) << degrees;
+  }
 }
 
 TEST(LeastSquaresCircle, RefusesCollinearPoints) {
