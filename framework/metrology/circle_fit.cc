@@ -184,13 +184,15 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
   // The algebraic circle is start enough: the steps below recentre to the minimum zone's centre.
   out.centre = AlgebraicCircle(points).centre;
   Eigen::VectorXd rho(n), cs(n), sn(n);
+  // The points about the centre, as whole arrays (vectorised: point by point, the divisions' and
+  // the square root's latency was most of an evaluation).
+  Eigen::ArrayXd dx(n), dy(n);
   auto polar = [&]() {
-    for (long i = 0; i < n; ++i) {
-      const Eigen::Vector2d q = points.col(i) - out.centre;
-      rho(i) = q.norm();
-      cs(i) = q.x() / rho(i);
-      sn(i) = q.y() / rho(i);
-    }
+    dx = points.row(0).transpose().array() - out.centre.x();
+    dy = points.row(1).transpose().array() - out.centre.y();
+    rho.array() = (dx.square() + dy.square()).sqrt();
+    cs.array() = dx / rho.array();
+    sn.array() = dy / rho.array();
   };
   // Variables (a, b, r_in, r_out) in units of `scale`, deviations from the mean radius.
   const Eigen::Vector4d c(0.0, 0.0, -1.0, 1.0);
@@ -206,6 +208,13 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
     const double scale = (rho.array() - mean).abs().maxCoeff();
     if (scale <= 1e-15 * mean) break;  // perfectly round to rounding
     dev = (rho.array() - mean) / scale;
+    if (Eigen::Vector4d fit; ChebyshevOnCircle(cs, sn, dev, &angular, &reference, &fit)) {
+      const Eigen::Vector2d shift = fit.head<2>() * scale;
+      out.centre += shift;
+      if (shift.norm() <= 1e-9 * scale + 1e-15 * mean) break;
+      continue;
+    }
+    LinearProgramResult lp;
     // The zone is held by a few points (four, generically): the program is solved over a working
     // set, first the points farthest out and in, then with every point the solution leaves
     // outside its zone added, until none is. The optimum of such a relaxation that every point
@@ -225,13 +234,6 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
         set.push_back(i);
         in_set[static_cast<std::size_t>(i)] = 1;
       }
-    }
-    LinearProgramResult lp;
-    if (Eigen::Vector4d fit; ChebyshevOnCircle(cs, sn, dev, &angular, &reference, &fit)) {
-      const Eigen::Vector2d shift = fit.head<2>() * scale;
-      out.centre += shift;
-      if (shift.norm() <= 1e-9 * scale + 1e-15 * mean) break;
-      continue;
     }
     for (;;) {
       const long m = static_cast<long>(set.size());
