@@ -60,8 +60,9 @@ class FITFEEL_API AxialCoupling {
   // matrices give (0, the breathing mode, to kHighestOrder).
   // How the elements' equations are eliminated (the same F to rounding): the whole band, or,
   // where every row has one length, the inside of equal groups of rows once for all and then the
-  // station lines between them (static condensation; 2 to 4 times fewer operations on the shipped
-  // parts). kAuto takes the one with the fewer operations.
+  // station lines between them (static condensation: a 20 mm shaft in 80 rows three times faster,
+  // in 400 rows eleven). kAuto takes the one with the fewer operations; kCondensed refuses rows
+  // of several lengths.
   enum class Elimination { kAuto, kBand, kCondensed };
   AxialCoupling(const AxialBody& body, std::span<const double> row_edges, int order = 0,
                 Elimination elimination = Elimination::kAuto);
