@@ -591,7 +591,8 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
     u.col(c0).segment(g * line, 2 * line) += m.face * m.length[j] * condensed.col(j % k);
   }
   // A group's body weights (b = 1) and its z-weighted ones from the part's start.
-  const Eigen::VectorXd group_body = condensed.middleCols(k, k).rowwise().sum();
+  const Eigen::VectorXd group_body =
+      body ? Eigen::VectorXd(condensed.middleCols(k, k).rowwise().sum()) : Eigen::VectorXd();
   for (int g = 0; body && g < groups; ++g) {
     const double z0 = m.z[static_cast<std::size_t>(g * s)];
     u.col(m.solved).segment(g * line, 2 * line) += group_body;
@@ -610,7 +611,8 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
     out.body_mean.resize(m.rows, 2);
     out.body_centroid.resize(m.rows, 2);
   }
-  const Eigen::VectorXd inside_body = inside.middleCols(k, k).rowwise().sum();
+  const Eigen::VectorXd inside_body =
+      body ? Eigen::VectorXd(inside.middleCols(k, k).rowwise().sum()) : Eigen::VectorXd();
   for (int i = 0; i < m.rows; ++i) {
     const int g = i / k, ri = i % k;
     const auto block = u.middleRows(g * line, 2 * line);
