@@ -98,16 +98,4 @@ ExpectedInterferenceTable::ExpectedInterferenceTable(const TruncatedGaussian& te
   values_.back() = 0.0;
 }
 
-double ExpectedInterferenceTable::operator()(double gap) const noexcept {
-  if (sharp_) return gap < 0.0 ? -gap : 0.0;
-  if (gap >= upper_) return 0.0;
-  if (gap <= lower_) return mean_ - gap;
-  const double s = (gap - lower_) / step_;
-  const auto last = values_.size() - 1;
-  auto i = static_cast<std::size_t>(s);
-  if (i >= last) i = last - 1;
-  const double t = s - static_cast<double>(i);
-  return values_[i] + t * (values_[i + 1] - values_[i]);
-}
-
 }  // namespace fitfeel

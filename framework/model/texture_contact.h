@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -54,8 +55,19 @@ class FITFEEL_API ExpectedInterferenceTable {
   // Largest probability density of the height difference X (its second derivative in g), 1/m;
   // +inf for a sharp contact. Bounds the error of interpolating E[(X - g)+] linearly in g.
   double max_density() const { return max_density_; }
-  // E[(X - g)+], or max(0, -g) for a sharp contact.
-  double operator()(double gap) const noexcept;
+  // E[(X - g)+], or max(0, -g) for a sharp contact. Inline: prepare calls it once per cell and
+  // step (a call into the library per cell was a quarter of a paper-law prepare).
+  double operator()(double gap) const noexcept {
+    if (sharp_) return gap < 0.0 ? -gap : 0.0;
+    if (gap >= upper_) return 0.0;
+    if (gap <= lower_) return mean_ - gap;
+    const double s = (gap - lower_) / step_;
+    const auto last = values_.size() - 1;
+    auto i = static_cast<std::size_t>(s);
+    if (i >= last) i = last - 1;
+    const double t = s - static_cast<double>(i);
+    return values_[i] + t * (values_[i + 1] - values_[i]);
+  }
 
  private:
   bool sharp_ = true;
