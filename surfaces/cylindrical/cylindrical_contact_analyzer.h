@@ -124,6 +124,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     };
     std::array<Part, 2> part;
     std::vector<double> shift, target, step, back;
+    std::vector<double> best;                       // the shifts of the lowest residual so far
     std::vector<double> section_dp, section_shift;  // section-major, for the solver
     std::vector<std::vector<char>> section_contact;
     Eigen::MatrixXd weights;  // columns x components: a section's pressures to its amplitudes
