@@ -188,6 +188,20 @@ class BandCholesky {
   // one band solve each. Column j is zero above row first[j] (nondecreasing in j): the forward
   // pass skips the columns that are still zero.
   void Solve(double* x, int cols, const std::vector<int>& first) {
+    Forward(x, cols, first);
+    // Backwards, row i takes column i of L below the diagonal (strided in the band: gathered).
+    std::vector<double> below(static_cast<std::size_t>(w_));
+    for (int i = n_ - 1; i >= 0; --i) {
+      double* xi = x + static_cast<std::size_t>(i) * cols;
+      const int count = std::min(w_, n_ - 1 - i);
+      for (int t = 0; t < count; ++t) below[static_cast<std::size_t>(t)] = at(i + 1 + t, i);
+      SubtractCombination(xi, xi + cols, cols, below.data(), count, cols);
+      const double d = at(i, i);
+      for (int j = 0; j < cols; ++j) xi[j] /= d;
+    }
+  }
+  // X <- L^-1 X, the forward half of Solve: for a' K^-1 b = (L^-1 a)' (L^-1 b).
+  void Forward(double* x, int cols, const std::vector<int>& first) {
     int live = 0;  // columns with first <= i
     for (int i = 0; i < n_; ++i) {
       while (live < cols && first[static_cast<std::size_t>(live)] <= i) ++live;
@@ -198,16 +212,6 @@ class BandCholesky {
                           live);
       const double d = at(i, i);
       for (int j = 0; j < live; ++j) xi[j] /= d;
-    }
-    // Backwards, row i takes column i of L below the diagonal (strided in the band: gathered).
-    std::vector<double> below(static_cast<std::size_t>(w_));
-    for (int i = n_ - 1; i >= 0; --i) {
-      double* xi = x + static_cast<std::size_t>(i) * cols;
-      const int count = std::min(w_, n_ - 1 - i);
-      for (int t = 0; t < count; ++t) below[static_cast<std::size_t>(t)] = at(i + 1 + t, i);
-      SubtractCombination(xi, xi + cols, cols, below.data(), count, cols);
-      const double d = at(i, i);
-      for (int j = 0; j < cols; ++j) xi[j] /= d;
     }
   }
 
@@ -505,12 +509,17 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
       kr(b, a) = kv(last + line + b, s * line + a);
     }
   }
-  RowMajor x = RowMajor::Zero(ni, 2 * line);  // C^-1 K_ib
-  x.block(0, 0, line, line) = kl;
-  x.block(last, line, line, line) = kr;
+  // Every product the lines need is a' C^-1 b = (L^-1 a)' (L^-1 b) with C = L L': forward passes
+  // only, the left line's coupling over the whole inside, the right line's over its last station
+  // (below which L^-1 of it is zero).
+  RowMajor v = RowMajor::Zero(ni, 2 * line);  // L^-1 K_ib: the left line's, then the right's
+  v.block(0, 0, line, line) = kl;
+  v.block(last, line, line, line) = kr;
   std::vector<int> first(static_cast<std::size_t>(2 * line), 0);
   std::fill(first.begin() + line, first.end(), last);
-  c.Solve(x.data(), 2 * line, first);
+  c.Forward(v.data(), 2 * line, first);
+  const auto v_left = v.leftCols(line);
+  const auto v_right = v.block(last, line, line, line);  // its only rows that are not zero
   // The patterns: each row's face weights (the mean's), then for order 1 each row's body weights
   // and the group's z-weighted body weights (z from the group's first station).
   const bool body = m.order == 1;
@@ -536,13 +545,14 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
       }
     }
   }
-  RowMajor y = pattern.middleRows(line, ni);  // C^-1 on the inside's part
-  c.Solve(y.data(), np, std::vector<int>(static_cast<std::size_t>(np), 0));
+  RowMajor y = pattern.middleRows(line, ni);  // L^-1 on the inside's part
+  c.Forward(y.data(), np, std::vector<int>(static_cast<std::size_t>(np), 0));
   // The patterns condensed onto the two lines, and what they do inside: o_i' C^-1 f_i.
   Eigen::MatrixXd condensed(2 * line, np);
-  condensed.topRows(line) = pattern.topRows(line) - kl.transpose() * y.topRows(line);
-  condensed.bottomRows(line) = pattern.bottomRows(line) - kr.transpose() * y.middleRows(last, line);
-  const Eigen::MatrixXd inside = pattern.middleRows(line, ni).transpose() * y;
+  condensed.topRows(line) = pattern.topRows(line) - v_left.transpose() * y;
+  condensed.bottomRows(line) =
+      pattern.bottomRows(line) - v_right.transpose() * y.middleRows(last, line);
+  const Eigen::MatrixXd inside = y.transpose() * y;
 
   // The lines' system: each group's S on its two lines, band 2 lines wide.
   const int n_lines = (groups + 1) * line;
@@ -552,16 +562,16 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
     for (int i = 0; i < line; ++i) {
       for (int j = 0; j < line; ++j) a(i, j) = kv(i, j);
     }
-    return Eigen::MatrixXd(a - kl.transpose() * x.block(0, 0, line, line));
+    return Eigen::MatrixXd(a - v_left.transpose() * v_left);
   }();
   const Eigen::MatrixXd s_rr = [&] {
     Eigen::MatrixXd a(line, line);
     for (int i = 0; i < line; ++i) {
       for (int j = 0; j < line; ++j) a(i, j) = kv(s * line + i, s * line + j);
     }
-    return Eigen::MatrixXd(a - kr.transpose() * x.block(last, line, line, line));
+    return Eigen::MatrixXd(a - v_right.transpose() * v_right);
   }();
-  const Eigen::MatrixXd s_rl = -kr.transpose() * x.block(last, 0, line, line);
+  const Eigen::MatrixXd s_rl = -v_right.transpose() * v_left.middleRows(last, line);
   for (int g = 0; g < groups; ++g) {
     const int l0 = g * line, r0 = (g + 1) * line;
     for (int i = 0; i < line; ++i) {
@@ -669,7 +679,10 @@ int GroupRows(const ElementMesh& m, AxialCoupling::Elimination elimination) {
     const double inside = (m.per_row * k - 1) * line;
     const double patterns = m.order == 1 ? 2 * k + 1 : k;
     const double lines = (m.rows / k + 1) * line, width = 2 * line;
-    const double cost = inside * w * w / 2 + (2 * line + patterns) * 2 * inside * w +
+    // The inside's factor, its forward passes (the left line's coupling and the patterns; the
+    // right line's covers one station) and their products, then the lines' band.
+    const double cost = inside * w * w / 2 + (line + patterns) * inside * w +
+                        inside * (line + patterns) * (line + patterns) / 2 +
                         lines * width * width / 2 + loads * 2 * lines * width;
     if (cost < best_cost) {
       best_cost = cost;
