@@ -185,7 +185,7 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
   out.centre = AlgebraicCircle(points).centre;
   Eigen::VectorXd rho(n), cs(n), sn(n);
   // The points about the centre, as whole arrays (vectorised: point by point, the divisions' and
-  // the square root's latency was most of an evaluation).
+  // the square root's latency was most of this function's own time).
   Eigen::ArrayXd dx(n), dy(n);
   auto polar = [&]() {
     dx = points.row(0).transpose().array() - out.centre.x();

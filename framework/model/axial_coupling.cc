@@ -511,7 +511,7 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
   }
   // Every product the lines need is a' C^-1 b = (L^-1 a)' (L^-1 b) with C = L L': forward passes
   // only, the left line's coupling over the whole inside, the right line's over its last station
-  // (below which L^-1 of it is zero).
+  // (above which L^-1 of it is zero).
   RowMajor v = RowMajor::Zero(ni, 2 * line);  // L^-1 K_ib: the left line's, then the right's
   v.block(0, 0, line, line) = kl;
   v.block(last, line, line, line) = kr;
@@ -600,7 +600,8 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
     const int j = m.solved_from + c0, g = j / k;
     u.col(c0).segment(g * line, 2 * line) += m.face * m.length[j] * condensed.col(j % k);
   }
-  // A group's body weights (b = 1) and its z-weighted ones from the part's start.
+  // Each group's body weights for b = 1, and for b = z its first station's z times them plus its
+  // own z-weighted ones (z in the rows' coordinates, as the whole band's).
   const Eigen::VectorXd group_body =
       body ? Eigen::VectorXd(condensed.middleCols(k, k).rowwise().sum()) : Eigen::VectorXd();
   for (int g = 0; body && g < groups; ++g) {

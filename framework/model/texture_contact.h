@@ -56,7 +56,7 @@ class FITFEEL_API ExpectedInterferenceTable {
   // +inf for a sharp contact. Bounds the error of interpolating E[(X - g)+] linearly in g.
   double max_density() const { return max_density_; }
   // E[(X - g)+], or max(0, -g) for a sharp contact. Inline: prepare calls it once per cell and
-  // step (a call into the library per cell was a quarter of a paper-law prepare).
+  // step (that loop, calling into the library per cell, was a quarter of a paper-law prepare).
   double operator()(double gap) const noexcept {
     if (sharp_) return gap < 0.0 ? -gap : 0.0;
     if (gap >= upper_) return 0.0;
