@@ -38,18 +38,13 @@ int AddRing(TriangleMesh* mesh, double radius, double y, int facets) {
 }
 
 // Quad between ring a (at lower y) and ring b (higher y), facet i, with its normal pointing
-// outward (away from the axis) when `outward`, inward otherwise.
-void AddWallQuad(TriangleMesh* mesh, int a, int b, int i, int facets, bool outward) {
+// outward (away from the axis).
+void AddWallQuad(TriangleMesh* mesh, int a, int b, int i, int facets) {
   const int j = (i + 1) % facets;
   // Angle grows from +x towards +z: (a_i, b_i, b_j) has the normal (sin, 0, 1 - cos) of a small
-  // step, i.e. radially out; the reverse order points into the hole.
-  if (outward) {
-    mesh->triangles.emplace_back(a + i, b + i, b + j);
-    mesh->triangles.emplace_back(a + i, b + j, a + j);
-  } else {
-    mesh->triangles.emplace_back(a + i, b + j, b + i);
-    mesh->triangles.emplace_back(a + i, a + j, b + j);
-  }
+  // step, i.e. radially out.
+  mesh->triangles.emplace_back(a + i, b + i, b + j);
+  mesh->triangles.emplace_back(a + i, b + j, a + j);
 }
 
 // The planar quad of corners first + corner[0..3] (in cyclic order) of a convex solid whose
@@ -113,7 +108,7 @@ TriangleMesh MakeClosedFrustum(double radius0, double radius1, double y0, double
   mesh.vertices.emplace_back(0.0, y1, 0.0);
   for (int i = 0; i < facets; ++i) {
     const int j = (i + 1) % facets;
-    AddWallQuad(&mesh, low, high, i, facets, /*outward=*/true);
+    AddWallQuad(&mesh, low, high, i, facets);
     // Caps: the low cap faces -y, the high cap +y. From +y, angle (x to z) turns clockwise.
     mesh.triangles.emplace_back(low_centre, low + i, low + j);
     mesh.triangles.emplace_back(high_centre, high + j, high + i);
