@@ -235,10 +235,6 @@ struct ElementBuffers {
   }
 };
 
-}  // namespace
-
-namespace {
-
 // Order 1's V on the axis, which is -U there (u_x single-valued): the entry takes U's unknown.
 constexpr int kTied = -2;
 
@@ -340,8 +336,9 @@ void Assemble(const ElementMesh& m, int from, int to, const Number& number, Band
   }
 }
 
-// Calls add(entry, weight) for order 1's unit body load on the element column iz, layer ir (U
-// takes +b, V takes -b; weight per unit b, before the tie's factor) with z measured from z0.
+// Calls add(entry, weight, z) at each Gauss point for order 1's unit body load on the element
+// column iz, layer ir (U takes +b, V takes -b; weight per unit b, before the tie's factor), z the
+// point's, measured from z0.
 template <typename Add>
 void BodyLoad(const ElementMesh& m, int iz, int ir, double z0, const Add& add) {
   const std::array<int, 4> corner{m.node(iz, ir), m.node(iz, ir + 1), m.node(iz + 1, ir + 1),
@@ -789,8 +786,9 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
   // p cos(n theta), R le / 2 on each end of each element of the loaded face, pushing the face away
   // from the other part; the same weights over the row's length average the face's radial
   // displacement: load_j = R length_j mean_j. So F = mean' K^-1 load, and mean' reads a row's few
-  // face nodes. (The Gram form R (L^-1 mean)' (L^-1 mean) diag(length) saves the back
-  // substitution but costs rows^2 per unknown where the band costs twice its width: more here.)
+  // face nodes. (Over the whole band, the Gram form R (L^-1 mean)' (L^-1 mean) diag(length) saves
+  // the back substitution but costs rows^2 per unknown where the band costs twice its width: more
+  // here; the condensed groups take it, their insides a few rows long.)
   const double face = r[loaded];
   const double open = body.loaded_inside ? 1.0 : -1.0;  // outwards opens a bore, inwards a shaft
   Eigen::VectorXd length(rows);
@@ -833,6 +831,12 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
       group_rows > 0 ? CondensedResponses(mesh, group_rows) : BandResponses(mesh, &buffers);
   Eigen::MatrixXd& half = responses.half;
   if (order == 1) {
+    // A load cos(theta) has a net force and moment, which the rest of the model carries by the
+    // part's rigid offset and tilt: here body forces b(z) = alpha + beta z (per unit volume,
+    // along x: U-load b, V-load -b) balance each row's (inertia relief), so the supports carry
+    // nothing. The two unit body loads once (Responses), each row's share by superposition. With
+    // them each row's centroid displacement along x, the mean of u_x = U cos^2 - V sin^2 over its
+    // volume (integral of (U - V) r dr dz / ((b^2 - a^2) L)): its line is the part's rigid motion.
     const Eigen::MatrixX2d& body_mean = responses.body_mean;
     const Eigen::MatrixX2d& body_centroid = responses.body_centroid;
     Eigen::MatrixXd& centroid = responses.centroid;
