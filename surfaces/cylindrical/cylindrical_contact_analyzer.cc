@@ -910,6 +910,13 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   RigidContactResult r = solver->Solve(sections, freedom_, warm, {}, kHandoff);
   c.target.resize(nc * count);
   c.section_contact.resize(count);
+  // Each section's next solve starts from the contact set its last one found.
+  auto warm_from_last_solve = [&] {
+    for (std::size_t s = 0; s < count; ++s) {
+      c.section_contact[s] = solver->contact_sets()[s];
+      sections[s].warm_contact = c.section_contact[s].data();
+    }
+  };
   c.step.assign(nc * count, 0.0);
   c.back.resize(nc * count);
   // Each Newton step converges in a few solves; this bounds a pathological step's cost.
@@ -972,10 +979,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
       for (std::size_t at = 0; at < nc * count; ++at) c.back[at] = best_shift[at] - c.shift[at];
       shift_gaps(c.back);
       c.shift = best_shift;
-      for (std::size_t s = 0; s < count; ++s) {
-        c.section_contact[s] = solver->contact_sets()[s];
-        sections[s].warm_contact = c.section_contact[s].data();
-      }
+      warm_from_last_solve();
       r = solver->Solve(sections, freedom_, r.next, c.section_shift);
       break;
     }
@@ -994,10 +998,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
       applied *= 0.5;
       shift_gaps(c.back);
       for (std::size_t at = 0; at < nc * count; ++at) c.shift[at] += c.back[at];
-      for (std::size_t s = 0; s < count; ++s) {
-        c.section_contact[s] = solver->contact_sets()[s];
-        sections[s].warm_contact = c.section_contact[s].data();
-      }
+      warm_from_last_solve();
       r = solver->Solve(sections, freedom_, r.next, c.section_shift, kHandoff);
       continue;
     }
@@ -1088,10 +1089,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
         solver->ShiftFullContact(sections, freedom_, c.section_shift, &r)) {
       continue;
     }
-    for (std::size_t s = 0; s < count; ++s) {
-      c.section_contact[s] = solver->contact_sets()[s];
-      sections[s].warm_contact = c.section_contact[s].data();
-    }
+    warm_from_last_solve();
     r = solver->Solve(sections, freedom_, r.next, c.section_shift, kHandoff);
   }
   return r;
