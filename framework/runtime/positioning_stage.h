@@ -40,11 +40,12 @@ class CollisionScratch;
 // Otherwise it collides the parts' coarse meshes (MeshCollider: meshes made of convex solids, as
 // every shipped surface's are, by separating axes; others with FCL; docs/architecture.md,
 // section 4: here and only here, since mesh-mesh queries between mated surfaces cost 1-35 ms) and
-// renders a penalty force k_free * depth along the way out, zero when free. Hands over to the constrained stage once the leading end has
-// reached the entrance (depth >= 0) with the part's axis aligned with the mating axis and inside
-// the entrance's capture radius; on the hand-over tick it renders nothing, since inside the
-// capture radius the entrance's edge break (which the coarse meshes do not model) guides the part
-// and the constrained stage owns the contact from the next tick.
+// renders a penalty force k_free * depth along the way out, zero when free. Hands over to the
+// constrained stage once the leading end has reached the entrance (depth >= 0) with the part's axis
+// aligned with the mating axis and inside the entrance's capture radius; on the hand-over tick it
+// renders nothing, since inside the capture radius the entrance's edge break (which the coarse
+// meshes do not model) guides the part and the constrained stage owns the contact from the next
+// tick.
 //
 // Without coarse meshes (the default constructor, or a surface type whose MakeCoarseMeshes keeps
 // the default), free motion is collision-free: the part passes through the fixed one's face.
