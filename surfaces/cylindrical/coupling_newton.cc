@@ -178,11 +178,10 @@ Eigen::MatrixXd CouplingSystem::Dense() const {
   return a;
 }
 
-Eigen::VectorXd CouplingSystem::Solve(const Eigen::VectorXd& rhs) const {
+Eigen::VectorXd CouplingSystem::Solve(const Eigen::VectorXd& rhs, double relative) const {
   const CouplingOperator op(this);
   Eigen::BiCGSTAB<CouplingOperator, ComponentBlocks> solver;
-  // A Newton step needs no more: the iteration around it stops at a thousandth of the shift.
-  solver.setTolerance(1e-6);
+  solver.setTolerance(relative);
   solver.setMaxIterations(100);
   solver.compute(op);
   Eigen::VectorXd x = solver.solve(rhs);

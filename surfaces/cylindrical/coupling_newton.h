@@ -42,8 +42,8 @@ class CouplingSystem {
   Eigen::MatrixXd DiagonalBlock(Eigen::Index component) const;
   // The whole system, dense: for checks and for the fallback.
   Eigen::MatrixXd Dense() const;
-  // dx for `rhs`.
-  Eigen::VectorXd Solve(const Eigen::VectorXd& rhs) const;
+  // dx for `rhs`, to a residual of `relative` times |rhs|.
+  Eigen::VectorXd Solve(const Eigen::VectorXd& rhs, double relative) const;
 
  private:
   Eigen::Index sections_ = 0;
