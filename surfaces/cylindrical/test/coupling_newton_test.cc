@@ -1,0 +1,96 @@
+#include "surfaces/cylindrical/coupling_newton.h"
+
+#include <random>
+#include <vector>
+
+#include <Eigen/LU>
+
+// After the project headers: <signal.h> (via gtest) defines a macro named si_value.
+#include <gtest/gtest.h>
+
+namespace fitfeel::cylindrical {
+namespace {
+
+// A system of the analyzer's shape: five components (the breathing mode, then cos and sin of two
+// orders), each mode's coupling symmetric positive definite between sections, each section's
+// response a positive semidefinite block, and a rank-4 pose term.
+CouplingSystem RandomSystem(Eigen::Index sections, unsigned seed) {
+  std::mt19937 draw(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto random = [&](Eigen::Index rows, Eigen::Index cols) {
+    Eigen::MatrixXd a(rows, cols);
+    for (Eigen::Index j = 0; j < cols; ++j) {
+      for (Eigen::Index i = 0; i < rows; ++i) a(i, j) = unit(draw);
+    }
+    return a;
+  };
+  CouplingSystem system;
+  system.Reset(sections, {0, 1, 1, 2, 2});
+  for (int mode = 0; mode < 3; ++mode) {
+    const Eigen::MatrixXd a = random(sections, sections);
+    system.mode_coupling(mode) = 0.1 * a * a.transpose() / static_cast<double>(sections);
+    system.mode_coupling(mode).diagonal().array() += 0.2;
+  }
+  for (Eigen::Index s = 0; s < sections; ++s) {
+    const Eigen::MatrixXd r = random(5, 5);
+    system.response(s) = r * r.transpose();
+  }
+  system.pose_out() = 0.1 * random(system.size(), 4);
+  system.PoseCoupled();
+  system.pose_in() = 0.1 * random(4, system.size());
+  return system;
+}
+
+Eigen::VectorXd RandomVector(Eigen::Index n, unsigned seed) {
+  std::mt19937 draw(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Eigen::VectorXd v(n);
+  for (Eigen::Index i = 0; i < n; ++i) v[i] = unit(draw);
+  return v;
+}
+
+TEST(CouplingSystem, ItsProductsAndBlocksAreTheDefinitions) {
+  CouplingSystem system = RandomSystem(7, 1);  // its accessors fill it: not const
+  const Eigen::MatrixXd dense = system.Dense();
+  // Dense() is built from Apply: check it against the definition, I + M diag(R) - out in.
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(system.size(), system.size());
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(system.size(), system.size());
+  const std::vector<int> mode_of{0, 1, 1, 2, 2};
+  const Eigen::Index n = system.sections();
+  for (Eigen::Index c = 0; c < 5; ++c) {
+    m.block(c * n, c * n, n, n) = system.mode_coupling(mode_of[static_cast<std::size_t>(c)]);
+    for (Eigen::Index s = 0; s < n; ++s) {
+      for (Eigen::Index d = 0; d < 5; ++d) {
+        r(c * n + s, d * n + s) = system.response(s)(c, d);
+      }
+    }
+  }
+  const Eigen::MatrixXd expected = Eigen::MatrixXd::Identity(system.size(), system.size()) + m * r -
+                                   system.pose_out() * system.pose_in();
+  EXPECT_LE((dense - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  for (Eigen::Index c = 0; c < 5; ++c) {
+    EXPECT_LE((system.DiagonalBlock(c) - dense.block(c * n, c * n, n, n)).cwiseAbs().maxCoeff(),
+              1e-12 * expected.cwiseAbs().maxCoeff());
+  }
+}
+
+// The Newton step is solved to the relative residual it is asked for (the analyzer asks for its
+// own tolerance, a thousandth), and to rounding when asked for that.
+TEST(CouplingSystem, SolvesToTheResidualItIsAskedFor) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const CouplingSystem system = RandomSystem(4 + static_cast<Eigen::Index>(seed % 9), seed);
+    const Eigen::MatrixXd dense = system.Dense();
+    const Eigen::VectorXd rhs = RandomVector(system.size(), 100 + seed);
+    const Eigen::VectorXd exact = dense.partialPivLu().solve(rhs);
+    for (double relative : {1e-3, 1e-6, 1e-12}) {
+      const Eigen::VectorXd x = system.Solve(rhs, relative);
+      // BiCGSTAB's recursively updated residual may drift from the true one at rounding.
+      EXPECT_LE((dense * x - rhs).norm(), 2.0 * relative * rhs.norm() + 1e-13 * rhs.norm())
+          << "seed " << seed << ", relative " << relative;
+    }
+    EXPECT_LE((system.Solve(rhs, 1e-12) - exact).norm(), 1e-9 * exact.norm()) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::cylindrical
