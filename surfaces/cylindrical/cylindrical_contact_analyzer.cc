@@ -936,8 +936,8 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   // the halvings then gain a tenth a cycle (full, half, quarter, eighth step, and full again:
   // measured on the pin, cycles to the bound on solves from 3 tolerances off). Within
   // kKinkTolerances the best point is taken at once: the pin's coupling iterations 300 -> 205,
-  // its axial force within 4e-4 of itself, the press fits unchanged (none is that close when it
-  // meets a kink); at the stall's 10 an H7/n6's force moved by 7e-3, so the bound stays tighter.
+  // its axial force within 4e-4 of itself, an H7/n6's unchanged (its kinks meet it further out);
+  // at the stall's 10 the H7/n6's force moved by 7e-3, so this bound stays the tighter.
   constexpr double kKinkTolerances = 4.0;
   double last_residual = std::numeric_limits<double>::infinity(), applied = 1.0;
   double best_residual = std::numeric_limits<double>::infinity(), best_ratio = 0.0;
@@ -1090,9 +1090,9 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     const Eigen::VectorXd rhs = Eigen::Map<const Eigen::VectorXd>(c.target.data(), n_all) -
                                 Eigen::Map<const Eigen::VectorXd>(c.shift.data(), n_all);
     // An inexact Newton step: solved to the iteration's own relative tolerance, it leaves a
-    // thousandth of the residual it is given, below the tolerance from any start; to 1e-6 (until
-    // stop 37) it took twice the BiCGSTAB iterations (the pin: 10.5 -> 5.0 a solve, an H7/n6's
-    // 19 -> 9.2) and moved the axial forces by 5e-5 (the pin) and 1e-5 (H7/n6) of themselves.
+    // thousandth of the residual it is given, below the tolerance from any start; solved to 1e-6
+    // it took twice the BiCGSTAB iterations (the pin: 5.0 -> 10.5 a solve, an H7/n6's 9.2 -> 19)
+    // for axial forces that differ by 5e-5 (the pin) and 1e-5 (H7/n6) of themselves.
     Eigen::Map<Eigen::VectorXd>(c.step.data(), n_all) = system.Solve(rhs, kShiftTolerance);
     shift_gaps(c.step);
     for (std::size_t at = 0; at < nc * count; ++at) c.shift[at] += c.step[at];
