@@ -265,6 +265,11 @@ struct ElementMesh {
   int solved_from = 0, solved = 0;  // the loads solved: rows solved_from .. rows - 1
 
   int node(int iz, int ir) const { return iz * nr + ir; }
+  // b^2 - a^2 of the part's outer and inner radii: a row's volume per its length (per pi), and
+  // the rigid motions' moments.
+  double RadiiSquared() const {
+    return body->outer_radius * body->outer_radius - body->inner_radius * body->inner_radius;
+  }
   // A node's unknown and its factor: a tied V is U's unknown, negated.
   std::pair<int, double> unknown(int entry) const {
     const int p = dof[static_cast<std::size_t>(entry)];
@@ -407,8 +412,7 @@ Responses BandResponses(const ElementMesh& m, ElementBuffers* buffers) {
   // centroid_of(i, p): row i's centroid displacement per unknown p.
   Eigen::SparseMatrix<double, Eigen::RowMajor> centroid_of(rows, m.free);
   std::vector<Eigen::Triplet<double>> entries;
-  const AxialBody& body = *m.body;
-  const double a2 = body.outer_radius * body.outer_radius - body.inner_radius * body.inner_radius;
+  const double a2 = m.RadiiSquared();
   for (int iz = 0; iz + 1 < m.nz; ++iz) {
     const int row = iz / m.per_row;
     const double volume = a2 * m.length[row];
@@ -623,8 +627,7 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
   // Readouts: each row's mean (and centroid) against every load, plus what both do inside.
   Responses out;
   out.half.resize(m.rows, m.solved);
-  const AxialBody& part = *m.body;
-  const double a2 = part.outer_radius * part.outer_radius - part.inner_radius * part.inner_radius;
+  const double a2 = m.RadiiSquared();
   if (body) {
     out.centroid.resize(m.rows, m.solved);
     out.body_mean.resize(m.rows, 2);
@@ -852,7 +855,7 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
     const Eigen::MatrixX2d& body_mean = responses.body_mean;
     const Eigen::MatrixX2d& body_centroid = responses.body_centroid;
     Eigen::MatrixXd& centroid = responses.centroid;
-    const double a2 = body.outer_radius * body.outer_radius - body.inner_radius * body.inner_radius;
+    const double a2 = mesh.RadiiSquared();
     // Generalised forces (per pi) on the rigid motions: a body load b integrates to
     // 2 integral of b r dr dz on both; row j's face load to open R L_j and open R L_j z_j.
     const double z0 = row_edges[0], z1 = row_edges[rows];
