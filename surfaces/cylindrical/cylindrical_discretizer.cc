@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
@@ -65,11 +66,18 @@ SurfaceGrid CylindricalDiscretizer::DoDiscretize(const PartSpec& part,
   g.normal.resize(3, g.size());
   const double cell_area = std::numbers::pi * geometry.diameter() * geometry.length() / g.size();
   g.area = Eigen::VectorXd::Constant(g.size(), cell_area);
+  // Every row has the same column directions: one cosine and sine per column, not per cell (at
+  // the paper's 40 x 360 they were most of the discretization).
+  std::vector<double> c(static_cast<std::size_t>(g.columns)), s(c.size());
+  for (int j = 0; j < g.columns; ++j) {
+    c[static_cast<std::size_t>(j)] = std::cos(g.column_angle(j));
+    s[static_cast<std::size_t>(j)] = std::sin(g.column_angle(j));
+  }
   for (int i = 0; i < g.rows; ++i) {
     for (int j = 0; j < g.columns; ++j) {
-      const double c = std::cos(g.column_angle(j)), s = std::sin(g.column_angle(j));
-      g.normal.col(g.index(i, j)) << c, 0.0, s;
-      g.centre.col(g.index(i, j)) << radius * c, g.row_position(i), radius * s;
+      const auto k = static_cast<std::size_t>(j);
+      g.normal.col(g.index(i, j)) << c[k], 0.0, s[k];
+      g.centre.col(g.index(i, j)) << radius * c[k], g.row_position(i), radius * s[k];
     }
   }
   return g;
