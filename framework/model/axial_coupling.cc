@@ -211,7 +211,7 @@ class BandCholesky {
     for (int i = 0; i < n_; ++i) {
       while (live < cols && first[static_cast<std::size_t>(live)] <= i) ++live;
       double* xi = x + static_cast<std::size_t>(i) * cols;
-      const int lo = std::max({0, i - w_, block_ > 0 ? (i / block_ - 1) * block_ : 0});
+      const int lo = FirstInRow(i);
       // Row i of L holds columns lo .. i - 1 contiguously, the rows of X they take are adjacent.
       SubtractCombination(xi, x + static_cast<std::size_t>(lo) * cols, cols, &at(i, lo), i - lo,
                           live);
@@ -221,7 +221,11 @@ class BandCholesky {
   }
 
  private:
-  // The last row whose entry in column k may be nonzero.
+  // The profile, both ways: the first column of row i and the last row of column k that may be
+  // nonzero (the band's edge, or with `block` the edge of the blocks beside the diagonal's).
+  int FirstInRow(int i) const {
+    return std::max({0, i - w_, block_ > 0 ? (i / block_ - 1) * block_ : 0});
+  }
   int LastInColumn(int k) const {
     const int last = block_ > 0 ? (k / block_ + 2) * block_ - 1 : n_ - 1;
     return std::min(last, n_ - 1);
