@@ -11,19 +11,22 @@
 namespace fitfeel::cylindrical {
 namespace {
 
+// Entries uniform in [-1, 1], drawn column by column.
+Eigen::MatrixXd Uniform(Eigen::Index rows, Eigen::Index cols, std::mt19937& draw) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  Eigen::MatrixXd a(rows, cols);
+  for (Eigen::Index j = 0; j < cols; ++j) {
+    for (Eigen::Index i = 0; i < rows; ++i) a(i, j) = unit(draw);
+  }
+  return a;
+}
+
 // A system of the analyzer's shape: five components (the breathing mode, then cos and sin of two
 // orders), each mode's coupling symmetric positive definite between sections, each section's
 // response a positive semidefinite block, and a rank-4 pose term.
 CouplingSystem RandomSystem(Eigen::Index sections, unsigned seed) {
   std::mt19937 draw(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  auto random = [&](Eigen::Index rows, Eigen::Index cols) {
-    Eigen::MatrixXd a(rows, cols);
-    for (Eigen::Index j = 0; j < cols; ++j) {
-      for (Eigen::Index i = 0; i < rows; ++i) a(i, j) = unit(draw);
-    }
-    return a;
-  };
+  auto random = [&](Eigen::Index rows, Eigen::Index cols) { return Uniform(rows, cols, draw); };
   CouplingSystem system;
   system.Reset(sections, {0, 1, 1, 2, 2});
   for (int mode = 0; mode < 3; ++mode) {
@@ -39,14 +42,6 @@ CouplingSystem RandomSystem(Eigen::Index sections, unsigned seed) {
   system.PoseCoupled();
   system.pose_in() = 0.1 * random(4, system.size());
   return system;
-}
-
-Eigen::VectorXd RandomVector(Eigen::Index n, unsigned seed) {
-  std::mt19937 draw(seed);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  Eigen::VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v[i] = unit(draw);
-  return v;
 }
 
 TEST(CouplingSystem, ItsProductsAndBlocksAreTheDefinitions) {
@@ -80,7 +75,8 @@ TEST(CouplingSystem, SolvesToTheResidualItIsAskedFor) {
   for (unsigned seed = 1; seed <= 20; ++seed) {
     const CouplingSystem system = RandomSystem(4 + static_cast<Eigen::Index>(seed % 9), seed);
     const Eigen::MatrixXd dense = system.Dense();
-    const Eigen::VectorXd rhs = RandomVector(system.size(), 100 + seed);
+    std::mt19937 draw(100 + seed);
+    const Eigen::VectorXd rhs = Uniform(system.size(), 1, draw);
     const Eigen::VectorXd exact = dense.partialPivLu().solve(rhs);
     for (double relative : {1e-3, 1e-6, 1e-12}) {
       const Eigen::VectorXd x = system.Solve(rhs, relative);
