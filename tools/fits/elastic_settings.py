@@ -55,7 +55,7 @@ def variant(text, keys):
 
 
 def run(fitfeel, scenario, seed, out):
-    """(prepare seconds, mean axial resistance, [(depth, axial force)] of the constrained stage)."""
+    """(prepare seconds, mean axial resistance, the constrained stage's axial force per tick)."""
     env = dict(os.environ, FITFEEL_PREPARE_THREADS="1")
     subprocess.run([fitfeel, "run", scenario, "--out", out, "--seed", str(seed)], check=True,
                    env=env, stdout=subprocess.DEVNULL)
