@@ -34,6 +34,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -243,11 +244,22 @@ class TableReporter final : public benchmark::ConsoleReporter {
 }  // namespace
 }  // namespace fitfeel
 
-int main(int argc, char** argv) {
+// Registers a benchmark per scene (and its scan and hand variants) and runs them. Throws what a
+// scene that does not load, or a missing plugin, throws.
+static int RunScenes(int argc, char** argv) {
   using namespace fitfeel;
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(ScenarioDir())) {
-    if (entry.path().extension() == ".yaml") files.push_back(entry.path());
+  const fs::path folder = ScenarioDir();
+  std::error_code error;
+  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    if (it->path().extension() == ".yaml") files.push_back(it->path());
+  }
+  if (error || files.empty()) {
+    std::fprintf(stderr,
+                 "scene_benchmark: no scenario files (*.yaml) in '%s'%s%s; run it from the "
+                 "repository's root or set FITFEEL_SOURCE_DIR to it\n",
+                 folder.string().c_str(), error ? ": " : "", error ? error.message().c_str() : "");
+    return 2;
   }
   std::sort(files.begin(), files.end());
   for (const fs::path& file : files) {
@@ -277,4 +289,13 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return RunScenes(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "scene_benchmark: %s\n", e.what());
+    return 2;
+  }
 }
