@@ -25,6 +25,25 @@ ContactSection Slice(const std::vector<double>& gap, double length, double d = 0
   return s;
 }
 
+// A part `length` long in gaps->size() equal slices about its middle, slice i's gap at column j
+// (of n, at angle theta) gap(i, theta), free to tilt under a radial load of (30, -50) N.
+template <typename Gap>
+std::vector<ContactSection> LoadedStack(std::vector<std::vector<double>>* gaps, int n,
+                                        double length, const Gap& gap, RigidFreedom* freedom) {
+  const int rows = static_cast<int>(gaps->size());
+  std::vector<ContactSection> sections;
+  for (int i = 0; i < rows; ++i) {
+    (*gaps)[i].resize(n);
+    for (int j = 0; j < n; ++j) (*gaps)[i][j] = gap(i, 2 * kPi * j / n);
+    ContactSection s = Slice((*gaps)[i], length / rows);
+    s.y = (i + 0.5) * length / rows - length / 2;
+    sections.push_back(s);
+  }
+  freedom->tilt = true;
+  freedom->force = Eigen::Vector2d(30.0, -50.0);
+  return sections;
+}
+
 TEST(CirculantContact, SolutionIsComplementary) {
   const int n = 72;
   CirculantContact c(CirculantCompliance(SteelPair(), n), n);
@@ -228,20 +247,14 @@ TEST(RigidSectionContact, ShiftFullContactIsTheSolveOfShiftedGaps) {
 TEST(RigidSectionContact, AHandedOffSolveResumedReachesTheSameEquilibrium) {
   const int n = 48, rows = 8;
   const double l = 0.016;
-  std::vector<std::vector<double>> gaps(rows, std::vector<double>(n));
-  std::vector<ContactSection> sections;
-  for (int i = 0; i < rows; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const double theta = 2 * kPi * j / n;
-      gaps[i][j] = -1e-6 + 3e-6 * std::cos(3 * theta + 0.4 * i) + 0.3e-6 * i * std::sin(theta);
-    }
-    ContactSection s = Slice(gaps[i], l / rows);
-    s.y = (i + 0.5) * l / rows - l / 2;
-    sections.push_back(s);
-  }
+  std::vector<std::vector<double>> gaps(rows);
   RigidFreedom freedom;
-  freedom.tilt = true;
-  freedom.force = Eigen::Vector2d(30.0, -50.0);
+  const std::vector<ContactSection> sections = LoadedStack(
+      &gaps, n, l,
+      [](int i, double theta) {
+        return -1e-6 + 3e-6 * std::cos(3 * theta + 0.4 * i) + 0.3e-6 * i * std::sin(theta);
+      },
+      &freedom);
   RigidSectionContact full(SteelPair(), n), joint(SteelPair(), n);
   const RigidContactResult expected = full.Solve(sections, freedom, Eigen::Vector4d::Zero());
   ASSERT_TRUE(expected.converged);
@@ -264,6 +277,66 @@ TEST(RigidSectionContact, AHandedOffSolveResumedReachesTheSameEquilibrium) {
   EXPECT_NEAR(r.resultant.y(), -50.0, 1e-6);
   // A converged solve returns its own pose as the next point.
   EXPECT_EQ(expected.next.head<2>(), expected.offset);
+}
+
+// Only speed depends on the warm contact sets: an oval shaft in partial contact (interfering by
+// 3 um on two narrow lobes, 0.3 um clear between them) reaches the same equilibrium from none,
+// from the answer's own sets, from every column, from the columns out of contact, and from random
+// flags. The answer's sets hold columns whose rigid gap is open at the equilibrium (the lobes'
+// pressure ovalises the parts and closes them), which is why a warm set keeps such columns
+// instead of dropping them.
+TEST(RigidSectionContact, AnyWarmContactSetReachesTheSameEquilibrium) {
+  const int n = 48, rows = 8;
+  const double l = 0.016, clear = 0.3e-6, lobe = 3e-6;
+  std::vector<std::vector<double>> gaps(rows);
+  RigidFreedom freedom;
+  const std::vector<ContactSection> sections = LoadedStack(
+      &gaps, n, l,
+      [&](int i, double theta) {
+        return clear - (lobe + clear) * std::pow(std::cos(theta + 0.05 * i), 8);
+      },
+      &freedom);
+  RigidSectionContact cold(SteelPair(), n);
+  const RigidContactResult expected = cold.Solve(sections, freedom, Eigen::Vector4d::Zero());
+  ASSERT_TRUE(expected.converged);
+  std::vector<std::vector<char>> answer = cold.contact_sets();
+  // Columns in contact although the rigid parts, at the equilibrium's pose, leave them open.
+  int closed_by_deformation = 0, in_contact = 0;
+  for (int i = 0; i < rows; ++i) {
+    const Eigen::Vector2d e = expected.offset + sections[i].y * expected.tilt;
+    for (int j = 0; j < n; ++j) {
+      const double theta = 2 * kPi * j / n;
+      if (!answer[i][j]) continue;
+      ++in_contact;
+      if (e.x() * std::cos(theta) + e.y() * std::sin(theta) <= gaps[i][j]) ++closed_by_deformation;
+    }
+  }
+  EXPECT_GT(in_contact, 0);
+  EXPECT_LT(in_contact, rows * n);  // partial contact, else the warm sets matter for nothing
+  EXPECT_GT(closed_by_deformation, 0);
+
+  std::mt19937 rng(7);
+  std::bernoulli_distribution coin(0.5);
+  std::vector<std::vector<char>> all(rows, std::vector<char>(n, 1)), open(rows), random(rows);
+  for (int i = 0; i < rows; ++i) {
+    open[i].resize(n);
+    random[i].resize(n);
+    for (int j = 0; j < n; ++j) {
+      open[i][j] = !answer[i][j];
+      random[i][j] = coin(rng) ? 1 : 0;
+    }
+  }
+  for (const auto* warm : {&answer, &all, &open, &random}) {
+    std::vector<ContactSection> started = sections;  // the same gaps, with warm sets
+    for (int i = 0; i < rows; ++i) started[i].warm_contact = (*warm)[i].data();
+    RigidSectionContact solver(SteelPair(), n);
+    const RigidContactResult r = solver.Solve(started, freedom, Eigen::Vector4d::Zero());
+    ASSERT_TRUE(r.converged);
+    EXPECT_NEAR(r.normal_force, expected.normal_force, 1e-9 * expected.normal_force);
+    EXPECT_LT((r.offset - expected.offset).norm(), 1e-13);
+    EXPECT_LT((r.tilt - expected.tilt).norm(), 1e-13 / l);
+    EXPECT_EQ(solver.contact_sets(), answer);
+  }
 }
 
 }  // namespace
