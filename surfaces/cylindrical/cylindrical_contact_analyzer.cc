@@ -86,18 +86,6 @@ FITFEEL_SIMD_CLONES void EnergyMoments(double* __restrict energy, double* __rest
   }
 }
 
-// The energy alone (a line search's trial).
-FITFEEL_SIMD_CLONES void EnergyOnly(double* __restrict energy, const double* __restrict proj,
-                                    const double* __restrict g, const double* __restrict a,
-                                    std::size_t n) {
-  FITFEEL_NO_FP_CONTRACT
-  for (std::size_t j = 0; j < n; ++j) {
-    const double x = proj[j] - g[j];
-    const double d = x * (x > 0.0 ? 1.0 : 0.0);
-    energy[j] += a[j] * d * d;
-  }
-}
-
 // Each row of a part's variation v (rows x n, row-major) on the elastic solve's n / block columns,
 // whose column i sits at the centre of the grid's block i: the row's Fourier series up to the
 // solve's highest harmonic K = n / (2 block) (K's own term halved, as the solve's circulant takes
@@ -394,25 +382,17 @@ void CylinderContactAnalyzer::StepScratch::Restart(std::size_t columns, std::siz
 }
 
 // Energy sum(w * max(0, p.u_j - st)^2) with its per-column first and second moments, one scan.
-double CylinderContactAnalyzer::Energy(const Eigen::Vector2d& p, bool moments,
-                                       StepScratch* s) const {
+double CylinderContactAnalyzer::Energy(const Eigen::Vector2d& p, StepScratch* s) const {
   const std::size_t n = static_cast<std::size_t>(n_);
-  if (moments) {
-    std::fill(s->col_a.begin(), s->col_a.end(), 0.0);
-    std::fill(s->col_b.begin(), s->col_b.end(), 0.0);
-  }
+  std::fill(s->col_a.begin(), s->col_a.end(), 0.0);
+  std::fill(s->col_b.begin(), s->col_b.end(), 0.0);
   s->col_energy.assign(n, 0.0);
   for (std::size_t j = 0; j < n; ++j) s->proj[j] = p.x() * cos_[j] + p.y() * sin_[j];
   const std::size_t rows = s->st.size() / n;
   for (std::size_t r = 0; r < rows; ++r) {
     const double* g = s->st.data() + r * n;
     const double* a = s->w.data() + r * n;
-    if (moments) {
-      EnergyMoments(s->col_energy.data(), s->col_a.data(), s->col_b.data(), s->proj.data(), g, a,
-                    n);
-    } else {
-      EnergyOnly(s->col_energy.data(), s->proj.data(), g, a, n);
-    }
+    EnergyMoments(s->col_energy.data(), s->col_a.data(), s->col_b.data(), s->proj.data(), g, a, n);
   }
   double e = 0.0;
   for (std::size_t j = 0; j < n; ++j) e += s->col_energy[j];
@@ -567,7 +547,7 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
     Eigen::Vector2d p = s->warm;
     // Trial points are evaluated with their moments, so that an accepted one is the next
     // iteration's point without a second scan of the cells (each scan is most of a step's cost).
-    double e0 = Energy(p, true, s);
+    double e0 = Energy(p, s);
     for (int it = 0; it < 100; ++it) {
       ++s->newton_iterations;
       Eigen::Vector2d grad(0.0, 0.0);
@@ -583,10 +563,10 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
       const Eigen::Vector2d dir = -hess.ldlt().solve(grad);
       double alpha = 1.0;
       const double slope = grad.dot(dir);
-      double trial = Energy(p + alpha * dir, true, s);
+      double trial = Energy(p + alpha * dir, s);
       while (alpha > 1e-12 && trial > e0 + 1e-4 * alpha * slope) {
         alpha *= 0.5;
-        trial = Energy(p + alpha * dir, true, s);
+        trial = Energy(p + alpha * dir, s);
       }
       p += alpha * dir;
       e0 = trial;

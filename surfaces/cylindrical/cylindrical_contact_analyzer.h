@@ -185,8 +185,9 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // Fills every table entry of depth step k, step t of the scratch's chunk (distinct entries per
   // step: safe across threads).
   void PrepareStep(std::size_t k, std::size_t t, StepScratch* scratch, StepPolygon* polygon);
-  // The sharp-contact energy of the GPS law's equilibrium at offset p over the step's cells.
-  double Energy(const Eigen::Vector2d& p, bool moments, StepScratch* scratch) const;
+  // The sharp-contact energy of the GPS law's equilibrium at offset p over the step's cells; its
+  // per-column moments (the Newton step's gradient and Hessian) in the scratch's col_a, col_b.
+  double Energy(const Eigen::Vector2d& p, StepScratch* scratch) const;
   // Anchor of step k for an axis at x: where the spring of eq. 9 / 12 pulls it.
   Eigen::Vector2d AnchorAt(std::size_t k, const Eigen::Vector2d& x) const noexcept;
   // Interpolation position of a depth: step index k (< K) and weight t of step k + 1.
