@@ -118,6 +118,34 @@ class DualSimplex {
     }
   }
 
+  // Starts from the basis of these columns of M instead of the artificial one: true when they are
+  // d distinct columns whose basis is nonsingular and feasible (B^-1 r >= 0 to rounding).
+  bool Start(const std::vector<int>& columns) {
+    if (static_cast<int>(columns.size()) != d_) return false;
+    std::fill(in_basis_.begin(), in_basis_.end(), 0);
+    for (int k : columns) {
+      if (k < 0 || k >= n_ || in_basis_[static_cast<std::size_t>(k)]) return false;
+      in_basis_[static_cast<std::size_t>(k)] = 1;
+    }
+    for (int i = 0; i < d_; ++i) B_.col(i) = M_.col(columns[static_cast<std::size_t>(i)]);
+    lu_.compute(B_);
+    // A pivot of 1e-12 of the basis's scale: singular for these order-one programs.
+    const double pivot = lu_.matrixLU().diagonal().cwiseAbs().minCoeff();
+    if (!(pivot > 1e-12 * (1.0 + B_.cwiseAbs().maxCoeff()))) return false;
+    xb_ = lu_.solve(r_);
+    if (!(xb_.minCoeff() >= -1e-9 * (1.0 + r_.lpNorm<Eigen::Infinity>()))) return false;
+    basis_ = columns;
+    return true;
+  }
+
+  // The basis's columns of M, or nothing where an artificial one is in it.
+  std::vector<int> RealBasis() const {
+    for (int k : basis_) {
+      if (k >= n_) return {};
+    }
+    return basis_;
+  }
+
   const Eigen::VectorXd& pi() const { return pi_; }
   int d() const { return d_; }
   int n() const { return n_; }
@@ -141,6 +169,11 @@ class DualSimplex {
 
 LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c, const Eigen::MatrixXd& A,
                                           const Eigen::VectorXd& b) {
+  return MinimiseLinearProgram(c, A, b, nullptr);
+}
+
+LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c, const Eigen::MatrixXd& A,
+                                          const Eigen::VectorXd& b, std::vector<int>* basis) {
   const int d = static_cast<int>(c.size());
   const int n = static_cast<int>(A.rows());
   if (A.cols() != d || b.size() != n || d == 0) {
@@ -160,16 +193,18 @@ LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c, const Eigen:
   }
   DualSimplex simplex(M, r);
   LinearProgramResult result;
-  Eigen::VectorXd phase1 = Eigen::VectorXd::Zero(n + d);
-  phase1.tail(d).setOnes();
-  if (!simplex.Run(phase1, true, &result.iterations)) {
-    throw std::runtime_error("linear program: phase 1 unbounded (internal error)");
+  if (basis == nullptr || !simplex.Start(*basis)) {
+    Eigen::VectorXd phase1 = Eigen::VectorXd::Zero(n + d);
+    phase1.tail(d).setOnes();
+    if (!simplex.Run(phase1, true, &result.iterations)) {
+      throw std::runtime_error("linear program: phase 1 unbounded (internal error)");
+    }
+    // Phase-1 optimum: sum of artificials = r . pi.
+    if (r.dot(simplex.pi()) > 1e-9 * (1.0 + r.lpNorm<Eigen::Infinity>())) {
+      throw std::runtime_error("linear program: the primal is unbounded (dual infeasible)");
+    }
+    simplex.DriveOutArtificials();
   }
-  // Phase-1 optimum: sum of artificials = r . pi.
-  if (r.dot(simplex.pi()) > 1e-9 * (1.0 + r.lpNorm<Eigen::Infinity>())) {
-    throw std::runtime_error("linear program: the primal is unbounded (dual infeasible)");
-  }
-  simplex.DriveOutArtificials();
   Eigen::VectorXd phase2(n + d);
   phase2.head(n) = b;
   phase2.tail(d).setZero();
@@ -178,6 +213,7 @@ LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c, const Eigen:
   }
   result.x = sign.cwiseProduct(simplex.pi());
   result.objective = c.dot(result.x);
+  if (basis != nullptr) *basis = simplex.RealBasis();
   return result;
 }
 

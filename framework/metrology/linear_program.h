@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "framework/core/export.h"
@@ -25,5 +27,17 @@ struct LinearProgramResult {
 FITFEEL_API LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c,
                                                       const Eigen::MatrixXd& A,
                                                       const Eigen::VectorXd& b);
+
+// The same, for a cutting-plane or working-set loop that adds rows to A and solves again: `basis`
+// holds (on return) the rows of A whose constraints the optimum's basis holds, d of them, or
+// nothing where the program's basis kept an artificial column. Given on entry (the last call's,
+// with the same c and A's rows then a prefix of these), that basis is still feasible for the dual
+// program, so the simplex starts its second phase there instead of from the artificial basis:
+// a few pivots to admit the new rows instead of a whole solve. A basis that does not fit (wrong
+// size, out of range, singular or infeasible to rounding) is ignored.
+FITFEEL_API LinearProgramResult MinimiseLinearProgram(const Eigen::VectorXd& c,
+                                                      const Eigen::MatrixXd& A,
+                                                      const Eigen::VectorXd& b,
+                                                      std::vector<int>* basis);
 
 }  // namespace fitfeel::metrology
