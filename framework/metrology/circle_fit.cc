@@ -235,6 +235,7 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
         in_set[static_cast<std::size_t>(i)] = 1;
       }
     }
+    std::vector<int> basis;  // the last pass's, for the next (its rows only gain points)
     for (;;) {
       const long m = static_cast<long>(set.size());
       Eigen::MatrixXd A(2 * m, 4);
@@ -248,7 +249,7 @@ RoundnessResult MinimumZoneRoundness(const Eigen::Matrix2Xd& points) {
         A.row(2 * r + 1) << cs(i), sn(i), 1.0, 0.0;
         b(2 * r + 1) = dev(i);
       }
-      lp = MinimiseLinearProgram(c, A, b);
+      lp = MinimiseLinearProgram(c, A, b, &basis);
       // Points outside the zone found (beyond rounding: deviations are of order 1 here).
       bool added = false;
       for (long i = 0; i < n; ++i) {

@@ -109,6 +109,7 @@ CylindricityResult MinimumZoneCylindricity(const CylinderSamples& s) {
   c << 0, 0, 0, 0, -1, 1;
   Eigen::VectorXd x;
   Eigen::MatrixXd residual(m, n);
+  std::vector<int> basis;  // the last round's, for the next (its rows only gain points)
   for (int round = 0; round < 200; ++round) {
     const long w = static_cast<long>(working.size());
     Eigen::MatrixXd A(2 * w, 6);
@@ -120,7 +121,7 @@ CylindricityResult MinimumZoneCylindricity(const CylinderSamples& s) {
       A.row(2 * k + 1) << cs(j), cs(j) * u(i), sn(j), sn(j) * u(i), 1.0, 0.0;  // >= r_in
       rhs(2 * k + 1) = v(i, j);
     }
-    x = MinimiseLinearProgram(c, A, rhs).x;
+    x = MinimiseLinearProgram(c, A, rhs, &basis).x;
     for (long i = 0; i < m; ++i)
       for (long j = 0; j < n; ++j)
         residual(i, j) = v(i, j) - (x(0) + x(1) * u(i)) * cs(j) - (x(2) + x(3) * u(i)) * sn(j);
