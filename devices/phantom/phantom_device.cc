@@ -22,6 +22,11 @@ double Now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// The device's time: a simulated device's own clock where its library gives one, else the host's.
+double DeviceNow(const hd::Library& hd) {
+  return hd.fitfeel_hd_device_time != nullptr ? hd.fitfeel_hd_device_time() : Now();
+}
+
 // The part's axes in the stylus frame. OpenHaptics puts the gimbal's z axis along the stylus,
 // pointing from the tip back towards the hand (the third column of HD_CURRENT_TRANSFORM), so the
 // part's leading direction (its y) is the stylus's -z; x is shared and z = x cross y = the
@@ -141,13 +146,13 @@ void PhantomDevice::Calibrate() {
                    "fitfeel: the haptic device needs calibrating by hand: put the stylus in its "
                    "inkwell (or move each joint through its range); waiting up to %.1f s...\n",
                    settings_.calibration_timeout);
-      const double begin = Now();
+      const double begin = DeviceNow(hd_);
       while (status == HD_CALIBRATION_NEEDS_MANUAL_INPUT &&
-             Now() - begin < settings_.calibration_timeout) {
+             DeviceNow(hd_) - begin < settings_.calibration_timeout) {
         std::this_thread::sleep_for(kCalibrationPoll);
         status = CalibrationStatus();
       }
-      diagnostics_.calibration_wait = Now() - begin;
+      diagnostics_.calibration_wait = DeviceNow(hd_) - begin;
     }
     if (status == HD_CALIBRATION_NEEDS_MANUAL_INPUT) {
       throw UserError(
@@ -329,6 +334,8 @@ void PhantomDevice::RunServoLoop(double duration, const std::function<bool(doubl
   const HDSchedulerHandle scheduled =
       hd_.hdScheduleAsynchronous(&PhantomDevice::ServoCallback, this, HD_MAX_SCHEDULER_PRIORITY);
   CheckError("hdScheduleAsynchronous");
+  // The host's clock even where the device has its own: a scheduler that never ticks stops the
+  // device's clock too.
   const double begin = Now();
   bool stalled = false;
   while (!done_.load(std::memory_order_acquire)) {
@@ -411,7 +418,7 @@ HDCallbackCode PhantomDevice::Servo() noexcept {
   hd_.hdGetDoublev(HD_CURRENT_ANGULAR_VELOCITY, angular);
   hd_.hdGetIntegerv(HD_CURRENT_BUTTONS, &buttons);
   hd_.hdGetDoublev(HD_MOTOR_TEMPERATURE, temperature);
-  const double now = Now();
+  const double now = DeviceNow(hd_);
   if (start_time_ < 0.0) start_time_ = now;
   const double time = now - start_time_;
   const double dt = ticks_.load(std::memory_order_relaxed) > 0 ? time - last_time_ : 0.0;

@@ -121,6 +121,8 @@ using ScheduleAsynchronousFn = HDSchedulerHandle (*)(HDSchedulerCallback, void*,
 using ScheduleSynchronousFn = void (*)(HDSchedulerCallback, void*, HDushort);
 using UnscheduleFn = void (*)(HDSchedulerHandle);
 using SchedulerFn = void (*)();
+// Not OpenHaptics: the optional clock of a simulated device (phantom_hd_library.h).
+using DeviceTimeFn = double (*)();
 
 // Motors the HD_MOTOR_TEMPERATURE array can report (6-DOF output devices have six).
 constexpr int kMaxMotors = 6;

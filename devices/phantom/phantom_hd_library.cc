@@ -130,6 +130,8 @@ Library LoadLibrary() {
   Resolve(handle, "hdUnschedule", hd.path, &hd.hdUnschedule);
   Resolve(handle, "hdStartScheduler", hd.path, &hd.hdStartScheduler);
   Resolve(handle, "hdStopScheduler", hd.path, &hd.hdStopScheduler);
+  hd.fitfeel_hd_device_time =
+      reinterpret_cast<DeviceTimeFn>(dlsym(handle, "fitfeel_hd_device_time"));
   return hd;
 }
 

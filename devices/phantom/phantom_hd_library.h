@@ -30,6 +30,12 @@ struct Library {
   UnscheduleFn hdUnschedule = nullptr;
   SchedulerFn hdStartScheduler = nullptr;
   SchedulerFn hdStopScheduler = nullptr;
+  // Optional, and never in OpenHaptics: a simulated device's own clock, s (`double
+  // fitfeel_hd_device_time(void)`). Where the library has it, the plugin takes the servo ticks'
+  // times and the calibration wait from it instead of the host's steady clock, so that a
+  // simulation whose clock counts servo periods runs the same on a loaded machine as on an idle
+  // one. Null for the real library.
+  DeviceTimeFn fitfeel_hd_device_time = nullptr;
 };
 
 // Where the library is looked for: $FITFEEL_HD_LIBRARY alone when set, else the dynamic loader's

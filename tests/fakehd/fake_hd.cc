@@ -55,7 +55,7 @@ struct State {
   bool in_frame = false;
   HDenum calibration = HD_CALIBRATION_OK;
   double manual_seconds = -1.0;  // < 0: the user never calibrates by hand
-  timespec init_time{};
+  double init_time = 0.0;  // device time (ServoTime) at hdInitDevice
   HDint calibration_styles = HD_CALIBRATION_AUTO | HD_CALIBRATION_INKWELL;
   std::uint64_t force_error_frame = 0;
   std::uint64_t velocity_error_frame = 0;
@@ -75,9 +75,14 @@ struct State {
   double ambient = 0.2;  // the motors' temperature at rest
   double temperature = 0.2;
   bool frame_forced = false;  // a force was set in the current frame
-  timespec last_end{};
+  double last_end = 0.0;  // device time of the last hdEndFrame
   bool has_last_end = false;
   FakeHdStats stats{};
+  // Servo periods begun since the library loaded: the device's clock. The servo thread counts one
+  // per period, so a process that the machine stalls sees no time pass, as if the stall had not
+  // happened: whatever the fake measures in time (the watchdog, the "user" calibrating by hand,
+  // the clock it gives the plugin) is the same on a busy machine as on an idle one.
+  std::atomic<std::uint64_t> servo_periods{0};
   double force[3] = {0, 0, 0};  // what the motors hold
 };
 
@@ -98,6 +103,11 @@ double EnvDouble(const char* name, double fallback) {
 
 double Seconds(const timespec& a, const timespec& b) {
   return static_cast<double>(b.tv_sec - a.tv_sec) + static_cast<double>(b.tv_nsec - a.tv_nsec) * 1e-9;
+}
+
+// The device's clock, s: servo periods at the nominal rate.
+double ServoTime() {
+  return static_cast<double>(S().servo_periods.load(std::memory_order_acquire)) / S().rate;
 }
 
 timespec Monotonic() {
@@ -191,7 +201,7 @@ FAKEHD_EXPORT HHD hdInitDevice(HDstring) {
   if (cal && std::strcmp(cal, "update") == 0) st.calibration = HD_CALIBRATION_NEEDS_UPDATE;
   if (cal && std::strcmp(cal, "manual") == 0) st.calibration = HD_CALIBRATION_NEEDS_MANUAL_INPUT;
   st.manual_seconds = EnvDouble("FAKEHD_MANUAL_SECONDS", -1.0);
-  st.init_time = Monotonic();
+  st.init_time = ServoTime();
   st.calibration_styles = static_cast<HDint>(
       EnvDouble("FAKEHD_CALIBRATION_STYLES", HD_CALIBRATION_AUTO | HD_CALIBRATION_INKWELL));
   st.force_error_frame = static_cast<std::uint64_t>(EnvDouble("FAKEHD_FORCE_ERROR_FRAME", 0));
@@ -275,7 +285,7 @@ FAKEHD_EXPORT HDenum hdCheckCalibration() {
     return HD_CALIBRATION_NEEDS_UPDATE;
   }
   if (st.calibration == HD_CALIBRATION_NEEDS_MANUAL_INPUT && st.manual_seconds >= 0.0 &&
-      Seconds(st.init_time, Monotonic()) >= st.manual_seconds) {
+      ServoTime() - st.init_time >= st.manual_seconds) {
     st.calibration = HD_CALIBRATION_OK;
   }
   return st.calibration;
@@ -400,9 +410,8 @@ FAKEHD_EXPORT void hdBeginFrame(HHD) {
   }
   st.in_frame = true;
   st.frame_forced = false;
-  const timespec now = Monotonic();
   const bool holding = st.force[0] != 0.0 || st.force[1] != 0.0 || st.force[2] != 0.0;
-  if (st.has_last_end && holding && Seconds(st.last_end, now) > st.watchdog) {
+  if (st.has_last_end && holding && ServoTime() - st.last_end > st.watchdog) {
     // The host stopped updating the force: the device's watchdog cuts the motors.
     st.force[0] = st.force[1] = st.force[2] = 0.0;
     ++st.stats.watchdog_faults;
@@ -418,7 +427,7 @@ FAKEHD_EXPORT void hdEndFrame(HHD) {
     return;
   }
   st.in_frame = false;
-  st.last_end = Monotonic();
+  st.last_end = ServoTime();
   st.has_last_end = true;
   ++st.stats.frames;
   const double norm =
@@ -519,6 +528,7 @@ FAKEHD_EXPORT void hdStartScheduler() {
           st.finished.notify_all();
         }
       }
+      st.servo_periods.fetch_add(1, std::memory_order_acq_rel);
       next.tv_nsec += period_ns;
       if (next.tv_nsec >= 1000000000) {
         next.tv_nsec -= 1000000000;
@@ -553,3 +563,7 @@ FAKEHD_EXPORT void hdStopScheduler() {
 }
 
 FAKEHD_EXPORT void fakehd_stats(FakeHdStats* out) { *out = S().stats; }
+
+// The optional entry point through which a simulated HD library gives the plugin its clock
+// (devices/phantom/phantom_hd_library.h).
+FAKEHD_EXPORT double fitfeel_hd_device_time() { return ServoTime(); }

@@ -7,6 +7,9 @@
 //  - the motors keep the last force set until another is set (not zero each frame);
 //  - a watchdog: a frame that begins more than FAKEHD_WATCHDOG_MS after the previous one ended,
 //    while a force is held, cuts the force and raises HD_FORCE_ERROR;
+//  - its clock counts servo periods, not wall time, and the plugin reads it through the optional
+//    entry point fitfeel_hd_device_time: a machine that stalls the test's threads changes nothing
+//    it measures (the watchdog, the fault window, the ramps, the manual calibration's wait);
 //  - calibration (hdCheckCalibration, hdUpdateCalibration) answers only inside the running
 //    scheduler's callbacks; elsewhere it raises HD_INVALID_OPERATION and reports "needs update";
 //  - warm motors persist: once hot, every frame that commands force raises HD_WARM_MOTORS until
@@ -17,7 +20,8 @@
 //   FAKEHD_INIT_FAIL=1            hdInitDevice fails with HD_COMM_ERROR on the error stack
 //   FAKEHD_CALIBRATION=ok|update|manual   what hdCheckCalibration reports (update: until
 //                                 hdUpdateCalibration with a supported style; manual: until
-//                                 FAKEHD_MANUAL_SECONDS after init, when the "user" inkwells it)
+//                                 FAKEHD_MANUAL_SECONDS of servo time after init, when the "user"
+//                                 inkwells it)
 //   FAKEHD_CALIBRATION_STYLES=n   HD_CALIBRATION_STYLE bit mask (default: auto | inkwell)
 //   FAKEHD_FORCE_ERROR_FRAME=n    push HD_EXCEEDED_MAX_FORCE at the end of frame n (1-based)
 //   FAKEHD_VELOCITY_ERROR_FRAME=n push HD_EXCEEDED_MAX_VELOCITY at the end of frame n
