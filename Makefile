@@ -2,6 +2,9 @@
 #   make run    install missing packages, build (Release), run the default scenario and draw
 #               its force trace next to its CSV
 #   make test   install missing packages, build, run the whole test suite
+#   make stress-test  the whole suite STRESS_ROUNDS times (default 5) with more ctest jobs than
+#               cores and a CPU hog on every core (tools/stress/stress_test.sh); reports every
+#               failure
 #   make bench  build (benchmarks on) and run the benchmarks, then every shipped scenario as a
 #               whole run (table of medians)
 #   make clean  remove the build tree and the outputs
@@ -27,11 +30,12 @@ FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_SECONDS ?= 60
 FUZZERS := quantity_fuzzer recording_fuzzer scenario_fuzzer cli_fuzzer
 CAMPAIGN_CASES ?= 10000
+STRESS_ROUNDS ?= 5
 JOBS ?= $(shell nproc)
 # Where `fitfeel run` puts the default scenario's outputs (out/<scenario name>).
 DEFAULT_RUN := out/paper-case1-h7js6
 
-.PHONY: run test bench clean deps fem-deps fuzz-deps configure build fem-check check-sanitizers \
+.PHONY: run test stress-test bench clean deps fem-deps fuzz-deps configure build fem-check check-sanitizers \
         fuzz campaign
 
 # apt-get only for what dpkg does not already list as installed; update only then.
@@ -62,6 +66,9 @@ run: build
 
 test: build
 	ctest --preset release
+
+stress-test: build
+	tools/stress/stress_test.sh build $(STRESS_ROUNDS)
 
 # Benchmarks are off in a plain configure (they measure, the tests assert): switched on here.
 bench: deps
