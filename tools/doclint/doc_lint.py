@@ -13,8 +13,8 @@ Rules:
   history-word   a work-history word (see HISTORY_PATTERNS) in a Markdown, source, CMake, script
                  or scenario file. Docs and comments say what is true now and how to check it;
                  the history of the work belongs in the commit messages.
-  missing-path   a backticked repository path or a relative Markdown link in README.md or a
-                 Markdown file under docs/ that names nothing in the tree.
+  missing-path   a backticked repository path, a relative Markdown link or a link's #heading
+                 in README.md or a Markdown file under docs/ that names nothing in the tree.
 
 Standard library only, so that it runs on a machine with nothing but /usr/bin/python3.
 """
@@ -162,6 +162,23 @@ def _exists(base, token):
     return os.path.exists(path)
 
 
+def _heading_anchors(path):
+    """The anchors GitHub gives a Markdown file's headings (lower case, punctuation dropped,
+    spaces as hyphens, repeats numbered)."""
+    anchors, seen, in_fence = set(), {}, False
+    for line in _read_lines(path) or []:
+        if FENCE.match(line):
+            in_fence = not in_fence
+        if in_fence or not line.startswith("#"):
+            continue
+        text = line.lstrip("#").strip().lower()
+        slug = re.sub(r"[^\w\- ]", "", text).replace(" ", "-")
+        count = seen.get(slug, 0)
+        seen[slug] = count + 1
+        anchors.add(slug if count == 0 else f"{slug}-{count}")
+    return anchors
+
+
 def check_paths(root, files):
     """Backticked repository paths and relative links in README.md and docs/**/*.md."""
     top = _top_level_entries(root)
@@ -197,12 +214,18 @@ def check_paths(root, files):
                             findings.append(Finding(rel, number, "missing-path",
                                                     f"`{token}` names no file in the tree"))
             for target in MARKDOWN_LINK.findall(line):
-                if "://" in target or target.startswith(("#", "mailto:")):
+                if "://" in target or target.startswith("mailto:"):
                     continue
-                target = target.split("#", 1)[0]
-                if target and not os.path.exists(os.path.join(doc_dir, target)):
+                target, _, anchor = target.partition("#")
+                target_path = os.path.join(doc_dir, target) if target else \
+                    os.path.join(root, rel)
+                if target and not os.path.exists(target_path):
                     findings.append(Finding(rel, number, "missing-path",
                                             f"link target `{target}` does not exist"))
+                elif anchor and target_path.endswith(".md") and \
+                        anchor not in _heading_anchors(target_path):
+                    findings.append(Finding(rel, number, "missing-path",
+                                            f"link `{target}#{anchor}`: no such heading"))
     return findings
 
 
@@ -222,8 +245,8 @@ def self_test():
     """Lints a clean fake tree (no finding expected), then one with each kind of violation."""
     failures = []
     with tempfile.TemporaryDirectory(prefix=f"doc_lint_{os.getpid()}_") as root:
-        _write(root, "README.md", "# x\n\nSee `framework/core/a.h` and [docs](docs/a.md).\n")
-        _write(root, "docs/a.md", "Reads `framework/core/a.h` and `a.h`; runs "
+        _write(root, "README.md", "# x\n\nSee `framework/core/a.h` and [docs](docs/a.md#the-why-here).\n")
+        _write(root, "docs/a.md", "# The why, here\n\nReads `framework/core/a.h` and `a.h`; runs "
                                   "`/usr/bin/python3 tools/t.py --out DIR`.\n")
         _write(root, "framework/core/a.h", "// Why, not when.\n")
         _write(root, "tools/t.py", "# A tool.\n")
@@ -237,7 +260,7 @@ def self_test():
         _write(root, "README.md", "# x\n" + "line\n" * README_MAX_LINES)
         _write(root, "docs/b.md", "Measured in " + "St" + "op 12.\n"
                                   "See `framework/core/missing.cc` and `gone_file.cc`.\n"
-                                  "And [a link](missing.md).\n")
+                                  "And [a link](missing.md), [a heading](a.md#gone).\n")
         _write(root, "framework/core/a.cc", "int a;  // see " + "iss" + "ue 4\n")
         _write(root, "scenarios/s.yaml", "# on the shared " + "V" + "M\n")
         found = [str(f) for f in lint(root)]
@@ -249,6 +272,7 @@ def self_test():
             ("docs/b.md:2:", "framework/core/missing.cc"),
             ("docs/b.md:2:", "gone_file.cc"),
             ("docs/b.md:3:", "missing.md"),
+            ("docs/b.md:3:", "a.md#gone"),
         ]
         for where, what in expected:
             if not any(f.startswith(where) and what in f for f in found):
