@@ -271,7 +271,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       shaft_coupling_rows_ = refine(shaft_edges_);
       // One finite-element solve per row (half of them where the rows mirror) and mode, and a
       // coupled solve over every engaged section: past this the prepare takes minutes (the
-      // breathing mode alone: 1000 rows 6 min, 400 rows 20 s on this machine in stop 30; each
+      // breathing mode alone: 1000 rows 6 min, 400 rows 20 s on a two-core machine; each
       // further order's elements cost about twice its own).
       for (const auto& [part, rows] :
            {std::pair{"bushing", static_cast<int>(hub_coupling_rows_.size()) - 1},

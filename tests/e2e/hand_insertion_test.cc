@@ -1,4 +1,4 @@
-// A hand assembles the parts (issue 16): the simulated hand (0.5 kg held by 2000 N/m and
+// A hand assembles the parts: the simulated hand (0.5 kg held by 2000 N/m and
 // 20 N*s/m to its target, physiological tremor 0.1 mm at 10 Hz) aims 0.3 mm or 1 mm off the axis
 // and pushes each shipped scenario's moving part (shafts, pins, the taper pin, the key, the
 // square shaft) along a line parallel to the axis, 27 mm in 3 s. The chamfers guide the part (the
