@@ -203,7 +203,8 @@ def check_paths(root, files):
                         if not _exists(root, token):
                             findings.append(Finding(rel, number, "missing-path",
                                                     f"`{token}` does not exist"))
-                    elif "/" in token and first not in (".", "..") and \
+                    elif "/" in token and os.path.dirname(rel) and \
+                            not _skipped_dir("", first) and first not in (".", "..") and \
                             os.path.exists(os.path.join(doc_dir, first)):
                         if not _exists(doc_dir, token):
                             findings.append(Finding(rel, number, "missing-path",
@@ -247,9 +248,12 @@ def self_test():
     with tempfile.TemporaryDirectory(prefix=f"doc_lint_{os.getpid()}_") as root:
         _write(root, "README.md", "# x\n\nSee `framework/core/a.h` and [docs](docs/a.md#the-why-here).\n")
         _write(root, "docs/a.md", "# The why, here\n\nReads `framework/core/a.h` and `a.h`; runs "
-                                  "`/usr/bin/python3 tools/t.py --out DIR`.\n")
+                                  "`/usr/bin/python3 tools/t.py --out DIR` and `build/bin/fitfeel`.\n")
         _write(root, "framework/core/a.h", "// Why, not when.\n")
         _write(root, "tools/t.py", "# A tool.\n")
+        _write(root, "docs/figures/README.md", "Drawn by `draw.sh` (`data/d.csv`).\n")
+        _write(root, "docs/figures/draw.sh", "# Draws.\n")
+        _write(root, "docs/figures/data/d.csv", "x\n")
         _write(root, "build/x.cc", "// " + "st" + "op 9 (a build tree is not linted)\n")
         _write(root, "tools/fem/data/d.csv", "iss" + "ue 9\n")
         clean = lint(root)
