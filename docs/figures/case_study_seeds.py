@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""The README's case-study table: each scenario over many seeds (one part pair per seed), the
-mean axial resistance of each run (summary.json, constrained stage), as median and quartiles.
+"""The case-study table of docs/validation.md: each scenario over many seeds (one part pair per
+seed), the mean axial resistance of each run (summary.json, constrained stage), as median and
+quartiles.
 
   /usr/bin/python3 docs/figures/case_study_seeds.py [SEEDS] > docs/figures/case-study-seeds.csv
 """

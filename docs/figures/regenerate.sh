@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates the case-study figures of the README (paper case study 1: H7/js6, H7/g6 and VE1)
+# Regenerates the case-study figures of the docs (paper case study 1: H7/js6, H7/g6 and VE1)
 # from a Release build. Run from anywhere: sh docs/figures/regenerate.sh
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)

@@ -11,7 +11,7 @@
 // stays a branch, the loop scalar; it changes no value, only which exceptions may be raised.
 // That attribute also keeps GCC from inlining into a clone a function compiled without it:
 // std::min or std::max in a clone's loop is a call per element and the loop scalar (the cylinder's
-// ChunkMinima ran 5.8 times slower so until stop 35). Write a minimum as its select,
+// ChunkMinima runs 5.8 times slower so). Write a minimum as its select,
 // d < h ? d : h, which is what std::min(h, d) computes.
 //
 // Not under the sanitizers (their builds check behaviour, not speed): the load-time choice runs

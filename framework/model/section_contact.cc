@@ -424,11 +424,11 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
   // pose is open by more than the section's largest interference. Columns open by less stay: the
   // compliance is negative a quarter turn from a load (the parts ovalise), so the pressure on the
   // interfering columns closes gaps elsewhere, and such columns are often in the answer's set
-  // (an H7/n6: 14 % of its contact columns). Until stop 39 every open column was dropped and
-  // the pivoting added them back: that H7/n6's LCPs joined 168 k columns and left 25 k over the
-  // prepare, 41 % of them in 4 to 6 pivoting steps; now 46 k and 38 k, 4 %. Keeping every warm
-  // column also kept those a light fit's sections had left for good (H7/js6's prepare 10 %
-  // slower; with the margin as fast as before).
+  // (an H7/n6: 14 % of its contact columns). Dropping every open column would make the pivoting
+  // add them back: that H7/n6's LCPs would join 168 k columns and leave 25 k over the prepare,
+  // 41 % of them in 4 to 6 pivoting steps, where the margin gives 46 k and 38 k, 4 %. Keeping
+  // every warm column would also keep those a light fit's sections have left for good (H7/js6's
+  // prepare 10 % slower than with the margin).
   for (std::size_t s = 0; s < sections.size(); ++s) {
     const char* w = sections[s].warm_contact;
     active_[s].assign(nn, 0);

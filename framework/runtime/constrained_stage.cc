@@ -308,8 +308,8 @@ bool ConstrainedStage::SolveAlong(const Eigen::Vector2d& origin, const Eigen::Ve
         // already pushes at the origin): where the wall is linear between them (one edge of the
         // assembly space) their secant lands on the root; the slope carried from the last
         // search does not where the line has turned since (a hand's tremor turns it every
-        // tick). Not for the settle's searches (no spring): there it cost the clearance fits'
-        // p99 a probe (17 -> 18), measured.
+        // tick). Not for the settle's searches (no spring): there it costs the clearance fits'
+        // p99 a probe (18 instead of 17).
         if (spring > 0.0 && r0 + target > 0.0 && r1 != r0) {
           const double s2 = s1 - r1 * s1 / (r1 - r0);
           if (std::isfinite(s2) && s2 > lo && s2 < hi) {
@@ -800,8 +800,8 @@ void ConstrainedStage::FollowDevice(const MatingMotion& device_motion, StageStat
     // the part's own slope where the part lagged on the last tick too (a press fit held back by
     // its friction), else on this tick's at the device's depth (the part's own is from its last
     // lag, often hundreds of ticks ago): a hand's insertion of a clearance fit, largest tick
-    // 34 -> 31 contact evaluations. (Repeating the edge from that balance instead of from the
-    // device saved two more there and cost another scene's worst tick 70 -> 107: not taken.)
+    // 31 contact evaluations instead of 34. (Repeating the edge from that balance instead of from
+    // the device would save two more there and cost another scene's worst tick 107, not 70.)
     lags = std::abs(depth - held_depth) > 1e-5;
     if (lags) {
       if (!run->lagged) run->at_part.line_slope = run->at_device.line_slope;

@@ -2,7 +2,7 @@
 
 namespace fitfeel {
 
-// What the device receives around a missed deadline in real time (issue 14's overrun policy):
+// What the device receives around a missed deadline in real time (the overrun policy):
 // zero, then a ramp back to the full wrench.
 //
 // A tick that wakes more than one period after its deadline follows an interval in which the

@@ -271,7 +271,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       shaft_coupling_rows_ = refine(shaft_edges_);
       // One finite-element solve per row (half of them where the rows mirror) and mode, and a
       // coupled solve over every engaged section: past this the prepare takes minutes (the
-      // breathing mode alone: 1000 rows 6 min, 400 rows 20 s on this machine in stop 30; each
+      // breathing mode alone: 1000 rows 6 min, 400 rows 20 s on a two-core machine; each
       // further order's elements cost about twice its own).
       for (const auto& [part, rows] :
            {std::pair{"bushing", static_cast<int>(hub_coupling_rows_.size()) - 1},
@@ -910,19 +910,19 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
   constexpr int kMaxCouplingSolves = 20;
   // Where the contact sets change under a step (a column at the edge of contact), the Newton
   // system's J is wrong on one side and its steps stop reducing the residual: the line search cuts
-  // them to a 16th or less, and the iteration creeps (measured on the pin: 14 of its 47 depth steps
-  // spent all 20 solves within 1 to 3.6 tolerances of the answer, and ended wherever the last step
-  // left them, up to 5 tolerances off). There the iteration stops at the best point it found if
-  // that is within kStalledTolerances (a hundredth of the shift: ten nanometres on a micrometre);
-  // the bound on solves also ends at the best point. The pin's axial force moved by 5e-6 of
-  // itself, its solves 772 -> 649; no other shipped scene stalls.
+  // them to a 16th or less, and the iteration creeps (measured on the pin: left to run, 14 of its
+  // 47 depth steps spend all 20 solves within 1 to 3.6 tolerances of the answer, and end wherever
+  // the last step leaves them, up to 5 tolerances off). There the iteration stops at the best point
+  // it found if that is within kStalledTolerances (a hundredth of the shift: ten nanometres on a
+  // micrometre); the bound on solves also ends at the best point. The pin's axial force stays
+  // within 5e-6 of itself, in 649 solves instead of 772; no other shipped scene stalls.
   constexpr double kStalledTolerances = 10.0;
   // Closer in, a full Newton step that makes the residual worse has crossed such a kink already:
   // the halvings then gain a tenth a cycle (full, half, quarter, eighth step, and full again:
   // measured on the pin, cycles to the bound on solves from 3 tolerances off). Within
-  // kKinkTolerances the best point is taken at once: the pin's coupling iterations 300 -> 205,
+  // kKinkTolerances the best point is taken at once: the pin's coupling iterations 205, not 300,
   // its axial force within 4e-4 of itself, an H7/n6's unchanged (its kinks meet it further out);
-  // at the stall's 10 the H7/n6's force moved by 7e-3, so this bound stays the tighter.
+  // at the stall's 10 the H7/n6's force would move by 7e-3, so this bound is the tighter.
   constexpr double kKinkTolerances = 4.0;
   double last_residual = std::numeric_limits<double>::infinity(), applied = 1.0;
   double best_residual = std::numeric_limits<double>::infinity(), best_ratio = 0.0;
@@ -1076,7 +1076,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
                                 Eigen::Map<const Eigen::VectorXd>(c.shift.data(), n_all);
     // An inexact Newton step: solved to the iteration's own relative tolerance, it leaves a
     // thousandth of the residual it is given, below the tolerance from any start; solved to 1e-6
-    // it took twice the BiCGSTAB iterations (the pin: 5.0 -> 10.5 a solve, an H7/n6's 9.2 -> 19)
+    // it takes twice the BiCGSTAB iterations (the pin: 10.5 a solve, not 5.0; H7/n6: 19, not 9.2)
     // for axial forces that differ by 5e-5 (the pin) and 1e-5 (H7/n6) of themselves.
     Eigen::Map<Eigen::VectorXd>(c.step.data(), n_all) = system.Solve(rhs, kShiftTolerance);
     shift_gaps(c.step);
@@ -1090,7 +1090,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     }
     // The part's offset and tilt answer the step too (dq = H^-1 Q dx, the J above): the next
     // solve starts from there, not from the rigid step's point at the old gaps (the pin's contact
-    // evaluations 649 -> 492, an H7/n6's 1051 -> 927).
+    // evaluations 492 instead of 649, an H7/n6's 927 instead of 1051).
     Eigen::Vector4d next = r.next;
     if (pose_out.size() > 0) {
       next.head(dofs) +=

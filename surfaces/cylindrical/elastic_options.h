@@ -20,7 +20,7 @@ struct ElasticOptions {
   // series to the solve's highest harmonic, at the blocks' centres). Its pivoting costs
   // O(columns^3) per slice; 120 resolve harmonics to 60 (1 mm waves at d = 20 mm). A feature
   // narrower than about two solve columns lies past that (a 0.5 mm bump at d = 20 mm needs 240:
-  // docs/contact-mechanics.md; the README charts the force against the cost over `columns`).
+  // docs/contact-mechanics.md; docs/validation.md gives the force against the cost per `columns`).
   static constexpr int kDefaultColumns = 120;
   static constexpr int kFewestColumns = 24;
   static constexpr int kMostColumns = 1440;
@@ -35,7 +35,7 @@ struct ElasticOptions {
   // With the axial coupling, the orders 1 .. axial_orders are coupled too (0: the breathing mode
   // alone): order 1 is the parts' bending and shear along their axes, the others their lobing.
   // An order's coupling reaches about R / n along the axis, so high orders are local (the
-  // README's accuracy chart gives the 3-D FEM's error and the prepare's cost per setting).
+  // table in docs/validation.md gives the 3-D FEM's error and the prepare's cost per setting).
   static constexpr int kDefaultAxialOrders = 6;
   int axial_orders = kDefaultAxialOrders;
 };

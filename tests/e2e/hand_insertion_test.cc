@@ -1,4 +1,4 @@
-// A hand assembles the parts (issue 16): the simulated hand (0.5 kg held by 2000 N/m and
+// A hand assembles the parts: the simulated hand (0.5 kg held by 2000 N/m and
 // 20 N*s/m to its target, physiological tremor 0.1 mm at 10 Hz) aims 0.3 mm or 1 mm off the axis
 // and pushes each shipped scenario's moving part (shafts, pins, the taper pin, the key, the
 // square shaft) along a line parallel to the axis, 27 mm in 3 s. The chamfers guide the part (the
@@ -174,8 +174,8 @@ TEST(HandInsertionWedged, TheGodObjectsBalancesStartFromTheirOwnLastRoots) {
 // The robot presses the taper pin home with its weight across the axis: the settle steps on the
 // cone's stiffness in closed form (ResistanceLaw::RadialJacobian) from the first evaluation,
 // instead of a search along the load and secant-corrected steps (measured, contact evaluations
-// per tick p50 / p99 / max: 2 / 6 / 29 before, 2 / 5 / 25 with it; the pressing phase's ticks
-// 4-5 -> 2-3).
+// per tick p50 / p99 / max: 2 / 5 / 25 with it, 2 / 6 / 29 without; the pressing phase's ticks
+// 2-3, not 4-5).
 TEST(RobotPressesTheTaperPin, TheSettleStepsOnTheClosedFormStiffness) {
   PluginRegistry& registry = Registry();
   Scene scene =

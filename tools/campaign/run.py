@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Generated-input campaign against the fitfeel CLI (issue 14).
+"""Generated-input campaign against the fitfeel CLI.
 
 Cases are drawn from a seeded generator over three families and each is run as a user would run
 it, as a process:

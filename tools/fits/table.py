@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The seven 20 mm fits as a table for the README (markdown on stdout).
+"""The seven 20 mm fits as a table for docs/validation.md (markdown on stdout).
 
 Runs `fitfeel study` on scenarios/fits-20mm-h7*.yaml and sets each fit's force distribution beside
 the closed form of DIN 7190-1 at the fit's mean interference and a handbook's description of how

@@ -15,7 +15,7 @@
 // the ratio.
 //
 // After Google Benchmark's own output, a Markdown table of the medians, one row per scenario, with
-// the scan's p50 / p99 and the ratio where a scan exists: the README's scene table is this table.
+// the scan's p50 / p99 and the ratio where a scan exists: docs/performance.md's scene table.
 //
 // Scenes with a lead-in run once more with the simulated hand 1 mm off the axis pushing the part
 // in ("/hand": the god object's cost; framework/testing/hand_scene.h).

@@ -14,7 +14,7 @@
 namespace fitfeel {
 namespace {
 
-// Two seconds on the real clock. Timing on a shared VM is reported, not asserted: the test checks
+// Two seconds on the real clock. Timing on a shared machine is reported, not asserted: the test checks
 // that every tick ran, that the statistics are filled in and consistent, and what absolute
 // deadlines guarantee whatever the load (the run cannot be shorter than its schedule).
 TEST(RealTimeSchedulerTest, TwoSecondsAtOneKilohertz) {

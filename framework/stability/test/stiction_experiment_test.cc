@@ -1,4 +1,4 @@
-// Stiction at the device, passively (issue 9 item 5): a hand held by the stick-slip contact
+// Stiction at the device, passively: a hand held by the stick-slip contact
 // (framework/model/friction.h) through the safety chain.
 #include "framework/stability/stiction_experiment.h"
 

@@ -1,7 +1,7 @@
 // The elastic model's accuracy against its cost over the circumferential orders coupled along the
 // parts' axes (model.options.axial_orders): each iteration prepares the six 3-D CalculiX cases
 // (surfaces/cylindrical/test/solid_cases.h) and reports, beside the time, each case's error
-// against the FEM and the largest (percent). The README's table of the setting comes from here:
+// against the FEM and the largest (percent). The setting's table in docs/validation.md is this:
 //   build/bench/fitfeel_surface_cylindrical_benchmark --benchmark_filter=CoupledOrders
 #include <cmath>
 #include <string>

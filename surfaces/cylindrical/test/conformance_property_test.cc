@@ -1,4 +1,4 @@
-// Property test (issue 3, "Done when"): over many seeds and several specifications, every
+// Property test: over many seeds and several specifications, every
 // generated skin model shape meets every tolerance it came from, as evaluated independently by
 // framework/metrology (two-point sizes, minimum-zone roundness and cylindricity, axis and
 // generatrix straightness).

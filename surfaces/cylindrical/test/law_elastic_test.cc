@@ -547,11 +547,11 @@ TEST(ElasticLaw, AgreesWithCalculixOnAPartlyEngagedHub) {
 
 // Where a press fit starts: half a millimetre in, the FEM's force is 4.5 times what plane sections
 // give (4154 against 916 N). A model of the hub's axial coupling alone (a shell on its Lame
-// foundation) was 29 % low here: the shaft's length outside the entrance stiffens it as much.
+// foundation) is 29 % low here: the shaft's length outside the entrance stiffens it as much.
 // Also on the shipped scenes' grid, shaft rows of 1 mm against bore rows of 0.5 mm: half a
 // millimetre in, the section covers half of the shaft's first row, which the coupling loads
-// alone (it splits each part's rows to the shortest row of either); on whole rows it was 27 %
-// low.
+// alone (it splits each part's rows to the shortest row of either); on whole rows it would be
+// 27 % low.
 TEST(ElasticLaw, AgreesWithCalculixInTheFirstMillimetre) {
   for (const PartlyEngaged& c : {PartlyEngaged{"cylinder-entry-0.5mm", 0.0005, 0.030},
                                  PartlyEngaged{"cylinder-entry-1mm", 0.001, 0.030}}) {

@@ -95,7 +95,7 @@ TEST(GpsLaw, HollowShaftAndTubeInTube) {
   EXPECT_NEAR(Apply(a, law, 30e-3, {0, 0}, 0.010).force.y(), -force, 1e-3 * force);
 }
 
-// Issue 3: a clearance fit without form error under a radial load W gives exactly mu * W.
+// A clearance fit without form error under a radial load W gives exactly mu * W.
 TEST(Laws, ClearanceUnderRadialLoadGivesMuW) {
   PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
   const double c = 10 * kUm, kp = 2e6, weight = 2.0;

@@ -1,4 +1,4 @@
-// Issue 3, "Done when": over 100 seeds, every generated skin model shape of the three paper
+// Over 100 seeds, every generated skin model shape of the three paper
 // scenarios meets every tolerance it came from. The scenarios are loaded through the plugin
 // registry, unchanged, as `fitfeel run` loads them.
 #include <filesystem>

@@ -44,7 +44,7 @@ TEST(PlanarElasticModelTest, KeyOfEightMillimetresHandCalculation) {
 // tools/fem/data/key.csv: CalculiX in 3-D (tools/fem/key.py), the 8 mm key pressed over a 2.6 mm
 // flank (the key-parallel scene's) between two steel walls far larger than the strip, 5 um of
 // interference per face, engaged over 40 and 10 mm: the flank's normal force against the law's
-// P(L) delta h L, within issue 9's 10 % (measured +0.7 % and +2.9 %). A rigid key (1000 times
+// P(L) delta h L, within 10 % (measured +0.7 % and +2.9 %). A rigid key (1000 times
 // stiffer) presses the wall alone: delta h L / c_wall, the law's lateral stiffness per pressed
 // flank times delta (measured -8.5 %: a rigid flank concentrates the pressure at the strip's
 // edges, stiffer than the uniform pressure's mean displacement J says, and the 200 mm wall is
@@ -227,7 +227,7 @@ TEST(PlanarLawTest, NoForceWhenNotEngagedOrAtRest) {
 namespace fitfeel::planar {
 namespace {
 
-// Issue 9 item 7: a key pressed between both walls and pushed sideways by e translates as a whole;
+// A key pressed between both walls and pushed sideways by e translates as a whole;
 // one wall is compressed by e more, the other by e less, so the pair resists with
 // 2 A / c_wall (A = h L one flank's area), not one flank's series value P A:
 //   c_wall = 3.15167e-14 m/Pa (h = 3 mm, L = 40 mm, hand value above), A = 1.2e-4 m^2

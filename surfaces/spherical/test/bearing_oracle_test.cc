@@ -341,7 +341,7 @@ TEST(KnuckleBearing, RadialSupportGrowsMonotonicallyWithOffsetForAnyForm) {
   EXPECT_GT(rising, 500);
 }
 
-// Issue 9 item 7: the GE 20 E outer ring (dk 29 mm, D 35 mm) is a ring, not a shell: Lame's
+// The GE 20 E outer ring (dk 29 mm, D 35 mm) is a ring, not a shell: Lame's
 // cylinder gives 2.270 MPa/um, the thick shell (a 14.5 mm, b 17.5 mm) 5.947, 2.62 times stiffer.
 TEST(KnuckleBearing, RingOfTheBearingIsSofterThanTheShell) {
   const Material steel = test::Steel();
@@ -420,7 +420,7 @@ TEST(KnuckleBearing, ConformalHertzClosedForm) {
 // rigid shaft moved by the clearance plus the approach; the FEM's radial load against the law's
 // local contact (its rings' walls, 4.5 and 2.97 mm at the equator, as layers bonded to their
 // supports; the gap's curvature R = R1 R2 / (c + delta), held beyond a = 0.3 R1) at 1, 2 and 3 um
-// of approach, within issue 9's 10 %; the same geometry with half-spaces (Hertz) is 50 to 70 %
+// of approach, within 10 %; the same geometry with half-spaces (Hertz) is 50 to 70 %
 // soft.
 TEST(KnuckleBearing, LoadedBearingAgreesWithCalculix) {
   const double e_star = ContactModulus(test::Steel(), test::Steel());
