@@ -5,7 +5,7 @@
 #include "framework/collision/coarse_mesh.h"
 #include "framework/collision/lead_in.h"
 #include "framework/core/export.h"
-#include "framework/device/stage.h"
+#include "framework/runtime/stage.h"
 #include "framework/model/gps_spec.h"
 
 namespace fitfeel {

@@ -10,7 +10,7 @@
 #include "framework/core/spsc_ring.h"
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
-#include "framework/device/stage.h"
+#include "framework/runtime/stage.h"
 #include "framework/runtime/overrun_guard.h"
 #include "framework/runtime/part_motion.h"
 #include "framework/runtime/stream_row.h"

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "framework/core/wrench.h"
-#include "framework/device/stage.h"
+#include "framework/runtime/stage.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/safety/safety_chain.h"
 

@@ -157,7 +157,7 @@ TEST(HandInsertionRelease, PulledOutTheConstrainedStageLetsGo) {
 }
 
 // The taper pin wedged with the hand's target millimetres ahead: the god object balances the part
-// across the axis at the device's depth and at its own every tick (ConstrainedStage::AcrossMemory,
+// across the axis at the device's depth and at its own every tick (GodObject's AcrossMemory,
 // one memory each), each on the cone's smooth Winkler wall. The searches along lines from the
 // device take false position from a bracket both of whose ends the wall pushes (measured, contact
 // evaluations per tick p50 / p99 / max: 12 / 31 / 34 with one memory and the wall's Newton step,

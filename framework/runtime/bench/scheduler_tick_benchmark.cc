@@ -16,7 +16,7 @@
 
 #include "framework/device/device.h"
 #include "framework/device/device_specs.h"
-#include "framework/device/stage.h"
+#include "framework/runtime/stage.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/view/tick_publisher.h"
 
