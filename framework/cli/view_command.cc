@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/plot/run_record.h"
 #include "framework/plugin/registry.h"
@@ -36,6 +37,7 @@ struct ViewArgs {
   bool realtime = false;
   bool virtual_clock = false;
   double frame_rate = 60.0;
+  int max_clients = 64;
   double exit_after = -1.0;
   bool wait = false;
   bool allow_large = false;
@@ -92,6 +94,7 @@ void View(const ViewArgs& args) {
   options.host = args.host;
   options.port = static_cast<unsigned short>(args.port);
   options.frame_rate = args.frame_rate;
+  options.max_clients = args.max_clients;
   // The run writes its trace and recording only with --out.
   LoadOptions load;
   load.allow_large = args.allow_large;
@@ -183,6 +186,10 @@ void AddViewCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "also write the run's outputs to this folder");
   cmd->add_option("--frame-rate", args->frame_rate, "state frames per second, 1..240")
       ->capture_default_str();
+  AddIntegerOption(
+      cmd, "--max-clients", 1, view::Server::kMaxClientsCap,
+      [args](long n) { args->max_clients = static_cast<int>(n); },
+      "browser pages served at once (default 64); one more is answered 503");
   cmd->add_option("--exit-after", args->exit_after,
                   "stop serving this many seconds after the run ends (default: serve until "
                   "interrupted)");
