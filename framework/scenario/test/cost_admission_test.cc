@@ -13,8 +13,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "framework/plugin/registry.h"
+#include "framework/scenario/scene.h"
 #include "framework/testing/cli_runner.h"
 #include "framework/testing/source_tree.h"
+#include "framework/tradeoff/grid_ladder.h"
+#include "framework/tradeoff/tradeoff_study.h"
 
 namespace {
 
@@ -160,6 +164,40 @@ TEST_F(CostAdmission, ValidatePrintsTheOutputSizeAndRunRefusesOutputsOverTheThre
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("\noutput       no trace or recording\n"));
   EXPECT_TRUE(fs::is_empty(work_));
+}
+
+// A command that changes a loaded scene's grid or duration re-estimates it as the loader did.
+TEST(SceneCostEstimate, IsTheLoadersForTheSceneAsLoadedAndFollowsItsGrid) {
+  ::fitfeel::PluginRegistry registry;
+  registry.LoadAll();
+  ::fitfeel::Scene scene = ::fitfeel::LoadScene(ShippedScenario("fits-20mm-h7g6.yaml"), registry);
+  ::fitfeel::SceneCost cost = ::fitfeel::EstimateSceneCost(scene);
+  EXPECT_EQ(cost.inner_cells, scene.cost.inner_cells);
+  EXPECT_EQ(cost.depth_steps, scene.cost.depth_steps);
+  EXPECT_EQ(cost.prepare_bytes, scene.cost.prepare_bytes);
+  EXPECT_EQ(cost.prepare_seconds, scene.cost.prepare_seconds);
+  EXPECT_EQ(cost.output_bytes, scene.cost.output_bytes);
+  EXPECT_FALSE(::fitfeel::LargeCostRefusal(cost));
+  scene.model.resolution = {2000, 2000};
+  cost = ::fitfeel::EstimateSceneCost(scene);
+  EXPECT_EQ(cost.inner_cells, 4'000'000);
+  ASSERT_TRUE(::fitfeel::LargeCostRefusal(cost));
+  EXPECT_FALSE(::fitfeel::LargeCostRefusal(cost)->output);
+
+  // The default ladder leaves out what the elastic law's worst case puts over 30 s, said, unless
+  // --allow-large.
+  const std::vector<::fitfeel::Resolution> ladder = ::fitfeel::tradeoff::DefaultLadder();
+  std::vector<std::string> left_out;
+  const std::vector<::fitfeel::Resolution> admitted =
+      ::fitfeel::tradeoff::AdmittedGrids(scene, ladder, false, &left_out);
+  ASSERT_EQ(left_out.size(), 1u);
+  EXPECT_THAT(left_out[0], HasSubstr("160x1440, over the large-scene thresholds ("));
+  EXPECT_THAT(left_out[0], HasSubstr("; --allow-large keeps it)"));
+  EXPECT_EQ(admitted.size(), ladder.size() - 1);
+  left_out.clear();
+  EXPECT_EQ(::fitfeel::tradeoff::AdmittedGrids(scene, ladder, true, &left_out).size(),
+            ladder.size());
+  EXPECT_TRUE(left_out.empty());
 }
 
 }  // namespace
