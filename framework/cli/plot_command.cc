@@ -97,12 +97,25 @@ std::unique_ptr<PluginRegistry> LoadPlugins() {
   return registry;
 }
 
+// The loader's options of a chart: no run output is written; `--allow-large` admits a large
+// scene as `run` does.
+LoadOptions ChartLoad(bool allow_large) {
+  LoadOptions load;
+  load.allow_large = allow_large;
+  load.writes_outputs = false;
+  return load;
+}
+
+constexpr const char* kAllowLargeHelp =
+    "draw a scene whose estimated preparation exceeds 1 GiB or 30 s";
+
 void AddSms(CLI::App& plot) {
   struct Options {
     std::string scenario;
     std::string part;
     std::optional<std::uint64_t> seed;
     std::string output;
+    bool allow_large = false;
   };
   auto options = std::make_shared<Options>();
   auto* cmd = plot.add_subcommand(
@@ -117,10 +130,11 @@ void AddSms(CLI::App& plot) {
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")
       ->required();
+  cmd->add_flag("--allow-large", options->allow_large, kAllowLargeHelp);
   cmd->callback([options] {
     const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
     const auto registry = LoadPlugins();
-    LoadOptions load;
+    LoadOptions load = ChartLoad(options->allow_large);
     load.allow_non_rendering = true;  // a surface without laws still has skin model shapes
     const plot::SceneShapes shapes =
         plot::GenerateSceneShapes(LoadScene(options->scenario, *registry, load), options->seed);
@@ -138,6 +152,7 @@ void AddPressure(CLI::App& plot) {
     double depth_mm = 0.0;
     std::string scenario;
     std::string output;
+    bool allow_large = false;
   };
   auto options = std::make_shared<Options>();
   auto* cmd = plot.add_subcommand(
@@ -154,6 +169,7 @@ void AddPressure(CLI::App& plot) {
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")
       ->required();
+  cmd->add_flag("--allow-large", options->allow_large, kAllowLargeHelp);
   cmd->callback([options] {
     const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
     const plot::RunRecord run = plot::LoadRun(options->dir);
@@ -167,7 +183,7 @@ void AddPressure(CLI::App& plot) {
       file = *run.summary.scenario_file;
     }
     const auto registry = LoadPlugins();
-    Scene scene = LoadScene(FindRunScenario(file), *registry);
+    Scene scene = LoadScene(FindRunScenario(file), *registry, ChartLoad(options->allow_large));
     if (scene.name != run.summary.scenario) {
       throw UserError("scenario file '" + file + "' holds scenario '" + scene.name +
                       "', but the run in " + options->dir + " was of '" + run.summary.scenario +
@@ -191,6 +207,7 @@ void AddStudy(CLI::App& plot) {
     std::vector<std::string> dirs;
     std::string reference;
     std::string output;
+    bool allow_large = false;
   };
   auto options = std::make_shared<Options>();
   auto* cmd = plot.add_subcommand(
@@ -204,6 +221,8 @@ void AddStudy(CLI::App& plot) {
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")
       ->required();
+  cmd->add_flag("--allow-large", options->allow_large,
+                "run a --reference scene whose estimated preparation exceeds 1 GiB or 30 s");
   cmd->callback([options] {
     const auto outputs = plot::ResolveOutputs(options->output);
     std::vector<study::StudyRecord> studies;
@@ -211,7 +230,7 @@ void AddStudy(CLI::App& plot) {
     std::optional<plot::ReferenceLine> reference;
     if (!options->reference.empty()) {
       const auto registry = LoadPlugins();
-      Scene scene = LoadScene(options->reference, *registry);
+      Scene scene = LoadScene(options->reference, *registry, ChartLoad(options->allow_large));
       const std::string name = scene.name;
       RunOptions run;
       run.clock = ClockMode::kVirtual;

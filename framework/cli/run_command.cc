@@ -193,7 +193,8 @@ void AddRunCommand(CLI::App& app) {
       cmd, "--seed", [args](std::uint64_t seed) { args->seed = seed; },
       "seed of the scene's random generator (overrides run.seed; the same range)");
   cmd->add_flag("--allow-large", args->allow_large,
-                "run a scene whose estimated preparation exceeds 1 GiB or 30 s");
+                "run a scene whose estimated preparation exceeds 1 GiB or 30 s, or whose trace "
+                "and recording would exceed 4 GiB");
   auto* realtime = cmd->add_flag("--realtime", args->realtime,
                                  "real-time clock: absolute 1 kHz deadlines (overrides run.clock)");
   auto* virtual_clock = cmd->add_flag("--virtual", args->virtual_clock,

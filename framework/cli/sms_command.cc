@@ -90,6 +90,7 @@ struct SmsOptions {
   std::string output;
   std::string measurement;
   std::optional<std::uint64_t> seed;
+  bool allow_large = false;
 };
 
 void Run(const SmsOptions& options) {
@@ -101,6 +102,8 @@ void Run(const SmsOptions& options) {
   }
   LoadOptions load;
   load.allow_non_rendering = true;  // skin model shapes exist for surfaces without a law too
+  load.allow_large = options.allow_large;
+  load.writes_outputs = false;
   const Scene scene = LoadScene(options.file, registry, load);
   const std::vector<const PartSpec*> parts = {&scene.inner, &scene.outer};
   std::vector<const PartSpec*> selected;
@@ -203,6 +206,8 @@ void AddSmsCommand(CLI::App& app) {
   AddSeedOption(
       cmd, "--seed", [options](std::uint64_t s) { options->seed = s; },
       "Seed (default: the scenario's run.seed; the same range)");
+  cmd->add_flag("--allow-large", options->allow_large,
+                "draw a scene whose estimated preparation exceeds 1 GiB or 30 s");
   cmd->callback([options] { Run(*options); });
 }
 

@@ -84,7 +84,12 @@ void Run(const StabilityOptions& options) {
   // Every input is checked before anything runs or is written.
   PluginRegistry registry;
   registry.LoadAll();
-  const Scene scene = LoadScene(options.scenario, registry);
+  // The sweep takes the scene's device, safety and stiffness; its grid is never prepared and no
+  // run output written, so neither cost is admitted.
+  LoadOptions load;
+  load.allow_large = true;
+  load.writes_outputs = false;
+  const Scene scene = LoadScene(options.scenario, registry, load);
   const DeviceSpec spec = ChooseDevice(options, scene);
   ValidateDeviceSpec(spec);
   const double scale = ForceScale(options, scene, spec);

@@ -34,6 +34,7 @@ struct StudyArgs {
   std::uint64_t seed = 1;
   int threads = 0;  // 0: every core
   std::string out;
+  bool allow_large = false;
 };
 
 // Ctrl-C asks the study to stop: the pairs under way finish and the ones done are written.
@@ -68,6 +69,7 @@ void Run(const StudyArgs& args) {
   study::StudySettings settings;
   settings.pairs = args.pairs;
   settings.seed = args.seed;
+  settings.allow_large = args.allow_large;
   settings.threads =
       args.threads > 0 ? args.threads
                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -128,6 +130,8 @@ void AddStudyCommand(CLI::App& app) {
   AddIntegerOption(
       cmd, "--threads", 1, 1024, [args](long t) { args->threads = static_cast<int>(t); },
       "worker threads (default: every core)");
+  cmd->add_flag("--allow-large", args->allow_large,
+                "run a scene whose estimated preparation exceeds 1 GiB or 30 s");
   cmd->add_option("--out", args->out, "output folder (default: out/<scenario file name without .yaml>-study)");
   cmd->callback([args] { Run(*args); });
 }

@@ -34,6 +34,7 @@ struct TradeoffOptions {
   int seeds = 10;
   std::string duration;
   std::string cost = "p50";
+  bool allow_large = false;
 };
 
 bool Contains(const std::vector<Resolution>& ladder, const Resolution& r) {
@@ -47,6 +48,7 @@ void Run(const TradeoffOptions& options) {
   // Every input is checked, and gnuplot found, before the first run.
   tradeoff::TradeoffSettings settings;
   settings.seeds = options.seeds;
+  settings.allow_large = options.allow_large;
   if (!options.duration.empty()) {
     try {
       settings.duration = ParseQuantity(options.duration, Dimension::kTime);
@@ -58,7 +60,11 @@ void Run(const TradeoffOptions& options) {
   PluginRegistry registry;
   registry.LoadAll();
   const fs::path file = options.scenario;
-  const Scene scene = LoadScene(file, registry);
+  // Each run's trace is admitted with the ladder (AdmitLadder), at the study's duration.
+  LoadOptions load_options;
+  load_options.allow_large = options.allow_large;
+  load_options.writes_outputs = false;
+  const Scene scene = LoadScene(file, registry, load_options);
   if (options.resolutions.empty()) {
     settings.ladder = tradeoff::DefaultLadder();
     // The scene's own grid and the surface type's automatic one join the ladder (auto is
@@ -67,9 +73,18 @@ void Run(const TradeoffOptions& options) {
       settings.ladder.push_back(scene.model.resolution);
     }
     settings.ladder.push_back(Resolution{});
+    // Grids of the default ladder the scene cannot take, or would not prepare within the
+    // large-scene thresholds, are left out (said); a grid the user names is refused instead.
+    std::vector<std::string> left_out;
+    settings.ladder = tradeoff::AdmittedGrids(scene, settings.ladder, options.allow_large,
+                                              &left_out);
+    for (const std::string& grid : left_out) {
+      std::cerr << "tradeoff: note: the default ladder leaves out " << grid << "\n";
+    }
   } else {
     settings.ladder = tradeoff::ParseLadder(options.resolutions);
   }
+  tradeoff::AdmitLadder(scene, settings);  // before gnuplot is looked for or anything runs
   const fs::path prefix =
       options.prefix.empty() ? fs::path(scene.name + "-tradeoff") : fs::path(options.prefix);
   if (prefix.filename().empty()) throw UserError("tradeoff: -o needs a file name prefix");
@@ -88,7 +103,7 @@ void Run(const TradeoffOptions& options) {
       {prefix.string() + ".svg", plot::ImageFormat::kSvg}};
 
   settings.progress = [](const std::string& line) { std::cerr << "tradeoff: " << line << "\n"; };
-  const auto load = [&] { return LoadScene(file, registry); };
+  const auto load = [&] { return LoadScene(file, registry, load_options); };
   const std::vector<tradeoff::GridRow> rows = tradeoff::RunTradeoff(load, settings);
 
   const double duration = settings.duration ? *settings.duration : scene.run.duration;
@@ -148,6 +163,9 @@ void AddTradeoffCommand(CLI::App& app) {
                   "Tick time on the chart's x axis: p50 (default) or p99. A table-driven law's "
                   "median tick barely depends on the grid; its p99 does")
       ->check(CLI::IsMember({"p50", "p99"}));
+  cmd->add_flag("--allow-large", options->allow_large,
+                "run grids whose estimated preparation exceeds 1 GiB or 30 s, traces over 4 GiB, "
+                "or a ladder whose traces held for the comparison exceed 1 GiB");
   cmd->callback([options] { Run(*options); });
 }
 

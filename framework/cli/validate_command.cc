@@ -19,7 +19,8 @@ void AddValidateCommand(CLI::App& app) {
   cmd->add_option("file", *file, "Scenario file (YAML)")->required();
   auto allow_large = std::make_shared<bool>(false);
   cmd->add_flag("--allow-large", *allow_large,
-                "accept a scene whose estimated preparation exceeds 1 GiB or 30 s, as run does");
+                "accept a scene whose estimated preparation exceeds 1 GiB or 30 s, or whose "
+                "trace and recording would exceed 4 GiB, as run does");
   cmd->callback([file, allow_large] {
     PluginRegistry registry;
     registry.LoadAll();

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/plot/run_record.h"
 #include "framework/plugin/registry.h"
@@ -36,8 +37,10 @@ struct ViewArgs {
   bool realtime = false;
   bool virtual_clock = false;
   double frame_rate = 60.0;
+  int max_clients = 64;
   double exit_after = -1.0;
   bool wait = false;
+  bool allow_large = false;
 };
 
 // The constrained rows of a finished run as viewer samples (the trace keeps no torque there).
@@ -91,6 +94,11 @@ void View(const ViewArgs& args) {
   options.host = args.host;
   options.port = static_cast<unsigned short>(args.port);
   options.frame_rate = args.frame_rate;
+  options.max_clients = args.max_clients;
+  // The run writes its trace and recording only with --out.
+  LoadOptions load;
+  load.allow_large = args.allow_large;
+  load.writes_outputs = !args.out.empty();
 
   if (!args.trace.empty()) {
     const plot::RunRecord run = plot::LoadRun(args.trace);
@@ -98,7 +106,8 @@ void View(const ViewArgs& args) {
       throw UserError("view: '" + (fs::path(args.trace) / "summary.json").string() +
                       "' names no scenario_file, so the parts cannot be drawn again");
     }
-    const Scene scene = LoadScene(*run.summary.scenario_file, registry);
+    load.writes_outputs = false;
+    const Scene scene = LoadScene(*run.summary.scenario_file, registry, load);
     const std::uint64_t seed = args.seed.value_or(run.summary.seed.value_or(scene.run.seed));
     const view::ViewModel model(scene, seed);
     view::Server server(model, nullptr, HistoryOf(run.trace, model), options);
@@ -112,7 +121,7 @@ void View(const ViewArgs& args) {
   }
 
   const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
-  Scene scene = LoadScene(file, registry);
+  Scene scene = LoadScene(file, registry, load);
   const std::uint64_t seed = args.seed.value_or(scene.run.seed);
   const view::ViewModel model(scene, seed);
   view::TickPublisher publisher(1024, scene.moving);
@@ -177,9 +186,16 @@ void AddViewCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "also write the run's outputs to this folder");
   cmd->add_option("--frame-rate", args->frame_rate, "state frames per second, 1..240")
       ->capture_default_str();
+  AddIntegerOption(
+      cmd, "--max-clients", 1, view::Server::kMaxClientsCap,
+      [args](long n) { args->max_clients = static_cast<int>(n); },
+      "browser pages served at once (default 64); one more is answered 503");
   cmd->add_option("--exit-after", args->exit_after,
                   "stop serving this many seconds after the run ends (default: serve until "
                   "interrupted)");
+  cmd->add_flag("--allow-large", args->allow_large,
+                "show a scene whose estimated preparation exceeds 1 GiB or 30 s, or whose --out "
+                "files would exceed 4 GiB");
   cmd->add_flag("--wait", args->wait,
                 "start the run only once a browser has connected (watch it from the first tick)");
   auto* realtime = cmd->add_flag("--realtime", args->realtime,

@@ -330,12 +330,43 @@ constexpr double kBytesPerTableVertex = 16.0;
 constexpr double kSecondsPerCell = 1e-5;
 constexpr double kSecondsPerTableVertex = 5e-8;
 
+// The cost of `shapes` and the depth tables, without the law's own estimate; `vertices` receives
+// the depth tables' vertices.
+SceneCost GridCost(const GridShape shapes[2], const PartSpec& inner, const PartSpec& outer,
+                   const ModelSettings& model, const RunSettings& run, double* vertices) {
+  SceneCost cost;
+  cost.inner_cells = shapes[0].cells();
+  cost.outer_cells = shapes[1].cells();
+  const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
+  const double columns = std::max(shapes[0].columns, shapes[1].columns);
+  const double li = inner.geometry->mating_length(), lo = outer.geometry->mating_length();
+  if (model.depth_step > 0.0) {
+    cost.depth_steps = std::ceil((li + lo) / model.depth_step);
+  } else if (shapes[0].rows > 0 && shapes[1].rows > 0 && li > 0.0 && lo > 0.0) {
+    // Auto: one step per shortest row.
+    cost.depth_steps = std::ceil((li + lo) / std::min(li / shapes[0].rows, lo / shapes[1].rows));
+  }
+  *vertices = cost.depth_steps * (columns + 4.0);
+  cost.prepare_bytes = cells * kBytesPerCell + cost.depth_steps * kBytesPerDepthStep +
+                       *vertices * kBytesPerTableVertex;
+  cost.prepare_seconds = cells * kSecondsPerCell + *vertices * kSecondsPerTableVertex;
+  const double ticks = std::round(run.duration * run.rate);
+  cost.run_bytes = ticks * kStreamBytesPerTick;
+  cost.trace_rows = run.write_trace ? ticks : 0.0;
+  cost.recording_rows = run.write_recording ? ticks : 0.0;
+  cost.output_bytes = cost.trace_rows * kTraceFileBytesPerTick +
+                      cost.recording_rows * kRecordingFileBytesPerTick;
+  return cost;
+}
+
 // The grid each part gets and what preparing the scene costs; refuses, at the key that causes it,
 // a resolution the surface type cannot discretize, a depth table over the analyzers' cap and,
-// unless `allow_large`, a cost over the large-scene thresholds.
-SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
-                       const PartSpec& inner, const PartSpec& outer, const ModelSettings& model,
-                       const RunSettings& run, const LoadOptions& options) {
+// unless `allow_large`, a cost over the large-scene thresholds or outputs over the large-output
+// one.
+SceneCost CheckPrepare(const ConfigNode& root, const SurfaceType& surface, const PartSpec& inner,
+                       const PartSpec& outer, const ModelSettings& model, const RunSettings& run,
+                       const LoadOptions& options) {
+  const ConfigNode model_node = root.Child("model");
   const std::optional<ConfigNode> resolution_node = model_node.Find("resolution");
   const ConfigNode& grid_key = resolution_node ? *resolution_node : model_node;
   const std::unique_ptr<Discretizer> discretizer = surface.MakeDiscretizer();
@@ -348,8 +379,40 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
                     : Located(grid_key, "a resolution the surface type can discretize",
                               [&] { return discretizer->Shape(*parts[k], model.resolution); });
   }
+  double vertices = 0.0;
+  SceneCost cost = GridCost(shapes, inner, outer, model, run, &vertices);
+  const double li = inner.geometry->mating_length(), lo = outer.geometry->mating_length();
+  const double columns = std::max(shapes[0].columns, shapes[1].columns);
+  const std::optional<ConfigNode> step_node = model_node.Find("depth_step");
+  if (step_node && model.depth_step > 0.0 &&
+      (!(cost.depth_steps < kMaxDepthSteps) || !(vertices < kMaxDepthTableVertices))) {
+    step_node->Fail("a step giving fewer than " + ThreeDigits(kMaxDepthSteps) +
+                        " depth-table rows and " + ThreeDigits(kMaxDepthTableVertices) +
+                        " table vertices over the " + ThreeDigits(li + lo) + " m stroke",
+                    step_node->Describe() + ": " + ThreeDigits(cost.depth_steps) +
+                        " rows of up to " + ThreeDigits(columns + 4.0) + " vertices");
+  }
+  cost.law_prepare_seconds = Located(grid_key, "a grid the law can estimate", [&] {
+    return surface.EstimatePrepareSeconds(model, shapes[0], shapes[1], cost.depth_steps);
+  });
+  cost.prepare_seconds += cost.law_prepare_seconds;
+  if (!options.allow_large) {
+    SceneCost admitted = cost;
+    if (!options.writes_outputs) admitted.output_bytes = 0.0;
+    if (const std::optional<CostRefusal> refusal = LargeCostRefusal(admitted)) {
+      // The table is the cost when the step is finer than the rows; otherwise the grid is. The
+      // outputs are the duration's.
+      const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
+      const bool table = step_node && model.depth_step > 0.0 &&
+                         vertices * kSecondsPerTableVertex > cells * kSecondsPerCell;
+      const ConfigNode key = refusal->output ? root.Child("run").Child("duration")
+                             : table         ? *step_node
+                                             : grid_key;
+      key.Fail(refusal->expected, key.Describe() + ": " + refusal->found);
+    }
+  }
   // A measured part is resampled onto a cylinder's grid only: refused now, at its key, for a
-  // surface whose grid is another (the grid is small next to the cost admitted above).
+  // surface whose grid is another (after the cost admission: the grid is built to be checked).
   for (int k = 0; k < 2; ++k) {
     const MeasuredSurface* m = parts[k]->measured.get();
     if (m == nullptr || discretizer == nullptr) continue;
@@ -360,52 +423,6 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const SurfaceType& surface,
                           "onto a cylinder's grid)",
                           "a measured part of a surface whose grid is not a cylinder's");
     }
-  }
-  SceneCost cost;
-  cost.inner_cells = shapes[0].cells();
-  cost.outer_cells = shapes[1].cells();
-  const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
-  const double columns = std::max(shapes[0].columns, shapes[1].columns);
-  const double li = inner.geometry->mating_length(), lo = outer.geometry->mating_length();
-  const std::optional<ConfigNode> step_node = model_node.Find("depth_step");
-  if (model.depth_step > 0.0) {
-    cost.depth_steps = std::ceil((li + lo) / model.depth_step);
-  } else if (shapes[0].rows > 0 && shapes[1].rows > 0 && li > 0.0 && lo > 0.0) {
-    // Auto: one step per shortest row.
-    cost.depth_steps = std::ceil((li + lo) / std::min(li / shapes[0].rows, lo / shapes[1].rows));
-  }
-  const double vertices = cost.depth_steps * (columns + 4.0);
-  if (step_node && model.depth_step > 0.0 &&
-      (!(cost.depth_steps < kMaxDepthSteps) || !(vertices < kMaxDepthTableVertices))) {
-    step_node->Fail("a step giving fewer than " + ThreeDigits(kMaxDepthSteps) +
-                        " depth-table rows and " + ThreeDigits(kMaxDepthTableVertices) +
-                        " table vertices over the " + ThreeDigits(li + lo) + " m stroke",
-                    step_node->Describe() + ": " + ThreeDigits(cost.depth_steps) +
-                        " rows of up to " + ThreeDigits(columns + 4.0) + " vertices");
-  }
-  cost.prepare_bytes = cells * kBytesPerCell + cost.depth_steps * kBytesPerDepthStep +
-                       vertices * kBytesPerTableVertex;
-  cost.law_prepare_seconds = Located(grid_key, "a grid the law can estimate", [&] {
-    return surface.EstimatePrepareSeconds(model, shapes[0], shapes[1], cost.depth_steps);
-  });
-  cost.prepare_seconds =
-      cells * kSecondsPerCell + vertices * kSecondsPerTableVertex + cost.law_prepare_seconds;
-  cost.run_bytes = std::round(run.duration * run.rate) * kStreamBytesPerTick;
-  if (!options.allow_large &&
-      (cost.prepare_bytes > kLargeSceneBytes || cost.prepare_seconds > kLargeSceneSeconds)) {
-    // The table is the cost when the step is finer than the rows; otherwise the grid is.
-    const bool table = step_node && model.depth_step > 0.0 &&
-                       vertices * kSecondsPerTableVertex > cells * kSecondsPerCell;
-    const ConfigNode& key = table ? *step_node : grid_key;
-    key.Fail(
-        "a scene that prepares within " + ThreeDigits(kLargeSceneBytes / (1 << 30)) + " GiB and " +
-            ThreeDigits(kLargeSceneSeconds) + " s, or --allow-large to run it anyway",
-        key.Describe() + ": " + ThreeDigits(cells) + " cells, " + ThreeDigits(cost.depth_steps) +
-            " depth steps, about " + ThreeDigits(cost.prepare_bytes / (1 << 20)) + " MiB and " +
-            ThreeDigits(cost.prepare_seconds) + " s to prepare" +
-            (cost.law_prepare_seconds > 0.0 ? " (" + ThreeDigits(cost.law_prepare_seconds) +
-                                                  " s of it the law's own, at worst)"
-                                            : std::string()));
   }
   return cost;
 }
@@ -491,11 +508,71 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
     scene.safety = ParseSafetySection(*safety);
   }
   scene.run = ParseRun(root.Child("run"));
-  scene.cost = CheckPrepare(root.Child("model"), *scene.surface, scene.inner, scene.outer,
-                            scene.model, scene.run, options);
+  scene.cost = CheckPrepare(root, *scene.surface, scene.inner, scene.outer, scene.model,
+                            scene.run, options);
   return scene;
 }
 
 }  // namespace
+
+SceneCost EstimateSceneCost(const Scene& scene) {
+  if (scene.surface == nullptr || scene.inner.geometry == nullptr ||
+      scene.outer.geometry == nullptr) {
+    throw std::invalid_argument("EstimateSceneCost: the scene has no surface type or geometry");
+  }
+  const std::unique_ptr<Discretizer> discretizer = scene.surface->MakeDiscretizer();
+  GridShape shapes[2];
+  const PartSpec* parts[2] = {&scene.inner, &scene.outer};
+  for (int k = 0; k < 2; ++k) {
+    shapes[k] = discretizer == nullptr
+                    ? GridShape{scene.model.resolution.rows, scene.model.resolution.columns}
+                    : discretizer->Shape(*parts[k], scene.model.resolution);
+  }
+  double vertices = 0.0;
+  SceneCost cost = GridCost(shapes, scene.inner, scene.outer, scene.model, scene.run, &vertices);
+  cost.law_prepare_seconds = scene.surface->EstimatePrepareSeconds(scene.model, shapes[0],
+                                                                   shapes[1], cost.depth_steps);
+  cost.prepare_seconds += cost.law_prepare_seconds;
+  return cost;
+}
+
+std::optional<CostRefusal> LargeCostRefusal(const SceneCost& cost) {
+  if (cost.prepare_bytes > kLargeSceneBytes || cost.prepare_seconds > kLargeSceneSeconds) {
+    const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
+    return CostRefusal{
+        "a scene that prepares within " + ThreeDigits(kLargeSceneBytes / (1 << 30)) + " GiB and " +
+            ThreeDigits(kLargeSceneSeconds) + " s, or --allow-large to run it anyway",
+        ThreeDigits(cells) + " cells, " + ThreeDigits(cost.depth_steps) + " depth steps, about " +
+            ThreeDigits(cost.prepare_bytes / (1 << 20)) + " MiB and " +
+            ThreeDigits(cost.prepare_seconds) + " s to prepare" +
+            (cost.law_prepare_seconds > 0.0 ? " (" + ThreeDigits(cost.law_prepare_seconds) +
+                                                  " s of it the law's own, at worst)"
+                                            : std::string()),
+        false};
+  }
+  if (cost.output_bytes > kLargeOutputBytes) {
+    return CostRefusal{"a run whose trace.csv and recording.csv stay within " +
+                           ThreeDigits(kLargeOutputBytes / (1 << 30)) +
+                           " GiB, or --allow-large to write them anyway",
+                       ThreeDigits(cost.output_bytes / (1 << 30)) + " GiB of output (" +
+                           DescribeOutputs(cost) + ")",
+                       true};
+  }
+  return std::nullopt;
+}
+
+std::string DescribeOutputs(const SceneCost& cost) {
+  if (cost.output_bytes <= 0.0) return "no trace or recording";
+  std::string out;
+  if (cost.trace_rows > 0.0) {
+    out += ThreeDigits(cost.trace_rows) + " trace rows of about " +
+           ThreeDigits(kTraceFileBytesPerTick) + " B";
+  }
+  if (cost.recording_rows > 0.0) {
+    out += std::string(out.empty() ? "" : ", ") + ThreeDigits(cost.recording_rows) +
+           " recording rows of about " + ThreeDigits(kRecordingFileBytesPerTick) + " B";
+  }
+  return out;
+}
 
 }  // namespace fitfeel

@@ -46,9 +46,38 @@ struct SceneCost {
   double prepare_seconds = 0.0;
   double law_prepare_seconds = 0.0;  // of it, the law's own worst case (0: none of its own)
   double run_bytes = 0.0;       // what the run keeps per tick (kStreamBytesPerTick each)
+  // What the run writes: rows of trace.csv and recording.csv (0 when not written), and their
+  // bytes estimated at kTraceFileBytesPerTick and kRecordingFileBytesPerTick a row.
+  double trace_rows = 0.0;
+  double recording_rows = 0.0;
+  double output_bytes = 0.0;
 };
 inline constexpr double kLargeSceneBytes = 1.0 * 1024 * 1024 * 1024;
 inline constexpr double kLargeSceneSeconds = 30.0;
+// A row of trace.csv and of recording.csv, estimated from the shipped scenes' runs
+// (docs/scenario-format.md, "Output size"): shortest decimals make a row's length vary with its
+// values; these are above the longest mean measured.
+inline constexpr double kTraceFileBytesPerTick = 360.0;
+inline constexpr double kRecordingFileBytesPerTick = 300.0;
+// The outputs a run writes without --allow-large: an hour at a device's 1 kHz with trace and
+// recording (about 2.4 GB) fits; the longest run the scheduler takes, an hour at 10 kHz (13 GB of
+// trace), would fill a disk unasked and is more than a spreadsheet or a plotting script reads
+// whole. 4 GiB is also the largest file FAT32 media hold.
+inline constexpr double kLargeOutputBytes = 4.0 * 1024 * 1024 * 1024;
+
+// Why the loader refuses a cost without --allow-large, as the two halves of its message; `output`
+// when the outputs are the excess (refused at run.duration), not the preparation (at
+// model.resolution or model.depth_step).
+struct CostRefusal {
+  std::string expected;  // "a scene that prepares within 1 GiB and 30 s, or --allow-large ..."
+  std::string found;     // "8e+06 cells, 40 depth steps, about 1.22e+03 MiB and 80 s to prepare"
+  bool output = false;
+};
+// The refusal of `cost` over kLargeSceneBytes, kLargeSceneSeconds or kLargeOutputBytes (the
+// preparation first); nullopt when every threshold holds.
+FITFEEL_API std::optional<CostRefusal> LargeCostRefusal(const SceneCost& cost);
+// The outputs' rows: "3.6e+06 trace rows of about 400 B, 3.6e+06 recording rows of about 120 B".
+FITFEEL_API std::string DescribeOutputs(const SceneCost& cost);
 
 // The scenario's `run` section.
 struct RunSettings {
@@ -85,17 +114,21 @@ struct LoadOptions {
   // Accept a surface type that renders no forces (the thread stub), for inspecting its skin model
   // shapes and for the conformance suite; `fitfeel run` never sets it.
   bool allow_non_rendering = false;
-  // Accept a scene whose estimated cost exceeds kLargeSceneBytes or kLargeSceneSeconds
-  // (`--allow-large`).
+  // Accept a scene whose estimated cost exceeds kLargeSceneBytes or kLargeSceneSeconds, or whose
+  // outputs exceed kLargeOutputBytes (`--allow-large`).
   bool allow_large = false;
+  // The caller writes the run's trace and recording as the scenario asks (run, validate, the C
+  // API): their estimated size is admitted with the cost. A caller that writes neither (sms,
+  // plot, study) clears it; SceneCost still holds the estimate.
+  bool writes_outputs = true;
 };
 
 // Parses, validates and resolves plugins for one scenario file. Throws ScenarioError
 // (file:line:column, key path, expected, found) for any problem, before anything runs: this is
 // the one checking path, so everything a run could refuse about the scene alone (grid shapes the
 // surface cannot discretize, depth tables over their cap, a run shorter than one tick or over
-// its buffer cap, a cost above the large-scene thresholds, a plugin's own constraints) is refused
-// here, located at the key that causes it.
+// its buffer cap, a cost above the large-scene thresholds, outputs above the large-output one, a
+// plugin's own constraints) is refused here, located at the key that causes it.
 FITFEEL_API Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
                             const LoadOptions& options = {});
 // The same from YAML text (an engine's own scene, the C API); `name` stands for the file in
@@ -103,5 +136,12 @@ FITFEEL_API Scene LoadScene(const std::filesystem::path& file, const PluginRegis
 FITFEEL_API Scene LoadSceneFromYaml(std::string_view text, const std::filesystem::path& name,
                                     const PluginRegistry& registry,
                                     const LoadOptions& options = {});
+
+// What preparing and running `scene` costs with its settings as they are now: for a command that
+// changes a loaded scene's grid or duration (tradeoff's ladder and --duration) and must admit the
+// change as the loader admits the scene's own (LargeCostRefusal). Throws UserError for a
+// resolution the surface type cannot discretize, std::invalid_argument for a scene without a
+// surface type or geometries.
+FITFEEL_API SceneCost EstimateSceneCost(const Scene& scene);
 
 }  // namespace fitfeel

@@ -110,6 +110,17 @@ std::string DescribeScene(const Scene& scene) {
               ? " (" + Number(cost.law_prepare_seconds, "%.3g") + " s of it the law's, at worst)"
               : std::string()) +
          ", " + Number(cost.run_bytes / (1 << 20), "%.3g") + " MiB for the run\n";
+  // What the run writes (docs/scenario-format.md, "Output size"), estimated before it runs.
+  const double gib = 1024.0 * 1024.0 * 1024.0;
+  out += "output       " +
+         (cost.output_bytes > 0.0
+              ? "about " +
+                    (cost.output_bytes < gib
+                         ? Number(cost.output_bytes / (1 << 20), "%.3g") + " MiB"
+                         : Number(cost.output_bytes / gib, "%.3g") + " GiB") +
+                    " (" + DescribeOutputs(cost) + ")"
+              : DescribeOutputs(cost)) +
+         "\n";
   return out;
 }
 

@@ -37,14 +37,23 @@ double Stat(const nlohmann::json& summary, const char* key, const char* field) {
   return it->at(field).get<double>();
 }
 
+// The loader's options of a study: no trace or recording is written (only the summary's
+// statistics), so their size is not admitted.
+LoadOptions StudyLoad(bool allow_large) {
+  LoadOptions load;
+  load.allow_large = allow_large;
+  load.writes_outputs = false;
+  return load;
+}
+
 PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int index,
-                   std::uint64_t study_seed) {
+                   std::uint64_t study_seed, const LoadOptions& load) {
   PairResult pair;
   pair.pair = index;
   pair.seed = PairSeed(study_seed, index);
   // A scene of its own per pair: its own device and plugin objects, nothing shared between pairs
   // but the registry's read-only tables.
-  Scene scene = LoadScene(file, registry);
+  Scene scene = LoadScene(file, registry, load);
   const bool checked =
       scene.inner.material.yield_strength > 0.0 || scene.outer.material.yield_strength > 0.0;
   scene.run.write_trace = false;
@@ -92,7 +101,7 @@ nlohmann::json DistributionJson(const Distribution& d) {
 PairResult RunStudyPair(const fs::path& file, const PluginRegistry& registry, std::uint64_t seed,
                         int index) {
   if (index < 0) throw UserError("study: pair index must be >= 0, got " + std::to_string(index));
-  return RunPair(file, registry, index, seed);
+  return RunPair(file, registry, index, seed, StudyLoad(false));
 }
 
 std::uint64_t PairSeed(std::uint64_t seed, int index) {
@@ -131,7 +140,7 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
                     std::to_string(settings.threads));
   }
   // Every refusal of the scene comes now, before any pair runs (and from this thread).
-  const Scene checked = LoadScene(file, registry);
+  const Scene checked = LoadScene(file, registry, StudyLoad(settings.allow_large));
   if (!checked.device) {
     throw UserError("study: scene '" + checked.name + "' has no device '" + checked.device_id +
                     "'");
@@ -157,7 +166,8 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
       const int i = next.fetch_add(1);
       if (i >= settings.pairs) return;
       try {
-        slots[static_cast<std::size_t>(i)] = RunPair(file, registry, i, settings.seed);
+        slots[static_cast<std::size_t>(i)] = RunPair(file, registry, i, settings.seed,
+                                                       StudyLoad(settings.allow_large));
       } catch (...) {
         std::lock_guard<std::mutex> lock(report_mutex);
         if (!failure) failure = std::current_exception();

@@ -25,6 +25,8 @@ struct StudySettings {
   int pairs = 100;
   std::uint64_t seed = 1;
   int threads = 1;
+  // Run a scene whose estimated preparation exceeds the large-scene thresholds (LoadOptions).
+  bool allow_large = false;
   // Polled before each pair starts; when it becomes true no new pair starts and the pairs under
   // way finish, so the result holds the pairs 0 .. k-1 for some k (a valid, smaller study).
   const std::atomic<bool>* stop = nullptr;

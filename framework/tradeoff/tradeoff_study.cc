@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <numeric>
@@ -94,18 +95,20 @@ std::string SixDigitCell(double value) {
   return std::string(buffer, result.ptr);
 }
 
-std::string ReadText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read '" + path.string() + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+std::string ThreeDigits(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
 }
 
 }  // namespace
 
 std::vector<double> ConstrainedFy(const std::string& trace_csv) {
   std::istringstream in(trace_csv);
+  return ConstrainedFy(in);
+}
+
+std::vector<double> ConstrainedFy(std::istream& in) {
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error("trace has no header");
   int stage_column = -1, fy_column = -1;
@@ -237,6 +240,73 @@ std::vector<GridRow> Summarize(const std::vector<std::string>& labels,
   return sorted;
 }
 
+void AdmitLadder(const Scene& scene, const TradeoffSettings& settings) {
+  if (settings.seeds < 1) throw UserError("tradeoff: --seeds must be at least 1");
+  Scene probe = scene;
+  if (settings.duration) probe.run.duration = *settings.duration;
+  probe.run.write_trace = true;  // each run's trace is written, then read back
+  probe.run.write_summary = false;
+  probe.run.write_recording = false;
+  double ticks = 0.0;
+  for (const Resolution& grid : settings.ladder) {
+    probe.model.resolution = grid;
+    SceneCost cost;
+    try {
+      cost = EstimateSceneCost(probe);
+    } catch (const UserError& e) {
+      throw UserError("tradeoff: --resolutions: expected a grid the surface type can discretize, "
+                      "found " + Label(grid) + ": " + e.what());
+    }
+    ticks = cost.trace_rows;
+    if (settings.allow_large) continue;
+    if (const std::optional<CostRefusal> refusal = LargeCostRefusal(cost)) {
+      throw UserError(
+          std::string("tradeoff: ") + (refusal->output ? "--duration" : "--resolutions") +
+          ": expected " + refusal->expected + ", found " +
+          (refusal->output ? ThreeDigits(probe.run.duration) + " s" : Label(grid)) + ": " +
+          refusal->found);
+    }
+  }
+  // The comparison holds every run's axial trace (a double per tick) until it summarizes.
+  const double held = static_cast<double>(settings.ladder.size()) * settings.seeds * ticks *
+                      static_cast<double>(sizeof(double));
+  if (!settings.allow_large && held > kLargeSceneBytes) {
+    throw UserError("tradeoff: --seeds: expected a study whose axial traces (8 B a tick of every "
+                    "run) are held within " + ThreeDigits(kLargeSceneBytes / (1 << 30)) +
+                    " GiB, or --allow-large to run it anyway, found " +
+                    std::to_string(settings.ladder.size()) +
+                    (settings.ladder.size() == 1 ? " grid x " : " grids x ") +
+                    std::to_string(settings.seeds) + " seeds x " + ThreeDigits(ticks) +
+                    " ticks: " + ThreeDigits(held / (1 << 30)) + " GiB");
+  }
+}
+
+std::vector<Resolution> AdmittedGrids(const Scene& scene, const std::vector<Resolution>& ladder,
+                                      bool allow_large, std::vector<std::string>* left_out) {
+  Scene probe = scene;
+  std::vector<Resolution> admitted;
+  for (const Resolution& grid : ladder) {
+    probe.model.resolution = grid;
+    SceneCost cost;
+    try {
+      cost = EstimateSceneCost(probe);
+    } catch (const UserError& e) {
+      left_out->push_back(Label(grid) + ", which the surface type cannot discretize (" +
+                          e.what() + ")");
+      continue;
+    }
+    cost.output_bytes = 0.0;  // the same for every grid: AdmitLadder's
+    const std::optional<CostRefusal> refusal = LargeCostRefusal(cost);
+    if (refusal && !allow_large) {
+      left_out->push_back(Label(grid) + ", over the large-scene thresholds (" + refusal->found +
+                          "; --allow-large keeps it)");
+      continue;
+    }
+    admitted.push_back(grid);
+  }
+  return admitted;
+}
+
 std::vector<GridRow> RunTradeoff(const std::function<Scene()>& load,
                                  const TradeoffSettings& settings) {
   if (settings.ladder.empty()) throw UserError("tradeoff: no grid to run");
@@ -244,6 +314,7 @@ std::vector<GridRow> RunTradeoff(const std::function<Scene()>& load,
   if (settings.duration && !(*settings.duration > 0.0 && std::isfinite(*settings.duration))) {
     throw UserError("tradeoff: --duration must be a positive time");
   }
+  AdmitLadder(load(), settings);
 
   std::vector<std::string> labels;
   std::vector<std::vector<RunSample>> runs;
@@ -272,7 +343,9 @@ std::vector<GridRow> RunTradeoff(const std::function<Scene()>& load,
       sample.prepare_seconds = result.info.prepare_seconds;
       sample.tick_p50_us = result.stats.compute_us.p50;
       sample.tick_p99_us = result.stats.compute_us.p99;
-      sample.fy = ConstrainedFy(ReadText(result.paths.trace));
+      std::ifstream trace(result.paths.trace, std::ios::binary);
+      if (!trace) throw std::runtime_error("cannot read '" + result.paths.trace.string() + "'");
+      sample.fy = ConstrainedFy(trace);
       samples.push_back(std::move(sample));
     }
     std::string label = Label(grid);

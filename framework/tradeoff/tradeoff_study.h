@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <istream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,9 @@ struct TradeoffSettings {
   std::vector<Resolution> ladder;  // grids to run, any order; auto: the surface type's choice
   int seeds = 10;                  // runs per grid, with seeds run.seed, run.seed + 1, ...
   std::optional<double> duration;  // overrides run.duration, s
+  // Run grids whose estimated preparation or trace exceeds the loader's large-scene thresholds,
+  // and ladders whose traces held for the comparison exceed kLargeSceneBytes (--allow-large).
+  bool allow_large = false;
   // Called with one line per finished grid (for a progress display); may be empty.
   std::function<void(const std::string&)> progress;
 };
@@ -79,8 +83,25 @@ struct GridRow {
 FITFEEL_API std::vector<GridRow> Summarize(const std::vector<std::string>& labels,
                                            const std::vector<std::vector<RunSample>>& runs);
 
+// Admits the study as the loader admits a scene (LargeCostRefusal), before anything runs: every
+// grid of the ladder prepared on `scene` (its resolution replaced), each run's trace at the
+// study's duration, and the axial traces the comparison holds (8 B per tick of every run).
+// Throws UserError naming the option to change (--resolutions, --duration or --seeds) with the
+// estimate, unless settings.allow_large; UserError too for a grid the surface type cannot
+// discretize.
+FITFEEL_API void AdmitLadder(const Scene& scene, const TradeoffSettings& settings);
+
+// The grids of `ladder` that `scene` can be discretized on and, unless `allow_large`, prepares
+// within the large-scene thresholds (for a ladder the user did not choose: the default one); each
+// grid left out is described in `left_out`, why included ("160x1440, over the large-scene
+// thresholds (4.61e+05 cells, ...; --allow-large keeps it)").
+FITFEEL_API std::vector<Resolution> AdmittedGrids(const Scene& scene,
+                                                  const std::vector<Resolution>& ladder,
+                                                  bool allow_large,
+                                                  std::vector<std::string>* left_out);
+
 // Runs the scene at every grid with every seed (virtual clock, trace kept in a private temporary
-// folder) and summarizes. `load` returns a freshly loaded scene (a run consumes its device).
+// folder) and summarizes, after AdmitLadder on the first scene `load` gives. `load` returns a freshly loaded scene (a run consumes its device).
 // An `auto` grid that resolves to a grid of the ladder is reported once, under both names.
 FITFEEL_API std::vector<GridRow> RunTradeoff(const std::function<Scene()>& load,
                                              const TradeoffSettings& settings);
@@ -91,5 +112,7 @@ FITFEEL_API std::string TradeoffCsv(const std::vector<GridRow>& rows);
 // Reads the fy column of a trace.csv text, NaN on ticks outside the constrained stage. Throws
 // std::runtime_error when the text lacks the columns (the runtime's format changed).
 FITFEEL_API std::vector<double> ConstrainedFy(const std::string& trace_csv);
+// The same from a stream, read a line at a time (a run's trace file, which may be large).
+FITFEEL_API std::vector<double> ConstrainedFy(std::istream& trace_csv);
 
 }  // namespace fitfeel::tradeoff

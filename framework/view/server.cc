@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <deque>
 #include <functional>
 #include <tuple>
@@ -48,7 +49,14 @@ struct Server::Impl {
   struct Session;
 
   Impl(const ViewModel& m, TickPublisher* p, std::vector<ViewSample> h, const ServerOptions& o)
-      : model(m), publisher(p), options(o), acceptor(io), timer(io) {
+      : model(m),
+        publisher(p),
+        options(o),
+        acceptor(io),
+        timer(io),
+        scene_frame(std::make_shared<const std::string>(m.scene_message())),
+        mesh_frames{std::make_shared<const std::string>(m.mesh_frame(0)),
+                    std::make_shared<const std::string>(m.mesh_frame(1))} {
     if (!h.empty()) SetHistory(std::move(h));
   }
 
@@ -79,6 +87,30 @@ struct Server::Impl {
     return false;
   }
 
+  // Whether one more WebSocket client is served; when not, counts the refusal and, the first
+  // time since the clients were fewer, says so on standard error.
+  bool Admit(const std::string& peer) {
+    if (clients.load(std::memory_order_relaxed) < options.max_clients) {
+      refusing = false;
+      return true;
+    }
+    refused.fetch_add(1, std::memory_order_relaxed);
+    if (!refusing) {
+      refusing = true;
+      const std::string line =
+          "fitfeel view: " + std::to_string(options.max_clients) +
+          " viewer clients connected, the most served at once (--max-clients): refusing " + peer +
+          " and any more until one leaves (HTTP 503)";
+      if (options.log) {
+        options.log(line);
+      } else {
+        std::fprintf(stderr, "%s\n", line.c_str());
+        std::fflush(stderr);
+      }
+    }
+    return false;
+  }
+
   void Accept();
   void Pulse();
   void Broadcast(const Frame& frame);
@@ -89,6 +121,8 @@ struct Server::Impl {
   // Before io: sessions that io's destructor destroys still count themselves out.
   std::atomic<std::uint64_t> frames_sent{0};
   std::atomic<int> clients{0};
+  std::atomic<std::uint64_t> refused{0};
+  bool refusing = false;  // the server thread's: refused since the clients were fewer
   asio::io_context io;
   tcp::acceptor acceptor;
   asio::steady_timer timer;
@@ -101,10 +135,14 @@ struct Server::Impl {
   ViewSample latest;
   bool have_latest = false;
   Frame latest_frame;
+  // Encoded once, queued to every client as the same buffers.
+  const Frame scene_frame;
+  const Frame mesh_frames[2];
 };
 
 // One WebSocket client. Frames the client must get (scene, meshes, history) queue in order; state
-// frames share one slot that always holds the newest, so a slow client bounds its own memory.
+// frames share one slot that always holds the newest, so a slow client bounds its own memory. Every
+// frame is the server's shared buffer (a seek's state frame excepted): queuing one copies a pointer.
 struct Server::Impl::Session : std::enable_shared_from_this<Session> {
   Session(Impl& s, tcp::socket socket) : server(s), ws(std::move(socket)) {}
   ~Session() { server.clients.fetch_sub(1, std::memory_order_relaxed); }
@@ -115,11 +153,8 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
     ws.read_message_max(kMaxClientMessage);
     ws.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
-      self->Queue(std::make_shared<const std::string>(self->server.model.scene_message()), true);
-      for (int part : {0, 1}) {
-        self->Queue(std::make_shared<const std::string>(self->server.model.mesh_frame(part)),
-                    false);
-      }
+      self->Queue(self->server.scene_frame, true);
+      for (int part : {0, 1}) self->Queue(self->server.mesh_frames[part], false);
       if (self->server.history_frame) self->Queue(self->server.history_frame, false);
       if (self->server.latest_frame) self->Offer(self->server.latest_frame);
       self->Read();
@@ -204,8 +239,12 @@ namespace {
 // One HTTP request per connection: the page's assets, or the upgrade to the WebSocket.
 struct HttpSession : std::enable_shared_from_this<HttpSession> {
   using Upgrade = std::function<void(tcp::socket, http::request<http::empty_body>)>;
-  HttpSession(tcp::socket socket, std::function<bool(std::string_view)> origin_ok, Upgrade up)
-      : stream(std::move(socket)), origin_allowed(std::move(origin_ok)), upgrade(std::move(up)) {
+  HttpSession(tcp::socket socket, std::function<bool(std::string_view)> origin_ok,
+              std::function<bool(const std::string&)> admit_client, Upgrade up)
+      : stream(std::move(socket)),
+        origin_allowed(std::move(origin_ok)),
+        admit(std::move(admit_client)),
+        upgrade(std::move(up)) {
     parser.header_limit(Server::kMaxRequestHeader);
     parser.body_limit(0);
   }
@@ -232,6 +271,14 @@ struct HttpSession : std::enable_shared_from_this<HttpSession> {
       const auto origin = request[http::field::origin];
       if (!origin_allowed(std::string_view(origin.data(), origin.size()))) {
         return Reply(403, "origin not allowed\n");
+      }
+      beast::error_code ec;
+      const tcp::endpoint peer = stream.socket().remote_endpoint(ec);
+      if (!admit(ec ? std::string("a client")
+                    : peer.address().to_string() + ":" + std::to_string(peer.port()))) {
+        return Reply(503,
+                     "this viewer serves no more clients at once (--max-clients); close another "
+                     "viewer page and reload\n");
       }
       stream.expires_never();
       return upgrade(stream.release_socket(), std::move(request));
@@ -276,6 +323,7 @@ struct HttpSession : std::enable_shared_from_this<HttpSession> {
   beast::flat_buffer buffer;
   http::request_parser<http::empty_body> parser;
   std::function<bool(std::string_view)> origin_allowed;
+  std::function<bool(const std::string&)> admit;
   Upgrade upgrade;
 };
 
@@ -287,6 +335,7 @@ void Server::Impl::Accept() {
     if (!ec) {
       auto session = std::make_shared<HttpSession>(
           std::move(socket), [this](std::string_view origin) { return OriginAllowed(origin); },
+          [this](const std::string& peer) { return Admit(peer); },
           [this](tcp::socket s, http::request<http::empty_body> request) {
             auto ws = std::make_shared<Session>(*this, std::move(s));
             sessions.push_back(ws);
@@ -341,6 +390,10 @@ Server::Server(const ViewModel& model, TickPublisher* publisher, std::vector<Vie
   if (!(options.frame_rate >= 1.0 && options.frame_rate <= 240.0)) {
     throw UserError("viewer frame rate must be in [1, 240] Hz");
   }
+  if (options.max_clients < 1 || options.max_clients > kMaxClientsCap) {
+    throw UserError("viewer: --max-clients must be in 1.." + std::to_string(kMaxClientsCap) +
+                    ", got " + std::to_string(options.max_clients));
+  }
   impl_ = std::make_unique<Impl>(model, publisher, std::move(history), options);
 }
 
@@ -385,5 +438,8 @@ std::uint64_t Server::frames_sent() const {
   return impl_->frames_sent.load(std::memory_order_relaxed);
 }
 int Server::clients() const { return impl_->clients.load(std::memory_order_relaxed); }
+std::uint64_t Server::clients_refused() const {
+  return impl_->refused.load(std::memory_order_relaxed);
+}
 
 }  // namespace fitfeel::view

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,22 +17,35 @@ struct ServerOptions {
   std::string host = "127.0.0.1";  // loopback unless told otherwise
   unsigned short port = 0;         // 0: a free port (see Server::port)
   double frame_rate = 60.0;        // state frames per second, Hz
+  // WebSocket clients served at once, in [1, Server::kMaxClientsCap]; one more is answered 503.
+  // Each costs the server's one thread a state frame per display period (0.9 MB/s at the paper's
+  // grid and 60 Hz): 64 browsers, a classroom, take 55 MB/s.
+  int max_clients = 64;
+  // Receives the server's notices, a line each without its line break, on the server's thread;
+  // empty: standard error.
+  std::function<void(const std::string&)> log;
 };
 
 // The viewer's HTTP and WebSocket server (Boost.Beast on one thread of its own): the page and its
 // scripts at fixed paths (anything else 404), the WebSocket at /ws (Origin checked against the
 // served host, messages from the browser at most kMaxClientMessage bytes). Every client gets the
 // scene message, both mesh frames, then state frames at `frame_rate` sampled from the publisher,
-// and the history of a finished run once there is one. A client that is slower than the frames
-// keeps at most one state frame waiting (the newest); one that disconnects is dropped.
+// and the history of a finished run once there is one. The scene message, the mesh frames, the
+// history and each state frame are encoded once and shared by every client that has them waiting,
+// so a client costs its socket and a few pointers, not copies of the frames. A client that is
+// slower than the frames keeps at most one state frame waiting (the newest); one that disconnects
+// is dropped. Beyond `max_clients` an upgrade is answered 503 with a text body, and a line on
+// standard error says so (once, until a client is served again).
 class FITFEEL_API Server {
  public:
   static constexpr std::size_t kMaxClientMessage = 256;
   static constexpr std::size_t kMaxRequestHeader = 8192;
   static constexpr std::size_t kMaxHistoryRows = 4000;
+  static constexpr int kMaxClientsCap = 4096;
 
   // `publisher` (live run, may be null) and `model` are borrowed and must outlive the server.
-  // `history`: the rows of a finished run to serve (opened with --trace), or empty.
+  // `history`: the rows of a finished run to serve (opened with --trace), or empty. Throws
+  // UserError for a frame rate outside [1, 240] Hz or max_clients outside [1, kMaxClientsCap].
   Server(const ViewModel& model, TickPublisher* publisher, std::vector<ViewSample> history,
          const ServerOptions& options);
   ~Server();
@@ -48,6 +62,8 @@ class FITFEEL_API Server {
   // command's summary).
   std::uint64_t frames_sent() const;
   int clients() const;
+  // WebSocket upgrades answered 503 because max_clients were connected (any thread).
+  std::uint64_t clients_refused() const;
 
  private:
   struct Impl;

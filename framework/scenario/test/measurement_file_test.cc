@@ -3,6 +3,7 @@
 #include "framework/scenario/measurement_file.h"
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -130,6 +131,50 @@ TEST_F(MeasurementFileTest, AMissingFileIsRefusedAtItsKey) {
   // A device never ends: refused before reading.
   EXPECT_THROW(ReadMeasurement("/dev/zero", MeasurementKind::kPoints, 0.01, key_), ScenarioError);
   EXPECT_THROW(ReadMeasurement(dir_, MeasurementKind::kPoints, 0.01, key_), ScenarioError);
+}
+
+// The file is read a block at a time: a line ending split between two blocks (CR at the end of
+// one, LF at the start of the next) is one ending, and lines keep the numbers an editor shows.
+TEST_F(MeasurementFileTest, ALineEndingAcrossTwoBlocksIsOneEnding) {
+  const std::size_t block = std::size_t{1} << 16;
+  const std::string head = "height [um],angle [rad],deviation [um]\n";
+  std::string text = head + "# " + std::string(block - head.size() - 3, 'c') + "\r\n";
+  ASSERT_EQ(text[block - 1], '\r');
+  text += "0,0,1\r\n0,1,1\r0,2,1\n0,2,x\n";
+  const ScenarioError e = Refusal(text);
+  EXPECT_EQ(e.where().line, 6) << e.what();
+  EXPECT_EQ(e.where().column, 5) << e.what();
+}
+
+TEST_F(MeasurementFileTest, ALineLongerThanTheCapIsRefusedAtItsStart) {
+  const std::string head = "height [um],angle [rad],deviation [um]\n";
+  const ScenarioError e =
+      Refusal(head + "0,0,1\n" + std::string(kMaxMeasurementLineBytes + 1, '7') + "\n0,1,1\n");
+  EXPECT_EQ(e.where().line, 3) << e.what();
+  EXPECT_EQ(e.where().column, 1) << e.what();
+  EXPECT_NE(e.expected().find("a line of at most 65536 bytes"), std::string::npos) << e.what();
+  EXPECT_EQ(e.found(), "a longer line: '" + std::string(40, '7') + "'...") << e.what();
+  // A line of exactly the cap is read (and refused for what it holds, not for its length).
+  const ScenarioError at_cap =
+      Refusal(head + "0,0,1\n" + std::string(kMaxMeasurementLineBytes, '7') + "\n");
+  EXPECT_EQ(at_cap.expected(), "3 cells, as the header") << at_cap.what();
+}
+
+// A found text is whole in the message: quoted, its control bytes (a NUL would end the message
+// where it is printed) escaped, cut to 40 characters with "...", never inside a UTF-8 character.
+TEST_F(MeasurementFileTest, AFoundTextIsEscapedAndShortened) {
+  const std::string head = "height [um],angle [rad],deviation [um]\n";
+  ScenarioError e = Refusal(head + "0,0," + std::string("1\0\x01x", 4) + "\n");
+  EXPECT_EQ(e.found(), "'1\\x00\\x01x'");
+  EXPECT_EQ(std::string(e.what()).size(), std::strlen(e.what())) << "a NUL in the message";
+  e = Refusal(head + "0,0," + std::string(1000, 'z') + "\n");
+  EXPECT_EQ(e.found(), "'" + std::string(40, 'z') + "'...");
+  std::string micro;
+  for (int k = 0; k < 30; ++k) micro += "\xc2\xb5";  // 30 x 'µ', two bytes each
+  e = Refusal(head + "0,0," + std::string(20, 'a') + micro + "\n");
+  EXPECT_EQ(e.found(), "'" + std::string(20, 'a') + micro.substr(0, 40) + "'...");
+  e = Refusal("height [um],angle [rad],deviation [" + std::string(200, 'u') + "]\n");
+  EXPECT_EQ(e.found(), "'" + std::string(40, 'u') + "'...") << e.what();
 }
 
 }  // namespace

@@ -169,7 +169,9 @@ TEST_F(SceneTest, AnHourAtTheHighestRateWithARecordingIsAccepted) {
   fs::create_directories(dir);
   const fs::path file = dir / "hour_at_10kHz.yaml";
   std::ofstream(file) << text;
-  const Scene scene = LoadScene(file, registry_);
+  LoadOptions large;
+  large.allow_large = true;  // its outputs, tens of GiB, are over the large-output threshold
+  const Scene scene = LoadScene(file, registry_, large);
   EXPECT_EQ(scene.run.duration, 3600.0);
   EXPECT_TRUE(scene.run.write_recording);
   EXPECT_LE(scene.cost.run_bytes, kMaxRunBufferBytes);
