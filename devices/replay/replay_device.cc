@@ -77,9 +77,6 @@ void ReplayDevice::DoRead(double time, DeviceState* out) noexcept {
   const std::size_t i = after == s.begin() ? 0 : static_cast<std::size_t>(after - s.begin()) - 1;
   const RecordedSample& a = s[i];
   out->buttons = a.buttons;
-  // A load the part carries switches on at the entrance: held from the earlier sample like the
-  // buttons, never blended.
-  out->load = a.load;
   if (i + 1 >= s.size() || tau == a.time) {
     out->position = a.position;
     out->orientation = a.orientation;

@@ -31,6 +31,12 @@ void RefuseMovedKeys(const ConfigNode& node) {
         "`part_motion: {damping: ...}`",
         damping->Describe());
   }
+  if (const auto load = node.Find("radial_load")) {
+    load->Fail(
+        "no `radial_load` here: the load acting on the part across the axis is the scene's "
+        "`part_motion: {radial_load: ...}`",
+        load->Describe());
+  }
 }
 
 }  // namespace
@@ -42,24 +48,22 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
       mode ? mode->AsOneOf({"constant_speed", "constant_rotation", "scripted"}) : "constant_speed";
   RefuseMovedKeys(node);
   if (name == "constant_speed") {
-    node.ExpectOnlyKeys({"plugin", "mode", "speed", "radial_load", "start_offset", "stop_force"});
+    node.ExpectOnlyKeys({"plugin", "mode", "speed", "start_offset", "stop_force"});
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
     // robot holds; 1 m of approach is the size of a workcell.
     s.speed = node.Child("speed").AsQuantityIn(Dimension::kVelocity, 0.0, 1.0, false);
-    s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
     s.start_offset = Optional(node, "start_offset", Dimension::kLength, 0.0, 1.0, 1e-3);
     // A press's force monitoring: 1 MN is beyond any bench press.
     s.stop_force = Optional(node, "stop_force", Dimension::kForce, 0.0, 1e6, 0.0);
   } else if (name == "constant_rotation") {
-    node.ExpectOnlyKeys({"plugin", "mode", "angular_speed", "swing", "radial_load"});
+    node.ExpectOnlyKeys({"plugin", "mode", "angular_speed", "swing"});
     s.mode = Settings::Mode::kConstantRotation;
     // 100 rad/s is far beyond a plain bearing's oscillation; a swing beyond half a turn each way
     // is a rotation (0 or no key: continuous).
     s.angular_speed =
         node.Child("angular_speed").AsQuantityIn(Dimension::kAngularVelocity, 0.0, 100.0, false);
     s.swing = Optional(node, "swing", Dimension::kAngle, 0.0, M_PI + 1e-9, 0.0);
-    s.radial_load = Optional(node, "radial_load", Dimension::kForce, 0.0, 1e4, 0.0);
   } else {
     node.ExpectOnlyKeys({"plugin", "mode", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;

@@ -23,7 +23,6 @@ void Validate(const Settings& s) {
     Require(InRange(s.speed, 0.0, 1.0) && s.speed > 0.0, "speed must be in (0, 1] m/s");
     Require(InRange(s.start_offset, 0.0, 1.0), "start_offset must be in [0, 1] m");
     Require(InRange(s.stop_force, 0.0, 1e6), "stop_force must be in [0, 1] MN");
-    Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
     return;
   }
   if (s.mode == Settings::Mode::kConstantRotation) {
@@ -33,7 +32,6 @@ void Validate(const Settings& s) {
             "angular_speed must be in (0, 100] rad/s");
     Require(InRange(s.swing, 0.0, M_PI + 1e-9),
             "swing must be in [0, 180] deg (0: continuous rotation)");
-    Require(InRange(s.radial_load, 0.0, 1e4), "radial_load must be in [0, 10] kN");
     return;
   }
   Require(!s.waypoints.empty(), "a scripted run needs at least one waypoint");
@@ -184,10 +182,6 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   out->velocity = velocity_;
   out->buttons = 0;
   out->delivered = delivered_;
-  out->load.setZero();
-  if (settings_.mode != Settings::Mode::kScripted && position_.y() >= 0.0) {
-    out->load = Eigen::Vector2d(0.0, -settings_.radial_load);
-  }
 }
 
 void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {

@@ -20,16 +20,13 @@ struct Settings {
   // kConstantSpeed: the paper's case-study robot.
   double speed = 10e-3;         // insertion speed along +y, m/s (paper: 10 mm/s)
   double start_offset = 1e-3;   // leading end this far before the entrance at t = 0, m
-  // Constant radial load along -z (the part's weight), N: reported as DeviceState::load once the
-  // leading end is inside; the scene's part_motion says what the part does under it.
-  double radial_load = 0.0;
   // A force-driven press: the ram stops advancing (and holds its position) at the first tick whose
   // axial resistance reaches this force; 0: it never stops (a position-driven robot).
   double stop_force = 0.0;  // N
 
   // kConstantRotation: a drive turning the moving part about the mating axis y at a constant
   // angular speed, its leading end held at the entrance (depth 0: a captive part such as a
-  // bearing's ball, whose analyzer ignores the depth). radial_load acts as in kConstantSpeed.
+  // bearing's ball, whose analyzer ignores the depth).
   double angular_speed = 0.0;  // rad/s, > 0
   // Half angle beta of an oscillation (ISO 12240 / maker catalogues: one full oscillation sweeps
   // 4 beta): 0 for continuous rotation, else the angle runs 0 -> +beta -> -beta -> +beta ... at
@@ -63,11 +60,11 @@ struct Settings {
 // the leading end at the entrance (y = 0) from the first tick: the orientation's twist about y is
 // the mating pose's angle and angular_velocity.y its rate. Radially it is the robot below.
 //
-// Radially both are a trajectory and a load source: the device holds the leading end on the axis
-// (x = z = 0) and, once it is inside (y >= 0), reports radial_load along -z as the load acting on
-// the part (DeviceState::load), as the paper's robot positions the shaft before inserting it and
-// then lets its weight act. Whether the part is then held, settled quasi-statically or floats under
-// that load is the framework's (PartMotion, the scene's `part_motion`), not the device's.
+// Radially both are a trajectory: the device holds the leading end on the axis (x = z = 0). The
+// load that acts on the part once it is inside (its weight, as the paper's robot positions the
+// shaft before inserting it and then lets its weight act) and whether the part is then held,
+// settled quasi-statically or floats under it are the scene's `part_motion` (PartMotion), not the
+// device's.
 //
 // Scripted: the leading end is a hand of mass m_h held by a spring k_h and damper b_h to a target
 // moving in straight lines between waypoints (held at the first before it and at the last after

@@ -156,7 +156,6 @@ int fitfeel_step(fitfeel_scene* s, const fitfeel_device_state* d, fitfeel_wrench
   state.velocity = Eigen::Vector3d(d->velocity[0], d->velocity[1], d->velocity[2]);
   state.angular_velocity =
       Eigen::Vector3d(d->angular_velocity[0], d->angular_velocity[1], d->angular_velocity[2]);
-  state.load = Eigen::Vector2d(d->settle_load[0], d->settle_load[1]);
   state.buttons = d->buttons;
   s->device->Set(state);
   const bool ticked = !s->done && s->scheduler->Tick(d->time);

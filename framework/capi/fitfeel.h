@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 #define FITFEEL_C_API __attribute__((visibility("default")))
-#define FITFEEL_C_ABI_VERSION 1
+#define FITFEEL_C_ABI_VERSION 2
 
 enum {
   FITFEEL_OK = 0,
@@ -42,9 +42,6 @@ typedef struct {
   double orientation[4];     /* unit quaternion w, x, y, z */
   double velocity[3];
   double angular_velocity[3];
-  /* The radial load (x, z) acting on the part (its weight once inside); 0: none. What the part
-     does under it is the scene's part_motion (quasi_static by default: settled). */
-  double settle_load[2];
   uint32_t buttons;
 } fitfeel_device_state;
 

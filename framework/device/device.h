@@ -38,12 +38,6 @@ struct DeviceState {
   std::uint32_t buttons = 0;
   // Wrench the device delivered in the previous tick after its own limits (for recording).
   Wrench delivered;
-  // The external radial load (x, z components, N) the device lets act on the moving part: the
-  // paper's case-study robot lets the shaft's weight act once its leading end is inside. What the
-  // part does under it is the framework's (PartMotion, the scene's `part_motion`): held, settled
-  // quasi-statically by the constrained stage, or integrated. In the state the stages see, it is
-  // the load to settle the part under (zero unless `part_motion.radial` is quasi_static).
-  Eigen::Vector2d load{0.0, 0.0};
 };
 
 // A contact stiffness handed over per tick (N/m) as its users take it: what is not a finite,

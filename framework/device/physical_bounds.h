@@ -20,13 +20,13 @@ inline constexpr double kMaxDeviceForce = 1e7;            // N (torques: N*m), e
 inline constexpr double kMaxQuaternionNormError = 1e-6;
 
 // Whether a live device state is finite and inside the bounds above (positions, speeds, the
-// orientation's unit length, the settle load). Cheap: for the tick.
+// orientation's unit length). Cheap: for the tick.
 inline bool DeviceStateInBounds(const DeviceState& s) noexcept {
   auto within = [](const auto& v, double bound) {
     return v.allFinite() && v.cwiseAbs().maxCoeff() <= bound;
   };
   return within(s.position, kMaxDevicePosition) && within(s.velocity, kMaxDeviceSpeed) &&
-         within(s.angular_velocity, kMaxDeviceAngularSpeed) && within(s.load, kMaxDeviceForce) &&
+         within(s.angular_velocity, kMaxDeviceAngularSpeed) &&
          s.orientation.coeffs().allFinite() &&
          std::abs(s.orientation.squaredNorm() - 1.0) <= kMaxQuaternionNormError;
 }

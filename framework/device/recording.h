@@ -27,7 +27,7 @@ struct RecordedSample {
   std::uint32_t buttons = 0;
   Wrench commanded;  // what the framework wrote to the device (after the safety chain)
   Wrench delivered;  // what the device reported delivering (DeviceState::delivered)
-  Eigen::Vector2d load{0.0, 0.0};  // DeviceState::load (x, z), N
+  Eigen::Vector2d load{0.0, 0.0};  // the radial load that acted on the part (x, z), N
 };
 
 // Header facts of a recording.
@@ -65,8 +65,9 @@ class FITFEEL_API RecordingError : public UserError {
 // Every column name ends in its unit after the last '_'. Numbers are written in the shortest form
 // that reads back to the same double, so a recording round-trips bit for bit. The end line makes a
 // truncated file detectable.
-// Version 2 added the settled radial load (settle_x_N, settle_z_N): without it a quasi-static
-// run cannot be replayed. Version 1 files are refused with the version named.
+// Version 2 added the radial load that acted on the part (settle_x_N, settle_z_N: the scene's
+// part_motion.radial_load once inside); a replay takes the load from its own scene, the columns
+// record it. Version 1 files are refused with the version named.
 inline constexpr int kRecordingFormatVersion = 2;
 FITFEEL_API const std::vector<std::string>& RecordingColumns();
 

@@ -43,20 +43,20 @@ std::unique_ptr<StageState> ConstrainedStage::DoMakeState() const {
   return std::make_unique<ConstrainedState>();
 }
 
-void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
+void ConstrainedStage::DoEvaluate(const PartState& part, StageState* state,
                                   StageOutput* out) const noexcept {
   if (options_.moving == Role::kInner) {
-    EvaluateInAnalyzerFrame(device, state, out);
+    EvaluateInAnalyzerFrame(part, state, out);
     return;
   }
   // The reflection in z (AnalyzerPose) of every vector read and written; the twist stays, so the
   // orientation does too.
   const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
-  DeviceState relative = device;
-  relative.position = device.position.cwiseProduct(reflect);
-  relative.velocity = device.velocity.cwiseProduct(reflect);
-  relative.angular_velocity = device.angular_velocity.cwiseProduct(reflect);
-  relative.load.y() = -device.load.y();
+  PartState relative = part;
+  relative.position = part.position.cwiseProduct(reflect);
+  relative.velocity = part.velocity.cwiseProduct(reflect);
+  relative.angular_velocity = part.angular_velocity.cwiseProduct(reflect);
+  relative.settle_load.y() = -part.settle_load.y();
   out->pose = AnalyzerPose(out->pose, options_.moving);  // the hand-over's
   EvaluateInAnalyzerFrame(relative, state, out);
   out->pose = AnalyzerPose(out->pose, options_.moving);
@@ -66,7 +66,7 @@ void ConstrainedStage::DoEvaluate(const DeviceState& device, StageState* state,
   SceneContact(&out->contact, options_.moving);
 }
 
-void ConstrainedStage::EvaluateInAnalyzerFrame(const DeviceState& device, StageState* state,
+void ConstrainedStage::EvaluateInAnalyzerFrame(const PartState& part, StageState* state,
                                                StageOutput* out) const noexcept {
   auto* run = static_cast<ConstrainedState*>(state);
   // Handed over by the positioning stage: the part is where that stage left it.
@@ -74,16 +74,16 @@ void ConstrainedStage::EvaluateInAnalyzerFrame(const DeviceState& device, StageS
     run->god.part = out->pose.offset;
     run->god.part_depth = out->pose.depth;
   }
-  out->pose = MatingPoseOf(device);
+  out->pose = MatingPoseOf(part);
   out->pose.depth -= options_.depth_origin;
   out->contact = ContactState{};
   out->elastic = ElasticLimitCheck{};
   MatingMotion motion;
-  motion.velocity = device.velocity;
-  motion.angular_velocity = device.angular_velocity;
+  motion.velocity = part.velocity;
+  motion.angular_velocity = part.angular_velocity;
   motion.depth = out->pose.depth;
   motion.angle = out->pose.angle;
-  const bool settle = device.load.squaredNorm() > 0.0;
+  const bool settle = part.settle_load.squaredNorm() > 0.0;
   if (!settle && std::isfinite(options_.proxy_stiffness)) {
     god_object_.FollowDevice(motion, &run->god, &run->law, out);
     return;
@@ -92,7 +92,7 @@ void ConstrainedStage::EvaluateInAnalyzerFrame(const DeviceState& device, StageS
   out->next = out->pose.depth < 0.0 ? StageId::kPositioning : StageId::kConstrained;
   // The settle starts where the last one left the part, not at the device's pose: the contact
   // there is evaluated only when nothing carries the load.
-  if (settle && settle_.Settle(device.load, motion, &run->settle, &run->law, out)) {
+  if (settle && settle_.Settle(part.settle_load, motion, &run->settle, &run->law, out)) {
     // Settled: nothing integrates the part's radial motion, so neither stiffness nor gap is needed.
     out->stiffness = 0.0;
     out->gap = std::numeric_limits<double>::infinity();

@@ -59,13 +59,13 @@ class FITFEEL_API ConstrainedStage final : public Stage {
 
  protected:
   std::unique_ptr<StageState> DoMakeState() const override;
-  void DoEvaluate(const DeviceState& device, StageState* state,
+  void DoEvaluate(const PartState& part, StageState* state,
                   StageOutput* out) const noexcept override;
 
  private:
   // DoEvaluate in the analyzer's frame (Options::moving): `device` and the hand-over pose in
   // `out` already reflected where the outer part moves, the outputs left in that frame.
-  void EvaluateInAnalyzerFrame(const DeviceState& device, StageState* state,
+  void EvaluateInAnalyzerFrame(const PartState& part, StageState* state,
                                StageOutput* out) const noexcept;
 
   const ContactAnalyzer& analyzer_;

@@ -29,9 +29,14 @@ double PartMotion::ExplicitStabilityBound(double mass) const {
 }
 
 void PartMotion::Place(const DeviceState& device, const PartMotionState& state,
-                       DeviceState* part) const noexcept {
-  *part = device;
-  if (settings_.radial != RadialMotion::kQuasiStatic) part->load.setZero();
+                       PartState* part) const noexcept {
+  part->time = device.time;
+  part->position = device.position;
+  part->orientation = device.orientation;
+  part->velocity = device.velocity;
+  part->angular_velocity = device.angular_velocity;
+  part->settle_load = settings_.radial == RadialMotion::kQuasiStatic ? LoadAt(device)
+                                                                     : Eigen::Vector2d(0.0, 0.0);
   if (settings_.radial == RadialMotion::kDynamic && state.floating) {
     part->position.x() = state.position.x();
     part->position.z() = state.position.y();
@@ -43,7 +48,7 @@ void PartMotion::Place(const DeviceState& device, const PartMotionState& state,
 void PartMotion::Step(const DeviceState& device, const Wrench& wrench,
                       const ContactFeedback& feedback, PartMotionState* state) const noexcept {
   if (settings_.radial != RadialMotion::kDynamic) return;
-  const double m = MassOf(device);
+  const double m = MassAt(device);
   PartMotionState& s = *state;
   if (!(m > 0.0)) {
     // Held by the device (the robot carries the weight before the entrance).
@@ -58,7 +63,7 @@ void PartMotion::Step(const DeviceState& device, const Wrench& wrench,
   }
   const double h = period_;
   const double c = settings_.damping;
-  const Eigen::Vector2d& load = device.load;
+  const Eigen::Vector2d load = LoadAt(device);
   const Eigen::Vector2d contact(wrench.force.x(), wrench.force.z());
   const Eigen::Vector2d x = s.position;
   Eigen::Vector2d v = s.velocity;

@@ -7,6 +7,7 @@
 #include "framework/core/export.h"
 #include "framework/core/wrench.h"
 #include "framework/device/device.h"
+#include "framework/runtime/part_state.h"
 #include "framework/scenario/part_motion_settings.h"
 
 namespace fitfeel {
@@ -66,18 +67,26 @@ class FITFEEL_API PartMotion {
   PartMotionState MakeState() const { return PartMotionState{}; }
 
   // Per tick, after the device's Read: the part's state as the stages see it, from the device's
-  // (the commanded pose and the load) and the radial state. Held: the device's state without a
-  // load to settle; quasi-static: with it; dynamic: with the integrated (x, z) position and
-  // velocity once the part floats.
+  // commanded pose, the scene's load and the radial state. Held: the device's pose without a load
+  // to settle; quasi-static: with the load once the part is inside; dynamic: with the integrated
+  // (x, z) position and velocity once the part floats.
   void Place(const DeviceState& device, const PartMotionState& state,
-             DeviceState* part) const noexcept;
+             PartState* part) const noexcept;
   // Per tick, after the wrench: advances the radial state by one period under the rendered wrench
   // (as delivered to the device) and the load. Nothing to do unless dynamic.
   void Step(const DeviceState& device, const Wrench& wrench, const ContactFeedback& contact,
             PartMotionState* state) const noexcept;
 
-  // The part's mass under the device's load, kg (0: no load, held).
-  static double MassOf(const DeviceState& device) { return device.load.norm() / kStandardGravity; }
+  // The load (x, z, N) acting on the part with the device at `device`: the scene's radial load
+  // along -z once the leading end is past the entrance, else none (the holder carries the part).
+  Eigen::Vector2d LoadAt(const DeviceState& device) const noexcept {
+    return device.position.y() >= 0.0 ? Eigen::Vector2d(0.0, -settings_.radial_load)
+                                      : Eigen::Vector2d(0.0, 0.0);
+  }
+  // The part's mass under that load, kg (0: no load, held).
+  double MassAt(const DeviceState& device) const noexcept {
+    return LoadAt(device).norm() / kStandardGravity;
+  }
   // Largest contact stiffness an explicit contact force keeps stable on `mass` at the period, N/m:
   // what applies when the stiffness is not taken implicitly. Infinite without mass.
   double ExplicitStabilityBound(double mass) const;

@@ -30,18 +30,6 @@ struct PositioningState final : StageState {
 
 }  // namespace
 
-MatingPose MatingPoseOf(const DeviceState& device) noexcept {
-  MatingPose pose;
-  pose.depth = device.position.y();
-  pose.offset = Eigen::Vector2d(device.position.x(), device.position.z());
-  // Swing-twist decomposition: the twist about y of q = (w, x, y, z) is 2 atan2(y, w).
-  const Eigen::Quaterniond& q = device.orientation;
-  pose.angle = 2.0 * std::atan2(q.y(), q.w());
-  if (pose.angle > M_PI) pose.angle -= 2.0 * M_PI;
-  if (pose.angle < -M_PI) pose.angle += 2.0 * M_PI;
-  return pose;
-}
-
 double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness) {
   if (!(contact_stiffness >= 0.0) || !std::isfinite(contact_stiffness) ||
       !(device_max_stiffness >= 0.0)) {
@@ -102,20 +90,20 @@ std::unique_ptr<StageState> PositioningStage::DoMakeState() const {
   return state;
 }
 
-void PositioningStage::DoEvaluate(const DeviceState& device, StageState* state,
+void PositioningStage::DoEvaluate(const PartState& part, StageState* state,
                                   StageOutput* out) const noexcept {
   if (!lead_in_.empty()) {
-    GuideThroughLeadIn(device, state, out);
+    GuideThroughLeadIn(part, state, out);
     return;
   }
   out->wrench.SetZero();
-  out->pose = MatingPoseOf(device);
+  out->pose = MatingPoseOf(part);
   out->contact = ContactState{};
   out->elastic = ElasticLimitCheck{};
   out->stiffness = 0.0;
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
-  const Eigen::Quaterniond orientation = device.orientation.normalized();
+  const Eigen::Quaterniond orientation = part.orientation.normalized();
   // cos(tilt) is the y component of the part's axis (the orientation's y column).
   const double cos_tilt = orientation.toRotationMatrix()(1, 1);
   const bool aligned = cos_tilt >= cos_alignment_tolerance_;
@@ -123,22 +111,22 @@ void PositioningStage::DoEvaluate(const DeviceState& device, StageState* state,
   const bool entered = out->pose.depth >= 0.0;
   out->next = (entered && aligned && captured) ? StageId::kConstrained : StageId::kPositioning;
   if (collider_ == nullptr || out->next == StageId::kConstrained) return;
-  if (!device.position.allFinite() || !orientation.coeffs().allFinite()) return;
+  if (!part.position.allFinite() || !orientation.coeffs().allFinite()) return;
 
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = orientation.toRotationMatrix();
-  pose.translation() = device.position;
+  pose.translation() = part.position;
   Penetration penetration;
   collider_->Query(pose, static_cast<PositioningState*>(state)->scratch.get(), &penetration);
   if (!penetration.contact || !(penetration.depth > 0.0)) return;
   const double k = options_.free_stiffness;
   out->wrench.force = k * penetration.depth * penetration.normal;
   // About the leading end, the point whose pose the device reports.
-  out->wrench.torque = (penetration.point - device.position).cross(out->wrench.force);
+  out->wrench.torque = (penetration.point - part.position).cross(out->wrench.force);
   out->stiffness = k;
 }
 
-void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState* state,
+void PositioningStage::GuideThroughLeadIn(const PartState& held_part, StageState* state,
                                           StageOutput* out) const noexcept {
   auto* run = static_cast<PositioningState*>(state);
   const double origin = lead_in_.capture_depth();
@@ -147,7 +135,7 @@ void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState*
     run->part = Eigen::Vector2d(out->pose.depth + origin, lead_in_.Extent(out->pose.offset));
     run->has_part = true;
   }
-  const MatingPose held = MatingPoseOf(device);
+  const MatingPose held = MatingPoseOf(held_part);
   out->pose = held;
   out->contact = ContactState{};
   out->elastic = ElasticLimitCheck{};
@@ -156,10 +144,10 @@ void PositioningStage::GuideThroughLeadIn(const DeviceState& device, StageState*
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
   out->next = StageId::kPositioning;
-  if (!device.position.allFinite()) return;
+  if (!held_part.position.allFinite()) return;
   const double held_r = lead_in_.Extent(held.offset);
   if (held.offset.norm() > 0.0) run->direction = held.offset.normalized();
-  const Eigen::Vector2d target(device.position.y(), held_r);
+  const Eigen::Vector2d target(held_part.position.y(), held_r);
   const Eigen::Vector2d part = lead_in_.Project(target, run->has_part ? run->part : target);
   run->part = part;
   run->has_part = true;

@@ -110,12 +110,12 @@ class FITFEEL_API PositioningStage final : public Stage {
  protected:
   // The run's state holds the collider's scratch (its buffers, reserved up front).
   std::unique_ptr<StageState> DoMakeState() const override;
-  void DoEvaluate(const DeviceState& device, StageState* state,
+  void DoEvaluate(const PartState& part, StageState* state,
                   StageOutput* out) const noexcept override;
 
  private:
   // The god object's tick (lead-in).
-  void GuideThroughLeadIn(const DeviceState& device, StageState* state, StageOutput* out) const
+  void GuideThroughLeadIn(const PartState& held_part, StageState* state, StageOutput* out) const
       noexcept;
 
   Options options_;
@@ -132,9 +132,5 @@ class FITFEEL_API PositioningStage final : public Stage {
 // gives the device's limit, or 0 without one. Throws UserError for a negative or NaN argument or
 // a non-finite contact stiffness.
 FITFEEL_API double FreeMotionStiffness(double contact_stiffness, double device_max_stiffness);
-
-// The moving part's pose in the fixed part's mating frame (see the convention above): depth = y
-// of the leading end, offset = its (x, z), angle = the twist of the orientation about y.
-FITFEEL_API MatingPose MatingPoseOf(const DeviceState& device) noexcept;
 
 }  // namespace fitfeel

@@ -47,7 +47,7 @@ class FITFEEL_API QuasiStaticSettle {
   // where the parts interfere, the stiffness then corrected by the step's secant).
   static constexpr int kNewtonSteps = 6;
 
-  // Quasi-static placement (DeviceState::load): finds the offset along the load where the
+  // Quasi-static placement (PartState::settle_load): finds the offset along the load where the
   // rendered radial force balances it, starting from and updating `*memory` (the previous
   // settled offset and slope), and leaves pose, contact and wrench there, the wrench from the
   // law with the run's `*law_state` (advanced once, at the settled pose). Returns false (outputs,

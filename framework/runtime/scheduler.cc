@@ -276,7 +276,7 @@ bool Scheduler::Tick(double time) noexcept {
     sample.buttons = run.device.buttons;
     sample.commanded = device_wrench;
     sample.delivered = run.device.delivered;
-    sample.load = run.device.load;
+    sample.load = part_motion_.LoadAt(run.device);
   }
   if (!wake_ns_.empty()) {
     wake_ns_[k] = static_cast<double>(start);

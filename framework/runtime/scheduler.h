@@ -66,8 +66,8 @@ struct RunState {
   std::array<std::unique_ptr<StageState>, 2> stages;  // indexed by StageId
   StageId current = StageId::kPositioning;
   DeviceState device;           // as the device reported it
-  DeviceState part;             // the moving part: the device's state after PartMotion::Place
-  DeviceState law_state;        // where the stage is evaluated (the proxy when coupled)
+  PartState part;               // the moving part: the device's state after PartMotion::Place
+  PartState law_state;          // where the stage is evaluated (the proxy when coupled)
   PartMotionState part_motion;  // the part's radial dynamics
   StageOutput output;
   SafetyChain chain;

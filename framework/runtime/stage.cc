@@ -34,12 +34,12 @@ std::unique_ptr<StageState> Stage::DoMakeState() const {
   return std::make_unique<EmptyStageState>();
 }
 
-void Stage::Evaluate(const DeviceState& device, StageState* state,
+void Stage::Evaluate(const PartState& part, StageState* state,
                      StageOutput* out) const noexcept {
   FITFEEL_DEMAND(out != nullptr);
   FITFEEL_DEMAND(state != nullptr && state->owner() == this);
   out->contact_evaluations = 0;
-  DoEvaluate(device, state, out);
+  DoEvaluate(part, state, out);
   out->stage = id();
 }
 

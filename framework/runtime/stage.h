@@ -6,7 +6,7 @@
 
 #include "framework/core/export.h"
 #include "framework/core/wrench.h"
-#include "framework/device/device.h"
+#include "framework/runtime/part_state.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/resistance_law.h"
 
@@ -71,12 +71,12 @@ class FITFEEL_API Stage {
   std::unique_ptr<StageState> MakeState() const;
   // Per tick. `state` must come from this stage's MakeState (aborts otherwise) and serve one
   // thread at a time; different states may be evaluated concurrently.
-  void Evaluate(const DeviceState& device, StageState* state, StageOutput* out) const noexcept;
+  void Evaluate(const PartState& part, StageState* state, StageOutput* out) const noexcept;
 
  protected:
   // The default is a state with nothing in it, for stages that keep nothing between ticks.
   virtual std::unique_ptr<StageState> DoMakeState() const;
-  virtual void DoEvaluate(const DeviceState& device, StageState* state,
+  virtual void DoEvaluate(const PartState& part, StageState* state,
                           StageOutput* out) const noexcept = 0;
 };
 

@@ -28,7 +28,7 @@ void ValidateChainSpec(const DeviceSpec& spec) {
   ValidateDeviceSpec(finite);
 }
 
-bool StateFinite(const DeviceState& s) {
+bool StateFinite(const PartState& s) {
   return s.position.allFinite() && s.velocity.allFinite() && s.orientation.coeffs().allFinite();
 }
 
@@ -123,7 +123,7 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
   stiffness_hint_ = 0.0;
 }
 
-void SafetyChain::Reset(const DeviceState& device) noexcept {
+void SafetyChain::Reset(const PartState& device) noexcept {
   // Only the per-run numbers: the configured part (and its string) stays, so nothing allocates.
   SafetyReport& r = report_;
   r.ticks = r.peak_limited_ticks = r.continuous_limited_ticks = 0;
@@ -138,7 +138,7 @@ void SafetyChain::Reset(const DeviceState& device) noexcept {
   started_ = true;
 }
 
-void SafetyChain::SimulatedState(const DeviceState& device, DeviceState* out) const noexcept {
+void SafetyChain::SimulatedState(const PartState& device, PartState* out) const noexcept {
   *out = device;
   if (settings_.coupling == CouplingMode::kSpringDamper && started_) {
     out->position = coupling_.proxy_position();
@@ -152,7 +152,7 @@ void SafetyChain::SetEnvironmentStiffness(double physical_stiffness) noexcept {
                         : 0.0;
 }
 
-Wrench SafetyChain::Apply(const Wrench& physical, const DeviceState& device, double dt) noexcept {
+Wrench SafetyChain::Apply(const Wrench& physical, const PartState& device, double dt) noexcept {
   Wrench out;
   if (!configured_) return out;  // nothing configured: never push a device
   if (!started_) Reset(device);

@@ -6,6 +6,7 @@
 #include "framework/core/export.h"
 #include "framework/core/wrench.h"
 #include "framework/device/device.h"
+#include "framework/runtime/part_state.h"
 #include "framework/safety/force_limiter.h"
 #include "framework/safety/passivity_observer.h"
 #include "framework/safety/safety_settings.h"
@@ -58,16 +59,16 @@ class FITFEEL_API SafetyChain {
 
   // Starts a run at this device state: proxy at the handle, energy and counters at zero. Apply
   // calls it on its first tick if nobody did.
-  void Reset(const DeviceState& device) noexcept;
+  void Reset(const PartState& device) noexcept;
 
   // Per tick: the state the law sees (the device's, with the proxy's position and velocity when
   // coupled).
-  void SimulatedState(const DeviceState& device, DeviceState* out) const noexcept;
+  void SimulatedState(const PartState& device, PartState* out) const noexcept;
   // Per tick, optional: the environment's current stiffness, physical N/m (0 when free).
   void SetEnvironmentStiffness(double physical_stiffness) noexcept;
   // Per tick: the law's wrench on the simulated part (physical N, N*m) -> the device's wrench.
   // Never returns a non-finite wrench or a force above the device's peak rating.
-  Wrench Apply(const Wrench& physical, const DeviceState& device, double dt) noexcept;
+  Wrench Apply(const Wrench& physical, const PartState& device, double dt) noexcept;
 
   const SafetyReport& report() const { return report_; }
   const SafetySettings& settings() const { return settings_; }

@@ -7,29 +7,33 @@ inline constexpr double kStandardGravity = 9.80665;
 
 // How the moving part moves across the mating axis (the scene's `part_motion` section). Along the
 // axis (and about it) the part is where the device puts it; across it the device reports only the
-// pose it commands and the external load it lets act on the part (DeviceState::load: the
-// simulated robot lets the part's weight act once its leading end is inside), and this is what
-// becomes of them.
+// pose it commands, and the scene says what load acts on the part (its weight, which the holder
+// lets act once the part's leading end is inside: the paper's robot) and what becomes of both.
 enum class RadialMotion {
   // The part is where the device says: the holder takes any load (a hand at a haptic device).
   kHeld,
   // The constrained stage places the part each tick where the rendered radial force balances the
   // load (no radial dynamics): the paper's case study, whose shaft settles onto the bore under its
-  // weight. With no load, as held.
+  // weight. With no load (or outside), as held.
   kQuasiStatic,
-  // The part floats: its weight and the rendered radial force move the mass m = |load| / g
+  // The part floats: its weight and the rendered radial force move the mass m = load / g
   // (semi-implicit Euler, the contact stiffness taken implicitly; framework/runtime/part_motion.h).
-  // With no load (before the entrance, where the robot carries the part), as held.
+  // With no load, or before the entrance (where the holder carries the part), as held.
   kDynamic,
 };
 
 // The largest radial damping a scene may give, N*s/m: it stops a 1 kg part within a microsecond,
 // beyond which nothing moves.
 inline constexpr double kMaxPartDamping = 1e6;
+// The largest radial load a scene may give, N.
+inline constexpr double kMaxRadialLoad = 1e4;
 
 struct PartMotionSettings {
   RadialMotion radial = RadialMotion::kQuasiStatic;
   double damping = 0.0;  // viscous damping of the part's radial motion, N*s/m (dynamic)
+  // The load across the axis, N, along the scene's -z (down), acting once the part's leading end
+  // is past the entrance (y >= 0): before it the holder carries the part.
+  double radial_load = 0.0;
 };
 
 }  // namespace fitfeel

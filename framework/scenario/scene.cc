@@ -261,8 +261,10 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
 }
 
 PartMotionSettings ParsePartMotion(const ConfigNode& node) {
-  if (!node.is_map()) node.Fail("a map with the keys radial and damping", node.Describe());
-  node.ExpectOnlyKeys({"radial", "damping"});
+  if (!node.is_map()) {
+    node.Fail("a map with the keys radial, damping and radial_load", node.Describe());
+  }
+  node.ExpectOnlyKeys({"radial", "damping", "radial_load"});
   PartMotionSettings motion;
   if (std::optional<ConfigNode> radial = node.Find("radial")) {
     const std::string name = radial->AsOneOf({"held", "quasi_static", "dynamic"});
@@ -272,6 +274,9 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   }
   if (std::optional<ConfigNode> damping = node.Find("damping")) {
     motion.damping = damping->AsQuantityIn(Dimension::kDamping, 0.0, kMaxPartDamping);
+  }
+  if (std::optional<ConfigNode> load = node.Find("radial_load")) {
+    motion.radial_load = load->AsQuantityIn(Dimension::kForce, 0.0, kMaxRadialLoad);
   }
   return motion;
 }

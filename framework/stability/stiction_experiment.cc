@@ -63,7 +63,7 @@ StictionOutcome RunStictionExperiment(const StictionExperiment& e) {
   const double decay = std::exp(-b * h / m);
   const double final_window_start = 0.9 * e.horizon;
   FrictionState state;
-  DeviceState device, law_state;
+  PartState device, law_state;
   Wrench physical;
   for (std::uint64_t k = 0; k < ticks; ++k) {
     const double t = static_cast<double>(k) * period;

@@ -124,8 +124,8 @@ WallOutcome RunWallExperiment(const WallExperiment& e) {
   out.initial_energy = energy(y, v);
   const double final_window_start = e.horizon * (1.0 - kFinalWindowShare);
   double last_law_position = 0.0;
-  DeviceState device;
-  DeviceState law_state;
+  PartState device;
+  PartState law_state;
   Wrench physical;
   for (std::uint64_t k = 0; k < ticks; ++k) {
     const double t = static_cast<double>(k) * period;

@@ -19,7 +19,8 @@ inline constexpr const char* kHandPushIn =
     "    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
     "    - {time: 3 s, position: [0 mm, 25 mm, 0 mm]}\n";
 
-// `scenario_text` (a scenario file's text) with its device section replaced by the hand.
+// `scenario_text` (a scenario file's text) with its device section replaced by the hand, and its
+// `part_motion` section (a robot's load on the part) dropped: the hand holds the part.
 // Throws std::invalid_argument if the text has no `device:` followed by a `run:` section.
 inline std::string WithHand(const std::string& scenario_text, double aim,
                             const std::string& waypoints, double seconds) {
@@ -35,6 +36,15 @@ inline std::string WithHand(const std::string& scenario_text, double aim,
        << "  waypoints:\n"
        << waypoints;
   std::string text = scenario_text.substr(0, device) + hand.str() + scenario_text.substr(run);
+  if (const std::size_t motion = text.find("\npart_motion:"); motion != std::string::npos) {
+    // To the next line that starts a section (not indented, not a comment).
+    std::size_t end = text.find('\n', motion + 1);
+    while (end != std::string::npos && end + 1 < text.size() &&
+           (text[end + 1] == ' ' || text[end + 1] == '#')) {
+      end = text.find('\n', end + 1);
+    }
+    text.erase(motion, (end == std::string::npos ? text.size() : end) - motion);
+  }
   // Every `duration:` to the end of its line (by hand: GCC 12 warns inside <regex> under the
   // sanitizers, and warnings are errors).
   const std::string key = "duration: ", value = std::to_string(seconds) + " s";

@@ -46,7 +46,6 @@ class StrikeThenInsertDevice final : public Device {
   void DoStart(double) override {}
   void DoRead(double time, DeviceState* out) noexcept override {
     out->time = time;
-    out->load.setZero();
     Eigen::Vector3d p;
     if (time < 0.3) {  // 3 mm off the axis: the shaft's end meets the bushing's face at 0.25 s
       p = Eigen::Vector3d(3e-3, -1e-3 + 4e-3 * time, 0.0);
@@ -54,7 +53,6 @@ class StrikeThenInsertDevice final : public Device {
       p = Eigen::Vector3d(3e-3 * (0.4 - time) / 0.1, -0.5e-3, 0.0);
     } else {
       p = Eigen::Vector3d(0.0, -0.5e-3 + 10e-3 * (time - 0.4), 0.0);
-      if (p.y() >= 0.0) out->load = Eigen::Vector2d(0.0, -2.0);
     }
     out->velocity = (p - out->position) / 1e-3;
     out->position = p;

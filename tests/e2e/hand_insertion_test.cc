@@ -250,16 +250,16 @@ TEST(OuterPartMoving, TheStageMeetsTheInnerPartInTheOuterPartsFrame) {
     StageOutput a, b;
     for (int i = 0; i < 400; ++i) {
       SCOPED_TRACE("tick " + std::to_string(i) + ", spring " + std::to_string(spring));
-      DeviceState device;
+      PartState device;
       device.position =
           Eigen::Vector3d(20e-6 * std::sin(0.05 * i), 1e-3 + 20e-6 * i, 30e-6 * std::cos(0.03 * i));
       device.velocity = Eigen::Vector3d(1e-3, 10e-3, -2e-3);
       // The robot lets 2 N act on the part (settled); the god object's spring carries it.
-      if (std::isinf(spring)) device.load = Eigen::Vector2d(0.3, -2.0);
-      DeviceState reflected = device;
+      if (std::isinf(spring)) device.settle_load = Eigen::Vector2d(0.3, -2.0);
+      PartState reflected = device;
       reflected.position = device.position.cwiseProduct(reflect);
       reflected.velocity = device.velocity.cwiseProduct(reflect);
-      reflected.load.y() = -device.load.y();
+      reflected.settle_load.y() = -device.settle_load.y();
       inner.Evaluate(reflected, inner_run.get(), &a);
       outer.Evaluate(device, outer_run.get(), &b);
       ASSERT_EQ(b.wrench.force, a.wrench.force.cwiseProduct(reflect));

@@ -35,8 +35,8 @@ struct SurfaceCase {
 
 void PrintTo(const SurfaceCase& c, std::ostream* out) { *out << c.scenario; }
 
-DeviceState At(double x, double y, double z) {
-  DeviceState s;
+PartState At(double x, double y, double z) {
+  PartState s;
   s.position = Eigen::Vector3d(x, y, z);
   return s;
 }

@@ -86,7 +86,6 @@ class ProbeDevice final : public Device {
       s.angular_velocity = out->angular_velocity;
       s.buttons = out->buttons;
       s.delivered = out->delivered;
-      s.load = out->load;
       samples_.push_back(s);
     } else {
       ++overflow_;
@@ -115,14 +114,15 @@ std::string Slurp(const fs::path& file) {
   return s.str();
 }
 
-// The paper scene with its `device:` block replaced by `device_yaml` (a block at column 0).
+// The paper scene with its `device:` and `part_motion:` blocks replaced by `device_yaml` (blocks
+// at column 0): a device other than the paper's robot carries no load unless it says so.
 fs::path SceneWithDevice(const fs::path& dir, const std::string& name,
                          const std::string& device_yaml) {
   std::istringstream in(Slurp(kPaperScene));
   std::ostringstream out;
   bool in_device = false;
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("device:", 0) == 0) {
+    if (line.rfind("device:", 0) == 0 || line.rfind("part_motion:", 0) == 0) {
       in_device = true;
       continue;
     }
@@ -228,16 +228,16 @@ nlohmann::json SummaryPhysics(nlohmann::json summary) {
   return summary;
 }
 
-// How the part moves under the device's load (the scene's part_motion): quasi_static (the
+// How the part moves under the shaft's 2 N weight (the scene's part_motion): quasi_static (the
 // default: the stage settles the part where the contact carries the weight) or dynamic (the
 // framework integrates the part's radial motion).
 std::string PartMotionYaml(const std::string& radial) {
-  return "part_motion:\n  radial: " + radial + "\n";
+  return "part_motion:\n  radial: " + radial + "\n  radial_load: 2 N\n";
 }
 
 // The paper's robot: 10 mm/s, the shaft's 2 N weight, with the part's radial motion.
 std::string SimulatedDevice(const std::string& radial = "quasi_static") {
-  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n  radial_load: 2 N\n" +
+  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n" +
          PartMotionYaml(radial);
 }
 

@@ -28,12 +28,10 @@ std::string ErrorOf(const std::string& yaml) {
 TEST(SimulatedConfigTest, ReadsTheRobotWithUnits) {
   SimulatedDevice device;
   device.Configure(
-      Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nradial_load: 2 N\n"
-           "start_offset: 5 mm\n"));
+      Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nstart_offset: 5 mm\n"));
   const Settings& s = device.settings();
   EXPECT_EQ(s.mode, Settings::Mode::kConstantSpeed);
   EXPECT_DOUBLE_EQ(s.speed, 0.01);
-  EXPECT_DOUBLE_EQ(s.radial_load, 2.0);
   EXPECT_DOUBLE_EQ(s.start_offset, 5e-3);
 }
 
@@ -80,13 +78,11 @@ waypoints: [{time: 0 s, position: [0 mm, -10 mm, 0 mm]}]
 TEST(SimulatedConfigTest, ReadsARotaryDriveInDegrees) {
   SimulatedDevice device;
   device.Configure(
-      Node("mode: constant_rotation\nangular_speed: 15 deg/s\nswing: 15 deg\n"
-           "radial_load: 1 kN\n"));
+      Node("mode: constant_rotation\nangular_speed: 15 deg/s\nswing: 15 deg\n"));
   const Settings& s = device.settings();
   EXPECT_EQ(s.mode, Settings::Mode::kConstantRotation);
   EXPECT_NEAR(s.angular_speed, 15.0 * M_PI / 180.0, 1e-15);
   EXPECT_NEAR(s.swing, 15.0 * M_PI / 180.0, 1e-15);
-  EXPECT_DOUBLE_EQ(s.radial_load, 1000.0);
   device.Configure(Node("mode: constant_rotation\nangular_speed: 2 rad/s\n"));
   EXPECT_DOUBLE_EQ(device.settings().angular_speed, 2.0);
   EXPECT_EQ(device.settings().swing, 0.0);  // continuous rotation
@@ -107,7 +103,9 @@ TEST(SimulatedConfigTest, RefusesBadKeysWithTheirPath) {
   EXPECT_NE(ErrorOf("speed: 10 mm").find("device.speed"), std::string::npos);
   EXPECT_NE(ErrorOf("speed: 10 mm/s\nradial_lod: 2 N").find("radial_lod"), std::string::npos);
   EXPECT_NE(ErrorOf("speed: -1 mm/s").find("device.speed"), std::string::npos);
-  EXPECT_NE(ErrorOf("radial_load: 2 N").find("speed"), std::string::npos);
+  // The load acting on the part is the scene's, and the refusal says where it went.
+  EXPECT_NE(ErrorOf("speed: 10 mm/s\nradial_load: 2 N").find("part_motion: {radial_load"),
+            std::string::npos);
   EXPECT_NE(ErrorOf("mode: teleport\nspeed: 1 mm/s").find("device.mode"), std::string::npos);
   EXPECT_NE(ErrorOf("mode: scripted\nhand: {mass: 1 kg, stiffness: 1 N/mm}\nwaypoints:\n"
                     "  - {time: 1 s, position: [0 mm, 0 mm]}")

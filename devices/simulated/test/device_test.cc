@@ -12,12 +12,11 @@ namespace {
 
 constexpr double kPeriod = 1e-3;
 
-// The paper's robot: 10 mm/s from 2 mm before the entrance, carrying `load` (N).
-Settings Robot(double load) {
+// The paper's robot: 10 mm/s from 2 mm before the entrance.
+Settings Robot() {
   Settings s;
   s.speed = 10e-3;
   s.start_offset = 2e-3;
-  s.radial_load = load;
   return s;
 }
 
@@ -37,11 +36,11 @@ Wrench NoForce(const DeviceState&) { return Wrench{}; }
 
 TEST(SimulatedRobotTest, AxialPositionAfterNTicksIsExact) {
   SimulatedDevice device;
-  device.Configure(Robot(0.0));
+  device.Configure(Robot());
   device.Start(kPeriod);
   for (int n : {0, 1, 137, 5000}) {
     SimulatedDevice d;
-    d.Configure(Robot(0.0));
+    d.Configure(Robot());
     d.Start(kPeriod);
     const DeviceState s = Drive(d, n, NoForce);
     EXPECT_EQ(s.position.y(), -2e-3 + 10e-3 * (n * kPeriod)) << n;
@@ -60,7 +59,7 @@ TEST(SimulatedRobotTest, AxialPositionAfterNTicksIsExact) {
 
 // A force-driven press: the ram advances until the resistance reaches stop_force, then holds.
 TEST(SimulatedRobotTest, ForceDrivenPressStopsWhereTheResistanceReachesItsForce) {
-  Settings settings = Robot(0.0);
+  Settings settings = Robot();
   settings.stop_force = 99.5;
   SimulatedDevice device;
   device.Configure(settings);
@@ -79,21 +78,17 @@ TEST(SimulatedRobotTest, ForceDrivenPressStopsWhereTheResistanceReachesItsForce)
   EXPECT_THROW(device.Configure(settings), UserError);
 }
 
-// A trajectory and a load source: the weight is reported once the leading end is inside, and no
-// force moves the part across the axis (that is PartMotion's, framework side).
-TEST(SimulatedRobotTest, ReportsItsWeightAsTheLoadInsideAndMovesNothingRadially) {
+// A trajectory: no force moves the part across the axis (the load and what the part does under it
+// are the scene's part motion, framework side).
+TEST(SimulatedRobotTest, MovesNothingRadially) {
   SimulatedDevice device;
-  device.Configure(Robot(2.0));
+  device.Configure(Robot());
   device.Start(kPeriod);
-  DeviceState state;
-  device.Read(0.0, &state);
-  EXPECT_EQ(state.load, Eigen::Vector2d(0.0, 0.0));  // the robot carries it outside
   const DeviceState inside = Drive(device, 400, [](const DeviceState&) {
     Wrench w;
     w.force = Eigen::Vector3d(3.0, -1.0, 50.0);
     return w;
   });
-  EXPECT_EQ(inside.load, Eigen::Vector2d(0.0, -2.0));
   EXPECT_EQ(inside.position.x(), 0.0);
   EXPECT_EQ(inside.position.z(), 0.0);
   EXPECT_EQ(inside.velocity.x(), 0.0);
@@ -180,12 +175,11 @@ TEST(SimulatedHandTest, TremorsAtItsFrequencyAroundTheAimedPoint) {
   EXPECT_NEAR(sum / n, -0.2e-3 - 0.1e-3, 0.02e-3);
 }
 
-Settings Rotor(double angular_speed, double swing, double load) {
+Settings Rotor(double angular_speed, double swing) {
   Settings s;
   s.mode = Settings::Mode::kConstantRotation;
   s.angular_speed = angular_speed;
   s.swing = swing;
-  s.radial_load = load;
   return s;
 }
 
@@ -198,7 +192,7 @@ TEST(SimulatedRotorTest, TurnsAtTheAngularSpeedAboutTheAxisAtTheEntrance) {
   const double omega = 0.3;
   for (int n : {0, 1, 250, 4000, 30000}) {
     SimulatedDevice d;
-    d.Configure(Rotor(omega, 0.0, 1000.0));
+    d.Configure(Rotor(omega, 0.0));
     d.Start(kPeriod);
     const DeviceState s = Drive(d, n, [](const DeviceState&) {
       Wrench w;
@@ -212,17 +206,16 @@ TEST(SimulatedRotorTest, TurnsAtTheAngularSpeedAboutTheAxisAtTheEntrance) {
     // Only a twist about y: the part's axis stays the mating axis (the hand-over's alignment).
     EXPECT_NEAR(s.orientation.toRotationMatrix()(1, 1), 1.0, 1e-15);
     EXPECT_EQ(s.angular_velocity, Eigen::Vector3d(0.0, omega, 0.0));
-    // Held at the entrance (captive), settled by the stage under its load from the first tick.
+    // Held at the entrance (captive), from the first tick.
     EXPECT_EQ(s.position, Eigen::Vector3d::Zero());
     EXPECT_EQ(s.velocity, Eigen::Vector3d::Zero());
-    EXPECT_EQ(s.load, Eigen::Vector2d(0.0, -1000.0));
   }
 }
 
 TEST(SimulatedRotorTest, OscillatesBetweenPlusAndMinusTheSwingAtConstantSpeed) {
   const double omega = 15.0 * M_PI / 180.0, beta = 15.0 * M_PI / 180.0;
   SimulatedDevice d;
-  d.Configure(Rotor(omega, beta, 0.0));
+  d.Configure(Rotor(omega, beta));
   d.Start(kPeriod);
   // A full oscillation sweeps 4 beta: 4 s here. Over two of them the angle stays within +-beta,
   // reaches both ends, moves by omega * h each tick in the direction of the reported rate (but
@@ -256,17 +249,14 @@ TEST(SimulatedRotorTest, OscillatesBetweenPlusAndMinusTheSwingAtConstantSpeed) {
   EXPECT_NEAR(highest, beta, 1e-12);
   EXPECT_NEAR(lowest, -beta, 1e-12);
   EXPECT_EQ(reversals, 4);
-  EXPECT_EQ(s.load, Eigen::Vector2d(0.0, 0.0));  // no load, nothing to settle
 }
 
 TEST(SimulatedDeviceTest, RefusesSettingsOutOfRange) {
   SimulatedDevice device;
-  Settings s = Robot(2.0);
+  Settings s = Robot();
   s.speed = 0.0;
   EXPECT_THROW(device.Configure(s), UserError);
-  s = Robot(-1.0);
-  EXPECT_THROW(device.Configure(s), UserError);
-  s = Robot(2.0);
+  s = Robot();
   s.start_offset = std::nan("");
   EXPECT_THROW(device.Configure(s), UserError);
   s = Settings{};
@@ -279,13 +269,12 @@ TEST(SimulatedDeviceTest, RefusesSettingsOutOfRange) {
   s.waypoints = {{0.0, Eigen::Vector3d::Zero()}};
   s.hand_mass = 0.0;
   EXPECT_THROW(device.Configure(s), UserError);
-  EXPECT_THROW(device.Configure(Rotor(0.0, 0.0, 0.0)), UserError);
-  EXPECT_THROW(device.Configure(Rotor(-1.0, 0.0, 0.0)), UserError);
-  EXPECT_THROW(device.Configure(Rotor(1.0, -0.1, 0.0)), UserError);
-  EXPECT_THROW(device.Configure(Rotor(1.0, 4.0, 0.0)), UserError);
-  EXPECT_THROW(device.Configure(Rotor(1.0, 0.1, -5.0)), UserError);
-  EXPECT_THROW(device.Configure(Rotor(std::nan(""), 0.1, 0.0)), UserError);
-  EXPECT_NO_THROW(device.Configure(Rotor(1.0, M_PI, 5.0)));
+  EXPECT_THROW(device.Configure(Rotor(0.0, 0.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(-1.0, 0.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(1.0, -0.1)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(1.0, 4.0)), UserError);
+  EXPECT_THROW(device.Configure(Rotor(std::nan(""), 0.1)), UserError);
+  EXPECT_NO_THROW(device.Configure(Rotor(1.0, M_PI)));
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ lib_path, fitfeel, scenario = sys.argv[1:4]
 class DeviceState(ctypes.Structure):
     _fields_ = [("time", ctypes.c_double), ("position", ctypes.c_double * 3),
                 ("orientation", ctypes.c_double * 4), ("velocity", ctypes.c_double * 3),
-                ("angular_velocity", ctypes.c_double * 3), ("settle_load", ctypes.c_double * 2),
+                ("angular_velocity", ctypes.c_double * 3),
                 ("buttons", ctypes.c_uint32)]
 
 
@@ -36,7 +36,7 @@ lib.fitfeel_pressure_map.argtypes = [ctypes.c_void_p, ctypes.POINTER(ctypes.c_do
 lib.fitfeel_last_error.argtypes = [ctypes.c_void_p]
 lib.fitfeel_last_error.restype = ctypes.c_char_p
 lib.fitfeel_thread_last_error.restype = ctypes.c_char_p
-assert lib.fitfeel_abi_version() == 1
+assert lib.fitfeel_abi_version() == 2
 
 text = pathlib.Path(scenario).read_text()
 assert "outputs: [trace, summary]" in text, "the scenario's outputs line changed"
@@ -67,7 +67,6 @@ for n, row in enumerate(rows):
     d.orientation[:] = [v("qw_1"), v("qx_1"), v("qy_1"), v("qz_1")]
     d.velocity[:] = [v("vx_m/s"), v("vy_m/s"), v("vz_m/s")]
     d.angular_velocity[:] = [v("wx_rad/s"), v("wy_rad/s"), v("wz_rad/s")]
-    d.settle_load[:] = [v("settle_x_N"), v("settle_z_N")]
     d.buttons = int(row[col["buttons_bits"]])
     assert lib.fitfeel_step(handle, ctypes.byref(d), ctypes.byref(w)) == 0, f"tick {n}"
     want = [v(f"f{a}_cmd_N") for a in "xyz"] + [v(f"t{a}_cmd_N*m") for a in "xyz"]

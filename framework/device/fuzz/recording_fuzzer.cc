@@ -27,7 +27,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       state.orientation = s.orientation;
       state.velocity = s.velocity;
       state.angular_velocity = s.angular_velocity;
-      state.load = s.load;
       if (!fitfeel::DeviceStateInBounds(state) || !std::isfinite(s.time) || !(s.time > last) ||
           !s.commanded.AllFinite() || !s.delivered.AllFinite()) {
         std::abort();

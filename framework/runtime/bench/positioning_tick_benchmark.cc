@@ -25,7 +25,7 @@ PositioningStage MakeStage(int facets, bool fcl) {
   return PositioningStage(options, meshes, Role::kInner);
 }
 
-void Run(benchmark::State& state, const DeviceState& device) {
+void Run(benchmark::State& state, const PartState& device) {
   const PositioningStage stage = MakeStage(static_cast<int>(state.range(0)), state.range(1) != 0);
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
@@ -36,8 +36,8 @@ void Run(benchmark::State& state, const DeviceState& device) {
   state.counters["force_N"] = out.wrench.force.norm();
 }
 
-DeviceState At(double x, double y, double z, double tilt = 0.0) {
-  DeviceState s;
+PartState At(double x, double y, double z, double tilt = 0.0) {
+  PartState s;
   s.position = Eigen::Vector3d(x, y, z);
   s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitZ()));
   return s;

@@ -51,7 +51,7 @@ class WallStage final : public Stage {
   StageId id() const override { return id_; }
 
  protected:
-  void DoEvaluate(const DeviceState& d, StageState*, StageOutput* out) const noexcept override {
+  void DoEvaluate(const PartState& d, StageState*, StageOutput* out) const noexcept override {
     out->wrench.SetZero();
     const double depth = d.position.y();
     out->wrench.force.y() = depth > 0.0 ? -1e3 * depth : 0.0;

@@ -15,13 +15,12 @@ namespace {
 
 constexpr double kPeriod = 1e-3;
 
-// The robot's state at tick t: on the axis, the weight `load` (N) along -z once inside.
-DeviceState RobotAt(int t, double load) {
+// The robot's state at tick t: on the axis, 2 mm before the entrance at t = 0, at 10 mm/s.
+DeviceState RobotAt(int t) {
   DeviceState s;
   s.time = t * kPeriod;
   s.position = Eigen::Vector3d(0.0, -2e-3 + 10e-3 * s.time, 0.0);
   s.velocity = Eigen::Vector3d(0.0, 10e-3, 0.0);
-  if (s.position.y() >= 0.0) s.load = Eigen::Vector2d(0.0, -load);
   return s;
 }
 
@@ -31,21 +30,25 @@ struct Contact {
   Wrench wrench;
   ContactFeedback feedback;
 };
-DeviceState Drive(const PartMotion& motion, double load, int ticks,
-                  const std::function<Contact(int, const DeviceState&)>& contact) {
+// The part carries `load` (N, the scene's part_motion.radial_load) along -z once inside.
+PartState Drive(const PartMotion& unloaded, double load, int ticks,
+                const std::function<Contact(int, const PartState&)>& contact) {
+  PartMotionSettings settings = unloaded.settings();
+  settings.radial_load = load;
+  const PartMotion motion(settings, kPeriod);
   PartMotionState state = motion.MakeState();
-  DeviceState part;
+  PartState part;
   for (int t = 0; t < ticks; ++t) {
-    const DeviceState device = RobotAt(t, load);
+    const DeviceState device = RobotAt(t);
     motion.Place(device, state, &part);
     const Contact c = contact(t, part);
     motion.Step(device, c.wrench, c.feedback, &state);
   }
-  motion.Place(RobotAt(ticks, load), state, &part);
+  motion.Place(RobotAt(ticks), state, &part);
   return part;
 }
 
-Contact Free(int, const DeviceState&) { return Contact{}; }
+Contact Free(int, const PartState&) { return Contact{}; }
 
 PartMotion Dynamic(double damping = 0.0) {
   PartMotionSettings settings;
@@ -56,11 +59,11 @@ PartMotion Dynamic(double damping = 0.0) {
 
 TEST(PartMotionTest, HeldAndQuasiStaticLeaveThePartWhereTheDeviceSaysAndOnlyOneSettles) {
   PartMotionSettings settings;
-  const DeviceState inside = RobotAt(400, 2.0);
+  const DeviceState inside = RobotAt(400);
   for (RadialMotion radial : {RadialMotion::kHeld, RadialMotion::kQuasiStatic}) {
     settings.radial = radial;
     const PartMotion motion(settings, kPeriod);
-    const DeviceState part = Drive(motion, 2.0, 400, [](int, const DeviceState&) {
+    const PartState part = Drive(motion, 2.0, 400, [](int, const PartState&) {
       Contact c;
       c.wrench.force = Eigen::Vector3d(3.0, -1.0, 50.0);
       c.feedback.stiffness = 1e9;
@@ -69,31 +72,34 @@ TEST(PartMotionTest, HeldAndQuasiStaticLeaveThePartWhereTheDeviceSaysAndOnlyOneS
     EXPECT_EQ(part.position, inside.position);
     EXPECT_EQ(part.velocity, inside.velocity);
     // The stage settles the part only in quasi-static motion; held, the holder takes the load.
-    EXPECT_EQ(part.load, radial == RadialMotion::kHeld ? Eigen::Vector2d(0.0, 0.0)
-                                                       : Eigen::Vector2d(0.0, -2.0));
+    EXPECT_EQ(part.settle_load, radial == RadialMotion::kHeld ? Eigen::Vector2d(0.0, 0.0)
+                                                              : Eigen::Vector2d(0.0, -2.0));
   }
 }
 
 TEST(PartMotionTest, WeightActsOnlyInsideTheEntranceAsAFreeFallOfTheShaftsMass) {
-  EXPECT_DOUBLE_EQ(PartMotion::MassOf(RobotAt(300, 2.0)), 2.0 / kStandardGravity);
-  EXPECT_EQ(PartMotion::MassOf(RobotAt(0, 2.0)), 0.0);
+  PartMotionSettings weighed;
+  weighed.radial_load = 2.0;
+  const PartMotion weight(weighed, kPeriod);
+  EXPECT_DOUBLE_EQ(weight.MassAt(RobotAt(300)), 2.0 / kStandardGravity);
+  EXPECT_EQ(weight.MassAt(RobotAt(0)), 0.0);
   const PartMotion motion = Dynamic();
   // 2 mm before the entrance at 10 mm/s: carried for 200 ticks.
-  DeviceState s = Drive(motion, 2.0, 200, Free);
+  PartState s = Drive(motion, 2.0, 200, Free);
   EXPECT_EQ(s.position.z(), 0.0);
   EXPECT_EQ(s.position.y(), 0.0);
-  EXPECT_EQ(s.load, Eigen::Vector2d(0.0, 0.0));  // nothing for the stage to settle: it floats
+  EXPECT_EQ(s.settle_load, Eigen::Vector2d(0.0, 0.0));  // nothing for the stage to settle: it floats
   // From tick 200 on, n steps of symplectic Euler under g fall g h^2 n (n + 1) / 2.
   const int n = 50;
   s = Drive(motion, 2.0, 200 + n, Free);
   EXPECT_NEAR(s.position.z(), -kStandardGravity * kPeriod * kPeriod * n * (n + 1) / 2.0, 1e-15);
   EXPECT_NEAR(s.velocity.z(), -kStandardGravity * kPeriod * n, 1e-13);
   EXPECT_EQ(s.position.x(), 0.0);
-  EXPECT_EQ(s.position.y(), RobotAt(200 + n, 2.0).position.y());  // axially the device's
+  EXPECT_EQ(s.position.y(), RobotAt(200 + n).position.y());  // axially the device's
 }
 
 // A radial contact spring below the part: F_z = -k (z - z0) when z < z0.
-Contact Floor(const DeviceState& s, double k, double z0, bool tell_stiffness) {
+Contact Floor(const PartState& s, double k, double z0, bool tell_stiffness) {
   Contact c;
   const bool touching = s.position.z() < z0;
   if (touching) c.wrench.force.z() = -k * (s.position.z() - z0);
@@ -106,8 +112,8 @@ TEST(PartMotionTest, SettlesOnASpringAtTheStaticEquilibrium) {
   // Damping of 0.7 of critical for the part on that spring, so that it settles in ~10 ms.
   const double m = load / kStandardGravity;
   const PartMotion motion = Dynamic(2 * 0.7 * std::sqrt(k * m));
-  const DeviceState s = Drive(
-      motion, load, 1200, [&](int, const DeviceState& part) { return Floor(part, k, 0.0, false); });
+  const PartState s = Drive(
+      motion, load, 1200, [&](int, const PartState& part) { return Floor(part, k, 0.0, false); });
   EXPECT_NEAR(s.position.z(), -load / k, 1e-12);  // 10 um down
   EXPECT_NEAR(s.velocity.z(), 0.0, 1e-12);
 }
@@ -123,7 +129,7 @@ TEST(PartMotionTest, WithoutTheStiffnessAnExplicitContactIsStableOnlyBelowTheBou
     // Bilateral spring, so that the oscillation cannot leave it.
     double min_z = 0.0, sum_z = 0.0;
     const int ticks = 3000;
-    Drive(motion, load, ticks, [&](int t, const DeviceState& part) {
+    Drive(motion, load, ticks, [&](int t, const PartState& part) {
       if (t >= 1200) {
         min_z = std::min(min_z, part.position.z());
         sum_z += part.position.z();
@@ -153,7 +159,7 @@ TEST(PartMotionTest, ASteelPressFitToldItsStiffnessSettlesWithinTicks) {
   const double load = 2.0, k = 3.665e9, floor = -12e-6;
   const PartMotion motion = Dynamic();
   double max_height = -1.0;
-  const DeviceState s = Drive(motion, load, 600, [&](int t, const DeviceState& part) {
+  const PartState s = Drive(motion, load, 600, [&](int t, const PartState& part) {
     if (t > 220) max_height = std::max(max_height, part.position.z());
     return Floor(part, k, floor, true);  // the part falls onto it after the entrance (tick 200)
   });
@@ -169,7 +175,7 @@ TEST(PartMotionTest, FollowsAMovingStiffContactWithoutLagForce) {
   const double load = 2.0, k = 3.665e9, rate = -2e-6;
   const PartMotion motion = Dynamic();
   double last_force = 0.0;
-  Drive(motion, load, 800, [&](int t, const DeviceState& part) {
+  Drive(motion, load, 800, [&](int t, const PartState& part) {
     const double anchor = -5e-6 + rate * t * kPeriod;
     Contact c;
     if (part.position.y() >= 0.0) {
@@ -189,7 +195,7 @@ TEST(PartMotionTest, OneFreeTickAfterContactDoesNotDropThePartIntoTheSurface) {
   const double load = 2.0, k = 3.665e9, floor = -12e-6;
   const PartMotion motion = Dynamic();
   double after = 0.0;
-  const DeviceState s = Drive(motion, load, 410, [&](int t, const DeviceState& part) {
+  const PartState s = Drive(motion, load, 410, [&](int t, const PartState& part) {
     Contact c = t == 400 ? Contact{} : Floor(part, k, floor, true);
     if (t > 400) after = std::max(after, std::abs(c.wrench.force.z()));
     return c;
@@ -204,7 +210,7 @@ TEST(PartMotionTest, AFreeWayReportedByTheStageIsMetAsASurface) {
   // much free way straight down. A free step would fall 9.8 um; the part meets the surface.
   const double load = 2.0, k = 3.665e9, floor = -12e-6, lower = floor - 1e-6;
   const PartMotion motion = Dynamic();
-  const DeviceState s = Drive(motion, load, 420, [&](int t, const DeviceState& part) {
+  const PartState s = Drive(motion, load, 420, [&](int t, const PartState& part) {
     if (t < 400) return Floor(part, k, floor, true);
     Contact c;
     c.feedback.gap = std::max(0.0, part.position.z() - lower);

@@ -35,8 +35,8 @@ PositioningStage::Options WithStiffness(double k = kStiffness) {
   return o;
 }
 
-DeviceState At(double x, double y, double z, double tilt_about_z = 0.0) {
-  DeviceState s;
+PartState At(double x, double y, double z, double tilt_about_z = 0.0) {
+  PartState s;
   s.position = Eigen::Vector3d(x, y, z);
   s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(tilt_about_z, Eigen::Vector3d::UnitZ()));
   return s;
@@ -48,7 +48,7 @@ TEST(PositioningCollisionTest, FarAwayIsFreeAndRendersNothing) {
   ASSERT_TRUE(stage.collides());
   StageOutput out;
   out.wrench.force.setConstant(7.0);
-  for (const DeviceState& s : {At(0.0, -10e-3, 0.0), At(40e-3, 5e-3, 0.0), At(3e-3, -1e-6, 0.0)}) {
+  for (const PartState& s : {At(0.0, -10e-3, 0.0), At(40e-3, 5e-3, 0.0), At(3e-3, -1e-6, 0.0)}) {
     stage.Evaluate(s, stage_run.get(), &out);
     EXPECT_EQ(out.wrench.force, Eigen::Vector3d::Zero());
     EXPECT_EQ(out.wrench.torque, Eigen::Vector3d::Zero());
@@ -148,7 +148,7 @@ TEST(PositioningCollisionTest, WithALeadInEitherPartMovesThroughTheSameFunnel) {
     // 1.2 mm off along x and 0.3 mm along z, from 3 mm in front of the entrance to 1 mm past
     // the capture depth and back: the part lands on the chamfer and slides down it.
     const double s = i <= 200 ? i / 200.0 : (400 - i) / 200.0;
-    const DeviceState device = At(1.2e-3, -3e-3 + 4e-3 * s, 0.3e-3);
+    const PartState device = At(1.2e-3, -3e-3 + 4e-3 * s, 0.3e-3);
     StageOutput a, b;
     inner.Evaluate(device, inner_run.get(), &a);
     outer.Evaluate(device, outer_run.get(), &b);

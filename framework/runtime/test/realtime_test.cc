@@ -68,7 +68,7 @@ class SlowOnceStage final : public Stage {
   StageId id() const override { return StageId::kPositioning; }
 
  protected:
-  void DoEvaluate(const DeviceState& device, StageState*, StageOutput* out) const noexcept override {
+  void DoEvaluate(const PartState& device, StageState*, StageOutput* out) const noexcept override {
     out->wrench.SetZero();
     out->wrench.force.y() = -1.0;
     out->next = StageId::kPositioning;

@@ -27,7 +27,7 @@ class RngStage final : public Stage {
   StageId id() const override { return StageId::kConstrained; }
 
  protected:
-  void DoEvaluate(const DeviceState& d, StageState*, StageOutput* out) const noexcept override {
+  void DoEvaluate(const PartState& d, StageState*, StageOutput* out) const noexcept override {
     out->pose = MatingPoseOf(d);
     out->wrench.SetZero();
     out->wrench.force.y() = -gain_ * out->pose.depth * (1.0 + 0.1 * std::sin(phase_ + d.time));

@@ -17,15 +17,15 @@
 namespace fitfeel {
 namespace {
 
-DeviceState At(double x, double y, double z, double tilt_about_z = 0.0) {
-  DeviceState s;
+PartState At(double x, double y, double z, double tilt_about_z = 0.0) {
+  PartState s;
   s.position = Eigen::Vector3d(x, y, z);
   s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(tilt_about_z, Eigen::Vector3d::UnitZ()));
   return s;
 }
 
 TEST(MatingPoseTest, DepthIsTheLeadingEndsYAndOffsetItsXZ) {
-  DeviceState s = At(1e-5, 3e-3, -2e-5);
+  PartState s = At(1e-5, 3e-3, -2e-5);
   s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
   const MatingPose pose = MatingPoseOf(s);
   EXPECT_DOUBLE_EQ(pose.depth, 3e-3);
@@ -91,7 +91,7 @@ TEST(ConstrainedStageTest, EvaluatesAnalyzerAndLawAndHandsBackWhenWithdrawn) {
   const ConstrainedStage stage(*prepared.analyzer, *prepared.law);
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
-  DeviceState s = At(0.0, 5e-3, -(analyzer.clearance() + 2e-6));
+  PartState s = At(0.0, 5e-3, -(analyzer.clearance() + 2e-6));
   stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_EQ(out.next, StageId::kConstrained);
   EXPECT_TRUE(out.contact.engaged);
@@ -121,8 +121,8 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
   // The device holds the part on the axis; a 2 N load along -z settles it at clearance + W/k.
-  DeviceState s = At(0.0, 5e-3, 0.0);
-  s.load = Eigen::Vector2d(0.0, -2.0);
+  PartState s = At(0.0, 5e-3, 0.0);
+  s.settle_load = Eigen::Vector2d(0.0, -2.0);
   stage.Evaluate(s, stage_run.get(), &out);
   // Along the load, balanced to 1e-6 of it (2 uN, i.e. 2e-11 m on this 1e5 N/m spring).
   EXPECT_NEAR(out.pose.offset.y(), -(analyzer.clearance() + 2.0 / 1e5), 3e-11);
@@ -132,7 +132,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   EXPECT_TRUE(std::isinf(out.gap));
   // A load along +x, starting from that equilibrium: the part slides round until the sideways
   // push is below 1 % of the load, and carries the load along x.
-  s.load = Eigen::Vector2d(3.0, 0.0);
+  s.settle_load = Eigen::Vector2d(3.0, 0.0);
   stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_NEAR(out.wrench.force.x(), -3.0, 3e-6);
   EXPECT_LE(std::abs(out.wrench.force.z()), 0.03);
@@ -141,7 +141,7 @@ TEST(ConstrainedStageTest, SettlesThePartWhereTheContactCarriesItsLoad) {
   EXPECT_NEAR(out.pose.offset.norm(), analyzer.clearance() + radial / 1e5, 1e-12);
   // Not yet engaged: nothing carries the load, the device's own pose stands.
   s = At(0.0, 0.0, 0.0);
-  s.load = Eigen::Vector2d(0.0, -2.0);
+  s.settle_load = Eigen::Vector2d(0.0, -2.0);
   stage.Evaluate(s, stage_run.get(), &out);
   EXPECT_EQ(out.pose.offset, Eigen::Vector2d(0.0, 0.0));
   EXPECT_EQ(out.wrench.force.z(), 0.0);
@@ -184,8 +184,8 @@ std::vector<int> SettleFeed(CountingAnalyzer* analyzer, int ticks,
   const ConstrainedStage stage(*analyzer, *prepared.law);
   const std::unique_ptr<StageState> stage_run = stage.MakeState();
   StageOutput out;
-  DeviceState s = At(0.0, 5e-3, 0.0);
-  s.load = Eigen::Vector2d(0.0, -2.0);
+  PartState s = At(0.0, 5e-3, 0.0);
+  s.settle_load = Eigen::Vector2d(0.0, -2.0);
   std::vector<int> per_tick;
   for (int tick = 0; tick < ticks + (then_at ? 1 : 0); ++tick) {
     s.position.y() = tick < ticks ? 5e-3 + 1e-5 * tick : *then_at;

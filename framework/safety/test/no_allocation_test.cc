@@ -32,14 +32,14 @@ TEST(SafetyChainTick, DoesNotAllocate) {
     s.passivity_controller = true;
     SafetyChain chain;
     chain.Configure(s, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
-    DeviceState device;
+    PartState device;
     Wrench physical;
     FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
     test_support::ScopedAllocationCounter allocations;
     for (int k = 0; k < 2000; ++k) {
       device.position.y() = 0.001 * std::sin(k * 0.01);
       device.velocity.y() = 0.01 * std::cos(k * 0.01);
-      DeviceState law;
+      PartState law;
       chain.SimulatedState(device, &law);
       physical.force.y() = 2e6 * std::max(0.0, -law.position.y());
       if (k == 500) physical.force.x() = std::nan("");

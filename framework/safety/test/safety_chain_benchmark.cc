@@ -15,12 +15,12 @@ void BM_SafetyChainApply(benchmark::State& state) {
   s.passivity_controller = true;
   SafetyChain chain;
   chain.Configure(s, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
-  DeviceState device;
+  PartState device;
   Wrench physical;
   long k = 0;
   for (auto _ : state) {
     device.position.y() = 0.001 * std::sin(static_cast<double>(k) * 0.01);
-    DeviceState law;
+    PartState law;
     chain.SimulatedState(device, &law);
     physical.force.y() = 2e6 * std::max(0.0, -law.position.y());
     benchmark::DoNotOptimize(chain.Apply(physical, device, 1e-3));

@@ -34,7 +34,7 @@ SafetySettings Direct(double scale) {
 TEST(SafetyChain, ScalesPhysicalToDeviceNewtonsAndReportsTheScale) {
   SafetyChain chain;
   chain.Configure(Direct(0.01), LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
-  const Wrench out = chain.Apply(Force(0.0, -300.0, 100.0), DeviceState{}, 1e-3);
+  const Wrench out = chain.Apply(Force(0.0, -300.0, 100.0), PartState{}, 1e-3);
   EXPECT_DOUBLE_EQ(out.force.y(), -3.0);
   EXPECT_DOUBLE_EQ(out.force.z(), 1.0);
   EXPECT_DOUBLE_EQ(chain.report().force_scale, 0.01);
@@ -48,13 +48,13 @@ TEST(SafetyChain, PhysicalFullScaleMapsToTheContinuousRating) {
   SafetyChain chain;
   chain.Configure(s, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
   EXPECT_DOUBLE_EQ(chain.force_scale(), 1.75 / 350.0);
-  EXPECT_NEAR(chain.Apply(Force(0, -350.0, 0), DeviceState{}, 1e-3).force.norm(), 1.75, 1e-12);
+  EXPECT_NEAR(chain.Apply(Force(0, -350.0, 0), PartState{}, 1e-3).force.norm(), 1.75, 1e-12);
 }
 
 TEST(SafetyChain, SaturatesAtTheDevicePeakForce) {
   SafetyChain chain;
   chain.Configure(Direct(0.01), LookupDeviceSpec("Touch"), 1e-3);
-  const Wrench out = chain.Apply(Force(0.0, -5000.0, 0.0), DeviceState{}, 1e-3);  // 50 N asked
+  const Wrench out = chain.Apply(Force(0.0, -5000.0, 0.0), PartState{}, 1e-3);  // 50 N asked
   EXPECT_LE(out.force.norm(), 3.3);
   EXPECT_NEAR(out.force.y(), -3.3, 1e-9);
   EXPECT_EQ(chain.report().peak_limited_ticks, 1u);
@@ -65,7 +65,7 @@ TEST(SafetyChain, SaturatesAtTheDevicePeakForce) {
 TEST(SafetyChain, NonFiniteNeverReachesTheDevice) {
   SafetyChain chain;
   chain.Configure(Direct(1.0), LookupDeviceSpec("Touch"), 1e-3);
-  DeviceState state;
+  PartState state;
   Wrench out = chain.Apply(Force(kNaN, 0.0, 0.0), state, 1e-3);
   EXPECT_EQ(out.force, Eigen::Vector3d::Zero());
   EXPECT_EQ(chain.report().non_finite_faults, 1u);
@@ -88,7 +88,7 @@ TEST(SafetyChain, NonFiniteNeverReachesTheDevice) {
 TEST(SafetyChain, ReportFormatsWithUnits) {
   SafetyChain chain;
   chain.Configure(SafetySettings{}, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
-  chain.Apply(Force(0.0, 1e4, 0.0), DeviceState{}, 1e-3);
+  chain.Apply(Force(0.0, 1e4, 0.0), PartState{}, 1e-3);
   const std::string text = FormatSafetyReport(chain.report());
   EXPECT_NE(text.find("force scale: 1 device N per physical N"), std::string::npos) << text;
   EXPECT_NE(text.find("K_c 800 N/m, B_c 2.3 N*s/m"), std::string::npos) << text;
@@ -98,7 +98,7 @@ TEST(SafetyChain, ReportFormatsWithUnits) {
 
 TEST(SafetyChain, UnconfiguredChainSendsNothing) {
   SafetyChain chain;
-  EXPECT_EQ(chain.Apply(Force(1.0, 2.0, 3.0), DeviceState{}, 1e-3).force, Eigen::Vector3d::Zero());
+  EXPECT_EQ(chain.Apply(Force(1.0, 2.0, 3.0), PartState{}, 1e-3).force, Eigen::Vector3d::Zero());
 }
 
 TEST(SafetyChain, RefusesCouplingGainsThatBreakTheBound) {
@@ -128,7 +128,7 @@ TEST(SafetyChain, OutputAlwaysFiniteAndWithinLimits) {
       const DeviceSpec spec = KnownDeviceSpecs()[seed % KnownDeviceSpecs().size()];
       SafetyChain chain;
       chain.Configure(s, spec, 1e-3);
-      DeviceState state;
+      PartState state;
       for (int k = 0; k < 1000; ++k) {
         state.position += Eigen::Vector3d(n(rng), n(rng), n(rng)) * 1e-4;
         state.velocity = Eigen::Vector3d(n(rng), n(rng), n(rng)) * 0.05;
@@ -139,7 +139,7 @@ TEST(SafetyChain, OutputAlwaysFiniteAndWithinLimits) {
         if (p == 0) w.force.x() = kNaN;
         if (p == 1) w.force.y() = -kInf;
         if (p == 2) w.torque.z() = kNaN;
-        DeviceState seen = state;
+        PartState seen = state;
         if (p == 3) seen.velocity.x() = kNaN;
         const double dt = p == 4 ? kNaN : 1e-3;
         chain.SetEnvironmentStiffness(p == 5 ? kInf : mag(rng) * 1e4);
@@ -174,13 +174,13 @@ HandRun PressHand(CouplingMode mode, double physical_stiffness, double scale, bo
   chain.Configure(s, spec, 1e-3);
   const double mass = 0.1;
   const double hand_force = 1.0;
-  DeviceState device;
+  PartState device;
   device.position = Eigen::Vector3d(0.0, 0.001, 0.0);  // 1 mm above the wall face at y = 0
   HandRun run;
   const int ticks = 4000;
   for (int k = 0; k < ticks; ++k) {
     device.time = k * 1e-3;
-    DeviceState law_state;
+    PartState law_state;
     chain.SimulatedState(device, &law_state);
     const double depth = std::max(0.0, -law_state.position.y());
     Wrench physical;
@@ -200,7 +200,7 @@ HandRun PressHand(CouplingMode mode, double physical_stiffness, double scale, bo
     const double speed = device.velocity.norm();
     if (k >= 500 && k < 1000) run.early_peak_speed = std::max(run.early_peak_speed, speed);
     if (k >= ticks - 500) run.late_peak_speed = std::max(run.late_peak_speed, speed);
-    DeviceState law_after;
+    PartState law_after;
     chain.SimulatedState(device, &law_after);
     run.final_penetration = std::max(0.0, -law_after.position.y());
   }
@@ -247,10 +247,10 @@ TEST(SafetyChain, CoupledRenderingOfSlidingFrictionIsPassive) {
     s.force_scale = 0.01;
     SafetyChain chain;
     chain.Configure(s, spec, 1e-3);
-    DeviceState device;
+    PartState device;
     const double mass = 0.1;
     for (int k = 0; k < 3000; ++k) {
-      DeviceState law;
+      PartState law;
       chain.SimulatedState(device, &law);
       Wrench friction;
       const double v = law.velocity.y();

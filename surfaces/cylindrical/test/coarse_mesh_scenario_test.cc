@@ -21,8 +21,8 @@ using test_support::ShippedScenario;
 
 namespace fs = std::filesystem;
 
-DeviceState DeviceAt(double x, double y, double z) {
-  DeviceState s;
+PartState DeviceAt(double x, double y, double z) {
+  PartState s;
   s.position = Eigen::Vector3d(x, y, z);
   return s;
 }

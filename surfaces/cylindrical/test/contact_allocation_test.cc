@@ -151,7 +151,7 @@ TEST(ContactTick, AHandsGodObjectDoesNotAllocate) {
   // In 1 mm off the axis with a tremor, 24 mm deep, and back out.
   for (int k = 0; k < 4000; ++k) {
     const double t = k * 1e-3;
-    DeviceState d;
+    PartState d;
     d.position = Eigen::Vector3d(1e-3 + 1e-4 * std::sin(60.0 * t),
                                  -2e-3 + 26e-3 * std::sin(M_PI * t / 4.0),
                                  1e-4 * (std::cos(60.0 * t) - 1.0));
