@@ -34,7 +34,7 @@ for round in $(seq 1 "$rounds"); do
   start=$(date +%s)
   if ctest --test-dir "$build" -j "$jobs" --output-on-failure >"$log" 2>&1; then
     passed=$((passed + 1))
-    echo "round $round: passed ($(grep -m1 -o '[0-9]* tests passed' "$log" || true),\
+    echo "round $round: passed ($(grep -m1 -o 'out of [0-9]*' "$log" | sed 's/out of //') tests,\
  $(($(date +%s) - start)) s)"
   else
     failed=$((failed + 1))
