@@ -313,7 +313,7 @@ void PhantomDevice::DoStop() noexcept {
   handle_ = HD_INVALID_HANDLE;
 }
 
-void PhantomDevice::RunServoLoop(double duration, const std::function<bool(double)>& tick) {
+void PhantomDevice::DoRunServoLoop(double duration, const std::function<bool(double)>& tick) {
   if (handle_ == HD_INVALID_HANDLE || !scheduler_running_) {
     throw UserError("Phantom: RunServoLoop called before Start");
   }
@@ -531,7 +531,7 @@ void PhantomDevice::DoWrite(const Wrench& wrench) noexcept { pending_force_ = wr
 
 PhantomDiagnostics PhantomDevice::diagnostics() const { return diagnostics_; }
 
-DeviceReport PhantomDevice::report() const {
+DeviceReport PhantomDevice::DoReport() const {
   const PhantomDiagnostics& d = diagnostics_;
   DeviceReport r;
   r.Set("model", d.hd_model)

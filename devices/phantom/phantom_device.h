@@ -95,10 +95,10 @@ class PhantomDevice final : public Device {
   void Configure(const PhantomSettings& settings);
   using Device::Configure;
 
-  DeviceSpec spec() const override { return spec_; }
-  ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
-  void RunServoLoop(double duration, const std::function<bool(double)>& tick) override;
-  DeviceReport report() const override;
+  DeviceSpec DoSpec() const override { return spec_; }
+  ClockOwner DoClockOwner() const override { return ClockOwner::kDevice; }
+  void DoRunServoLoop(double duration, const std::function<bool(double)>& tick) override;
+  DeviceReport DoReport() const override;
   PhantomDiagnostics diagnostics() const;
 
  protected:

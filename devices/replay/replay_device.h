@@ -33,8 +33,8 @@ class ReplayDevice final : public Device {
   void Configure(const ReplaySettings& settings, Recording recording);
   using Device::Configure;
 
-  DeviceSpec spec() const override { return spec_; }
-  bool active() const override { return active_; }
+  DeviceSpec DoSpec() const override { return spec_; }
+  bool DoActive() const override { return active_; }
   const Recording& recording() const { return recording_; }
 
  protected:

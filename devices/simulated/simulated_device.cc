@@ -55,7 +55,7 @@ void SimulatedDevice::Configure(const Settings& settings) {
   settings_ = settings;
 }
 
-DeviceSpec SimulatedDevice::spec() const {
+DeviceSpec SimulatedDevice::DoSpec() const {
   DeviceSpec spec;
   spec.native_rate = 1.0 / period_;
   // A simulated robot has no motor to saturate.

@@ -78,7 +78,7 @@ class SimulatedDevice final : public Device {
   using Device::Configure;
   const Settings& settings() const { return settings_; }
 
-  DeviceSpec spec() const override;
+  DeviceSpec DoSpec() const override;
 
  protected:
   void DoConfigure(const ConfigNode& node) override;  // simulated_config.cc

@@ -36,7 +36,7 @@ namespace fitfeel::capi_detail {
 class HostDevice final : public fitfeel::Device {
  public:
   explicit HostDevice(fitfeel::DeviceSpec spec) : spec_(std::move(spec)) {}
-  fitfeel::DeviceSpec spec() const override { return spec_; }
+  fitfeel::DeviceSpec DoSpec() const override { return spec_; }
   void Set(const DeviceState& state) noexcept { state_ = state; }
   const Wrench& written() const noexcept { return written_; }
 

@@ -34,7 +34,15 @@ void Device::Write(const Wrench& wrench) noexcept {
   DoWrite(wrench);
 }
 
-void Device::RunServoLoop(double, const std::function<bool(double)>&) {
+void Device::RunServoLoop(double duration, const std::function<bool(double)>& tick) {
+  if (!(duration > 0.0) || !std::isfinite(duration)) {
+    throw UserError("device servo loop: the duration must be a positive number of seconds");
+  }
+  if (!tick) throw UserError("device servo loop: no tick to call");
+  DoRunServoLoop(duration, tick);
+}
+
+void Device::DoRunServoLoop(double, const std::function<bool(double)>&) {
   throw UnsupportedError("this device does not own a servo clock; run it from the scheduler");
 }
 

@@ -50,6 +50,7 @@ inline double SanitizedStiffness(double stiffness) noexcept {
 enum class ClockOwner { kFramework, kDevice };
 
 // A device plugin. Configure and Start may allocate and throw; Read and Write run in the tick.
+// Every public method is non-virtual and calls a protected virtual Do... that a plugin overrides.
 class FITFEEL_API Device {
  public:
   virtual ~Device();
@@ -73,18 +74,25 @@ class FITFEEL_API Device {
     DoSetEnvironmentStiffness(SanitizedStiffness(stiffness));
   }
   // The device's limits. A device that measures them (hardware) knows them only after Start.
-  virtual DeviceSpec spec() const = 0;
-  virtual ClockOwner clock_owner() const { return ClockOwner::kFramework; }
+  DeviceSpec spec() const { return DoSpec(); }
+  ClockOwner clock_owner() const { return DoClockOwner(); }
   // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
-  // rate until it returns false or `duration` seconds pass. Throws if the device cannot.
-  virtual void RunServoLoop(double duration, const std::function<bool(double)>& tick);
+  // rate until it returns false or `duration` seconds pass. Throws UserError for a duration that
+  // is not a positive finite time, an empty tick, or a device that cannot.
+  void RunServoLoop(double duration, const std::function<bool(double)>& tick);
   // True while the device wants the run to continue (e.g. a replay that has not ended).
-  virtual bool active() const { return true; }
+  bool active() const { return DoActive(); }
   // After a run: what the device saw (faults, recoveries, calibration, measured rate), written to
   // summary.json's `device_report`; empty when it has nothing to report.
-  virtual DeviceReport report() const { return {}; }
+  DeviceReport report() const { return DoReport(); }
 
  protected:
+  virtual DeviceSpec DoSpec() const = 0;
+  virtual ClockOwner DoClockOwner() const { return ClockOwner::kFramework; }
+  // Default: the device does not own a clock (throws UnsupportedError).
+  virtual void DoRunServoLoop(double duration, const std::function<bool(double)>& tick);
+  virtual bool DoActive() const { return true; }
+  virtual DeviceReport DoReport() const { return {}; }
   virtual void DoConfigure(const ConfigNode& node) = 0;
   virtual void DoStart(double period) = 0;
   virtual void DoStop() noexcept {}

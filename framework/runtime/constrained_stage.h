@@ -55,7 +55,7 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   ConstrainedStage& operator=(const ConstrainedStage&) = delete;
   const Options& options() const { return options_; }
 
-  StageId id() const override { return StageId::kConstrained; }
+  StageId DoId() const override { return StageId::kConstrained; }
 
  protected:
   std::unique_ptr<StageState> DoMakeState() const override;

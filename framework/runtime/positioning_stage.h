@@ -98,7 +98,7 @@ class FITFEEL_API PositioningStage final : public Stage {
   PositioningStage(const PositioningStage&) = delete;
   PositioningStage& operator=(const PositioningStage&) = delete;
 
-  StageId id() const override { return StageId::kPositioning; }
+  StageId DoId() const override { return StageId::kPositioning; }
   const Options& options() const { return options_; }
   // True when coarse meshes were given: free motion collides.
   bool collides() const { return collider_ != nullptr || !lead_in_.empty(); }

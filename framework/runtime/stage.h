@@ -66,7 +66,7 @@ class FITFEEL_API StageState {
 class FITFEEL_API Stage {
  public:
   virtual ~Stage();
-  virtual StageId id() const = 0;
+  StageId id() const { return DoId(); }
   // A fresh state for one run (prepare time: may allocate). Never null.
   std::unique_ptr<StageState> MakeState() const;
   // Per tick. `state` must come from this stage's MakeState (aborts otherwise) and serve one
@@ -74,6 +74,7 @@ class FITFEEL_API Stage {
   void Evaluate(const PartState& part, StageState* state, StageOutput* out) const noexcept;
 
  protected:
+  virtual StageId DoId() const = 0;
   // The default is a state with nothing in it, for stages that keep nothing between ticks.
   virtual std::unique_ptr<StageState> DoMakeState() const;
   virtual void DoEvaluate(const PartState& part, StageState* state,

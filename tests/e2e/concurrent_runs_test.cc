@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 // the settling solve are exercised. Position-controlled: the path does not depend on the force.
 class StrikeThenInsertDevice final : public Device {
  public:
-  DeviceSpec spec() const override {
+  DeviceSpec DoSpec() const override {
     DeviceSpec s;
     s.model = "strike-then-insert path";
     s.max_force = s.max_continuous_force = s.max_stiffness = HUGE_VAL;

@@ -52,13 +52,13 @@ class ProbeDevice final : public Device {
   ProbeDevice(std::shared_ptr<Device> inner, std::size_t capacity)
       : inner_(std::move(inner)), capacity_(capacity) {}
 
-  DeviceSpec spec() const override { return inner_->spec(); }
-  ClockOwner clock_owner() const override { return inner_->clock_owner(); }
-  void RunServoLoop(double duration, const std::function<bool(double)>& tick) override {
+  DeviceSpec DoSpec() const override { return inner_->spec(); }
+  ClockOwner DoClockOwner() const override { return inner_->clock_owner(); }
+  void DoRunServoLoop(double duration, const std::function<bool(double)>& tick) override {
     inner_->RunServoLoop(duration, tick);
   }
-  bool active() const override { return inner_->active(); }
-  DeviceReport report() const override { return inner_->report(); }
+  bool DoActive() const override { return inner_->active(); }
+  DeviceReport DoReport() const override { return inner_->report(); }
 
   const std::vector<RecordedSample>& samples() const { return samples_; }
   std::size_t reads() const { return reads_; }

@@ -112,7 +112,7 @@ class TestCylinder final : public SurfaceType {
 
 class StillDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return DeviceSpec{}; }
+  DeviceSpec DoSpec() const override { return DeviceSpec{}; }
 
  protected:
   void DoConfigure(const ConfigNode& node) override { node.ExpectOnlyKeys({"plugin"}); }

@@ -26,7 +26,7 @@ namespace {
 class StillDevice final : public Device {
  public:
   explicit StillDevice(DeviceSpec spec) : spec_(std::move(spec)) {}
-  DeviceSpec spec() const override { return spec_; }
+  DeviceSpec DoSpec() const override { return spec_; }
 
  protected:
   void DoConfigure(const ConfigNode&) override {}
@@ -48,7 +48,7 @@ class StillDevice final : public Device {
 class WallStage final : public Stage {
  public:
   explicit WallStage(StageId id) : id_(id) {}
-  StageId id() const override { return id_; }
+  StageId DoId() const override { return id_; }
 
  protected:
   void DoEvaluate(const PartState& d, StageState*, StageOutput* out) const noexcept override {

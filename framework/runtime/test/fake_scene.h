@@ -156,7 +156,7 @@ class KinematicDevice final : public Device {
  public:
   KinematicDevice(double start_y, double speed, Eigen::Vector2d offset = {0.0, 0.0})
       : start_y_(start_y), speed_(speed), offset_(offset) {}
-  DeviceSpec spec() const override { return spec_; }
+  DeviceSpec DoSpec() const override { return spec_; }
   void set_spec(const DeviceSpec& spec) { spec_ = spec; }
   int writes() const { return writes_; }
   const Wrench& last() const { return last_; }

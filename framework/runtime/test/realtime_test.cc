@@ -65,7 +65,7 @@ TEST(OverrunGuard, ZeroOnAMissedDeadlineThenARampBack) {
 // A stage that renders a constant force and, once, computes for 3 ms: an injected overrun.
 class SlowOnceStage final : public Stage {
  public:
-  StageId id() const override { return StageId::kPositioning; }
+  StageId DoId() const override { return StageId::kPositioning; }
 
  protected:
   void DoEvaluate(const PartState& device, StageState*, StageOutput* out) const noexcept override {

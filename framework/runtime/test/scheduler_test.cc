@@ -24,7 +24,7 @@ class RngStage final : public Stage {
     gain_ = 100.0 + 100.0 * u(rng);
     phase_ = 2.0 * M_PI * u(rng);
   }
-  StageId id() const override { return StageId::kConstrained; }
+  StageId DoId() const override { return StageId::kConstrained; }
 
  protected:
   void DoEvaluate(const PartState& d, StageState*, StageOutput* out) const noexcept override {
@@ -168,8 +168,8 @@ TEST(SchedulerTest, GuardReplacesNonFiniteWrenchesByZeroAndCountsThem) {
 class FiniteDevice final : public Device {
  public:
   explicit FiniteDevice(int ticks) : left_(ticks) {}
-  DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
-  bool active() const override { return left_ > 0; }
+  DeviceSpec DoSpec() const override { return testing::UnlimitedSpec(); }
+  bool DoActive() const override { return left_ > 0; }
 
  protected:
   void DoConfigure(const ConfigNode&) override {}
@@ -194,9 +194,9 @@ TEST(SchedulerTest, StopsWhenTheDeviceBecomesInactive) {
 // A device whose own "servo thread" calls the tick (here synchronously, at its native 500 Hz).
 class HalfRateServoDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
-  ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
-  void RunServoLoop(double duration, const std::function<bool(double)>& tick) override {
+  DeviceSpec DoSpec() const override { return testing::UnlimitedSpec(); }
+  ClockOwner DoClockOwner() const override { return ClockOwner::kDevice; }
+  void DoRunServoLoop(double duration, const std::function<bool(double)>& tick) override {
     for (int k = 0; k * 2e-3 < duration; ++k) {
       if (!tick(k * 2e-3)) break;
       ++calls;

@@ -20,7 +20,7 @@ namespace {
 class PushingDevice final : public Device {
  public:
   explicit PushingDevice(DeviceSpec spec) : spec_(std::move(spec)) {}
-  DeviceSpec spec() const override { return spec_; }
+  DeviceSpec DoSpec() const override { return spec_; }
 
  protected:
   void DoConfigure(const ConfigNode&) override {}
@@ -39,7 +39,7 @@ class PushingDevice final : public Device {
 class WallStage final : public Stage {
  public:
   explicit WallStage(StageId id) : id_(id) {}
-  StageId id() const override { return id_; }
+  StageId DoId() const override { return id_; }
 
  protected:
   void DoEvaluate(const PartState& d, StageState*, StageOutput* out) const noexcept override {

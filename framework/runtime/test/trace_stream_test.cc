@@ -93,9 +93,9 @@ TEST(TraceStreamTest, StreamedTraceAndSummaryEqualTheKeptOnes) {
 // room are dropped and counted.
 class StreamServoDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
-  ClockOwner clock_owner() const override { return ClockOwner::kDevice; }
-  void RunServoLoop(double duration, const std::function<bool(double)>& tick) override {
+  DeviceSpec DoSpec() const override { return testing::UnlimitedSpec(); }
+  ClockOwner DoClockOwner() const override { return ClockOwner::kDevice; }
+  void DoRunServoLoop(double duration, const std::function<bool(double)>& tick) override {
     for (int k = 0; k * 1e-3 < duration - 1e-9; ++k) {
       if (!tick(k * 1e-3)) break;
     }
@@ -164,7 +164,7 @@ TEST(TraceStreamTest, ARefusedRecordingSampleFailsTheRunAndLeavesNothing) {
 // A device whose state turns absurd on some ticks: not finite, or far beyond any workspace.
 class GlitchingDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return testing::UnlimitedSpec(); }
+  DeviceSpec DoSpec() const override { return testing::UnlimitedSpec(); }
   std::vector<Wrench> written;
 
  protected:

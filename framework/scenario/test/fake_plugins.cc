@@ -81,7 +81,7 @@ class FakeThread final : public FakeCylinder {
 
 class FakeDevice final : public Device {
  public:
-  DeviceSpec spec() const override { return DeviceSpec{}; }
+  DeviceSpec DoSpec() const override { return DeviceSpec{}; }
 
  protected:
   void DoConfigure(const ConfigNode& node) override {

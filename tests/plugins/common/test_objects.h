@@ -43,7 +43,7 @@ class InertSurface final : public SurfaceType {
 // Device from a real plugin library (loading, lifetime, scheduler plumbing).
 class StillDevice final : public Device {
  public:
-  DeviceSpec spec() const override {
+  DeviceSpec DoSpec() const override {
     DeviceSpec spec;
     spec.model = "fitfeel test still device";
     spec.max_force = 10.0;
