@@ -121,7 +121,8 @@ void AddFitCommand(CLI::App& app) {
       "Limits and fit class of an ISO 286 fit, e.g. `fitfeel fit 20 H7/g6` (size in mm "
       "unless it carries a unit: \"20 mm\", \"0.02 m\")");
   auto args = std::make_shared<std::vector<std::string>>();
-  cmd->add_option("size_and_fit", *args, "<size> <HOLE/shaft>, e.g. 20 H7/g6 or \"20 mm\" H7/js6")
+  cmd->add_option("size_and_fit", *args, "e.g. 20 H7/g6 or \"20 mm\" H7/js6")
+      ->option_text("<size> <HOLE/shaft>")
       ->required()
       ->expected(2, 3);
   cmd->callback([args] { RunFit(*args); });

@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void Refuse(const std::string& option, const std::string& expected,
                          const std::string& found) {
-  throw UserError(option + ": expected " + expected + ", found " + found);
+  throw OptionError(option + ": expected " + expected + ", found " + found);
 }
 
 std::string Quoted(const std::string& text) { return text.empty() ? "nothing" : "'" + text + "'"; }

@@ -20,6 +20,9 @@ Every case is checked for:
   - exit code 0 or 2 only;
   - every refusal located: the message names the file with line and column (scenarios), the
     recording's file and line, or one of the command line's own words (the argument);
+  - every message in the project's format: each line on standard error is fitfeel's ("fitfeel:
+    error: ...", "fitfeel: note: ...", an indented continuation) or a command's usage line, and
+    none is in the argument library's own words ("At least 2 required but received 1");
   - validate and run agree (both accept or both refuse) on scenario and recording cases;
   - no non-finite number in trace.csv, summary.json or recording.csv of a run that succeeded,
     and no file at all in the output folder of a run that failed (no partial outputs).
@@ -186,6 +189,25 @@ def check_outputs(out_dir, ok, problems):
             problems.append("temporary left behind: " + name)
 
 
+# The project's message format (framework/cli/command_line_errors.h): an error, note or warning of
+# fitfeel's or of one of its commands ("fitfeel run: interrupted ..."), an indented continuation,
+# or a usage line.
+MESSAGE_LINE = re.compile(r"^(?:fitfeel(?: [a-z]+)*: |usage: fitfeel\b|  )")
+LIBRARY_WORDS = ["At least", "At Most", "required but received", "The following argument",
+                 "Run with --help", "is required", "Could not convert", "Expected exactly",
+                 "A subcommand", "not in {"]
+
+
+def check_format(name, stderr, problems):
+    for line in stderr.splitlines():
+        if line.strip() and not MESSAGE_LINE.match(line):
+            problems.append(name + ": message outside the project's format: " + line[:200])
+    for words in LIBRARY_WORDS:
+        if words in stderr:
+            problems.append(name + ": in the argument library's words: " + stderr.strip()[:200])
+            break
+
+
 def located(stderr, places):
     """Whether an error message names one of `places` (regexes) at its start or anywhere."""
     return any(re.search(p, stderr) for p in places)
@@ -226,6 +248,8 @@ def scenario_case(rng, fitfeel, work, base_texts, recording_file=None, recording
     r_code, _, r_err = run(fitfeel, ["run", scenario, "--out", out_dir], work)
     check_exit("validate", v_code, v_err, problems)
     check_exit("run", r_code, r_err, problems)
+    check_format("validate", v_err, problems)
+    check_format("run", r_err, problems)
     if v_code == 2 and not located(v_err, places):
         problems.append("validate refusal not located: " + v_err.strip()[:300])
     if r_code == 2 and not located(r_err, places):
@@ -315,15 +339,15 @@ def command_case(rng, fitfeel, work, base_texts):
     out_dir = os.path.join(work, "out")
     code, _, err = run(fitfeel, args, work)
     check_exit(" ".join(args), code, err, problems)
+    check_format(" ".join(args), err, problems)
     if code == 2:
         # The argument: one of the command line's own words (an option or its value), a file
-        # location, or CLI11's usage text for a missing or unknown subcommand.
+        # location, or the list of commands when none was given.
         words = [w for w in args if w.strip()]
         # An empty word is named as nothing: "fitfeel: error: : ..." or "found nothing".
         empty = "" in args and ("error: : " in err or "nothing" in err or "''" in err)
         ok = empty or any(w in err for w in words) or located(err, file_places(scenario)) \
-            or "A subcommand is required" in err or "required" in err \
-            or "no scenario file given" in err
+            or "expected a command" in err or "no scenario file given" in err
         if not ok:
             problems.append("refusal names no argument: " + err.strip()[:300])
     if args and args[0] == "run" and "--out" in args:
@@ -432,8 +456,8 @@ def main():
     if failures:
         print("campaign: %d failing cases kept in %s" % (len(failures), args.keep))
         return 1
-    print("campaign: no crash, exit codes 0 or 2 only, every refusal located, validate and run "
-          "agree, no non-finite output")
+    print("campaign: no crash, exit codes 0 or 2 only, every refusal located and in the project's "
+          "format, validate and run agree, no non-finite output")
     return 0
 
 
