@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "devices/replay/replay_device.h"
+#include "framework/core/path_check.h"
 #include "framework/device/device_specs.h"
 
 namespace fitfeel::replay {
@@ -18,13 +19,14 @@ void ReplayDevice::DoConfigure(const ConfigNode& node) {
   if (settings.file.is_relative()) {
     settings.file = std::filesystem::path(node.file()).parent_path() / settings.file;
   }
-  if (!std::filesystem::exists(settings.file)) {
+  if (const std::string why = WhyNotReadableFile(settings.file); !why.empty()) {
     // Appended rather than concatenated: GCC 12 at -O3 reports a false -Warray-bounds inside
     // operator+ of a one-character literal and a string here (GCC bug 105651).
     std::string found = "'";
     found += settings.file.string();
-    found += "' (no such file)";
-    file.Fail("an existing recording file", found);
+    found += "', which ";
+    found += why;
+    file.Fail("a readable recording file", found);
   }
   if (auto n = node.Find("speed")) {
     settings.speed = n->AsQuantityIn(Dimension::kDimensionless, 0.0, kInf, false);

@@ -11,6 +11,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/path_check.h"
 #include "framework/plot/gnuplot.h"
 #include "framework/plot/pressure_chart.h"
 #include "framework/plot/render.h"
@@ -69,15 +70,16 @@ void AddTrace(CLI::App& plot) {
 // started in, which for the bundled scenarios is the source tree. Looked up like `fitfeel run`
 // does: as given, then under $FITFEEL_SOURCE_DIR.
 fs::path FindRunScenario(const std::string& file) {
-  std::error_code ec;
-  if (fs::is_regular_file(file, ec)) return file;
-  std::string searched = "'" + file + "'";
+  std::string why = WhyNotReadableFile(file);
+  if (why.empty()) return file;
+  std::string searched = "'" + file + "' (" + why + ")";
   const fs::path given(file);
   if (given.is_relative()) {
     if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source != nullptr && *source) {
       const fs::path there = fs::path(source) / given;
-      if (fs::is_regular_file(there, ec)) return there;
-      searched += " and '" + there.string() + "'";
+      why = WhyNotReadableFile(there);
+      if (why.empty()) return there;
+      searched += " and '" + there.string() + "' (" + why + ")";
     } else {
       searched += " (FITFEEL_SOURCE_DIR is not set)";
     }

@@ -18,6 +18,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/path_check.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
@@ -165,12 +166,13 @@ void Run(const RunArgs& args) {
 
 // The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
 std::filesystem::path FindDefaultScenario() {
+  // Whatever is there is taken (LoadScene says why it cannot be read, in the OS's words).
   const fs::path here = kDefaultScenario;
-  if (fs::exists(here)) return here;
+  if (WhyNotReadableFile(here) != kDoesNotExist) return here;
   std::string searched = "'" + fs::absolute(here).string() + "'";
   if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
     const fs::path there = fs::path(source) / kDefaultScenario;
-    if (fs::exists(there)) return there;
+    if (WhyNotReadableFile(there) != kDoesNotExist) return there;
     searched += " and '" + there.string() + "'";
   } else {
     searched += " (FITFEEL_SOURCE_DIR is not set)";

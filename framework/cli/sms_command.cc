@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +21,8 @@
 #include "framework/cli/strict_options.h"
 #include "framework/runtime/prepare.h"
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
+#include "framework/core/path_check.h"
 #include "framework/model/measured_surface.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/registry.h"
@@ -42,19 +45,21 @@ void WriteAtomically(const std::filesystem::path& path, const std::string& text)
   const std::filesystem::path folder =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec)) {
+  if (const std::string why = WhyNotFolder(folder); !why.empty()) {
     throw UserError("sms: cannot write '" + path.string() + "': folder '" + folder.string() +
-                    "' does not exist");
+                    "' " + why);
   }
   const std::filesystem::path temporary =
       folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
   {
+    errno = 0;
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
+    const int write_error = errno;
     if (!out) {
       std::filesystem::remove(temporary, ec);
-      throw UserError("sms: cannot write '" + temporary.string() + "'");
+      throw UserError("sms: cannot write '" + temporary.string() + "': " + OsReason(write_error));
     }
   }
   std::filesystem::rename(temporary, path, ec);

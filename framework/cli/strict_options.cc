@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -18,17 +19,22 @@ namespace fs = std::filesystem;
 
 std::string Quoted(const std::string& text) { return text.empty() ? "nothing" : "'" + text + "'"; }
 
-// The status of an existing path, or nullopt when nothing is there.
-std::optional<fs::file_status> Existing(const fs::path& path) {
+// The status of an existing path, or nullopt when nothing is there. A path that cannot even be
+// looked at (a symlink loop, a folder without access) is refused in the OS's words.
+std::optional<fs::file_status> Existing(const std::string& option, const fs::path& path) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
-  if (ec || status.type() == fs::file_type::not_found) return std::nullopt;
+  if (status.type() == fs::file_type::not_found) return std::nullopt;
+  if (ec) {
+    Refuse(option, "a path to write", "'" + path.string() + "', which cannot be opened: " +
+                                          OsReason(ec));
+  }
   return status;
 }
 
 void CheckParent(const std::string& option, const fs::path& path) {
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  if (const auto status = Existing(parent); status && !fs::is_directory(*status)) {
+  if (const auto status = Existing(option, parent); status && !fs::is_directory(*status)) {
     Refuse(option, "a path inside a folder", "'" + path.string() + "' ('" + parent.string() +
                                                  "' is not a folder)");
   }
@@ -91,7 +97,7 @@ CLI::Option* AddQuantityOption(CLI::App* cmd, const std::string& name, Dimension
 
 void CheckOutputFile(const std::string& option, const fs::path& file) {
   if (file.empty()) Refuse(option, "an output file", "nothing");
-  if (const auto status = Existing(file); status && !fs::is_regular_file(*status)) {
+  if (const auto status = Existing(option, file); status && !fs::is_regular_file(*status)) {
     Refuse(option, "a regular file to write (or a new one)",
            "'" + file.string() + "', which is " +
                (fs::is_directory(*status) ? "a folder" : "a device, pipe or socket"));
@@ -101,7 +107,7 @@ void CheckOutputFile(const std::string& option, const fs::path& file) {
 
 void CheckOutputFolder(const std::string& option, const fs::path& folder) {
   if (folder.empty()) Refuse(option, "an output folder", "nothing");
-  if (const auto status = Existing(folder); status && !fs::is_directory(*status)) {
+  if (const auto status = Existing(option, folder); status && !fs::is_directory(*status)) {
     Refuse(option, "a folder to write into (or a new one)",
            "'" + folder.string() + "', which is not a folder");
   }

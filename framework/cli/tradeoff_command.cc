@@ -13,6 +13,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/path_check.h"
 #include "framework/core/quantity.h"
 #include "framework/plot/gnuplot.h"
 #include "framework/plugin/registry.h"
@@ -89,8 +90,8 @@ void Run(const TradeoffOptions& options) {
       options.prefix.empty() ? fs::path(scene.name + "-tradeoff") : fs::path(options.prefix);
   if (prefix.filename().empty()) throw UserError("tradeoff: -o needs a file name prefix");
   const fs::path folder = prefix.parent_path().empty() ? fs::path(".") : prefix.parent_path();
-  if (!fs::is_directory(folder)) {
-    throw UserError("tradeoff: output folder '" + folder.string() + "' does not exist");
+  if (const std::string why = WhyNotFolder(folder); !why.empty()) {
+    throw UserError("tradeoff: output folder '" + folder.string() + "' " + why);
   }
   plot::Gnuplot::Find();  // UnsupportedError now rather than after the runs
   const fs::path csv = prefix.string() + ".csv";

@@ -2,10 +2,12 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <fstream>
 #include <system_error>
 
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
 
 namespace fitfeel {
 namespace {
@@ -13,8 +15,10 @@ namespace {
 namespace fs = std::filesystem;
 
 void WriteOne(const fs::path& path, const std::string& text) {
+  errno = 0;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw UserError("cannot create '" + path.string() + "'");
+  const int open_error = errno;
+  if (!out) throw UserError("cannot create '" + path.string() + "': " + OsReason(open_error));
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
   out.close();
   if (!out) throw UserError("cannot write '" + path.string() + "' (disk full?)");

@@ -1,5 +1,6 @@
 #include "framework/device/recording.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <system_error>
 
 #include "framework/core/line_endings.h"
+#include "framework/core/os_reason.h"
 #include "framework/device/physical_bounds.h"
 
 namespace fitfeel {
@@ -204,8 +206,10 @@ void WriteRecording(const std::filesystem::path& file, const RecordingInfo& info
 }
 
 Recording ReadRecording(const std::filesystem::path& file) {
+  errno = 0;
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw RecordingError(file, 0, "cannot open the recording");
+  const int open_error = errno;
+  if (!in) throw RecordingError(file, 0, "cannot open the recording: " + OsReason(open_error));
   std::stringstream whole;
   whole << in.rdbuf();
   const std::string text = NormalizeLineEndings(whole.str());

@@ -16,6 +16,7 @@
 #include <system_error>
 
 #include "framework/core/error.h"
+#include "framework/core/path_check.h"
 
 extern char** environ;
 
@@ -83,9 +84,8 @@ std::vector<OutputFile> ResolveOutputs(const fs::path& file) {
     throw UserError("output file '" + file.string() + "' does not name a file");
   }
   const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) {
-    throw UserError("output folder '" + folder.string() + "' does not exist");
+  if (const std::string why = WhyNotFolder(folder); !why.empty()) {
+    throw UserError("output folder '" + folder.string() + "' " + why);
   }
   const std::string extension = file.extension().string();
   if (extension == ".png") return {{file, ImageFormat::kPng}};

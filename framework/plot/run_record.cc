@@ -1,6 +1,7 @@
 #include "framework/plot/run_record.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <fstream>
 #include <map>
@@ -9,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
+#include "framework/core/path_check.h"
 
 namespace fitfeel::plot {
 namespace fs = std::filesystem;
@@ -75,8 +78,12 @@ ResistanceStats ReadStats(const Json& root, const std::string& key, const fs::pa
 }  // namespace
 
 RunSummary LoadSummary(const fs::path& file) {
+  errno = 0;
   std::ifstream in(file);
-  if (!in) throw UserError("cannot read the run summary '" + file.string() + "'");
+  const int open_error = errno;
+  if (!in) {
+    throw UserError("cannot read the run summary '" + file.string() + "': " + OsReason(open_error));
+  }
   Json root;
   try {
     root = Json::parse(in);
@@ -121,8 +128,10 @@ RunSummary LoadSummary(const fs::path& file) {
 }
 
 ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
+  errno = 0;
   std::ifstream in(file);
-  if (!in) throw UserError("cannot read the trace '" + file.string() + "'");
+  const int open_error = errno;
+  if (!in) throw UserError("cannot read the trace '" + file.string() + "': " + OsReason(open_error));
   std::string header_line;
   if (!std::getline(in, header_line)) throw UserError(file.string() + ": empty file, no header");
   std::map<std::string, std::size_t, std::less<>> index;
@@ -198,15 +207,16 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
 }
 
 RunRecord LoadRun(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    throw UserError("run folder '" + dir.string() + "' does not exist or is not a folder");
+  if (const std::string why = WhyNotFolder(dir); !why.empty()) {
+    throw UserError("run folder '" + dir.string() + "' " + why);
   }
   for (const char* name : {"summary.json", "trace.csv"}) {
-    if (!fs::is_regular_file(dir / name, ec)) {
+    const std::string why = WhyNotReadableFile(dir / name);
+    if (why == kDoesNotExist) {
       throw UserError("run folder '" + dir.string() + "' has no " + name +
                       " (write it with `fitfeel run`, outputs [trace, summary])");
     }
+    if (!why.empty()) throw UserError("'" + (dir / name).string() + "' " + why);
   }
   RunRecord record;
   record.dir = dir;

@@ -16,6 +16,7 @@
 
 #include "framework/core/build_info.h"
 #include "framework/core/error.h"
+#include "framework/core/path_check.h"
 #include "framework/device/device.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/fingerprint.h"
@@ -219,9 +220,11 @@ struct PluginRegistry::Impl {
 
   // Loads `library` and runs every check in the order of the ABI contract; throws Refusal.
   void Load(const fs::path& library) {
-    std::error_code ec;
-    if (!fs::exists(library, ec)) Refuse("no such file");
-    if (!fs::is_regular_file(library, ec)) Refuse("not a regular file");
+    if (const std::string why = WhyNotReadableFile(library); why == kDoesNotExist) {
+      Refuse("no such file");
+    } else if (!why.empty()) {
+      Refuse(why);
+    }
 
     boost::dll::shared_library handle;
     try {

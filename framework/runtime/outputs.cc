@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -12,6 +13,7 @@
 
 #include "framework/core/error.h"
 #include "framework/core/number_text.h"
+#include "framework/core/os_reason.h"
 
 namespace fitfeel {
 namespace {
@@ -23,8 +25,10 @@ nlohmann::json ToJson(const Percentiles& p) {
 }
 
 void WriteFile(const fs::path& path, const std::string& text) {
+  errno = 0;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw UserError("cannot create '" + path.string() + "'");
+  const int open_error = errno;
+  if (!out) throw UserError("cannot create '" + path.string() + "': " + OsReason(open_error));
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
   out.close();
   if (!out) throw UserError("cannot write '" + path.string() + "' (disk full?)");

@@ -2,11 +2,13 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <system_error>
 
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
 
 namespace fitfeel {
 namespace {
@@ -47,8 +49,13 @@ TraceStream::TraceStream(const StreamOutputs& outputs, TickObserver* observer, s
     try {
       if (outputs_.trace) {
         trace_file_ = pending("trace.csv");
+        errno = 0;
         trace_out_.open(trace_file_.temporary, std::ios::binary | std::ios::trunc);
-        if (!trace_out_) throw UserError("cannot create '" + trace_file_.temporary.string() + "'");
+        const int open_error = errno;
+        if (!trace_out_) {
+          throw UserError("cannot create '" + trace_file_.temporary.string() +
+                          "': " + OsReason(open_error));
+        }
         trace_text_.reserve(kBlockBytes + 4096);
         trace_text_ = TraceHeader() + "\n";
       }

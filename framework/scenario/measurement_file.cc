@@ -1,6 +1,7 @@
 #include "framework/scenario/measurement_file.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -14,6 +15,8 @@
 #include <vector>
 
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
+#include "framework/core/path_check.h"
 #include "framework/core/quantity.h"
 
 namespace fitfeel::scenario {
@@ -255,17 +258,19 @@ MeasuredSurface ReadMeasurement(const fs::path& file, MeasurementKind kind, doub
   const std::string wanted =
       "a readable " + std::string(MeasurementKindName(kind)) + " measurement file (CSV)";
   std::error_code ec;
-  // A device or a pipe (/dev/zero) would never end; a regular file has a size to bound.
-  if (!fs::is_regular_file(file, ec)) {
-    key.Fail(wanted, "'" + file.string() + "', " +
-                         (fs::exists(file, ec) ? "which is not a regular file" : "which does not exist"));
+  // A device or a pipe (/dev/zero) would never end; a regular file has a size to bound. Refused in
+  // the OS's words (a symlink loop is a loop).
+  if (const std::string why = WhyNotReadableFile(file); !why.empty()) {
+    key.Fail(wanted, "'" + file.string() + "', which " + why);
   }
   if (fs::file_size(file, ec) > kMaxMeasurementBytes) {
     key.Fail(wanted + " of at most " + std::to_string(kMaxMeasurementBytes >> 20) + " MiB",
              "'" + file.string() + "' of " + std::to_string(fs::file_size(file, ec) >> 20) + " MiB");
   }
+  errno = 0;
   std::ifstream in(file, std::ios::binary);
-  if (!in) key.Fail(wanted, "'" + file.string() + "', which cannot be read");
+  const int open_error = errno;
+  if (!in) key.Fail(wanted, "'" + file.string() + "', which cannot be read: " + OsReason(open_error));
   const Reader reader(file, key);
   MeasuredSurface m;
   m.kind = kind;

@@ -1,6 +1,7 @@
 #include "framework/stability/stability_map.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -10,6 +11,8 @@
 #include <unistd.h>
 
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
+#include "framework/core/path_check.h"
 
 namespace fitfeel {
 
@@ -77,9 +80,9 @@ void WriteFileAtomically(const std::filesystem::path& path, const std::string& t
   namespace fs = std::filesystem;
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;
-  if (!fs::is_directory(folder, ec)) {
-    throw UserError("cannot write '" + path.string() + "': folder '" + folder.string() +
-                    "' does not exist");
+  if (const std::string why = WhyNotFolder(folder); !why.empty()) {
+    throw UserError("cannot write '" + path.string() + "': folder '" + folder.string() + "' " +
+                    why);
   }
   if (fs::is_directory(path, ec)) {
     throw UserError("cannot write '" + path.string() + "': it is a folder");
@@ -87,12 +90,14 @@ void WriteFileAtomically(const std::filesystem::path& path, const std::string& t
   const fs::path temporary =
       folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
   {
+    errno = 0;
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
+    const int write_error = errno;
     if (!out) {
       fs::remove(temporary, ec);
-      throw UserError("cannot write '" + temporary.string() + "'");
+      throw UserError("cannot write '" + temporary.string() + "': " + OsReason(write_error));
     }
   }
   fs::rename(temporary, path, ec);

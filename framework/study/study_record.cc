@@ -1,5 +1,6 @@
 #include "framework/study/study_record.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/core/error.h"
+#include "framework/core/os_reason.h"
 
 namespace fitfeel::study {
 namespace {
@@ -48,8 +50,13 @@ StudyRecord LoadStudy(const fs::path& dir) {
   StudyRecord record;
   record.dir = dir;
   const fs::path json_file = dir / "study.json";
+  errno = 0;
   std::ifstream json_in(json_file);
-  if (!json_in) throw UserError("cannot read '" + json_file.string() + "' (is it a study folder?)");
+  const int json_error = errno;
+  if (!json_in) {
+    throw UserError("cannot read '" + json_file.string() + "': " + OsReason(json_error) +
+                    " (is it a study folder?)");
+  }
   try {
     const nlohmann::json j = nlohmann::json::parse(json_in);
     record.scenario = j.at("scenario").get<std::string>();
@@ -58,8 +65,10 @@ StudyRecord LoadStudy(const fs::path& dir) {
     throw UserError(json_file.string() + ": not a study summary: " + e.what());
   }
   const fs::path csv = dir / "pairs.csv";
+  errno = 0;
   std::ifstream in(csv);
-  if (!in) throw UserError("cannot read '" + csv.string() + "'");
+  const int csv_error = errno;
+  if (!in) throw UserError("cannot read '" + csv.string() + "': " + OsReason(csv_error));
   std::string line;
   if (!std::getline(in, line)) throw UserError(csv.string() + ":1: empty file, expected a header");
   const std::vector<std::string> header = Cells(line);
