@@ -15,14 +15,13 @@
 #include <system_error>
 #include <vector>
 
-#include <unistd.h>
-
 #include "framework/cli/commands.h"
 #include "framework/cli/strict_options.h"
 #include "framework/runtime/prepare.h"
 #include "framework/core/error.h"
 #include "framework/core/os_reason.h"
 #include "framework/core/path_check.h"
+#include "framework/core/temporary_files.h"
 #include "framework/model/measured_surface.h"
 #include "framework/model/surface_type.h"
 #include "framework/plugin/registry.h"
@@ -49,8 +48,7 @@ void WriteAtomically(const std::filesystem::path& path, const std::string& text)
     throw UserError("sms: cannot write '" + path.string() + "': folder '" + folder.string() +
                     "' " + why);
   }
-  const std::filesystem::path temporary =
-      folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  const std::filesystem::path temporary = TemporaryPathFor(path);
   {
     errno = 0;
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

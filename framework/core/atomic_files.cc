@@ -1,13 +1,12 @@
 #include "framework/core/atomic_files.h"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <fstream>
 #include <system_error>
 
 #include "framework/core/error.h"
 #include "framework/core/os_reason.h"
+#include "framework/core/temporary_files.h"
 
 namespace fitfeel {
 namespace {
@@ -41,12 +40,11 @@ void WriteFilesAtomically(const fs::path& dir,
   if (!fs::is_directory(dir, ec)) {
     throw UserError("output path '" + dir.string() + "' is not a folder");
   }
-  const std::string suffix = ".tmp-" + std::to_string(::getpid());
   std::vector<fs::path> temporaries;
   std::vector<fs::path> renamed;
   try {
     for (const auto& [name, content] : files) {
-      temporaries.push_back(dir / ("." + name + suffix));
+      temporaries.push_back(TemporaryPathFor(dir / name));
       WriteOne(temporaries.back(), content);
     }
     for (std::size_t i = 0; i < files.size(); ++i) {

@@ -1,7 +1,5 @@
 #include "framework/runtime/outputs.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -14,6 +12,7 @@
 #include "framework/core/error.h"
 #include "framework/core/number_text.h"
 #include "framework/core/os_reason.h"
+#include "framework/core/temporary_files.h"
 
 namespace fitfeel {
 namespace {
@@ -237,7 +236,6 @@ OutputPaths WriteOutputs(const fs::path& dir, const RunInfo& info,
   };
   std::vector<Pending> pending;
   std::vector<fs::path> renamed;
-  const std::string suffix = ".tmp-" + std::to_string(::getpid());
   try {
     if (write_trace) {
       std::string text = TraceHeader() + "\n";
@@ -246,18 +244,18 @@ OutputPaths WriteOutputs(const fs::path& dir, const RunInfo& info,
         text += TraceRow(r);
         text += '\n';
       }
-      pending.push_back({dir / (".trace.csv" + suffix), dir / "trace.csv"});
+      pending.push_back({TemporaryPathFor(dir / "trace.csv"), dir / "trace.csv"});
       WriteFile(pending.back().temporary, text);
       paths.trace = pending.back().final;
     }
     if (write_summary) {
       const std::string text = MakeSummary(info, trace, stats).dump(2) + "\n";
-      pending.push_back({dir / (".summary.json" + suffix), dir / "summary.json"});
+      pending.push_back({TemporaryPathFor(dir / "summary.json"), dir / "summary.json"});
       WriteFile(pending.back().temporary, text);
       paths.summary = pending.back().final;
     }
     if (write_recording) {
-      pending.push_back({dir / (".recording.csv" + suffix), dir / "recording.csv"});
+      pending.push_back({TemporaryPathFor(dir / "recording.csv"), dir / "recording.csv"});
       // WriteRecording checks every sample and writes atomically itself; the rename below joins
       // it to the others.
       WriteRecording(pending.back().temporary, recording.info, *recording.samples);

@@ -1,7 +1,5 @@
 #include "framework/runtime/trace_stream.h"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <chrono>
 #include <system_error>
@@ -9,6 +7,7 @@
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "framework/core/os_reason.h"
+#include "framework/core/temporary_files.h"
 
 namespace fitfeel {
 namespace {
@@ -42,9 +41,8 @@ TraceStream::TraceStream(const StreamOutputs& outputs, TickObserver* observer, s
     if (!fs::is_directory(dir, ec)) {
       throw UserError("output path '" + dir.string() + "' is not a folder");
     }
-    const std::string suffix = ".tmp-" + std::to_string(::getpid());
     auto pending = [&](const std::string& name) {
-      return Pending{dir / ("." + name + suffix), dir / name};
+      return Pending{TemporaryPathFor(dir / name), dir / name};
     };
     try {
       if (outputs_.trace) {

@@ -8,11 +8,10 @@
 #include <sstream>
 #include <system_error>
 
-#include <unistd.h>
-
 #include "framework/core/error.h"
 #include "framework/core/os_reason.h"
 #include "framework/core/path_check.h"
+#include "framework/core/temporary_files.h"
 
 namespace fitfeel {
 
@@ -87,8 +86,7 @@ void WriteFileAtomically(const std::filesystem::path& path, const std::string& t
   if (fs::is_directory(path, ec)) {
     throw UserError("cannot write '" + path.string() + "': it is a folder");
   }
-  const fs::path temporary =
-      folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  const fs::path temporary = TemporaryPathFor(path);
   {
     errno = 0;
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
