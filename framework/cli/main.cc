@@ -1,3 +1,4 @@
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 
 namespace {
 
@@ -22,6 +24,16 @@ std::string Indented(const std::string& message) {
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == '\n')) out.pop_back();
   return out;
+}
+
+// "fitfeel run: interrupted by SIGINT after ...": the command's own name opens the line, as its
+// summary does. Exit code 128 + signal.
+int ReportInterrupt(const CLI::App& app, const std::string& what) {
+  int signal = fitfeel::InterruptSignal();
+  if (signal == 0) signal = SIGINT;  // a stop flag set without a signal: reported as Ctrl-C
+  std::cerr << fitfeel::cli::CommandPath(fitfeel::cli::GivenCommand(app)) << ": interrupted by "
+            << fitfeel::SignalName(signal) << " " << what << "\n";
+  return fitfeel::InterruptExitCode(signal);
 }
 
 }  // namespace
@@ -53,12 +65,23 @@ int main(int argc, char** argv) {
   } catch (const fitfeel::cli::OptionError& e) {
     std::cerr << fitfeel::cli::DescribeOptionError(e.what(), app) << "\n";
     return 2;
+  } catch (const fitfeel::Interrupted& e) {
+    return ReportInterrupt(app, e.what());
   } catch (const fitfeel::UserError& e) {
     std::cerr << "fitfeel: error: " << Indented(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
+    // A failure after an interrupt is the interrupt's doing (a helper process killed by the same
+    // Ctrl-C, a write cut short): reported as the interrupt, with what failed.
+    if (fitfeel::InterruptSignal() != 0) {
+      return ReportInterrupt(app, std::string("(") + e.what() + ")");
+    }
     std::cerr << "fitfeel: internal error: " << Indented(e.what()) << "\n";
     return 1;
+  }
+  // A signal that arrived once the outputs were being put in place: they are complete.
+  if (fitfeel::InterruptSignal() != 0) {
+    return ReportInterrupt(app, "once its work was complete; its outputs were kept");
   }
   return 0;
 }

@@ -16,8 +16,10 @@
 #include <thread>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/core/path_check.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
@@ -135,6 +137,10 @@ void PrintSummary(const RunResult& r) {
 }
 
 void Run(const RunArgs& args) {
+  // Until the scene is prepared nothing is written and SIGINT or SIGTERM ends the process at once;
+  // from then on the run stops at the next tick boundary and removes its temporaries: an
+  // interrupted run writes nothing (a trace cut short would pass for a run of another length).
+  InterruptScope interrupt("fitfeel run");
   const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
   if (!args.out.empty()) CheckOutputFolder("--out", args.out);
   PluginRegistry registry;
@@ -158,6 +164,9 @@ void Run(const RunArgs& args) {
       progress.Stop();
     }
   };
+  options.stop = &InterruptFlag();
+  options.prepared = [&interrupt](const PreparedScene&) { interrupt.Cooperate(); };
+  SweepStaleTemporaries(options.out_dir);
   const RunResult result = RunScene(std::move(scene), options);
   PrintSummary(result);
 }

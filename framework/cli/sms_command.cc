@@ -16,9 +16,11 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
 #include "framework/runtime/prepare.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/core/os_reason.h"
 #include "framework/core/path_check.h"
 #include "framework/core/temporary_files.h"
@@ -97,6 +99,9 @@ struct SmsOptions {
 };
 
 void Run(const SmsOptions& options) {
+  // Until the shapes are drawn nothing is written: SIGINT or SIGTERM ends the process at once;
+  // then the writes complete.
+  InterruptScope interrupt("fitfeel sms");
   PluginRegistry registry;
   registry.LoadAll();
   for (const RefusedLibrary& refused : registry.refused()) {
@@ -132,6 +137,10 @@ void Run(const SmsOptions& options) {
   Rng rng(seed);
   SkinModelShapes drawn = GenerateSkinModelShapes(scene, rng);
   const std::vector<SkinModelShape> shapes = {std::move(drawn.inner), std::move(drawn.outer)};
+  interrupt.Cooperate();
+  for (const std::string& file : {options.output, options.measurement}) {
+    if (!file.empty()) SweepStaleTemporaries(std::filesystem::path(file).parent_path());
+  }
   bool all_pass = true;
   for (size_t k = 0; k < parts.size(); ++k) {
     const PartSpec& p = *parts[k];

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -13,8 +14,10 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/core/quantity.h"
 #include "framework/device/device_specs.h"
 #include "framework/plugin/registry.h"
@@ -81,6 +84,9 @@ double ForceScale(const StabilityOptions& options, const Scene& scene, const Dev
 }
 
 void Run(const StabilityOptions& options) {
+  // The sweep writes nothing: until the map is written, SIGINT or SIGTERM ends the process at once;
+  // then the write completes.
+  InterruptScope interrupt("fitfeel stability");
   // Every input is checked before anything runs or is written.
   PluginRegistry registry;
   registry.LoadAll();
@@ -162,6 +168,8 @@ void Run(const StabilityOptions& options) {
   CheckOutputFile("--output", path);
 
   const std::vector<StabilityMapRow> rows = SweepStabilityMap(map);
+  interrupt.Cooperate();
+  SweepStaleTemporaries(std::filesystem::path(path).parent_path());
   WriteFileAtomically(path, StabilityMapCsv(rows));
 
   const double b = spec.damping;

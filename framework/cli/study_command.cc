@@ -2,8 +2,6 @@
 // pairs (framework/study/README.md).
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -14,8 +12,10 @@
 #include <thread>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/plot/gnuplot.h"
 #include "framework/plot/render.h"
 #include "framework/plot/study_chart.h"
@@ -37,29 +37,8 @@ struct StudyArgs {
   bool allow_large = false;
 };
 
-// Ctrl-C asks the study to stop: the pairs under way finish and the ones done are written.
-std::atomic<bool> g_stop{false};
-extern "C" void OnInterrupt(int) { g_stop.store(true); }
-
-// Restores the previous SIGINT disposition however the study ends.
-class InterruptScope {
- public:
-  InterruptScope() {
-    g_stop = false;
-    struct sigaction action {};
-    action.sa_handler = OnInterrupt;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &previous_);
-  }
-  ~InterruptScope() { sigaction(SIGINT, &previous_, nullptr); }
-  InterruptScope(const InterruptScope&) = delete;
-  InterruptScope& operator=(const InterruptScope&) = delete;
-
- private:
-  struct sigaction previous_ {};
-};
-
 void Run(const StudyArgs& args) {
+  InterruptScope interrupt("fitfeel study");
   const fs::path dir = args.out.empty() ? fs::path("out") / (fs::path(args.file).stem().string() +
                                                               "-study")
                                        : fs::path(args.out);
@@ -80,10 +59,16 @@ void Run(const StudyArgs& args) {
       std::fflush(stderr);
     };
   }
-  InterruptScope interrupt;
-  settings.stop = &g_stop;
+  SweepStaleTemporaries(dir);
+  // SIGINT or SIGTERM stops the study: no new pair starts, the pairs under way finish, and the
+  // pairs done so far are written, complete and valid, marked "interrupted" in study.json.
+  interrupt.Cooperate();
+  settings.stop = &InterruptFlag();
   const study::StudyResult result = study::RunStudy(args.file, registry, settings);
   if (terminal) std::fprintf(stderr, "\n");
+  if (result.pairs.empty() && result.interrupted) {
+    throw Interrupted("before any pair was done; no outputs written");
+  }
   study::WriteStudy(dir, result);
   // The chart from the files just written (what `fitfeel plot study DIR` draws): a failure to
   // draw leaves the two data files, complete.
@@ -110,6 +95,12 @@ void Run(const StudyArgs& args) {
               d.p5, d.p25, d.p50, d.p75, d.p95);
   std::printf("  pairs %s\n  study %s\n  chart %s\n", (dir / "pairs.csv").c_str(),
               (dir / "study.json").c_str(), (dir / "study.png").c_str());
+  if (result.interrupted) {
+    std::fflush(stdout);
+    throw Interrupted("after " + std::to_string(result.pairs.size()) + " of " +
+                      std::to_string(result.requested_pairs) + " pairs; the pairs done were " +
+                      "written to '" + dir.string() + "' (study.json: \"interrupted\": true)");
+  }
 }
 
 }  // namespace

@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/core/path_check.h"
 #include "framework/core/quantity.h"
 #include "framework/plot/gnuplot.h"
@@ -46,6 +48,9 @@ bool Contains(const std::vector<Resolution>& ladder, const Resolution& r) {
 }
 
 void Run(const TradeoffOptions& options) {
+  // The runs write nothing: until the outputs are written, SIGINT or SIGTERM ends the process at
+  // once; then the writes complete.
+  InterruptScope interrupt("fitfeel tradeoff");
   // Every input is checked, and gnuplot found, before the first run.
   tradeoff::TradeoffSettings settings;
   settings.seeds = options.seeds;
@@ -114,6 +119,8 @@ void Run(const TradeoffOptions& options) {
                 "virtual clock)",
                 scene.name.c_str(), settings.seeds, static_cast<unsigned long long>(scene.run.seed),
                 duration);
+  interrupt.Cooperate();
+  SweepStaleTemporaries(folder);
   tradeoff::RenderTradeoffChart(
       rows, title, options.cost == "p99" ? tradeoff::TickCost::kP99 : tradeoff::TickCost::kP50,
       images);

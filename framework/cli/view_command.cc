@@ -12,8 +12,10 @@
 #include <vector>
 
 #include "framework/cli/commands.h"
+#include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/plot/run_record.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
@@ -79,11 +81,14 @@ void Serve(view::Server& server, const ViewArgs& args) {
     server.Stop();
     return;
   }
-  // Until the user interrupts (Ctrl-C): nothing is left to write, so the default action is right.
+  // Until the user interrupts (Ctrl-C): nothing is left to write, and the interrupt scope ends the
+  // process at once with its line.
   for (;;) pause();
 }
 
 void View(const ViewArgs& args) {
+  std::optional<InterruptScope> interrupt;
+  interrupt.emplace("fitfeel view");
   if (!args.trace.empty() && !args.file.empty()) {
     throw UserError("view: give a scenario FILE to run or --trace DIR of a finished run, not both");
   }
@@ -145,11 +150,21 @@ void View(const ViewArgs& args) {
   }
   RunOptions run;
   run.out_dir = args.out;
+  // The run writes --out: from its first tick on, a signal stops it at a tick boundary and its
+  // temporaries are removed (RunScene throws Interrupted).
+  run.stop = &InterruptFlag();
+  run.prepared = [&interrupt](const PreparedScene&) { interrupt->Cooperate(); };
+  if (!args.out.empty()) SweepStaleTemporaries(args.out);
   run.seed = seed;
   // A live view is watched at the device's pace unless asked otherwise.
   run.clock = args.virtual_clock ? ClockMode::kVirtual : ClockMode::kRealTime;
   run.observer = &publisher;
   const RunResult result = RunScene(std::move(scene), run);
+  // A signal after the last tick: the outputs are complete, main says so.
+  if (InterruptSignal() != 0) return;
+  // Serving again: a signal ends the process at once.
+  interrupt.emplace("fitfeel view",
+                    args.out.empty() ? "no outputs written" : "the run's outputs were complete");
   const RunStats& s = result.stats;
   std::printf("  %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max %.2f us; "
               "%d viewer client(s), %llu samples dropped\n",

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/core/interrupt.h"
 #include "framework/core/quantity.h"
 #include "framework/model/measured_surface.h"
 #include "framework/runtime/constrained_stage.h"
@@ -99,8 +100,10 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     throw UserError("scene '" + scene.name + "' has no device '" + scene.device_id + "'");
   }
 
+  const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
   RunResult result;
   PreparedScene prepared = Prepare(scene);
+  if (stopped()) throw Interrupted("while preparing the scene; no outputs written");
   if (options.prepared) options.prepared(prepared);
 
   RunInfo& info = result.info;
@@ -136,6 +139,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     if (scene.run.write_recording) outputs.recording = RecordingInfo{spec.model};
     TraceStream stream(outputs, options.observer);
     settings.stream = &stream.ring();
+    settings.stop = options.stop;
     Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
     scheduler.set_observer(options.observer);
     if (options.watch) options.watch(&scheduler);
@@ -146,6 +150,11 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       throw;
     }
     if (options.watch) options.watch(nullptr);
+    if (stopped()) {
+      // The stream's destructor removes the temporaries (and a folder it created).
+      throw Interrupted("after " + std::to_string(scheduler.ticks_done()) + " of " +
+                        std::to_string(scheduler.planned_ticks()) + " ticks; no outputs written");
+    }
     result.stats = scheduler.stats();
     info.device_report = scene.device->report();
     if (info.device_report.IsTrue("stopped_on_faults")) {

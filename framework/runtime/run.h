@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -28,6 +29,11 @@ struct RunOptions {
   std::function<void(const PreparedScene&)> prepared;
   // Watches every tick and the finished trace (a live viewer); borrowed, may be null.
   TickObserver* observer = nullptr;
+  // Borrowed, may be null: once set (an interrupt, InterruptFlag) the run ends at the next tick
+  // boundary, its temporaries are removed and RunScene throws Interrupted ("after N of M ticks;
+  // no outputs written"). An interrupted run writes nothing: a trace cut short would read as a
+  // complete run of another duration.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct RunResult {
@@ -40,7 +46,7 @@ struct RunResult {
 
 // A whole run of a loaded scene: Prepare, the two stages, the device started at run.rate, the
 // scheduler, and the outputs written atomically. Throws UserError/UnsupportedError before any
-// file is created when the scene cannot run.
+// file is created when the scene cannot run, Interrupted when options.stop was set (no file left).
 FITFEEL_API RunResult RunScene(Scene scene, const RunOptions& options);
 
 // What summary.json says of a prepared scene before its run (name, law, rates, prepare times,

@@ -191,6 +191,7 @@ void Scheduler::MakeStageStates() {
 bool Scheduler::Tick(double time) noexcept {
   const std::uint64_t k = ticks_done_.load(std::memory_order_relaxed);
   if (k >= planned_ticks_ || !device_.active()) return false;
+  if (settings_.stop != nullptr && settings_.stop->load(std::memory_order_relaxed)) return false;
   const std::int64_t start = NowNs();
   RunState& run = run_;
   device_.Read(time, &run.device);

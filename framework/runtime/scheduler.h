@@ -36,6 +36,10 @@ struct SchedulerSettings {
   SpscRing<StreamRow>* stream = nullptr;
   // The moving part's radial motion under the device's load (the scene's `part_motion`).
   PartMotionSettings part_motion{};
+  // Borrowed, may be null. Polled at each tick boundary (one relaxed load: no lock, no I/O): once
+  // true the run ends there, before the next tick, as when the device becomes inactive. An
+  // interrupted command's flag (InterruptFlag).
+  const std::atomic<bool>* stop = nullptr;
 
   // Direct rendering at scale 1: with a device without limits (the simulated robot), the device
   // receives the stage's wrench bit for bit.
@@ -103,13 +107,13 @@ class FITFEEL_API Scheduler {
   Scheduler(Device& device, const Stage& positioning, const Stage& constrained,
             const SchedulerSettings& settings);
 
-  // Runs every tick (or until the device becomes inactive) from fresh stage states. Allocates
-  // before the loop only.
+  // Runs every tick (or until the device becomes inactive or settings.stop is set) from fresh
+  // stage states. Allocates before the loop only.
   void Run();
 
   // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
-  // Returns false once every planned tick is done or the device is inactive. No allocation, lock or
-  // I/O. A device state that is not finite or lies outside physical bounds (physical_bounds.h)
+  // Returns false once every planned tick is done, the device is inactive or settings.stop is set.
+  // No allocation, lock or I/O. A device state that is not finite or lies outside physical bounds (physical_bounds.h)
   // is not used: the last sane state is held, zero force is sent and the tick flagged.
   bool Tick(double time) noexcept;
   // An observer called at the end of every tick with its record (null: none). Borrowed; set it
