@@ -14,13 +14,24 @@
 
 namespace {
 
-// A message of several lines (a plugin search, a quoted block of YAML) with its later lines
-// indented: every line a user reads starts with "fitfeel...", "usage:" or spaces.
-std::string Indented(const std::string& message) {
+// A message as printed: control characters a file or argument brought in (a form feed in a key,
+// an escape sequence in a name) shown as \xHH, since they would break the line or act on the
+// terminal; a message of several lines (a plugin search, a quoted block of YAML) with its later
+// lines indented when `indent`, so that every line a user reads starts with "fitfeel...",
+// "usage:" or spaces.
+std::string Printable(const std::string& message, bool indent) {
   std::string out;
   for (const char c : message) {
-    out += c;
-    if (c == '\n') out += "  ";
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += indent ? "\n  " : "\n";
+    } else if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      out += escaped;
+    } else {
+      out += c;
+    }
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == '\n')) out.pop_back();
   return out;
@@ -60,15 +71,15 @@ int main(int argc, char** argv) {
     return app.exit(e);  // --help, --version
   } catch (const CLI::ParseError& e) {
     // Every refusal of CLI11's, whatever its kind, in the project's words with the usage line.
-    std::cerr << fitfeel::cli::DescribeParseError(e, app) << "\n";
+    std::cerr << Printable(fitfeel::cli::DescribeParseError(e, app), false) << "\n";
     return 2;
   } catch (const fitfeel::cli::OptionError& e) {
-    std::cerr << fitfeel::cli::DescribeOptionError(e.what(), app) << "\n";
+    std::cerr << Printable(fitfeel::cli::DescribeOptionError(e.what(), app), false) << "\n";
     return 2;
   } catch (const fitfeel::Interrupted& e) {
     return ReportInterrupt(app, e.what());
   } catch (const fitfeel::UserError& e) {
-    std::cerr << "fitfeel: error: " << Indented(e.what()) << "\n";
+    std::cerr << "fitfeel: error: " << Printable(e.what(), true) << "\n";
     return 2;
   } catch (const std::exception& e) {
     // A failure after an interrupt is the interrupt's doing (a helper process killed by the same
@@ -76,7 +87,7 @@ int main(int argc, char** argv) {
     if (fitfeel::InterruptSignal() != 0) {
       return ReportInterrupt(app, std::string("(") + e.what() + ")");
     }
-    std::cerr << "fitfeel: internal error: " << Indented(e.what()) << "\n";
+    std::cerr << "fitfeel: internal error: " << Printable(e.what(), true) << "\n";
     return 1;
   }
   // A signal that arrived once the outputs were being put in place: they are complete.

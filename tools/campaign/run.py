@@ -199,7 +199,8 @@ LIBRARY_WORDS = ["At least", "At Most", "required but received", "The following 
 
 
 def check_format(name, stderr, problems):
-    for line in stderr.splitlines():
+    # Lines end at newlines only (splitlines would also cut at a form feed inside a quoted key).
+    for line in stderr.split("\n"):
         if line.strip() and not MESSAGE_LINE.match(line):
             problems.append(name + ": message outside the project's format: " + line[:200])
     for words in LIBRARY_WORDS:

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,9 @@ const std::vector<BadLine> kBadLines = {
     {{"stability", "--per-decade", "0"}, "stability", "--per-decade: expected an integer in [1, 100], found '0'"},
     {{"plot", "sms", "s.yaml", "--seed", "x", "-o", "p.png"}, "plot sms",
      "--seed: expected an integer in [0, 18446744073709551615], found 'x'"},
+    // A control character is shown, not sent to the terminal.
+    {{"run", "--seed", "\x1b[31m"}, "run",
+     "--seed: expected an integer in [0, 18446744073709551615], found '\\x1b[31m'"},
 };
 
 TEST(CommandLineErrorsTest, EveryBadCommandLineAnswersInTheProjectsFormatWithItsUsage) {
@@ -160,6 +164,21 @@ TEST(CommandLineErrorsTest, HelpAndVersionStillSucceed) {
     EXPECT_EQ(r.err, "") << words;
     EXPECT_NE(r.out, "") << words;
   }
+}
+
+TEST(CommandLineErrorsTest, AControlCharacterFromAFileNeitherBreaksTheLineNorReachesTheTerminal) {
+  const std::filesystem::path dir = TestFolder();
+  const std::filesystem::path scenario = dir / "key.yaml";
+  std::ofstream(scenario) << "scenario: s\nsur\fface: x\n";
+  const test_support::CliResult r = test_support::RunFitfeel(
+      test_support::ShellWords({"validate", scenario.string()}));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  const std::vector<std::string> lines = test_support::Lines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_THAT(lines[0], StartsWith("fitfeel: error: " + scenario.string() + ":"));
+  EXPECT_THAT(lines[0], HasSubstr("sur\\x0cface"));
+  EXPECT_EQ(r.err.find('\f'), std::string::npos);
+  std::filesystem::remove_all(dir);
 }
 
 // Kinds no fitfeel command line produces today, through an application of their own.
