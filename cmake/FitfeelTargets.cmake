@@ -33,8 +33,8 @@ endfunction()
 #                        fitfeel::<name>, so tests use its classes directly;
 #   register.cc          the plugin fitfeel_<kind>_<name>: the model and its one exported hook,
 #                        FITFEEL_REGISTER_SURFACE or FITFEEL_REGISTER_DEVICE;
-#   test/                its tests (fitfeel_<kind>_<name>_test and, for the allocation-counting
-#                        conformance suite, fitfeel_<kind>_<name>_conformance_test);
+#   test/                its tests (fitfeel_<kind>_<name>_test; the conformance suite, which counts
+#                        allocations, joins fitfeel_allocation_test);
 #   bench/               its benchmarks (built only with FITFEEL_BUILD_BENCHMARKS);
 #   README.md            what it models, its choices and its tests.
 function(fitfeel_add_plugin_folder kind name)
@@ -59,9 +59,9 @@ endfunction()
 # GoogleTest binary and registers its tests with ctest. Tests run with the build tree's plugins and
 # the repository as the working tree. Calls with the same name from several folders add their
 # sources to one binary: tests are grouped by module (a binary per plugin, one for the framework's
-# core), so the build links and lists a few executables instead of one per folder. A binary that
-# replaces the global operator new (FITFEEL_COUNT_ALLOCATIONS) takes a name of its own. NEEDS names
-# what the tests load or run (plugins, the CLI); it may be defined later in the tree.
+# core), so the build links and lists a few executables instead of one per folder. Tests that count
+# operator new go to fitfeel_add_allocation_test instead. NEEDS names what the tests load or run
+# (plugins, the CLI); it may be defined later in the tree.
 # fitfeel_off_tick(<target>...): compiles the targets' own sources at FITFEEL_OFF_TICK_OPTIMIZATION
 # in Release (see the top-level CMakeLists.txt); what they link keeps its own level.
 function(fitfeel_off_tick)
@@ -138,6 +138,23 @@ function(fitfeel_add_test name)
   if(ARG_NEEDS)
     add_dependencies(${name} ${ARG_NEEDS})
   endif()
+endfunction()
+
+# fitfeel_add_allocation_test(SOURCES ... [LIBS ...] [NEEDS target...]) adds tests that count heap
+# allocations (framework/testing/allocation_counter.h), and every surface plugin's conformance
+# suite, to the one binary whose global operator new counts: fitfeel_allocation_test, with
+# framework/testing/count_allocations.cc. ctest runs each of its tests in a process of its own, so
+# no test counts another's allocations. Names private to a file must be unique in the binary (the
+# unity build compiles its files together).
+function(fitfeel_add_allocation_test)
+  if(NOT FITFEEL_BUILD_TESTS)
+    return()
+  endif()
+  if(NOT TARGET fitfeel_allocation_test)
+    fitfeel_add_test(fitfeel_allocation_test
+                     SOURCES ${PROJECT_SOURCE_DIR}/framework/testing/count_allocations.cc)
+  endif()
+  fitfeel_add_test(fitfeel_allocation_test ${ARGN})
 endfunction()
 
 # fitfeel_add_benchmark(<name> SOURCES ... [LIBS ...]) builds a Google Benchmark binary into
