@@ -188,30 +188,43 @@ endfunction()
 # a libFuzzer target (preset `fuzz`: clang, FITFEEL_BUILD_FUZZERS=ON) into build-fuzz/fuzz/. The
 # sources define LLVMFuzzerTestOneInput; the seed corpus is the folder `corpus/<name>` beside them,
 # which `make fuzz` copies before a run so that the repository's corpus only grows by hand: every
-# input that once failed is added there. In an ordinary test build the same sources link against a
-# plain replay driver instead, and ctest replays the corpus (and REPLAY_ALSO, repository-relative).
+# input that once failed is added there. In an ordinary test build the same sources join one plain
+# replay driver, fitfeel_fuzz_replay (framework/testing/fuzz_replay_main.cc), and ctest replays
+# the corpus (and REPLAY_ALSO, repository-relative) through this target as fuzz_replay.<name>.
 function(fitfeel_add_fuzzer name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;NEEDS;REPLAY_ALSO" ${ARGN})
   if(FITFEEL_BUILD_FUZZERS)
     add_executable(${name} ${ARG_SOURCES})
     target_link_options(${name} PRIVATE -fsanitize=fuzzer)
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz)
+    target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
     add_dependencies(fitfeel_fuzzers ${name})
+    if(ARG_NEEDS)
+      add_dependencies(${name} ${ARG_NEEDS})
+    endif()
   elseif(FITFEEL_BUILD_TESTS)
-    set(name ${name}_replay)
-    add_executable(${name} ${ARG_SOURCES} ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_replay_main.cc)
-    set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
-    fitfeel_off_tick(${name})
+    set(driver fitfeel_fuzz_replay)
+    if(NOT TARGET ${driver})
+      add_executable(${driver} ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_replay_main.cc)
+      set_target_properties(${driver} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+      fitfeel_off_tick(${driver})
+    endif()
+    # The target's objects with its entry point renamed, so that every target links into the one
+    # driver, and registered there under its name (framework/testing/fuzz_targets.h).
+    set(objects ${name}_replay)
+    add_library(${objects} OBJECT ${ARG_SOURCES}
+                ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_target_registration.cc)
+    target_compile_definitions(${objects} PRIVATE LLVMFuzzerTestOneInput=fitfeel_fuzz_${name}
+                                                  FITFEEL_FUZZ_TARGET="${name}")
+    target_link_libraries(${objects} PUBLIC fitfeel::framework ${ARG_LIBS})
+    fitfeel_off_tick(${objects})
+    target_link_libraries(${driver} PRIVATE ${objects})
+    if(ARG_NEEDS)
+      add_dependencies(${driver} ${ARG_NEEDS})
+    endif()
     list(TRANSFORM ARG_REPLAY_ALSO PREPEND ${PROJECT_SOURCE_DIR}/)
-    string(REGEX REPLACE "_replay$" "" corpus ${name})
-    add_test(NAME fuzz_replay.${corpus}
-             COMMAND ${name} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/${corpus} ${ARG_REPLAY_ALSO}
+    add_test(NAME fuzz_replay.${name}
+             COMMAND ${driver} ${name} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/${name} ${ARG_REPLAY_ALSO}
              WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
-  else()
-    return()
-  endif()
-  target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
-  if(ARG_NEEDS)
-    add_dependencies(${name} ${ARG_NEEDS})
   endif()
 endfunction()
