@@ -33,8 +33,8 @@ endfunction()
 #                        fitfeel::<name>, so tests use its classes directly;
 #   register.cc          the plugin fitfeel_<kind>_<name>: the model and its one exported hook,
 #                        FITFEEL_REGISTER_SURFACE or FITFEEL_REGISTER_DEVICE;
-#   test/                its tests (fitfeel_<kind>_<name>_test and, for the allocation-counting
-#                        conformance suite, fitfeel_<kind>_<name>_conformance_test);
+#   test/                its tests (fitfeel_<kind>_<name>_test; the conformance suite, which counts
+#                        allocations, joins fitfeel_allocation_test);
 #   bench/               its benchmarks (built only with FITFEEL_BUILD_BENCHMARKS);
 #   README.md            what it models, its choices and its tests.
 function(fitfeel_add_plugin_folder kind name)
@@ -59,9 +59,9 @@ endfunction()
 # GoogleTest binary and registers its tests with ctest. Tests run with the build tree's plugins and
 # the repository as the working tree. Calls with the same name from several folders add their
 # sources to one binary: tests are grouped by module (a binary per plugin, one for the framework's
-# core), so the build links and lists a few executables instead of one per folder. A binary that
-# replaces the global operator new (FITFEEL_COUNT_ALLOCATIONS) takes a name of its own. NEEDS names
-# what the tests load or run (plugins, the CLI); it may be defined later in the tree.
+# core), so the build links and lists a few executables instead of one per folder. Tests that count
+# operator new go to fitfeel_add_allocation_test instead. NEEDS names what the tests load or run
+# (plugins, the CLI); it may be defined later in the tree.
 # fitfeel_off_tick(<target>...): compiles the targets' own sources at FITFEEL_OFF_TICK_OPTIMIZATION
 # in Release (see the top-level CMakeLists.txt); what they link keeps its own level.
 function(fitfeel_off_tick)
@@ -140,6 +140,23 @@ function(fitfeel_add_test name)
   endif()
 endfunction()
 
+# fitfeel_add_allocation_test(SOURCES ... [LIBS ...] [NEEDS target...]) adds tests that count heap
+# allocations (framework/testing/allocation_counter.h), and every surface plugin's conformance
+# suite, to the one binary whose global operator new counts: fitfeel_allocation_test, with
+# framework/testing/count_allocations.cc. ctest runs each of its tests in a process of its own, so
+# no test counts another's allocations. Names private to a file must be unique in the binary (the
+# unity build compiles its files together).
+function(fitfeel_add_allocation_test)
+  if(NOT FITFEEL_BUILD_TESTS)
+    return()
+  endif()
+  if(NOT TARGET fitfeel_allocation_test)
+    fitfeel_add_test(fitfeel_allocation_test
+                     SOURCES ${PROJECT_SOURCE_DIR}/framework/testing/count_allocations.cc)
+  endif()
+  fitfeel_add_test(fitfeel_allocation_test ${ARGN})
+endfunction()
+
 # fitfeel_add_benchmark(<name> SOURCES ... [LIBS ...]) builds a Google Benchmark binary into
 # build/bench. Benchmarks are never run by ctest: they measure, tests assert.
 function(fitfeel_add_benchmark name)
@@ -171,30 +188,43 @@ endfunction()
 # a libFuzzer target (preset `fuzz`: clang, FITFEEL_BUILD_FUZZERS=ON) into build-fuzz/fuzz/. The
 # sources define LLVMFuzzerTestOneInput; the seed corpus is the folder `corpus/<name>` beside them,
 # which `make fuzz` copies before a run so that the repository's corpus only grows by hand: every
-# input that once failed is added there. In an ordinary test build the same sources link against a
-# plain replay driver instead, and ctest replays the corpus (and REPLAY_ALSO, repository-relative).
+# input that once failed is added there. In an ordinary test build the same sources join one plain
+# replay driver, fitfeel_fuzz_replay (framework/testing/fuzz_replay_main.cc), and ctest replays
+# the corpus (and REPLAY_ALSO, repository-relative) through this target as fuzz_replay.<name>.
 function(fitfeel_add_fuzzer name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;NEEDS;REPLAY_ALSO" ${ARGN})
   if(FITFEEL_BUILD_FUZZERS)
     add_executable(${name} ${ARG_SOURCES})
     target_link_options(${name} PRIVATE -fsanitize=fuzzer)
     set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/fuzz)
+    target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
     add_dependencies(fitfeel_fuzzers ${name})
+    if(ARG_NEEDS)
+      add_dependencies(${name} ${ARG_NEEDS})
+    endif()
   elseif(FITFEEL_BUILD_TESTS)
-    set(name ${name}_replay)
-    add_executable(${name} ${ARG_SOURCES} ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_replay_main.cc)
-    set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
-    fitfeel_off_tick(${name})
+    set(driver fitfeel_fuzz_replay)
+    if(NOT TARGET ${driver})
+      add_executable(${driver} ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_replay_main.cc)
+      set_target_properties(${driver} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+      fitfeel_off_tick(${driver})
+    endif()
+    # The target's objects with its entry point renamed, so that every target links into the one
+    # driver, and registered there under its name (framework/testing/fuzz_targets.h).
+    set(objects ${name}_replay)
+    add_library(${objects} OBJECT ${ARG_SOURCES}
+                ${PROJECT_SOURCE_DIR}/framework/testing/fuzz_target_registration.cc)
+    target_compile_definitions(${objects} PRIVATE LLVMFuzzerTestOneInput=fitfeel_fuzz_${name}
+                                                  FITFEEL_FUZZ_TARGET="${name}")
+    target_link_libraries(${objects} PUBLIC fitfeel::framework ${ARG_LIBS})
+    fitfeel_off_tick(${objects})
+    target_link_libraries(${driver} PRIVATE ${objects})
+    if(ARG_NEEDS)
+      add_dependencies(${driver} ${ARG_NEEDS})
+    endif()
     list(TRANSFORM ARG_REPLAY_ALSO PREPEND ${PROJECT_SOURCE_DIR}/)
-    string(REGEX REPLACE "_replay$" "" corpus ${name})
-    add_test(NAME fuzz_replay.${corpus}
-             COMMAND ${name} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/${corpus} ${ARG_REPLAY_ALSO}
+    add_test(NAME fuzz_replay.${name}
+             COMMAND ${driver} ${name} ${CMAKE_CURRENT_SOURCE_DIR}/corpus/${name} ${ARG_REPLAY_ALSO}
              WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
-  else()
-    return()
-  endif()
-  target_link_libraries(${name} PRIVATE fitfeel::framework ${ARG_LIBS})
-  if(ARG_NEEDS)
-    add_dependencies(${name} ${ARG_NEEDS})
   endif()
 endfunction()

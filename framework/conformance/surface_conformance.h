@@ -5,12 +5,24 @@
 //
 //   FITFEEL_SURFACE_CONFORMANCE(Cylindrical, "surfaces/cylindrical/test/conformance.yaml");
 //
+// or, where the scene needs plugins from a folder the registry does not search by itself (a test
+// device, a plugin built outside the plugin folder), that folder as a third argument:
+//
+//   FITFEEL_SURFACE_CONFORMANCE_WITH_PLUGINS(Conical, "surfaces/conical/test/conformance.yaml",
+//                                            std::string(FITFEEL_TEST_BUILD_DIR) +
+//                                                "/test-plugins/good");
+//
 // The scenario is loaded through the plugin registry, so the suite also proves the plugin
 // registers and validates like any other. Paths are relative to the repository root (ctest runs
 // tests there). A surface type without a resistance law (renders_forces() == false) gets the
 // geometric tests and skips the force tests with a message saying why.
+//
+// EvaluateNeverAllocates counts operator new: the binary must replace it once
+// (FITFEEL_COUNT_ALLOCATIONS, framework/testing/allocation_counter.h), or that test fails saying
+// so. In this tree every plugin's suite is linked into fitfeel_allocation_test, which does.
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,7 +46,12 @@ template <typename Traits>
 class SurfaceConformance : public ::testing::Test {
  protected:
   void SetUp() override {
-    registry_ = std::make_unique<PluginRegistry>();
+    // The search path of this suite's own registry: several suites share a binary, so none
+    // changes the process's FITFEEL_PLUGIN_PATH.
+    std::vector<std::filesystem::path> search_path = PluginRegistry::DefaultSearchPath();
+    const std::string folder = Traits::PluginFolder();
+    if (!folder.empty()) search_path.insert(search_path.begin(), folder);
+    registry_ = std::make_unique<PluginRegistry>(search_path);
     registry_->LoadAll();
     LoadOptions options;
     options.allow_non_rendering = true;
@@ -328,16 +345,18 @@ REGISTER_TYPED_TEST_SUITE_P(SurfaceConformance, CellAreasSumToTheNominalArea,
 }  // namespace fitfeel::conformance
 
 // One line per surface plugin, at global scope: a name and the repository-relative path of its
-// scenario. It also replaces the binary's global operator new so the suite can count heap use in
-// the tick path.
-#define FITFEEL_SURFACE_CONFORMANCE(Name, scenario_path)                                     \
-  FITFEEL_COUNT_ALLOCATIONS();                                                              \
-  namespace fitfeel::conformance {                                                          \
-  struct Name##ConformanceTraits {                                                          \
-    static constexpr const char* kScenario = scenario_path;                                 \
-    static constexpr int kSeeds = kDefaultSeeds;                                            \
-  };                                                                                        \
-  INSTANTIATE_TYPED_TEST_SUITE_P(Name, SurfaceConformance,                                  \
-                                 ::testing::Types<Name##ConformanceTraits>);                \
-  }                                                                                         \
+// scenario, and (..._WITH_PLUGINS) an expression giving a folder of plugins the scene needs that
+// the registry's default search path lacks, searched first.
+#define FITFEEL_SURFACE_CONFORMANCE(Name, scenario_path) \
+  FITFEEL_SURFACE_CONFORMANCE_WITH_PLUGINS(Name, scenario_path, std::string())
+#define FITFEEL_SURFACE_CONFORMANCE_WITH_PLUGINS(Name, scenario_path, plugin_folder) \
+  namespace fitfeel::conformance {                                                   \
+  struct Name##ConformanceTraits {                                                   \
+    static constexpr const char* kScenario = scenario_path;                          \
+    static constexpr int kSeeds = kDefaultSeeds;                                     \
+    static std::string PluginFolder() { return plugin_folder; }                      \
+  };                                                                                 \
+  INSTANTIATE_TYPED_TEST_SUITE_P(Name, SurfaceConformance,                           \
+                                 ::testing::Types<Name##ConformanceTraits>);         \
+  }                                                                                  \
   static_assert(true, "")

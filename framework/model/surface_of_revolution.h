@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -19,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "framework/core/error.h"
+#include "framework/core/number_text.h"
 #include "framework/model/discretizer.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
@@ -44,13 +44,6 @@ struct AutoResolution {
 inline GridShape CheckedGridShape(const PartSpec& part, const Resolution& resolution, double extent,
                                   const AutoResolution& automatic, const std::string& noun,
                                   int min_rows) {
-  // snprintf rather than std::to_string, whose integer path instantiates a GNU-unique (exported)
-  // table in the plugin; a plugin exports nothing but its hook.
-  const auto number = [](double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return std::string(text);
-  };
   GridShape shape{resolution.rows, resolution.columns};
   if (resolution.is_auto()) {
     shape.rows = std::clamp(static_cast<int>(std::ceil(extent / automatic.row_pitch)),
@@ -59,11 +52,11 @@ inline GridShape CheckedGridShape(const PartSpec& part, const Resolution& resolu
   }
   if (shape.columns < 8 || shape.columns % 2 != 0) {
     throw UserError("part '" + part.name + "': " + noun +
-                    " needs an even number of columns >= 8, not " + number(shape.columns));
+                    " needs an even number of columns >= 8, not " + MessageNumber(shape.columns));
   }
   if (shape.rows < min_rows) {
-    throw UserError("part '" + part.name + "': " + noun + " needs at least " + number(min_rows) +
-                    " rows, not " + number(shape.rows));
+    throw UserError("part '" + part.name + "': " + noun + " needs at least " +
+                    MessageNumber(min_rows) + " rows, not " + MessageNumber(shape.rows));
   }
   return shape;
 }
@@ -81,6 +74,50 @@ inline SurfaceGrid EmptyGrid(const GridShape& shape) {
   grid.area.resize(shape.rows * shape.columns);
   for (int j = 0; j < shape.columns; ++j) grid.column_angle(j) = 2.0 * M_PI * j / shape.columns;
   return grid;
+}
+
+// One row of a surface of revolution's grid: where it sits on the axis, how far its cell centres
+// are from the axis, the area of each of its cells, and its cells' normal away from the material
+// as a radial and an axial component over their common length (1 for unit components; a sphere
+// gives its centre's components and its radius, so that the normal is exactly centre / radius).
+struct RevolvedRow {
+  double y = 0.0;       // m
+  double radius = 0.0;  // m
+  double area = 0.0;    // of each cell, m^2
+  double normal_radial = 0.0;
+  double normal_axial = 0.0;
+  double normal_length = 1.0;
+};
+
+// The grid of `shape` whose row i is row(i): cell (i, j), at column angle beta_j, has its centre
+// at (radius cos beta_j, y, radius sin beta_j) and the normal (normal_radial cos beta_j,
+// normal_axial, normal_radial sin beta_j) / normal_length.
+template <typename Row>
+SurfaceGrid RevolvedGrid(const GridShape& shape, Row&& row) {
+  SurfaceGrid grid = EmptyGrid(shape);
+  for (int i = 0; i < shape.rows; ++i) {
+    const RevolvedRow r = row(i);
+    grid.row_position(i) = r.y;
+    for (int j = 0; j < shape.columns; ++j) {
+      const int k = grid.index(i, j);
+      const double c = std::cos(grid.column_angle(j)), s = std::sin(grid.column_angle(j));
+      grid.centre.col(k) << r.radius * c, r.y, r.radius * s;
+      grid.normal.col(k) << r.normal_radial * c / r.normal_length, r.normal_axial / r.normal_length,
+          r.normal_radial * s / r.normal_length;
+      grid.area(k) = r.area;
+    }
+  }
+  return grid;
+}
+
+// Refuses a pair whose grids differ in their column count: the contact pairs the two parts' cells
+// column by column. `pair` names the parts ("taper pin and hole").
+inline void CheckSharedColumns(const SurfaceGrid& inner, const SurfaceGrid& outer,
+                               const std::string& pair) {
+  if (inner.columns != outer.columns) {
+    throw UserError(pair + " must share their column count (" + MessageNumber(inner.columns) +
+                    " vs " + MessageNumber(outer.columns) + ")");
+  }
 }
 
 // A uniform draw in [lo, hi); lo without a draw when the interval is empty.

@@ -6,6 +6,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "framework/core/error.h"
+#include "framework/model/variation_generator.h"
+
 namespace fitfeel {
 namespace {
 
@@ -96,6 +99,17 @@ ExpectedInterferenceTable::ExpectedInterferenceTable(const TruncatedGaussian& te
     values_[static_cast<std::size_t>(i)] = ExpectedInterference(texture, lower_ + i * step_);
   }
   values_.back() = 0.0;
+}
+
+ExpectedInterferenceTable ContactTexture(const TextureSpec& inner, const TextureSpec& outer,
+                                         TextureMode mode) {
+  if (mode == TextureMode::kDin7190) {
+    throw UserError("texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
+                    "the cylindrical surface only; use expected or sampled here");
+  }
+  return mode == TextureMode::kExpected
+             ? ExpectedInterferenceTable(EquivalentTexture(inner, outer))
+             : ExpectedInterferenceTable();
 }
 
 }  // namespace fitfeel

@@ -9,6 +9,8 @@
 
 namespace fitfeel {
 
+enum class TextureMode;  // variation_generator.h
+
 // A normal distribution N(mean, sigma^2) truncated to [lower, upper].
 struct TruncatedGaussian {
   double mean = 0.0;
@@ -78,5 +80,13 @@ class FITFEEL_API ExpectedInterferenceTable {
   double step_ = 0.0;
   std::vector<double> values_;
 };
+
+// The texture of a contact whose cells each press with their own interference, under the model's
+// texture mode: the expected interference of the two surfaces' equivalent texture (`expected`,
+// paper eq. 6: contact starts smoothly before the nominal surfaces touch), or the sharp
+// max(0, -gap) (`sampled`: the texture is drawn into V). `din7190` (waviness as geometry, DIN 7190
+// smoothing) is the cylindrical surface's own: refused with a UserError.
+FITFEEL_API ExpectedInterferenceTable ContactTexture(const TextureSpec& inner,
+                                                     const TextureSpec& outer, TextureMode mode);
 
 }  // namespace fitfeel

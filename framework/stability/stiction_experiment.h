@@ -3,35 +3,23 @@
 #include <cstdint>
 
 #include "framework/core/export.h"
-#include "framework/device/device.h"
 #include "framework/model/friction.h"
-#include "framework/stability/wall_experiment.h"
+#include "framework/stability/hand_experiment.h"
 
 namespace fitfeel {
 
-// Stiction at the device: the wall experiment's hand (wall_experiment.h: a mass with the device's
-// physical damping, a steady push along +y, the rendering sampled at `rate` with a zero-order
-// hold, solved exactly between samples) held by a stick-slip contact (framework/model/friction.h)
-// under a constant normal force instead of pressed against a wall. The contact's force goes
-// through a real SafetyChain, direct or through the virtual coupling.
+// Stiction at the device: the stability experiments' hand (hand_experiment.h) held by a
+// stick-slip contact (framework/model/friction.h) under a constant normal force instead of
+// pressed against a wall. The contact's force goes through a real SafetyChain, direct or through
+// the virtual coupling; the stiffness hint, when given, is the junctions' stiffness.
 //
 // A push below mu_s N (scaled to the device) must leave the hand at rest, held by the junctions'
 // spring in series with the coupling, with the oscillation energy of its start decaying; a push
 // above it must slide against mu_k N while the contact only takes energy out of the hand.
-struct StictionExperiment {
-  RenderingMethod method = RenderingMethod::kCoupled;
-  DeviceSpec spec;
-  double rate = 1000.0;       // Hz
-  double force_scale = 1.0;   // device N per physical N
+struct StictionExperiment : HandExperiment {
+  StictionExperiment() { method = RenderingMethod::kCoupled; }
   FrictionParameters friction;
   double normal_force = 0.0;  // physical N, constant
-  double hand_mass = 0.2;     // kg (wall_experiment.h)
-  double push_force = 0.5;    // device N along +y, inside the device's continuous rating
-  double horizon = 2.0;       // s
-  int substeps = 50;
-  // Coupled only: tell the chain the junctions' stiffness (as the wall experiment's hint); without
-  // it the coupling estimates the contact from the proxy's motion, the harder case.
-  bool stiffness_hint = false;
 };
 
 struct StictionOutcome {

@@ -4,55 +4,25 @@
 #include <string>
 
 #include "framework/core/export.h"
-#include "framework/device/device.h"
+#include "framework/stability/hand_experiment.h"
 
 namespace fitfeel {
 
-// How the contact reaches the device.
-enum class RenderingMethod {
-  kDirect,   // the contact force, scaled and limited, goes to the device (SafetyChain, direct)
-  kCoupled,  // through the virtual coupling of the safety chain (SafetyChain, spring_damper)
-};
-
-// "direct" / "coupled" (the CSV's method column).
-FITFEEL_API std::string ToString(RenderingMethod method);
-
-// One stability experiment: a hand pushed into a sampled virtual wall.
+// One stability experiment: the hand (hand_experiment.h) pushed into a sampled virtual wall.
 //
-// The hand is continuous: a mass m with the device's physical damping b (spec.damping), pushed
-// along +y by a constant force and arriving at the wall's face (y = 0) at the approach speed. The
-// rendering is sampled: every T = 1 / rate the wall reads the position of the point it acts on
-// (the hand for direct rendering, the coupling's proxy otherwise), computes
+// The hand arrives at the wall's face (y = 0) at the approach speed. Every sample the wall reads
+// the position of the point it acts on and computes
 //   F = -K y - B (y_k - y_(k-1)) / T   while y > 0 (0 outside),
-// in physical units (K / force_scale, B / force_scale), hands it to a real SafetyChain, and the
-// chain's device force is held constant over the period (zero-order hold). Between samples the
-// hand's linear ODE m v' = F + F_push - b v is solved exactly at `substeps` points per period, at
-// which the energy and the peak force are sampled.
+// in physical units (K / force_scale, B / force_scale).
 //
 // Colgate & Schenkel (1997): this wall is passive iff b > K T / 2 + |B|. K and B are the values at
 // the device (force_scale times the physical ones).
-struct WallExperiment {
-  RenderingMethod method = RenderingMethod::kDirect;
-  DeviceSpec spec;           // physical damping b and the force limits
-  double rate = 1000.0;      // Hz, 1 / T
-  double stiffness = 0.0;    // K at the device, N/m (> 0)
-  double damping = 0.0;      // B at the device, N*s/m (any sign)
-  double force_scale = 1.0;  // device N per physical N
-  // Hand (fingers, handle and linkage) mass. A stylus held in a pen grip moves a fraction of the
-  // hand; 0.2 kg sits inside the 0.05-1 kg range the tests sweep. To first order in T the
-  // passivity bound does not depend on it (the tests show it over that range).
-  double hand_mass = 0.2;  // kg
-  // A steady push well inside every listed device's continuous force rating (0.88 N for the
-  // Touch and Omni would saturate only beyond it): 0.5 N.
-  double push_force = 0.5;  // N
+struct WallExperiment : HandExperiment {
+  double stiffness = 0.0;  // K at the device, N/m (> 0)
+  double damping = 0.0;    // B at the device, N*s/m (any sign)
   // The paper's insertion speed (4.1); the hand arrives slower when this speed would make it
   // bounce off the wall (see RunWallExperiment).
   double approach_speed = 0.01;  // m/s
-  double horizon = 2.0;          // s
-  int substeps = 50;
-  // Coupled only: tell the chain the contact stiffness (SafetyChain::SetEnvironmentStiffness).
-  // Without it the coupling estimates it from the proxy's motion, the harder case.
-  bool stiffness_hint = false;
 };
 
 struct WallOutcome {

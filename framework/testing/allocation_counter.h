@@ -7,14 +7,18 @@
 //
 // and a test counts what a stretch of code allocates:
 //
+//   FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
 //   fitfeel::test_support::ScopedAllocationCounter counter;
 //   ... the tick ...
 //   counter.Stop();
 //   EXPECT_EQ(counter.count(), 0);
 //
 // The replacement is global, so a binary that uses it counts every operator new in every thread
-// while a counter is armed: such tests get a binary of their own. Memory Eigen or C code takes with
-// malloc is not seen (operator new is the C++ heap entry point this counts).
+// while a counter is armed; ctest runs each test in a process of its own, so one test's threads
+// never count in another's. In this tree every such test is in fitfeel_allocation_test, whose
+// replacement is framework/testing/count_allocations.cc (fitfeel_add_allocation_test). Memory
+// Eigen or C code takes with malloc is not seen (operator new is the C++ heap entry point this
+// counts).
 
 #include <atomic>
 #include <cassert>
@@ -31,11 +35,16 @@
 #define FITFEEL_ALLOCATION_COUNTING 1
 #endif
 
-// In a test body, before counting: skips the test where allocations are not counted.
-#define FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS()                                   \
-  if (!FITFEEL_ALLOCATION_COUNTING)                                                 \
-  GTEST_SKIP() << "allocations are not counted under AddressSanitizer (its allocator " \
-                  "replaces the one the counter hooks); the Release suite counts them"
+// In a test body, before counting: skips the test where allocations are not counted, and fails it
+// where the binary does not replace operator new (a counter that sees nothing would pass any
+// tick).
+#define FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS()                                              \
+  if (!FITFEEL_ALLOCATION_COUNTING)                                                            \
+    GTEST_SKIP() << "allocations are not counted under AddressSanitizer (its allocator "        \
+                    "replaces the one the counter hooks); the Release suite counts them";       \
+  else if (!::fitfeel::test_support::OperatorNewIsCounted())                                   \
+  FAIL() << "this binary does not count operator new: expand FITFEEL_COUNT_ALLOCATIONS() once, " \
+            "at global scope in one of its files"
 
 // Not fitfeel::testing: inside namespace fitfeel that name would hide GoogleTest's ::testing.
 namespace fitfeel::test_support {
@@ -65,11 +74,22 @@ class ScopedAllocationCounter {
   long count() const { return AllocationTally::count.load(); }
 };
 
+// Whether this binary's operator new feeds the tally: one allocation under a counter. Through
+// a volatile pointer, so that the compiler cannot leave the allocation out.
+inline bool OperatorNewIsCounted() {
+  ScopedAllocationCounter probe;
+  void* volatile block = ::operator new(1);
+  ::operator delete(block);
+  probe.Stop();
+  return probe.count() > 0;
+}
+
 }  // namespace fitfeel::test_support
 
 // Replaces the global operator new and delete of the test binary so that ScopedAllocationCounter
-// sees every allocation; expand once per test binary, at global scope. operator new[] and the
-// nothrow forms reach this operator new through the standard library's defaults.
+// sees every allocation; expand once per test binary, at global scope (a second expansion is a
+// link error). operator new[] and the nothrow forms reach this operator new through the standard
+// library's defaults.
 // GCC 12 reports the free() in the replaced operator delete as mismatched with `new` once both are
 // inlined, although the replaced operator new allocates with malloc: a false positive.
 // Not clang-formatted: it would run the _Pragma lines together.

@@ -1,7 +1,9 @@
-// Replays a libFuzzer target's corpus without libFuzzer, so that `make test` (GCC, no clang) runs
-// every kept input through the target's checks: each argument is a file or a folder (its regular
-// files, walked in name order), and each file goes once through LLVMFuzzerTestOneInput. A finding
-// is what it is under libFuzzer: the target aborts, or an exception escapes (std::terminate).
+// Replays the libFuzzer targets' corpora without libFuzzer, so that `make test` (GCC, no clang)
+// runs every kept input through its target's checks: `fitfeel_fuzz_replay TARGET FILE_OR_FOLDER...`
+// sends each file (a folder's regular files, walked in name order) once through that target's
+// LLVMFuzzerTestOneInput. Every target is linked in, each under its name (fuzz_targets.h). A
+// finding is what it is under libFuzzer: the target aborts, or an exception escapes
+// (std::terminate).
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -9,10 +11,28 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+#include "framework/testing/fuzz_targets.h"
+
+namespace fitfeel::test_support {
+namespace {
+
+std::map<std::string, FuzzTarget>& Targets() {
+  static std::map<std::string, FuzzTarget> targets;
+  return targets;
+}
+
+}  // namespace
+
+bool RegisterFuzzTarget(const char* name, FuzzTarget target) {
+  Targets().emplace(name, target);
+  return true;
+}
+
+}  // namespace fitfeel::test_support
 
 namespace {
 
@@ -32,12 +52,16 @@ std::vector<std::filesystem::path> FilesOf(const std::filesystem::path& argument
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: %s FILE_OR_FOLDER...\n", argv[0]);
+  const auto& targets = fitfeel::test_support::Targets();
+  const auto target = argc >= 2 ? targets.find(argv[1]) : targets.end();
+  if (argc < 3 || target == targets.end()) {
+    std::fprintf(stderr, "usage: %s TARGET FILE_OR_FOLDER...\ntargets:", argv[0]);
+    for (const auto& [name, entry] : targets) std::fprintf(stderr, " %s", name.c_str());
+    std::fprintf(stderr, "\n");
     return 2;
   }
   std::size_t replayed = 0;
-  for (int i = 1; i < argc; ++i) {
+  for (int i = 2; i < argc; ++i) {
     const std::vector<std::filesystem::path> files = FilesOf(argv[i]);
     // A corpus that went missing would make the replay pass having checked nothing.
     if (files.empty()) {
@@ -49,10 +73,10 @@ int main(int argc, char** argv) {
       const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
       std::printf("replay %s (%zu bytes)\n", file.c_str(), bytes.size());
       std::fflush(stdout);
-      LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+      target->second(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
       ++replayed;
     }
   }
-  std::printf("%zu inputs replayed, no finding\n", replayed);
+  std::printf("%s: %zu inputs replayed, no finding\n", argv[1], replayed);
   return 0;
 }

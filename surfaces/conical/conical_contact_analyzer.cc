@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <string>
 
 #include "framework/core/error.h"
 
@@ -20,22 +20,17 @@ void ConicalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSha
                                        const ModelSettings& settings) {
   scan_.Prepare(inner, inner_sms, outer, outer_sms, settings);
   const double range = scan_.pin_length() + scan_.hole_length();
-  step_ = settings.depth_step > 0.0 ? settings.depth_step
-                                    : 0.5 * std::min(scan_.pin_pitch(), scan_.hole_pitch());
-  if (!(range / step_ <= kMaxDepthSteps)) {
-    throw UserError("conical contact table: a depth step of " + std::to_string(step_ * 1e3) +
+  const double spacing = settings.depth_step > 0.0
+                             ? settings.depth_step
+                             : 0.5 * std::min(scan_.pin_pitch(), scan_.hole_pitch());
+  if (!(range / spacing <= kMaxDepthSteps)) {
+    throw UserError("conical contact table: a depth step of " + std::to_string(spacing * 1e3) +
                     " mm over " + std::to_string(range * 1e3) + " mm is more than " +
                     std::to_string(static_cast<int>(kMaxDepthSteps)) + " steps; take a coarser "
                     "model.depth_step");
   }
-  last_step_ = std::max(1, static_cast<int>(std::ceil(range / step_ - 1e-9)));
-  const int columns = scan_.columns();
-  table_ = ColumnResponseTable(last_step_ + 1, columns, kSamples, scan_.texture());
-  table_.FillAll([this](int k, int j, std::vector<ColumnCell>* cells) {
-    scan_.ColumnCells(k * step_, j, cells);
-  });
-  direction_.resize(2, columns);
-  for (int j = 0; j < columns; ++j) direction_.col(j) = scan_.direction(j);
+  const int last_step = std::max(1, static_cast<int>(std::ceil(range / spacing - 1e-9)));
+  Tabulate(last_step + 1, spacing);
 }
 
 void ConicalContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
@@ -50,20 +45,11 @@ void ConicalContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* ou
   out->offset_angle = std::atan2(pose.offset.y(), pose.offset.x());
   if (!out->engaged) return;
   out->engaged_area = scan_.EngagedArea(s);
-  const double u = std::clamp(s / step_, 0.0, static_cast<double>(last_step_));
-  const int k = std::min(static_cast<int>(u), last_step_ - 1);
+  const int last_step = steps() - 1;
+  const double u = std::clamp(s / step(), 0.0, static_cast<double>(last_step));
+  const int k = std::min(static_cast<int>(u), last_step - 1);
   const double t = u - k;
-  table_.Blend(k, k + 1, t, direction_, pose.offset, scan_.Clearance(s), out);
-}
-
-void ConicalContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
-                                               Eigen::VectorXd* delta) const {
-  scan_.InterferenceMap(pose, delta);
-}
-
-bool ConicalContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
-                                             std::vector<Eigen::Vector2d>* polygon) const {
-  return scan_.AssemblySpace(pose, polygon);
+  Blend(k, k + 1, t, pose, scan_.Clearance(s), out);
 }
 
 }  // namespace fitfeel::conical

@@ -1,9 +1,6 @@
 #pragma once
 
-#include <Eigen/Core>
-
-#include "framework/model/column_response_table.h"
-#include "framework/model/contact_analyzer.h"
+#include "framework/model/column_table_analyzer.h"
 #include "surfaces/conical/conical_scan_analyzer.h"
 
 namespace fitfeel::conical {
@@ -23,32 +20,18 @@ namespace fitfeel::conical {
 // Steps: half the finer of the two row pitches unless model.depth_step says otherwise (a pin row
 // meets a new hole row centre, or crosses an end of the hole, every half pitch), over [0, L_pin +
 // L_hole]; 33 samples of z per entry, filled on PrepareThreads() threads (bit for bit the same
-// for any count). The error against the scan is the z interpolation
+// for any count; ColumnTableAnalyzer). The error against the scan is the z interpolation
 // (ColumnResponseTable::VolumeErrorBound) at the steps, plus the depth blend between them (its
 // curvature: a row's gap changes by the hole's form slope over a step); tested against the scan.
-class ConicalContactAnalyzer final : public ContactAnalyzer {
+class ConicalContactAnalyzer final : public ColumnTableAnalyzer<ConicalScanAnalyzer> {
  public:
-  static constexpr int kSamples = 33;
-
   double hole_length() const { return scan_.hole_length(); }
-  const ConicalScanAnalyzer& scan() const { return scan_; }
-  const ColumnResponseTable& table() const { return table_; }
-  double depth_step() const { return step_; }
+  double depth_step() const { return step(); }
 
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
-  void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
-  bool DoAssemblySpace(const MatingPose& pose,
-                       std::vector<Eigen::Vector2d>* polygon) const override;
-
- private:
-  ConicalScanAnalyzer scan_;
-  ColumnResponseTable table_;
-  double step_ = 0.0;
-  int last_step_ = 0;
-  Eigen::Matrix2Xd direction_;
 };
 
 }  // namespace fitfeel::conical

@@ -1,5 +1,4 @@
 #include "surfaces/conical/conical_scan_analyzer.h"
-#include "surfaces/conical/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/convex_polygon.h"
+#include "framework/model/surface_of_revolution.h"
 #include "surfaces/conical/conical_geometry.h"
 
 namespace fitfeel::conical {
@@ -15,21 +15,12 @@ namespace fitfeel::conical {
 void ConicalScanAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                        const PartSpec& outer, const SkinModelShape& outer_sms,
                                        const ModelSettings& settings) {
-  if (settings.texture == TextureMode::kDin7190) {
-    throw UserError("texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
-                    "the cylindrical surface only; use expected or sampled here");
-  }
-  texture_ = settings.texture == TextureMode::kExpected
-                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
-                 : ExpectedInterferenceTable();
+  texture_ = ContactTexture(inner.texture, outer.texture, settings.texture);
   const ConicalGeometry& pin = GeometryOf(inner);
   const ConicalGeometry& hole = GeometryOf(outer);
   const SurfaceGrid& pg = inner_sms.grid;
   const SurfaceGrid& hg = outer_sms.grid;
-  if (pg.columns != hg.columns) {
-    throw UserError("taper pin and hole must share their column count (" + NumberText(pg.columns) +
-                    " vs " + NumberText(hg.columns) + ")");
-  }
+  revolution::CheckSharedColumns(pg, hg, "taper pin and hole");
   pin_rows_ = pg.rows;
   hole_rows_ = hg.rows;
   columns_ = pg.columns;

@@ -5,7 +5,6 @@
 #include <Eigen/Core>
 
 #include "framework/model/column_response_table.h"
-
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/texture_contact.h"
 
@@ -26,11 +25,9 @@ namespace fitfeel::conical {
 //
 // Every contact, whether from clearance closed by the offset or from interference, is elastic
 // (a Winkler bed: each cell's pressure is the Lame pressure of its own interference), so there is
-// no separate clearance spring and the force is continuous at first contact. With texture in
-// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
-// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h),
-// so contact starts smoothly before the nominal surfaces touch; in `sampled` mode the texture is
-// in V and the contact is sharp, max(0, -gap).
+// no separate clearance spring and the force is continuous at first contact. In `expected`
+// texture mode a pin cell presses with the textures' expected interference at its gap
+// (ContactTexture, framework/model/texture_contact.h) instead of max(0, -gap).
 //
 // This analyzer scans the pin's m x n cells at every evaluation (no allocation, O(m n)): it is the
 // reference the tabulated ConicalContactAnalyzer (conical_contact_analyzer.h) is tested and

@@ -1,10 +1,10 @@
 #include "surfaces/conical/conical_surface.h"
 #include "surfaces/conical/conical_coarse_mesh.h"
-#include "surfaces/conical/number_text.h"
 
 #include <cmath>
 
 #include "framework/core/error.h"
+#include "framework/core/number_text.h"
 #include "framework/core/quantity.h"
 #include "surfaces/conical/conical_contact_analyzer.h"
 #include "surfaces/conical/conical_discretizer.h"
@@ -46,7 +46,7 @@ void ConicalSurface::DoCheckPair(const PartSpec& inner, const PartSpec& outer,
   // clearance would no longer be uniform along the joint.
   if (std::abs(pin.taper() - hole.taper()) > 1e-9 * hole.taper()) {
     const ConfigNode taper = outer_node.Child("geometry").Child("taper");
-    taper.Fail("the pin's taper (1:" + NumberText(1.0 / pin.taper()) + ")", taper.Describe());
+    taper.Fail("the pin's taper (1:" + MessageNumber(1.0 / pin.taper()) + ")", taper.Describe());
   }
   // The size of both is the small-end diameter, and the hole's small end is where the pin seats.
   if (std::abs(inner.size.nominal - outer.size.nominal) > 1e-12) {

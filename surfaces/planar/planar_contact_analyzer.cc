@@ -53,13 +53,7 @@ void PlanarContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
   }
   CheckShape(inner, inner_sms);
   CheckShape(outer, outer_sms);
-  if (settings.texture == TextureMode::kDin7190) {
-    throw UserError("texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
-                    "the cylindrical surface only; use expected or sampled here");
-  }
-  texture_ = settings.texture == TextureMode::kExpected
-                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
-                 : ExpectedInterferenceTable();
+  texture_ = ContactTexture(inner.texture, outer.texture, settings.texture);
   layout_ = LayoutOf(inner_sms.grid);
   const FaceLayout outer_layout = LayoutOf(outer_sms.grid);
   if (outer_layout.faces != layout_.faces ||

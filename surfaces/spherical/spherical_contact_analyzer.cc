@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace fitfeel::spherical {
 
@@ -10,15 +9,8 @@ void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelS
                                          const PartSpec& outer, const SkinModelShape& outer_sms,
                                          const ModelSettings& settings) {
   scan_.Prepare(inner, inner_sms, outer, outer_sms, settings);
-  const int columns = scan_.columns();
-  steps_ = columns * kStepsPerColumn;
-  step_ = 2.0 * M_PI / steps_;
-  table_ = ColumnResponseTable(steps_, columns, kSamples, scan_.texture());
-  table_.FillAll([this](int q, int j, std::vector<ColumnCell>* cells) {
-    scan_.ColumnCells(q * step_, j, cells);
-  });
-  direction_.resize(2, columns);
-  for (int j = 0; j < columns; ++j) direction_.col(j) = scan_.direction(j);
+  const int entries = scan_.columns() * kStepsPerColumn;
+  Tabulate(entries, 2.0 * M_PI / entries);
 }
 
 void SphericalContactAnalyzer::DoEvaluate(const MatingPose& pose,
@@ -30,22 +22,13 @@ void SphericalContactAnalyzer::DoEvaluate(const MatingPose& pose,
   out->engaged_area = scan_.engaged_area();
   out->offset_distance = pose.offset.norm();
   out->offset_angle = std::atan2(pose.offset.y(), pose.offset.x());
-  double u = std::fmod(pose.angle / step_, static_cast<double>(steps_));
-  if (u < 0.0) u += steps_;
-  const int q = std::min(static_cast<int>(u), steps_ - 1);
+  const int entries = steps();
+  double u = std::fmod(pose.angle / step(), static_cast<double>(entries));
+  if (u < 0.0) u += entries;
+  const int q = std::min(static_cast<int>(u), entries - 1);
   const double t = u - q;
-  const int q1 = q + 1 == steps_ ? 0 : q + 1;
-  table_.Blend(q, q1, t, direction_, pose.offset, 0.0, out);
-}
-
-void SphericalContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
-                                                 Eigen::VectorXd* delta) const {
-  scan_.InterferenceMap(pose, delta);
-}
-
-bool SphericalContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
-                                               std::vector<Eigen::Vector2d>* polygon) const {
-  return scan_.AssemblySpace(pose, polygon);
+  const int q1 = q + 1 == entries ? 0 : q + 1;
+  Blend(q, q1, t, pose, 0.0, out);
 }
 
 }  // namespace fitfeel::spherical

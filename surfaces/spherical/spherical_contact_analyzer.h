@@ -1,9 +1,6 @@
 #pragma once
 
-#include <Eigen/Core>
-
-#include "framework/model/column_response_table.h"
-#include "framework/model/contact_analyzer.h"
+#include "framework/model/column_table_analyzer.h"
 #include "surfaces/spherical/spherical_scan_analyzer.h"
 
 namespace fitfeel::spherical {
@@ -29,29 +26,16 @@ namespace fitfeel::spherical {
 // ball's lobes sit between the socket's cells. The error against the scan is the x interpolation
 // (ColumnResponseTable::VolumeErrorBound) at the steps, plus that blend between them; tested
 // against the scan.
-class SphericalContactAnalyzer final : public ContactAnalyzer {
+class SphericalContactAnalyzer final : public ColumnTableAnalyzer<SphericalScanAnalyzer> {
  public:
-  static constexpr int kSamples = 33;
   static constexpr int kStepsPerColumn = 2;
 
-  const SphericalScanAnalyzer& scan() const { return scan_; }
-  const ColumnResponseTable& table() const { return table_; }
-  double angle_step() const { return step_; }
+  double angle_step() const { return step(); }
 
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
-  void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
-  bool DoAssemblySpace(const MatingPose& pose,
-                       std::vector<Eigen::Vector2d>* polygon) const override;
-
- private:
-  SphericalScanAnalyzer scan_;
-  ColumnResponseTable table_;
-  double step_ = 0.0;
-  int steps_ = 0;
-  Eigen::Matrix2Xd direction_;
 };
 
 }  // namespace fitfeel::spherical

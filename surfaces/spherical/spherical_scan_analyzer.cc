@@ -1,5 +1,4 @@
 #include "surfaces/spherical/spherical_scan_analyzer.h"
-#include "surfaces/spherical/number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/convex_polygon.h"
+#include "framework/model/surface_of_revolution.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
 namespace fitfeel::spherical {
@@ -15,22 +15,12 @@ namespace fitfeel::spherical {
 void SphericalScanAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                       const PartSpec& outer, const SkinModelShape& outer_sms,
                                       const ModelSettings& settings) {
-  if (settings.texture == TextureMode::kDin7190) {
-    throw UserError(
-        "texture din7190 (waviness as geometry, DIN 7190 smoothing) is implemented by "
-        "the cylindrical surface only; use expected or sampled here");
-  }
-  texture_ = settings.texture == TextureMode::kExpected
-                 ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
-                 : ExpectedInterferenceTable();
+  texture_ = ContactTexture(inner.texture, outer.texture, settings.texture);
   GeometryOf(inner);
   const SphericalGeometry& socket = GeometryOf(outer);
   const SurfaceGrid& bg = inner_sms.grid;
   const SurfaceGrid& sg = outer_sms.grid;
-  if (bg.columns != sg.columns) {
-    throw UserError("ball and socket must share their column count (" + NumberText(bg.columns) +
-                    " vs " + NumberText(sg.columns) + ")");
-  }
+  revolution::CheckSharedColumns(bg, sg, "ball and socket");
   rows_ = sg.rows;
   columns_ = sg.columns;
   width_ = socket.width();

@@ -22,10 +22,9 @@ namespace fitfeel::spherical {
 // between its columns) at the material point that the rotation has brought under the cell, so the
 // contact is continuous in the angle. The socket's band is the contact band (the ball's is wider,
 // CheckPair requires it). Every contact is elastic (Winkler bed of thick-shell pressures), so there
-// is no separate clearance spring and the force is continuous at first contact. With texture in
-// `expected` mode, a cell's interference is the expected interference E[(X - gap)+] of the two
-// textures' equivalent rough-on-smooth height X (paper eq. 6; framework/model/texture_contact.h);
-// in `sampled` mode the texture is in V and the contact is sharp, max(0, -gap).
+// is no separate clearance spring and the force is continuous at first contact. The texture
+// enters through ContactTexture (framework/model/texture_contact.h): in `expected` mode a socket
+// cell's interference is the expected one at its gap, not max(0, -gap).
 //
 // Sums reported: interference_volume = sum delta * ds, pressure_resultant = sum delta * ds *
 // (n_x, n_z) (the axial component of the resultant is not reported: ContactState has no field

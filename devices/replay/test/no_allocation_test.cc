@@ -9,8 +9,6 @@
 
 #include <gtest/gtest.h>
 
-FITFEEL_COUNT_ALLOCATIONS();
-
 namespace fitfeel::replay {
 namespace {
 

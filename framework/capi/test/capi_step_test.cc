@@ -8,8 +8,6 @@
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
 #include <gtest/gtest.h>
 
-FITFEEL_COUNT_ALLOCATIONS();
-
 namespace {
 
 // The paper's robot: from 1 mm before the entrance along +y at 10 mm/s, carrying no load.

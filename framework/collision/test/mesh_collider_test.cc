@@ -10,15 +10,13 @@
 
 #include <gtest/gtest.h>
 
-FITFEEL_COUNT_ALLOCATIONS();
-
 namespace fitfeel {
 namespace {
 
-constexpr int kFacets = 54;
-constexpr double kRadius = 10e-3;
+constexpr int kTubeFacets = 54;
+constexpr double kTubeRadius = 10e-3;
 
-Eigen::Isometry3d At(double x, double y, double z) {
+Eigen::Isometry3d Placed(double x, double y, double z) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.translation() = Eigen::Vector3d(x, y, z);
   return t;
@@ -27,19 +25,21 @@ Eigen::Isometry3d At(double x, double y, double z) {
 // A 20 mm bushing (hub 40 mm, 40 mm long) and a 60 mm shaft of the same nominal diameter: as
 // convex pieces, or with the bushing one solid (FCL).
 MeshCollider MakePair(bool pieces = true, int max_contacts = 64) {
-  return MeshCollider(pieces ? MakeTube(kRadius, 20e-3, 0.0, 40e-3, kFacets)
-                             : test_support::SolidTube(kRadius, 20e-3, 0.0, 40e-3, kFacets),
-                      MakeClosedCylinder(kRadius, -60e-3, 0.0, kFacets), max_contacts);
+  return MeshCollider(pieces ? MakeTube(kTubeRadius, 20e-3, 0.0, 40e-3, kTubeFacets)
+                             : test_support::SolidTube(kTubeRadius, 20e-3, 0.0, 40e-3, kTubeFacets),
+                      MakeClosedCylinder(kTubeRadius, -60e-3, 0.0, kTubeFacets), max_contacts);
 }
 
 TEST(MeshColliderTest, ConvexPiecesWhereEverySolidIsConvex) {
   EXPECT_TRUE(MakePair(true).convex_pieces());
   EXPECT_FALSE(MakePair(false).convex_pieces());
-  TriangleMesh two = MakeClosedCylinder(kRadius, -60e-3, -1e-3, kFacets);
-  AppendMesh(MakeClosedFrustum(kRadius, kRadius - 1e-3, -1e-3, 0.0, kFacets), &two);
-  EXPECT_TRUE(MeshCollider(MakeTube(kRadius, 20e-3, 0.0, 40e-3, kFacets), two).convex_pieces());
+  TriangleMesh two = MakeClosedCylinder(kTubeRadius, -60e-3, -1e-3, kTubeFacets);
+  AppendMesh(MakeClosedFrustum(kTubeRadius, kTubeRadius - 1e-3, -1e-3, 0.0, kTubeFacets), &two);
   EXPECT_TRUE(
-      MeshCollider(MakeTaperedTube(kRadius + 1e-3, kRadius, 20e-3, -1e-3, 0.0, kFacets), two)
+      MeshCollider(MakeTube(kTubeRadius, 20e-3, 0.0, 40e-3, kTubeFacets), two).convex_pieces());
+  EXPECT_TRUE(
+      MeshCollider(MakeTaperedTube(kTubeRadius + 1e-3, kTubeRadius, 20e-3, -1e-3, 0.0, kTubeFacets),
+                   two)
           .convex_pieces());
 }
 
@@ -48,9 +48,9 @@ TEST(MeshColliderTest, FarAwayIsFree) {
     const MeshCollider collider = MakePair(pieces);
     const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
     Penetration p;
-    collider.Query(At(0.0, -5e-3, 0.0), collider_scratch.get(), &p);
+    collider.Query(Placed(0.0, -5e-3, 0.0), collider_scratch.get(), &p);
     EXPECT_FALSE(p.contact);
-    collider.Query(At(50e-3, 30e-3, 0.0), collider_scratch.get(), &p);  // beside the hub
+    collider.Query(Placed(50e-3, 30e-3, 0.0), collider_scratch.get(), &p);  // beside the hub
     EXPECT_FALSE(p.contact);
     EXPECT_EQ(p.depth, 0.0);
     EXPECT_EQ(p.normal, Eigen::Vector3d::Zero());
@@ -62,7 +62,7 @@ TEST(MeshColliderTest, AnEndOnTheFaceReportsItsDepthAndPushesBackAlongMinusY) {
     const MeshCollider collider = MakePair(pieces);
     const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
     std::mt19937 gen(7);
-    std::uniform_real_distribution<double> radial(1.2 * kRadius, 1.9 * kRadius);
+    std::uniform_real_distribution<double> radial(1.2 * kTubeRadius, 1.9 * kTubeRadius);
     std::uniform_real_distribution<double> angle(-M_PI, M_PI);
     std::uniform_real_distribution<double> depth(1e-7, 2e-3);
     for (int i = 0; i < 200; ++i) {
@@ -70,7 +70,7 @@ TEST(MeshColliderTest, AnEndOnTheFaceReportsItsDepthAndPushesBackAlongMinusY) {
       // partly: the face is struck whatever the offset.
       const double r = radial(gen), a = angle(gen), y = depth(gen);
       Penetration p;
-      collider.Query(At(r * std::cos(a), y, r * std::sin(a)), collider_scratch.get(), &p);
+      collider.Query(Placed(r * std::cos(a), y, r * std::sin(a)), collider_scratch.get(), &p);
       ASSERT_TRUE(p.contact) << "r " << r << " y " << y;
       // A flat end on a flat face: exact (no chordal error enters along y).
       EXPECT_NEAR(p.depth, y, 1e-12 + 1e-9 * y);
@@ -83,20 +83,20 @@ TEST(MeshColliderTest, AnEndOnTheFaceReportsItsDepthAndPushesBackAlongMinusY) {
 }
 
 TEST(MeshColliderTest, ACentredShaftPassesTheEntrance) {
-  const double slack = ChordalError(kRadius, kFacets);
+  const double slack = ChordalError(kTubeRadius, kTubeFacets);
   for (bool pieces : {true, false}) {
     const MeshCollider collider = MakePair(pieces);
     const std::unique_ptr<CollisionScratch> collider_scratch = collider.MakeScratch();
     Penetration p;
     for (double y : {-1e-3, 0.0, 1e-6, 1e-3, 20e-3, 39e-3}) {
-      collider.Query(At(0.0, y, 0.0), collider_scratch.get(), &p);
+      collider.Query(Placed(0.0, y, 0.0), collider_scratch.get(), &p);
       EXPECT_FALSE(p.contact) << y;
     }
     // The meshes are similar polygons, the bore's scaled by 1 / cos(pi / n): a radial slack of
     // the chordal error r (1 - cos(pi / n)) in every direction, less at a vertex-facing direction.
     for (int i = 0; i < 16; ++i) {
       const double a = 2.0 * M_PI * i / 16;
-      collider.Query(At(0.5 * slack * std::cos(a), 10e-3, 0.5 * slack * std::sin(a)),
+      collider.Query(Placed(0.5 * slack * std::cos(a), 10e-3, 0.5 * slack * std::sin(a)),
                      collider_scratch.get(), &p);
       EXPECT_FALSE(p.contact) << a;
     }
@@ -124,17 +124,17 @@ TEST(MeshColliderTest, ACentredShaftPassesTheEntrance) {
   for (int i = 0; i < 50; ++i) {
     const double a = angle(gen), s = offset(gen);
     const Eigen::Vector3d inward(-std::cos(a), 0.0, -std::sin(a));
-    const Eigen::Isometry3d pose = At(s * std::cos(a), 10e-3, s * std::sin(a));
+    const Eigen::Isometry3d pose = Placed(s * std::cos(a), 10e-3, s * std::sin(a));
     collider.Query(pose, collider_scratch.get(), &p);
     ASSERT_TRUE(p.contact);
-    EXPECT_GE(p.depth, s - slack / std::cos(M_PI / kFacets)) << s;
+    EXPECT_GE(p.depth, s - slack / std::cos(M_PI / kTubeFacets)) << s;
     EXPECT_LE(p.depth, s - 0.5 * slack) << s;
-    EXPECT_GE(p.normal.dot(inward), std::cos(2.0 * M_PI / kFacets)) << a;
+    EXPECT_GE(p.normal.dot(inward), std::cos(2.0 * M_PI / kTubeFacets)) << a;
     exhaustive.Query(pose, exhaustive_scratch.get(), &p);
     ASSERT_TRUE(p.contact);
     EXPECT_GE(p.depth, s - slack) << s;
     EXPECT_LE(p.depth, s + 0.5 * slack) << s;
-    EXPECT_GE(p.normal.dot(inward), std::cos(2.0 * M_PI / kFacets)) << a;
+    EXPECT_GE(p.normal.dot(inward), std::cos(2.0 * M_PI / kTubeFacets)) << a;
     fcl.Query(pose, fcl_scratch.get(), &p);
     ASSERT_TRUE(p.contact);
     EXPECT_GE(p.depth, s - slack) << s;
@@ -162,7 +162,7 @@ TEST(MeshColliderTest, ThePiecesWayOutFreesThePart) {
     const double r = family == 0 ? 11e-3 + 19e-3 * unit(gen)
                                  : (family == 1 ? 2.5e-3 * unit(gen) : 29e-3 + 3e-3 * unit(gen));
     const double y = family == 0 ? -0.5e-3 + 2.5e-3 * unit(gen) : 2e-3 + 43e-3 * unit(gen);
-    Eigen::Isometry3d pose = At(r * std::cos(angle), y, r * std::sin(angle));
+    Eigen::Isometry3d pose = Placed(r * std::cos(angle), y, r * std::sin(angle));
     if (family != 1) {
       const double tilt = 0.05 * (2.0 * unit(gen) - 1.0), about = 2.0 * M_PI * unit(gen);
       pose.linear() =
@@ -187,16 +187,17 @@ TEST(MeshColliderTest, ThePiecesWayOutFreesThePart) {
 }
 
 TEST(MeshColliderTest, RefusesBadMeshes) {
-  TriangleMesh bad = MakeClosedCylinder(kRadius, -1e-3, 0.0, 8);
+  TriangleMesh bad = MakeClosedCylinder(kTubeRadius, -1e-3, 0.0, 8);
   bad.triangles.front()[0] = 1000;
-  EXPECT_THROW(MeshCollider(MakeTube(kRadius, 20e-3, 0.0, 1e-3, 8), bad), UserError);
-  EXPECT_THROW(MeshCollider(TriangleMesh{}, MakeClosedCylinder(kRadius, -1e-3, 0.0, 8)), UserError);
-  EXPECT_THROW(MeshCollider(MakeTube(kRadius, 20e-3, 0.0, 1e-3, 8),
-                            MakeClosedCylinder(kRadius, -1e-3, 0.0, 8), 0),
+  EXPECT_THROW(MeshCollider(MakeTube(kTubeRadius, 20e-3, 0.0, 1e-3, 8), bad), UserError);
+  EXPECT_THROW(MeshCollider(TriangleMesh{}, MakeClosedCylinder(kTubeRadius, -1e-3, 0.0, 8)),
                UserError);
-  TriangleMesh nan = MakeClosedCylinder(kRadius, -1e-3, 0.0, 8);
+  EXPECT_THROW(MeshCollider(MakeTube(kTubeRadius, 20e-3, 0.0, 1e-3, 8),
+                            MakeClosedCylinder(kTubeRadius, -1e-3, 0.0, 8), 0),
+               UserError);
+  TriangleMesh nan = MakeClosedCylinder(kTubeRadius, -1e-3, 0.0, 8);
   nan.vertices.front().x() = std::nan("");
-  EXPECT_THROW(MeshCollider(MakeTube(kRadius, 20e-3, 0.0, 1e-3, 8), nan), UserError);
+  EXPECT_THROW(MeshCollider(MakeTube(kTubeRadius, 20e-3, 0.0, 1e-3, 8), nan), UserError);
 }
 
 TEST(MeshColliderTest, CounterSeesAllocations) {
@@ -221,7 +222,7 @@ TEST(MeshColliderTest, QueriesDoNotAllocate) {
     for (int k = 0; k < 2000; ++k) {
       const double x = 15e-3 * std::sin(k * 0.01);
       const double y = 2e-3 * std::cos(k * 0.013);
-      collider.Query(At(x, y, 0.0), collider_scratch.get(), &p);
+      collider.Query(Placed(x, y, 0.0), collider_scratch.get(), &p);
       in_contact += p.contact ? 1 : 0;
     }
     allocations.Stop();

@@ -1,5 +1,5 @@
 // The positioning stage with coarse meshes: FCL contact in free motion, the hand-over, and a tick
-// that does not allocate. Its own binary, since it counts every operator new.
+// that does not allocate.
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -11,8 +11,6 @@
 #include "framework/testing/allocation_counter.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
-
-FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {

@@ -1,5 +1,5 @@
 // The scheduler's tick with the safety chain and the recording must not allocate: count every
-// operator new while it ticks (a binary of its own: the counting operator new is global).
+// operator new while it ticks.
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -10,8 +10,6 @@
 #include "framework/testing/allocation_counter.h"
 
 #include <gtest/gtest.h>
-
-FITFEEL_COUNT_ALLOCATIONS();
 
 namespace fitfeel {
 namespace {

@@ -11,8 +11,6 @@
 
 #include <gtest/gtest.h>
 
-FITFEEL_COUNT_ALLOCATIONS();
-
 namespace fitfeel {
 namespace {
 

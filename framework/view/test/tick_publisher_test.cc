@@ -7,8 +7,6 @@
 
 #include "framework/testing/allocation_counter.h"
 
-FITFEEL_COUNT_ALLOCATIONS();
-
 namespace fitfeel::view {
 namespace {
 

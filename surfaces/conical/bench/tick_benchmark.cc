@@ -3,6 +3,7 @@
 // cells, so it grows linearly with m x n.
 #include <benchmark/benchmark.h>
 
+#include "framework/testing/tick_benchmark.h"
 #include "surfaces/conical/conical_contact_analyzer.h"
 #include "surfaces/conical/conical_discretizer.h"
 #include "surfaces/conical/conical_generator.h"
@@ -19,32 +20,22 @@ void BM_ConicalTick(benchmark::State& state) {
   hole.size.upper_deviation = 58e-6;
   pin.form.tolerance[FormCharacteristic::kRoundness] = 6e-6;
   hole.form.tolerance[FormCharacteristic::kGeneratrixStraightness] = 15e-6;
-  const Resolution r{static_cast<int>(state.range(0)), static_cast<int>(state.range(1))};
+  const Resolution r = test_support::BenchmarkGrid(state);
   ModelSettings settings;
   settings.friction = 0.15;
   settings.contact_stiffness = 1e6;
-  Rng rng(1);
-  const SkinModelShape pin_sms = ConicalVariationGenerator().Generate(
-      pin, ConicalDiscretizer().Discretize(pin, r), TextureMode::kExpected, rng);
-  const SkinModelShape hole_sms = ConicalVariationGenerator().Generate(
-      hole, ConicalDiscretizer().Discretize(hole, r), TextureMode::kExpected, rng);
   ConicalContactAnalyzer analyzer;
-  analyzer.Prepare(pin, pin_sms, hole, hole_sms, settings);
   TaperPressFitLaw law;
-  law.Prepare(pin, hole, settings);
+  test_support::PreparePair<ConicalDiscretizer, ConicalVariationGenerator>(pin, hole, r, settings,
+                                                                           &analyzer, &law);
   MatingMotion motion;
   motion.velocity.y() = 0.01;
-  ContactState contact;
-  Wrench wrench;
-  double depth = 20e-3;
-  for (auto _ : state) {
+  test_support::TimeTicks(state, analyzer, law, motion, [depth = 20e-3]() mutable {
     MatingPose pose;
     pose.depth = depth;
-    analyzer.Evaluate(pose, &contact);
-    law.Evaluate(contact, motion, &wrench);
-    benchmark::DoNotOptimize(wrench);
     depth += 1e-8;
-  }
+    return pose;
+  });
   state.counters["cells"] = static_cast<double>(r.rows) * r.columns;
 }
 BENCHMARK(BM_ConicalTick)->Args({20, 72})->Args({40, 360})->Args({200, 360});

@@ -2,7 +2,6 @@
 // only changes how fast it is evaluated): at the depth steps within the table's stated
 // interpolation bound, between them within 2 % of the scan's interference volume, and bit for bit
 // the same tables whatever the number of prepare threads.
-#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
@@ -10,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/assembly_space_check.h"
+#include "framework/testing/column_table_checks.h"
 
 #include "surfaces/conical/conical_contact_analyzer.h"
 #include "surfaces/conical/conical_discretizer.h"
@@ -63,23 +63,14 @@ TEST(ConicalTable, EqualsTheScanAtTheDepthStepsWithinItsBound) {
     const double step = analyzer.depth_step();
     for (int k = 1; k < analyzer.table().steps() - 1; k += 3) {
       const double depth = k * step;
-      double bound = 0.0;
-      for (int j = 0; j < analyzer.table().columns(); ++j) {
-        bound += analyzer.table().VolumeErrorBound(k, j);
-      }
+      const double bound = test_support::TableVolumeBound(analyzer.table(), k);
       for (int trial = 0; trial < 20; ++trial) {
         const MatingPose pose = RandomPose(rng, depth, analyzer.scan().Clearance(depth));
-        ContactState table, scan;
-        analyzer.Evaluate(pose, &table);
-        analyzer.scan().Evaluate(pose, &scan);
+        const auto [table, scan] = test_support::ExpectTableWithin(
+            analyzer, pose, bound,
+            "seed " + std::to_string(seed) + " depth " + std::to_string(depth));
         ASSERT_EQ(table.engaged, scan.engaged);
         EXPECT_NEAR(table.engaged_area, scan.engaged_area, 1e-12 * scan.engaged_area);
-        // Rounding of the shifted offset (z = e . u - clearance) adds 1e-15 of the sums.
-        EXPECT_NEAR(table.interference_volume, scan.interference_volume,
-                    bound + 1e-12 * scan.interference_volume)
-            << "seed " << seed << " depth " << depth;
-        EXPECT_LE((table.pressure_resultant - scan.pressure_resultant).norm(),
-                  bound + 1e-12 * scan.interference_volume);
       }
     }
   }
@@ -95,14 +86,7 @@ TEST(ConicalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
     for (int trial = 0; trial < 400; ++trial) {
       const double s = depth(rng);
       const MatingPose pose = RandomPose(rng, s, analyzer.scan().Clearance(s));
-      ContactState table, scan;
-      analyzer.Evaluate(pose, &table);
-      analyzer.scan().Evaluate(pose, &scan);
-      // Relative to a volume of at least 0.1 um over the engaged area: below it the force is a
-      // few newtons of a joint whose press force reaches kilonewtons.
-      const double scale = std::max(scan.interference_volume, 1e-7 * scan.engaged_area);
-      if (!(scale > 0.0)) continue;
-      const double error = std::abs(table.interference_volume - scan.interference_volume) / scale;
+      const double error = test_support::TableRelativeError(analyzer, pose);
       worst = std::max(worst, error);
       EXPECT_LT(error, 0.02) << "seed " << seed << " depth " << s;
     }
@@ -132,24 +116,13 @@ TEST(ConicalTable, EngagedAreaIsTheRowsSum) {
 }
 
 TEST(ConicalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
-  ConicalContactAnalyzer one, two;
-  setenv("FITFEEL_PREPARE_THREADS", "1", 1);
-  Prepare(&one, 3);
-  setenv("FITFEEL_PREPARE_THREADS", "2", 1);
-  Prepare(&two, 3);
-  unsetenv("FITFEEL_PREPARE_THREADS");
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> depth(0.0, 60e-3);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const double s = depth(rng);
-    const MatingPose pose = RandomPose(rng, s, one.scan().Clearance(s));
-    ContactState a, b;
-    one.Evaluate(pose, &a);
-    two.Evaluate(pose, &b);
-    ASSERT_EQ(a.interference_volume, b.interference_volume);
-    ASSERT_EQ(a.pressure_resultant, b.pressure_resultant);
-    ASSERT_EQ(a.max_interference, b.max_interference);
-  }
+  test_support::ExpectSameTablesOnOneOrTwoThreads<ConicalContactAnalyzer>(
+      [](ConicalContactAnalyzer* analyzer) { Prepare(analyzer, 3); },
+      [depth = std::uniform_real_distribution<double>(0.0, 60e-3)](
+          std::mt19937_64& rng, const ConicalContactAnalyzer& analyzer) mutable {
+        const double s = depth(rng);
+        return RandomPose(rng, s, analyzer.scan().Clearance(s));
+      });
 }
 
 // The assembly space (what the viewer draws) is exactly the pin's contact-free offsets: with sharp

@@ -2,6 +2,7 @@
 // grids (DIN 6885 8 x 7 x 40 key in a 45 mm JS9 hub keyway) and on a finer grid.
 #include <benchmark/benchmark.h>
 
+#include "framework/testing/tick_benchmark.h"
 #include "surfaces/planar/planar_contact_analyzer.h"
 #include "surfaces/planar/planar_generator.h"
 #include "surfaces/planar/planar_discretizer.h"
@@ -42,19 +43,14 @@ void BM_PlanarTick(benchmark::State& state) {
   law.Prepare(scene.key, scene.slot, scene.settings);
   MatingMotion motion;
   motion.velocity.y() = 0.01;
-  ContactState contact;
-  Wrench wrench;
-  double depth = 0.0;
-  for (auto _ : state) {
+  test_support::TimeTicks(state, analyzer, law, motion, [depth = 0.0]() mutable {
     MatingPose pose;
     pose.depth = depth;
     pose.offset = {1e-6, 0.0};
-    analyzer.Evaluate(pose, &contact);
-    law.Evaluate(contact, motion, &wrench);
-    benchmark::DoNotOptimize(wrench);
     depth += 1e-5;
     if (depth > 80e-3) depth = 0.0;
-  }
+    return pose;
+  });
 }
 BENCHMARK(BM_PlanarTick)->Args({0, 0})->Args({160, 48});
 

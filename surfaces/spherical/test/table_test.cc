@@ -2,7 +2,6 @@
 // only changes how fast it is evaluated): at the rotation steps within the table's stated
 // interpolation bound, between them within 2 % of the scan's interference volume, and bit for bit
 // the same tables whatever the number of prepare threads.
-#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
@@ -10,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/assembly_space_check.h"
+#include "framework/testing/column_table_checks.h"
 
 #include "surfaces/spherical/spherical_contact_analyzer.h"
 #include "surfaces/spherical/spherical_discretizer.h"
@@ -61,21 +61,12 @@ TEST(SphericalTable, EqualsTheScanAtTheRotationStepsWithinItsBound) {
       Prepare(&analyzer, seed, texture);
       std::mt19937_64 rng(100 + seed);
       for (int q = 0; q < analyzer.table().steps(); q += 7) {
-        double bound = 0.0;
-        for (int j = 0; j < analyzer.table().columns(); ++j) {
-          bound += analyzer.table().VolumeErrorBound(q, j);
-        }
+        const double bound = test_support::TableVolumeBound(analyzer.table(), q);
         for (int trial = 0; trial < 10; ++trial) {
           const MatingPose pose = RandomPose(rng, q * analyzer.angle_step());
-          ContactState table, scan;
-          analyzer.Evaluate(pose, &table);
-          analyzer.scan().Evaluate(pose, &scan);
+          const auto [table, scan] = test_support::ExpectTableWithin(
+              analyzer, pose, bound, "seed " + std::to_string(seed) + " step " + std::to_string(q));
           EXPECT_EQ(table.engaged_area, scan.engaged_area);
-          EXPECT_NEAR(table.interference_volume, scan.interference_volume,
-                      bound + 1e-12 * scan.interference_volume)
-              << "seed " << seed << " step " << q;
-          EXPECT_LE((table.pressure_resultant - scan.pressure_resultant).norm(),
-                    bound + 1e-12 * scan.interference_volume);
         }
       }
     }
@@ -91,12 +82,7 @@ TEST(SphericalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
     std::uniform_real_distribution<double> angle(-7.0, 7.0);
     for (int trial = 0; trial < 400; ++trial) {
       const MatingPose pose = RandomPose(rng, angle(rng));
-      ContactState table, scan;
-      analyzer.Evaluate(pose, &table);
-      analyzer.scan().Evaluate(pose, &scan);
-      // Relative to a volume of at least 0.1 um over the band.
-      const double scale = std::max(scan.interference_volume, 1e-7 * scan.engaged_area);
-      const double error = std::abs(table.interference_volume - scan.interference_volume) / scale;
+      const double error = test_support::TableRelativeError(analyzer, pose);
       worst = std::max(worst, error);
       EXPECT_LT(error, 0.02) << "seed " << seed << " angle " << pose.angle;
     }
@@ -105,23 +91,12 @@ TEST(SphericalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
 }
 
 TEST(SphericalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
-  SphericalContactAnalyzer one, two;
-  setenv("FITFEEL_PREPARE_THREADS", "1", 1);
-  Prepare(&one, 3, TextureMode::kExpected);
-  setenv("FITFEEL_PREPARE_THREADS", "2", 1);
-  Prepare(&two, 3, TextureMode::kExpected);
-  unsetenv("FITFEEL_PREPARE_THREADS");
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> angle(-7.0, 7.0);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const MatingPose pose = RandomPose(rng, angle(rng));
-    ContactState a, b;
-    one.Evaluate(pose, &a);
-    two.Evaluate(pose, &b);
-    ASSERT_EQ(a.interference_volume, b.interference_volume);
-    ASSERT_EQ(a.pressure_resultant, b.pressure_resultant);
-    ASSERT_EQ(a.max_interference, b.max_interference);
-  }
+  test_support::ExpectSameTablesOnOneOrTwoThreads<SphericalContactAnalyzer>(
+      [](SphericalContactAnalyzer* analyzer) { Prepare(analyzer, 3, TextureMode::kExpected); },
+      [angle = std::uniform_real_distribution<double>(-7.0, 7.0)](
+          std::mt19937_64& rng, const SphericalContactAnalyzer&) mutable {
+        return RandomPose(rng, angle(rng));
+      });
 }
 
 // The assembly space (what the viewer draws) is exactly the ball centre's contact-free offsets:

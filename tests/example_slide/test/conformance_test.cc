@@ -1,16 +1,10 @@
 // The framework's conformance suite on test/conformance.yaml. Under tests/ only: the plugin is
-// built into test-plugins/example_slide, which joins the search path before the suite builds
-// its registry (a surface under surfaces/ needs neither this nor the includes).
-#include <cstdlib>
+// built into test-plugins/example_slide, which joins the search path of the suite's registry (a
+// surface under surfaces/ needs only FITFEEL_SURFACE_CONFORMANCE(Name, scenario)).
 #include <string>
 
 #include "framework/conformance/surface_conformance.h"
 
-namespace {
-const bool kPluginOnPath = [] {
-  const std::string path = std::string(FITFEEL_TEST_BUILD_DIR) + "/test-plugins/example_slide";
-  return ::setenv("FITFEEL_PLUGIN_PATH", path.c_str(), 1) == 0;
-}();
-}  // namespace
-
-FITFEEL_SURFACE_CONFORMANCE(ExampleSlide, "tests/example_slide/test/conformance.yaml");
+FITFEEL_SURFACE_CONFORMANCE_WITH_PLUGINS(ExampleSlide, "tests/example_slide/test/conformance.yaml",
+                                         std::string(FITFEEL_TEST_BUILD_DIR) +
+                                             "/test-plugins/example_slide");
