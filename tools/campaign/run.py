@@ -162,6 +162,8 @@ def check_outputs(out_dir, ok, problems):
         if os.path.exists(out_dir) and os.listdir(out_dir):
             problems.append("a failed run left " + ", ".join(sorted(os.listdir(out_dir))))
         return
+    if not os.path.exists(out_dir):
+        return  # `run.outputs: []`: a run that writes nothing makes no folder
     for name in ("trace.csv", "summary.json", "recording.csv"):
         path = os.path.join(out_dir, name)
         if not os.path.exists(path):
