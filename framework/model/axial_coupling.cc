@@ -4,8 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <list>
-#include <mutex>
 #include <string>
 
 #include <Eigen/Dense>
@@ -235,21 +233,6 @@ class BandCholesky {
   std::vector<double>& band_;
 };
 
-// The element solves' two large buffers (the band and the loads' right-hand sides, megabytes
-// each), kept by each thread from one solve to the next instead of handed back to the kernel and
-// faulted in again, zeroed, for each of a scene's fourteen solves (with two threads faulting at
-// once, their page faults also wait on each other). Up to kKeptBytes each; a larger one is handed
-// back after its solve.
-struct ElementBuffers {
-  std::vector<double> band, loads;
-  static constexpr std::size_t kKeptBytes = std::size_t{32} << 20;
-  void Trim() {
-    for (std::vector<double>* b : {&band, &loads}) {
-      if (b->capacity() * sizeof(double) > kKeptBytes) std::vector<double>().swap(*b);
-    }
-  }
-};
-
 // Order 1's V on the axis, which is -U there (u_x single-valued): the entry takes U's unknown.
 constexpr int kTied = -2;
 
@@ -375,18 +358,19 @@ void BodyLoad(const ElementMesh& m, int iz, int ir, double z0, const Add& add) {
 }
 
 // The whole part's band, factored, and each solved row's load solved at once.
-Responses BandResponses(const ElementMesh& m, ElementBuffers* buffers) {
+Responses BandResponses(const ElementMesh& m) {
   const auto number = [&m](int entry) { return m.unknown(entry); };
   const int w = m.Bandwidth(0, m.nz - 1, number);
-  BandCholesky k(m.free, w, &buffers->band);
+  std::vector<double> band, loads;
+  BandCholesky k(m.free, w, &band);
   Assemble(m, 0, m.nz - 1, number, &k);
   if (!k.Factor()) {
     throw UserError("axial coupling: the part's stiffness is not positive definite");
   }
   const int rows = m.rows;
   std::vector<std::vector<std::pair<int, double>>> mean(static_cast<std::size_t>(rows));
-  buffers->loads.assign(static_cast<std::size_t>(m.free) * m.solved, 0.0);
-  Eigen::Map<RowMajor> u(buffers->loads.data(), m.free, m.solved);
+  loads.assign(static_cast<std::size_t>(m.free) * m.solved, 0.0);
+  Eigen::Map<RowMajor> u(loads.data(), m.free, m.solved);
   std::vector<int> first(static_cast<std::size_t>(m.solved), m.free);
   for (int i = 0; i < rows; ++i) {
     for (int s = 0; s < m.per_row; ++s) {
@@ -840,14 +824,9 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
                          .open = open,
                          .solved_from = solved_from,
                          .solved = solved};
-  thread_local ElementBuffers buffers;
-  struct TrimOnExit {
-    ElementBuffers& buffers;
-    ~TrimOnExit() { buffers.Trim(); }
-  } trim{buffers};
   const int group_rows = GroupRows(mesh, elimination);
   Responses responses =
-      group_rows > 0 ? CondensedResponses(mesh, group_rows) : BandResponses(mesh, &buffers);
+      group_rows > 0 ? CondensedResponses(mesh, group_rows) : BandResponses(mesh);
   Eigen::MatrixXd& half = responses.half;
   if (order == 1) {
     // A load cos(theta) has a net force and moment, which the rest of the model carries by the
@@ -911,61 +890,6 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
         RingHarmonicCompliance(body.inner_radius, body.outer_radius, body.loaded_inside,
                                body.material, body.held_faces, order);
   }
-}
-
-namespace {
-
-struct MemoEntry {
-  AxialBody body;
-  std::vector<double> edges;
-  int order;
-  AxialCoupling value;
-};
-
-struct Memo {
-  std::mutex mutex;
-  std::list<MemoEntry> entries;  // most recently used first
-};
-
-Memo& SharedMemo() {
-  static Memo memo;
-  return memo;
-}
-
-}  // namespace
-
-void AxialCoupling::ForgetShared() {
-  Memo& memo = SharedMemo();
-  const std::lock_guard<std::mutex> lock(memo.mutex);
-  memo.entries.clear();
-}
-
-AxialCoupling AxialCoupling::Shared(const AxialBody& body, std::span<const double> row_edges,
-                                    int order) {
-  Memo& memo = SharedMemo();
-  auto same = [&](const MemoEntry& e) {
-    return e.order == order && e.body.inner_radius == body.inner_radius &&
-           e.body.outer_radius == body.outer_radius && e.body.loaded_inside == body.loaded_inside &&
-           e.body.held_faces == body.held_faces &&
-           e.body.material.youngs_modulus == body.material.youngs_modulus &&
-           e.body.material.poisson == body.material.poisson &&
-           std::equal(e.edges.begin(), e.edges.end(), row_edges.begin(), row_edges.end());
-  };
-  {
-    const std::lock_guard<std::mutex> lock(memo.mutex);
-    for (auto it = memo.entries.begin(); it != memo.entries.end(); ++it) {
-      if (same(*it)) {
-        memo.entries.splice(memo.entries.begin(), memo.entries, it);
-        return memo.entries.front().value;
-      }
-    }
-  }
-  AxialCoupling value(body, row_edges, order);  // outside the lock: other parts go on
-  const std::lock_guard<std::mutex> lock(memo.mutex);
-  memo.entries.push_front(
-      MemoEntry{body, std::vector<double>(row_edges.begin(), row_edges.end()), order, value});
-  if (memo.entries.size() > kMemoEntries) memo.entries.pop_back();
-  return value;
 }
 
 void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out) const {

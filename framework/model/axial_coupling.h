@@ -67,16 +67,6 @@ class FITFEEL_API AxialCoupling {
   AxialCoupling(const AxialBody& body, std::span<const double> row_edges, int order = 0,
                 Elimination elimination = Elimination::kAuto);
 
-  // The same, from a process-wide memo of the last kMemoEntries parts solved: a fit study
-  // prepares many pairs of one geometry, whose elements are the same. The memo hands back a copy
-  // of what the constructor computed for equal arguments (compared exactly), so a result never
-  // depends on what was prepared before. Thread-safe.
-  static AxialCoupling Shared(const AxialBody& body, std::span<const double> row_edges,
-                              int order = 0);
-  static constexpr std::size_t kMemoEntries = 64;
-  // Empties the memo: for a benchmark that measures one scene's prepare as one session pays it.
-  static void ForgetShared();
-
   int order() const { return order_; }
 
   bool empty() const { return extra_.size() == 0; }

@@ -750,9 +750,9 @@ void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
     const auto mode = static_cast<std::size_t>(job / 2);
     const int order = mode == 0 ? 0 : coupled_orders_[mode - 1];
     if (job % 2 == 0) {
-      (*shaft)[mode] = AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order);
+      (*shaft)[mode] = AxialCoupling(shaft_body_, shaft_coupling_rows_, order);
     } else {
-      (*hub)[mode] = AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order);
+      (*hub)[mode] = AxialCoupling(hub_body_, hub_coupling_rows_, order);
     }
   });
 }
