@@ -11,14 +11,14 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
-#include "framework/core/fixed_lane_dot.h"
+#include "surfaces/cylindrical/fixed_lane_dot.h"
 #include "framework/core/least_norm.h"
 #include "framework/core/number_text.h"
 #include "framework/core/parallel.h"
 #include "framework/core/simd_clones.h"
 #include "framework/model/convex_polygon.h"
 #include "framework/model/grid_rows.h"
-#include "framework/model/section_contact.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/elastic_options.h"
 

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/metrology/sms_conformance.h"
-#include "framework/model/process_model.h"
-#include "framework/model/random_draws.h"
+#include "surfaces/cylindrical/sms_conformance.h"
+#include "surfaces/cylindrical/process_model.h"
+#include "surfaces/cylindrical/random_draws.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
 #include "surfaces/cylindrical/elastic_options.h"

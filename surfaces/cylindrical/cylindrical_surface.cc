@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <string>
 
-#include "framework/metrology/sms_conformance.h"
+#include "surfaces/cylindrical/sms_conformance.h"
 #include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
@@ -67,7 +67,7 @@ double CylindricalSurface::DoEstimatePrepareSeconds(const ModelSettings& model,
 
 std::vector<CharacteristicCheck> CylindricalSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
-  const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(part, sms);
+  const ConformanceReport report = EvaluateCylindricalSms(part, sms);
   std::vector<CharacteristicCheck> checks;
   for (const auto& item : report.items) {
     if (!item.specified) continue;

@@ -31,7 +31,7 @@ class CylindricalSurface final : public SurfaceType {
   // The elastic law's worst case (elastic_cost.h); the other laws' prepare is the cells'.
   double DoEstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
                                   const GridShape& outer, double depth_steps) const override;
-  // framework/metrology's evaluation (EvaluateCylindricalSms): two-point sizes as
+  // sms_conformance.h's evaluation (EvaluateCylindricalSms): two-point sizes as
   // two_point_size_min / two_point_size_max against the size limits, then each specified form
   // tolerance.
   std::vector<CharacteristicCheck> DoEvaluateCharacteristics(

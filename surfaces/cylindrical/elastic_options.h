@@ -4,7 +4,7 @@
 
 #include "framework/core/config_node.h"
 #include "framework/core/quantity.h"
-#include "framework/model/axial_coupling.h"
+#include "surfaces/cylindrical/elastic/axial_coupling.h"
 #include "framework/model/model_settings.h"
 
 namespace fitfeel::cylindrical {
@@ -29,7 +29,7 @@ struct ElasticOptions {
   bool plane_strain = false;
   int columns = kDefaultColumns;
   // The hub's and the shaft's deformation coupled along their axes
-  // (framework/model/axial_coupling.h); false leaves every section on its own (plane sections),
+  // (surfaces/cylindrical/elastic/axial_coupling.h); false leaves every section on its own (plane sections),
   // for comparison.
   bool axial_coupling = true;
   // With the axial coupling, the orders 1 .. axial_orders are coupled too (0: the breathing mode

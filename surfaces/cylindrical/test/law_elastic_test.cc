@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 #include "framework/testing/fem_data.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_law.h"

@@ -1,4 +1,4 @@
-#include "framework/model/dense_cholesky.h"
+#include "surfaces/cylindrical/elastic/dense_cholesky.h"
 
 #include <cstddef>
 #include <random>
@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 // A random SPD matrix B B^T / m + 1e-3 I: condition numbers of 1e3 to 1e4, as the compliance's
@@ -139,4 +139,4 @@ TEST(DenseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

@@ -5,7 +5,7 @@
 
 #include "framework/model/variation_generator.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 
 // Draws from the scene's generator that give the same numbers on every platform (the standard
 // library's distributions are implementation-defined).
@@ -32,4 +32,4 @@ inline double Rayleigh(Rng& rng, double scale) {
   return scale * std::sqrt(-2.0 * std::log(u));
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

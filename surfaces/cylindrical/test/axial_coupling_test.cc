@@ -1,4 +1,4 @@
-#include "framework/model/axial_coupling.h"
+#include "surfaces/cylindrical/elastic/axial_coupling.h"
 
 #include <cmath>
 #include <random>
@@ -8,9 +8,9 @@
 #include <Eigen/Eigenvalues>
 
 #include "framework/core/error.h"
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 constexpr double kE = 210e9, kNu = 0.3;
@@ -363,4 +363,4 @@ TEST(AxialCoupling, RefusesWhatItCannotModel) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

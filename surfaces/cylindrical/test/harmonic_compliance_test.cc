@@ -1,4 +1,4 @@
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
-#include "framework/model/test/steel_pair.h"
+#include "surfaces/cylindrical/test/steel_pair.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
-using test_support::SteelPair;
+using testing::SteelPair;
 
 TEST(HarmonicCompliance, BreathingModeIsLame) {
   // Lame, solid shaft d1 = 20 in a hub d2 = 30, steel: 5.8333 MPa per um of radial interference.
@@ -147,4 +147,4 @@ TEST(PlasticityIndex, GroundSteelYields) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

@@ -2,10 +2,9 @@
 
 #include <vector>
 
-#include "framework/core/export.h"
 #include "framework/model/gps_spec.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 
 // A press-fit cross-section: a shaft (solid, or hollow with bore di) in a thick ring hub of outer
 // diameter d2, both linear elastic, frictionless at the interface of diameter d1.
@@ -28,32 +27,32 @@ struct PressFitSection {
 // relative to the section's centroid, the net force balanced by a uniform body force (the rest
 // of a rigid part pulling on the section; docs/contact-mechanics.md section 1): 0.36 of order 0's
 // for the steel 20 mm shaft in its 30 mm hub.
-FITFEEL_API double HarmonicCompliance(const PressFitSection& section, int n);
+double HarmonicCompliance(const PressFitSection& section, int n);
 
 // One part's share of HarmonicCompliance for an order n >= 1: the radial displacement opening the
 // interface of the ring inner_radius < r < outer_radius (solid when inner_radius = 0) loaded by
 // p cos(n theta) on its bore (`loaded_inside`, a hub) or on its outside (a shaft), per unit p.
-FITFEEL_API double RingHarmonicCompliance(double inner_radius, double outer_radius,
+double RingHarmonicCompliance(double inner_radius, double outer_radius,
                                           bool loaded_inside, const Material& material,
                                           bool plane_strain, int n);
 
 // The compliance of every order 0 .. n_columns/2 a circulant contact solve on n_columns needs.
-FITFEEL_API std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns);
+std::vector<double> CirculantCompliance(const PressFitSection& section, int n_columns);
 
 // DIN 7190-1 smoothing: the diametral interference lost while joining as the asperity peaks are
 // flattened, 0.8 (Rz_inner + Rz_outer). Radial: half of it.
-FITFEEL_API double Din7190RadialSmoothing(const TextureSpec& inner, const TextureSpec& outer);
+double Din7190RadialSmoothing(const TextureSpec& inner, const TextureSpec& outer);
 
 // Plasticity index of Greenwood and Williamson (1966), psi = (E*/H) sqrt(sigma / beta), with E* the
 // contact modulus 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2), H the softer part's hardness (Pa), sigma
 // the equivalent surface's asperity height deviation and beta the asperity summit radius (m).
 // psi > 1: the asperities yield on first contact (the case for ground and turned steel), so an
 // elastic asperity model does not apply and DIN 7190 smoothing does. Reported, not used in forces.
-FITFEEL_API double ContactModulus(const Material& a, const Material& b);
-FITFEEL_API double PlasticityIndex(double contact_modulus, double hardness, double sigma,
+double ContactModulus(const Material& a, const Material& b);
+double PlasticityIndex(double contact_modulus, double hardness, double sigma,
                                    double summit_radius);
 // Equivalent height deviation of two Gaussian textures from their Ra: sigma = sqrt(pi/2) Ra per
 // surface, root-sum-square of the two (independent heights add).
-FITFEEL_API double EquivalentSigmaFromRa(const TextureSpec& a, const TextureSpec& b);
+double EquivalentSigmaFromRa(const TextureSpec& a, const TextureSpec& b);
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

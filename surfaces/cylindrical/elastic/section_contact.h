@@ -5,11 +5,10 @@
 
 #include <Eigen/Core>
 
-#include "framework/core/export.h"
-#include "framework/model/dense_cholesky.h"
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/dense_cholesky.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 
 // Unilateral (non-negative pressure) contact of one press-fit cross-section on n equally spaced
 // columns, with the interface compliance per circumferential harmonic (harmonic_compliance.h).
@@ -20,7 +19,7 @@ namespace fitfeel {
 // complementarity problem with a symmetric positive definite matrix, solved exactly (to rounding)
 // by block principal pivoting (Judice and Pires 1994) with Murty's single-pivot rule as the
 // fallback that guarantees termination. Prepare-time only: it allocates.
-class FITFEEL_API CirculantContact {
+class CirculantContact {
  public:
   // The factorizations of one section, kept between solves: a section whose contact set has not
   // changed since its last solve (the usual case late in a Newton search) solves with them in
@@ -121,7 +120,7 @@ struct RigidFreedom {
 
 // A section's offset per step of the part's pose q = (offset, tilt): P = [I, y I] (2 x 4), or I
 // (2 x 2) where the part may not tilt.
-FITFEEL_API Eigen::MatrixXd SectionPlacement(const ContactSection& section,
+Eigen::MatrixXd SectionPlacement(const ContactSection& section,
                                              const RigidFreedom& freedom);
 
 struct RigidContactResult {
@@ -145,7 +144,7 @@ struct RigidContactResult {
 // sections' contact stiffness). Each section deforms on its own (plane sections; the parts'
 // deformation along their axes, order by order, is coupled by the caller, axial_coupling.h,
 // through the sections' gaps: gap_shift, ShiftStiffness, ShiftFullContact). Prepare-time only.
-class FITFEEL_API RigidSectionContact {
+class RigidSectionContact {
  public:
   // `shift_orders`: the circumferential orders (1 .. n_columns / 2) a caller's gap shifts may
   // carry besides the uniform one (Solve's `gap_shift`, ShiftFullContact).
@@ -214,4 +213,4 @@ class FITFEEL_API RigidSectionContact {
   std::vector<std::vector<char>> active_;
 };
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

@@ -1,4 +1,4 @@
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
 #include <cmath>
 #include <numbers>
@@ -8,7 +8,7 @@
 
 #include "framework/core/error.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 // Effective constants of the 2-D problem: plane strain is plane stress with E / (1 - nu^2) and
@@ -238,4 +238,4 @@ double EquivalentSigmaFromRa(const TextureSpec& a, const TextureSpec& b) {
   return std::hypot(k * a.ra, k * b.ra);
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

@@ -1,12 +1,12 @@
-#include "framework/model/dense_cholesky.h"
+#include "surfaces/cylindrical/elastic/dense_cholesky.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "framework/core/fixed_lane_dot.h"
+#include "surfaces/cylindrical/fixed_lane_dot.h"
 #include "framework/core/simd_clones.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 // b0, b1 <- L^-1 b0, L^-1 b1 for the leading m x m block of the lower-triangular, column-major l
@@ -167,4 +167,4 @@ Eigen::MatrixXd DenseCholesky::InverseFormOf(Eigen::MatrixXd b) const {
   return b.transpose() * b;
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

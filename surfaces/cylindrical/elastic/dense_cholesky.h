@@ -4,9 +4,8 @@
 
 #include <Eigen/Core>
 
-#include "framework/core/export.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 
 // Cholesky factor L (A = L L^T) of a small dense symmetric positive definite matrix, as the
 // section contact's pivoting steps need it: tens of thousands of principal submatrices of 10 to
@@ -17,7 +16,7 @@ namespace fitfeel {
 // forward substitution over contiguous columns (Eigen's LLT and its triangular solve for two
 // right-hand sides spend much of these sizes on blocking and copies, measured in a prepare).
 // Prepare-time only.
-class FITFEEL_API DenseCholesky {
+class DenseCholesky {
  public:
   // Factors `a` (only its lower triangle is read). False when a pivot is not positive: the
   // matrix is not positive definite (to rounding), and the factor is left empty.
@@ -48,4 +47,4 @@ class FITFEEL_API DenseCholesky {
   Eigen::Index size_ = 0;
 };
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

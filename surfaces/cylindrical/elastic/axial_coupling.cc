@@ -1,4 +1,4 @@
-#include "framework/model/axial_coupling.h"
+#include "surfaces/cylindrical/elastic/axial_coupling.h"
 
 #include <algorithm>
 #include <array>
@@ -12,9 +12,9 @@
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "framework/core/simd_clones.h"
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 // Axial elements per row: at least two (a row's mean displacement then averages a curved profile,
@@ -897,4 +897,4 @@ void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out) 
       extra_ * Eigen::Map<const Eigen::VectorXd>(mean_pressure, extra_.cols());
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

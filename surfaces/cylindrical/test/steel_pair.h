@@ -1,8 +1,8 @@
 #pragma once
 
-#include "framework/model/harmonic_compliance.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
-namespace fitfeel::test_support {
+namespace fitfeel::cylindrical::testing {
 
 // A steel shaft of 20 mm in a steel hub of 30 mm outer diameter (E = 210 GPa, nu = 0.3).
 inline PressFitSection SteelPair() {
@@ -14,4 +14,4 @@ inline PressFitSection SteelPair() {
   return s;
 }
 
-}  // namespace fitfeel::test_support
+}  // namespace fitfeel::cylindrical::testing

@@ -1,13 +1,13 @@
-#include "framework/model/process_model.h"
+#include "surfaces/cylindrical/process_model.h"
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
 #include "framework/core/error.h"
-#include "framework/model/random_draws.h"
+#include "surfaces/cylindrical/random_draws.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 // A capable process scraps a tiny fraction; a limit this high means the process cannot make the
@@ -47,4 +47,4 @@ double DrawFormUtilisation(const ProcessSpec& process, Rng& rng, int* rejections
                   std::to_string(process.form_cpk) + " is far too low)");
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

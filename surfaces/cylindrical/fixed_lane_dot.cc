@@ -1,8 +1,8 @@
-#include "framework/core/fixed_lane_dot.h"
+#include "surfaces/cylindrical/fixed_lane_dot.h"
 
 #include "framework/core/simd_clones.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 FITFEEL_SIMD_CLONES double LaneDot(const double* __restrict a, const double* __restrict b, int n) {
@@ -22,4 +22,4 @@ FITFEEL_SIMD_CLONES double LaneDot(const double* __restrict a, const double* __r
 
 double FixedLaneDot(const double* a, const double* b, int n) { return LaneDot(a, b, n); }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

@@ -1,11 +1,11 @@
-#include "framework/metrology/sms_conformance.h"
+#include "surfaces/cylindrical/sms_conformance.h"
 
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
-namespace fitfeel::metrology {
+namespace fitfeel::cylindrical {
 namespace {
 
 // A hand-made skin model shape: ovality 2a (roundness 2a, two-point sizes +-2a about 2 v0).
@@ -49,4 +49,4 @@ TEST(SmsConformance, ReportsEachCharacteristicAgainstItsLimit) {
 }
 
 }  // namespace
-}  // namespace fitfeel::metrology
+}  // namespace fitfeel::cylindrical

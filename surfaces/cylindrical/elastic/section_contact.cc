@@ -1,4 +1,4 @@
-#include "framework/model/section_contact.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "framework/core/least_norm.h"
 #include "framework/core/simd_clones.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 // sum = sum over a < count of coeff[a] * column cols[a] (or column a without cols) of the
@@ -647,4 +647,4 @@ bool RigidSectionContact::ShiftFullContact(std::span<const ContactSection> secti
   return true;
 }
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

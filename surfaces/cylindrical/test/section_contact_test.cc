@@ -1,4 +1,4 @@
-#include "framework/model/section_contact.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
 
 #include <cmath>
 #include <numbers>
@@ -7,15 +7,15 @@
 
 #include <gtest/gtest.h>
 
-#include "framework/model/test/steel_pair.h"
+#include "surfaces/cylindrical/test/steel_pair.h"
 #include "framework/testing/units.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
-using test_support::SteelPair;
+using testing::SteelPair;
 
-using test_support::kPi;
+using fitfeel::test_support::kPi;
 
 // One slice of length L as a section of n cells.
 ContactSection Slice(const std::vector<double>& gap, double length, double d = 0.020) {
@@ -340,4 +340,4 @@ TEST(RigidSectionContact, AnyWarmContactSetReachesTheSameEquilibrium) {
 }
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

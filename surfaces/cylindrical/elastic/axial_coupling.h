@@ -5,10 +5,9 @@
 
 #include <Eigen/Core>
 
-#include "framework/core/export.h"
 #include "framework/model/gps_spec.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 
 // One part of a press fit as a solid of revolution: the ring between two radii, loaded by the
 // interface pressure on one of its two cylindrical faces over the rows of the part's grid.
@@ -52,7 +51,7 @@ struct AxialBody {
 // CalculiX in 3-D (tools/fem/solid.py): a bent shaft in partial contact, ovality and three lobes
 // growing along the axis, all within 3 % (docs/contact-mechanics.md section 6). Prepare-time only:
 // it allocates.
-class FITFEEL_API AxialCoupling {
+class AxialCoupling {
  public:
   AxialCoupling() = default;
   // `row_edges`: the rows' axial boundaries (m, increasing; rows = row_edges.size() - 1).
@@ -89,4 +88,4 @@ class FITFEEL_API AxialCoupling {
   Eigen::MatrixXd influence_, extra_;
 };
 
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

@@ -3,14 +3,11 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
-#include "framework/core/export.h"
 #include "framework/metrology/cylinder_form.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
 
-namespace fitfeel::metrology {
+namespace fitfeel::cylindrical {
 
 // Rounding allowance of the evaluations, 1 pm: 10^-5 of the tightest tolerance a scene can carry
 // in practice (0.1 um), far below anything a measurement could resolve.
@@ -28,29 +25,17 @@ struct CharacteristicResult {
   bool pass = true;         // not specified: always true
 };
 
-struct FITFEEL_API ConformanceReport {
+struct ConformanceReport {
   std::vector<CharacteristicResult> items;
   bool AllPass() const;
   const CharacteristicResult* Find(const std::string& name) const;  // null if absent
 };
-
-// The grid and per-cell radial deviations of a cylindrical skin model shape as samples.
-FITFEEL_API CylinderSamples SamplesFromGrid(double nominal_radius, const SurfaceGrid& grid,
-                                            const Eigen::VectorXd& deviation);
-
-// One form characteristic of a cylinder (roundness: the worst section; generatrix straightness:
-// the worst column, as a 2-D profile (y, v); axis straightness: least-squares section centres in a
-// minimum cylinder; cylindricity: minimum zone). Throws std::invalid_argument for a characteristic
-// a cylinder does not have.
-FITFEEL_API double EvaluateCylinderForm(FormCharacteristic characteristic,
-                                        const CylinderSamples& samples);
 
 // Evaluates a cylindrical skin model shape against every tolerance of its part: two-point sizes
 // (ISO 14405-1 default) on the whole V; form characteristics on V minus the sampled texture, as
 // ISO 12180/12181/12780 do after their profile filters remove wavelengths shorter than the form
 // (texture here is, by the paper, below 10 mm). Unspecified form characteristics are evaluated
 // for information and marked not specified.
-FITFEEL_API ConformanceReport EvaluateCylindricalSms(const PartSpec& part,
-                                                     const SkinModelShape& sms);
+ConformanceReport EvaluateCylindricalSms(const PartSpec& part, const SkinModelShape& sms);
 
-}  // namespace fitfeel::metrology
+}  // namespace fitfeel::cylindrical
