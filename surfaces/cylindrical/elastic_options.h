@@ -28,9 +28,8 @@ struct ElasticOptions {
   double tilt_stiffness = 0.0;  // what holds its tilt, N*m/rad (0 = nothing)
   bool plane_strain = false;
   int columns = kDefaultColumns;
-  // The hub's and the shaft's deformation coupled along their axes
-  // (surfaces/cylindrical/elastic/axial_coupling.h); false leaves every section on its own (plane sections),
-  // for comparison.
+  // The hub's and the shaft's deformation coupled along their axes (elastic/axial_coupling.h);
+  // false leaves every section on its own (plane sections), for comparison.
   bool axial_coupling = true;
   // With the axial coupling, the orders 1 .. axial_orders are coupled too (0: the breathing mode
   // alone): order 1 is the parts' bending and shear along their axes, the others their lobing.

@@ -24,7 +24,8 @@ NormalLaw SizeLaw(const ProcessSpec& process, double lower, double upper, Role r
   }
   NormalLaw law;
   law.sd = (upper - lower) / (6.0 * process.cp);
-  const bool toward_upper = (role == Role::kInner) == (process.lean == ProcessLean::kMaximumMaterial);
+  const bool toward_upper =
+      (role == Role::kInner) == (process.lean == ProcessLean::kMaximumMaterial);
   const double inset = 3.0 * law.sd * process.cpk;
   law.mean = toward_upper ? upper - inset : lower + inset;
   return law;

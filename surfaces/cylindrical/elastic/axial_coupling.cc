@@ -11,7 +11,7 @@
 
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
-#include "framework/core/simd_clones.h"
+#include "surfaces/cylindrical/elastic/band_cholesky.h"
 #include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
 namespace fitfeel::cylindrical {
@@ -28,34 +28,6 @@ constexpr double kRadiusOverElement = 40.0;
 constexpr double kLayerGrowth = 1.25;
 // At least this many layers through a wall: a thin hub carries its load by bending across it.
 constexpr int kFewestLayers = 4;
-
-// y[0, n) -= sum over t < terms of c[t] x_t[0, n), x_t = x + t * stride, subtracted in the order
-// of t: a band solve's step for one row over every right-hand side at once, in one call (a call
-// per term was a third of the elements' cost on the shipped parts).
-FITFEEL_SIMD_CLONES void SubtractCombination(double* __restrict y, const double* __restrict x,
-                                             std::ptrdiff_t stride, const double* __restrict c,
-                                             int terms, int n) {
-  FITFEEL_NO_FP_CONTRACT
-  for (int t = 0; t < terms; ++t) {
-    const double* __restrict xt = x + t * stride;
-    const double a = c[t];
-    for (int j = 0; j < n; ++j) y[j] -= a * xt[j];
-  }
-}
-
-// A band factor's trailing update for one pivot: row r of `rows` (r < count; row r starts r *
-// stride further on, the band's rows one column further right each) loses c[r] c[j] at columns
-// j <= r. Each entry subtracts its pivots' products in pivot order (no contraction), so every
-// instruction set gives the same factor.
-FITFEEL_SIMD_CLONES void RankOneUpdate(double* __restrict rows, int stride,
-                                       const double* __restrict c, int count) {
-  FITFEEL_NO_FP_CONTRACT
-  for (int r = 0; r < count; ++r) {
-    double* __restrict row = rows + static_cast<std::ptrdiff_t>(r) * stride;
-    const double l = c[r];
-    for (int j = 0; j <= r; ++j) row[j] -= l * c[j];
-  }
-}
 
 // Radial stations from the loaded face into the body, first layer `first` thick.
 std::vector<double> RadialStations(const AxialBody& body, double first) {
@@ -148,90 +120,6 @@ Eigen::MatrixXd ElementStiffness(double r0, double r1, double z0, double z1,
   }
   return k;
 }
-
-// A symmetric positive definite band matrix of half-bandwidth w, factored in place: K = L L'. The
-// elements' numbering (radial index fastest) keeps the band two radial stations wide, and a band
-// factor has no fill outside it: N w^2 / 2 operations, no reordering.
-class BandCholesky {
- public:
-  // The band lives in `storage` (zeroed here), which the caller keeps. `block` > 0: the matrix is
-  // block tridiagonal in blocks of that size (w = 2 block - 1), so row i is zero left of the
-  // block before its own, and L is too (a factor keeps each row's first nonzero); the factor and
-  // the solves skip those zeros (a quarter of the band's entries, almost half of the factor's
-  // products), and what they compute is the same.
-  BandCholesky(int n, int w, std::vector<double>* storage, int block = 0)
-      : n_(n), w_(w), block_(block), band_(*storage) {
-    band_.assign(static_cast<std::size_t>(n) * (w + 1), 0.0);
-  }
-  // Row i, column j <= i, j >= i - w.
-  double& at(int i, int j) { return band_[static_cast<std::size_t>(i) * (w_ + 1) + (j - i + w_)]; }
-  // Factors in place (right-looking: each pivot's column scaled, then the trailing band's rank-one
-  // update); false if a pivot is not positive. A row-by-row factor makes every entry wait for the
-  // inner product of the one before it in the row (latency-bound: a third of the elements' cost
-  // on the shipped parts); the rank-one update has no such chain, its rows run vectorised.
-  bool Factor() {
-    std::vector<double> column(static_cast<std::size_t>(w_));
-    for (int k = 0; k < n_; ++k) {
-      const double pivot = at(k, k);
-      if (!(pivot > 0.0)) return false;
-      at(k, k) = std::sqrt(pivot);
-      const double inverse = 1.0 / at(k, k);
-      const int below = std::min(w_, LastInColumn(k) - k);
-      for (int r = 0; r < below; ++r) {
-        double& l = at(k + 1 + r, k);
-        l *= inverse;
-        column[static_cast<std::size_t>(r)] = l;
-      }
-      if (below > 0) RankOneUpdate(&at(k + 1, k + 1), w_, column.data(), below);
-    }
-    return true;
-  }
-  // X <- L^-T L^-1 X = K^-1 X for the columns of a row-major X (n rows, `cols` columns): row
-  // operations, which run over every right-hand side at once (contiguous, vectorised) instead of
-  // one band solve each. Column j is zero above row first[j] (nondecreasing in j): the forward
-  // pass skips the columns that are still zero.
-  void Solve(double* x, int cols, const std::vector<int>& first) {
-    Forward(x, cols, first);
-    // Backwards, row i takes column i of L below the diagonal (strided in the band: gathered).
-    std::vector<double> below(static_cast<std::size_t>(w_));
-    for (int i = n_ - 1; i >= 0; --i) {
-      double* xi = x + static_cast<std::size_t>(i) * cols;
-      const int count = std::min(w_, LastInColumn(i) - i);
-      for (int t = 0; t < count; ++t) below[static_cast<std::size_t>(t)] = at(i + 1 + t, i);
-      SubtractCombination(xi, xi + cols, cols, below.data(), count, cols);
-      const double d = at(i, i);
-      for (int j = 0; j < cols; ++j) xi[j] /= d;
-    }
-  }
-  // X <- L^-1 X, the forward half of Solve: for a' K^-1 b = (L^-1 a)' (L^-1 b).
-  void Forward(double* x, int cols, const std::vector<int>& first) {
-    int live = 0;  // columns with first <= i
-    for (int i = 0; i < n_; ++i) {
-      while (live < cols && first[static_cast<std::size_t>(live)] <= i) ++live;
-      double* xi = x + static_cast<std::size_t>(i) * cols;
-      const int lo = FirstInRow(i);
-      // Row i of L holds columns lo .. i - 1 contiguously, the rows of X they take are adjacent.
-      SubtractCombination(xi, x + static_cast<std::size_t>(lo) * cols, cols, &at(i, lo), i - lo,
-                          live);
-      const double d = at(i, i);
-      for (int j = 0; j < live; ++j) xi[j] /= d;
-    }
-  }
-
- private:
-  // The profile, both ways: the first column of row i and the last row of column k that may be
-  // nonzero (the band's edge, or with `block` the edge of the blocks beside the diagonal's).
-  int FirstInRow(int i) const {
-    return std::max({0, i - w_, block_ > 0 ? (i / block_ - 1) * block_ : 0});
-  }
-  int LastInColumn(int k) const {
-    const int last = block_ > 0 ? (k / block_ + 2) * block_ - 1 : n_ - 1;
-    return std::min(last, n_ - 1);
-  }
-
-  int n_, w_, block_;
-  std::vector<double>& band_;
-};
 
 // Order 1's V on the axis, which is -U there (u_x single-valued): the entry takes U's unknown.
 constexpr int kTied = -2;
@@ -361,8 +249,8 @@ void BodyLoad(const ElementMesh& m, int iz, int ir, double z0, const Add& add) {
 Responses BandResponses(const ElementMesh& m) {
   const auto number = [&m](int entry) { return m.unknown(entry); };
   const int w = m.Bandwidth(0, m.nz - 1, number);
-  std::vector<double> band, loads;
-  BandCholesky k(m.free, w, &band);
+  std::vector<double> loads;
+  BandCholesky k(m.free, w);
   Assemble(m, 0, m.nz - 1, number, &k);
   if (!k.Factor()) {
     throw UserError("axial coupling: the part's stiffness is not positive definite");
@@ -484,8 +372,7 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
   };
   const int n_local = (s + 1) * line;
   const int w = m.Bandwidth(0, s, local);
-  std::vector<double> group_band, inside_band, lines_band;
-  BandCholesky kg(n_local, w, &group_band);
+  BandCholesky kg(n_local, w);
   Assemble(m, 0, s, local, &kg);
   const auto kv = [&](int i, int j) {
     if (i < j) std::swap(i, j);
@@ -493,7 +380,7 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
   };
   // The inside, stations 1 .. s - 1.
   const int ni = (s - 1) * line;
-  BandCholesky c(ni, w, &inside_band);
+  BandCholesky c(ni, w);
   for (int i = 0; i < ni; ++i) {
     for (int j = std::max(0, i - w); j <= i; ++j) c.at(i, j) = kg.at(i + line, j + line);
   }
@@ -556,7 +443,7 @@ Responses CondensedResponses(const ElementMesh& m, int k) {
 
   // The lines' system: each group's S on its two lines, band 2 lines wide.
   const int n_lines = (groups + 1) * line;
-  BandCholesky sg(n_lines, 2 * line - 1, &lines_band, line);
+  BandCholesky sg(n_lines, 2 * line - 1, line);
   const Eigen::MatrixXd s_ll = [&] {
     Eigen::MatrixXd a(line, line);
     for (int i = 0; i < line; ++i) {

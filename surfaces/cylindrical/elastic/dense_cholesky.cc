@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "surfaces/cylindrical/fixed_lane_dot.h"
 #include "framework/core/simd_clones.h"
+#include "surfaces/cylindrical/elastic/band_cholesky.h"
+#include "surfaces/cylindrical/fixed_lane_dot.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -48,41 +49,6 @@ FITFEEL_SIMD_CLONES void SolveLowerThenTransposed(const double* __restrict l, Ei
   }
 }
 
-// Factors in place the lower triangle of the leading m x m block of the column-major l (leading
-// dimension ld), column by column (left-looking): each column takes the contiguous columns before
-// it as whole-segment updates, which vectorise where Eigen's blocked LLT spends these sizes on
-// blocking and on copies of the submatrix. Element-wise updates in a fixed order: the same
-// factor on every instruction set. False when a pivot is not positive.
-FITFEEL_SIMD_CLONES bool FactorLower(double* __restrict l, Eigen::Index ld, Eigen::Index m) {
-  FITFEEL_NO_FP_CONTRACT
-  for (Eigen::Index j = 0; j < m; ++j) {
-    double* __restrict column = l + j * ld;
-    // Four columns per pass over this one (a quarter of its loads and stores), each entry still
-    // taking them one after the other.
-    Eigen::Index k = 0;
-    for (; k + 4 <= j; k += 4) {
-      const double* __restrict d0 = l + k * ld;
-      const double* __restrict d1 = d0 + ld;
-      const double* __restrict d2 = d1 + ld;
-      const double* __restrict d3 = d2 + ld;
-      const double a0 = d0[j], a1 = d1[j], a2 = d2[j], a3 = d3[j];
-      for (Eigen::Index i = j; i < m; ++i) {
-        column[i] = column[i] - a0 * d0[i] - a1 * d1[i] - a2 * d2[i] - a3 * d3[i];
-      }
-    }
-    for (; k < j; ++k) {
-      const double* __restrict done = l + k * ld;
-      const double ljk = done[j];
-      for (Eigen::Index i = j; i < m; ++i) column[i] -= ljk * done[i];
-    }
-    if (!(column[j] > 0.0)) return false;
-    const double pivot = std::sqrt(column[j]);
-    column[j] = pivot;
-    for (Eigen::Index i = j + 1; i < m; ++i) column[i] /= pivot;
-  }
-  return true;
-}
-
 }  // namespace
 
 bool DenseCholesky::Compute(const Eigen::MatrixXd& a) {
@@ -102,7 +68,7 @@ bool DenseCholesky::Factor(Eigen::Index m, const Entry& entry) {
   for (Eigen::Index j = 0; j < m; ++j) {
     for (Eigen::Index i = j; i < m; ++i) l_(i, j) = entry(i, j);
   }
-  const bool ok = FactorLower(l_.data(), ld, m);
+  const bool ok = FactorBand(l_.data(), ld, m, m - 1, 0);  // the whole band
   size_ = ok ? m : 0;  // a failed factor holds nothing usable
   return ok;
 }

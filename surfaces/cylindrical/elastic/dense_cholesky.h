@@ -4,7 +4,6 @@
 
 #include <Eigen/Core>
 
-
 namespace fitfeel::cylindrical {
 
 // Cholesky factor L (A = L L^T) of a small dense symmetric positive definite matrix, as the
@@ -14,8 +13,8 @@ namespace fitfeel::cylindrical {
 // factor is updated by rows (Append, Remove: O(m^2) each instead of O(m^3 / 3) for a new
 // factorization), a new factorization reads the principal submatrix in place, and the form is a
 // forward substitution over contiguous columns (Eigen's LLT and its triangular solve for two
-// right-hand sides spend much of these sizes on blocking and copies, measured in a prepare).
-// Prepare-time only.
+// right-hand sides spend much of these sizes on blocking and copies, measured in a prepare). A new
+// factorization is band_cholesky.h's FactorBand over the whole band. Prepare-time only.
 class DenseCholesky {
  public:
   // Factors `a` (only its lower triangle is read). False when a pivot is not positive: the
