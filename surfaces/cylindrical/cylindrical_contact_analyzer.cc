@@ -11,16 +11,16 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/fixed_lane_dot.h"
 #include "framework/core/least_norm.h"
 #include "framework/core/number_text.h"
 #include "framework/core/parallel.h"
 #include "framework/core/simd_clones.h"
 #include "framework/model/convex_polygon.h"
-#include "framework/model/grid_rows.h"
-#include "surfaces/cylindrical/elastic/section_contact.h"
+#include "surfaces/common/grid_rows.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
 #include "surfaces/cylindrical/elastic_options.h"
+#include "surfaces/cylindrical/fixed_lane_dot.h"
 
 namespace fitfeel::cylindrical {
 namespace {

@@ -1,4 +1,4 @@
-#include "framework/model/grid_rows.h"
+#include "surfaces/common/grid_rows.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// Test helpers for a tabulated analyzer (framework/model/column_table_analyzer.h) against the scan
+// Test helpers for a tabulated analyzer (surfaces/common/column_table_analyzer.h) against the scan
 // it tabulates: the scan is the model, the table only changes how fast it is evaluated.
 
 #include <algorithm>
@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "framework/model/column_response_table.h"
 #include "framework/model/contact_analyzer.h"
+#include "surfaces/common/column_response_table.h"
 
 namespace fitfeel::test_support {
 

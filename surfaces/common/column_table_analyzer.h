@@ -4,8 +4,8 @@
 
 #include <Eigen/Core>
 
-#include "framework/model/column_response_table.h"
 #include "framework/model/contact_analyzer.h"
+#include "surfaces/common/column_response_table.h"
 
 namespace fitfeel {
 

@@ -2,7 +2,6 @@
 
 #include <vector>
 
-#include "framework/core/export.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
 
@@ -13,6 +12,6 @@ namespace fitfeel {
 // grid spans the part's mating length. Analyzers map the rows of two parts onto each other
 // through these. Throws UserError naming the part if the rows are not in increasing axial order,
 // do not match the row count, or a one-row grid has no length.
-FITFEEL_API std::vector<double> RowEdges(const PartSpec& part, const SurfaceGrid& grid);
+std::vector<double> RowEdges(const PartSpec& part, const SurfaceGrid& grid);
 
 }  // namespace fitfeel

@@ -1,4 +1,4 @@
-#include "framework/model/column_response_table.h"
+#include "surfaces/common/column_response_table.h"
 
 #include <algorithm>
 #include <cmath>

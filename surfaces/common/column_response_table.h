@@ -6,7 +6,6 @@
 
 #include <Eigen/Core>
 
-#include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/texture_contact.h"
 
@@ -48,7 +47,7 @@ struct ColumnResponse {
 // the cells' lines mean - gap + cosine * x: the one that is largest at x_hi and the steepest (exact
 // when the upper envelope of the lines beyond x_hi has at most these two pieces, as with equal
 // gaps or equal cosines; otherwise below the exact value by less than the envelope's bend).
-class FITFEEL_API ColumnResponseTable {
+class ColumnResponseTable {
  public:
   ColumnResponseTable() = default;
   // Throws std::invalid_argument for fewer than 2 samples or a non-positive entry count.
