@@ -37,6 +37,7 @@ VariationGenerator::~VariationGenerator() = default;
 ContactAnalyzer::~ContactAnalyzer() = default;
 ResistanceLaw::~ResistanceLaw() = default;
 SurfaceType::~SurfaceType() = default;
+SurfaceOptions::~SurfaceOptions() = default;
 
 GridShape Discretizer::Shape(const PartSpec& part, const Resolution& resolution) const {
   if (!part.geometry) throw UserError("part '" + part.name + "' has no geometry to discretize");
@@ -72,9 +73,9 @@ SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceG
   return sms;
 }
 
-void VariationGenerator::Configure(const ConfigNode& options) { DoConfigure(options); }
+void VariationGenerator::Configure(const SurfaceOptions& options) { DoConfigure(options); }
 
-void VariationGenerator::DoConfigure(const ConfigNode& options) { options.ExpectOnlyKeys({}); }
+void VariationGenerator::DoConfigure(const SurfaceOptions&) {}
 
 void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                               const PartSpec& outer, const SkinModelShape& outer_sms,
@@ -196,9 +197,19 @@ void SurfaceType::CheckPair(const PartSpec& inner, const PartSpec& outer,
 
 void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode&) const {}
 
-void SurfaceType::CheckOptions(const ConfigNode& options) const { DoCheckOptions(options); }
+std::shared_ptr<const SurfaceOptions> SurfaceType::ParseOptions(const ConfigNode& options) const {
+  if (!options.is_map()) options.Fail("a map of surface-specific options", options.Describe());
+  options.Keys();  // no repeated keys
+  auto parsed = DoParseOptions(options);
+  FITFEEL_DEMAND(parsed != nullptr);
+  return parsed;
+}
 
-void SurfaceType::DoCheckOptions(const ConfigNode& options) const { options.ExpectOnlyKeys({}); }
+std::shared_ptr<const SurfaceOptions> SurfaceType::DoParseOptions(
+    const ConfigNode& options) const {
+  options.ExpectOnlyKeys({});
+  return std::make_shared<const SurfaceOptions>();
+}
 
 double SurfaceType::EstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
                                            const GridShape& outer, double depth_steps) const {

@@ -43,9 +43,10 @@ class FITFEEL_API SurfaceType {
   // Checks the pair as a whole once both parts are parsed (e.g. the nominal sizes agree);
   // throws ScenarioError at `pair_node`.
   void CheckPair(const PartSpec& inner, const PartSpec& outer, const ConfigNode& pair_node) const;
-  // Checks the scenario's `model.options` map (surface-specific model switches) at load time;
-  // throws ScenarioError at the offending key.
-  void CheckOptions(const ConfigNode& options) const;
+  // Parses and checks the scenario's `model.options` map (surface-specific model switches) once,
+  // when the scene loads; throws ScenarioError at the offending key. The result, never null, is
+  // the scene's ModelSettings::options, which the surface's objects read (OptionsAs).
+  std::shared_ptr<const SurfaceOptions> ParseOptions(const ConfigNode& options) const;
 
   // Form characteristics this surface type models; others in a scenario are refused.
   virtual std::vector<FormCharacteristic> form_characteristics() const = 0;
@@ -126,8 +127,8 @@ class FITFEEL_API SurfaceType {
   virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                            const ConfigNode& pair_node) const;
   virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
-  // Default: the surface takes no options, so any key is unknown.
-  virtual void DoCheckOptions(const ConfigNode& options) const;
+  // Default: the surface takes no options, so any key is unknown (a plain SurfaceOptions).
+  virtual std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const;
   // Default: an empty mesh (no render mesh for this surface type).
   virtual RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const;
   // Default: 0 (the per-cell estimate covers the surface's laws).

@@ -18,8 +18,8 @@
 #include "framework/model/convex_polygon.h"
 #include "surfaces/common/grid_rows.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 #include "surfaces/cylindrical/elastic/section_contact.h"
-#include "surfaces/cylindrical/elastic_options.h"
 #include "surfaces/cylindrical/fixed_lane_dot.h"
 
 namespace fitfeel::cylindrical {
@@ -207,7 +207,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         throw UserError("the elastic model needs equally spaced columns");
       }
     }
-    const ElasticOptions options = ElasticOptionsOf(settings);
+    const ElasticOptions options = CylindricalOptionsOf(settings).elastic;
     block_ = 1;
     while (n_ / block_ > options.columns || n_ % block_ != 0 || (n_ / block_) % 2 != 0) {
       ++block_;

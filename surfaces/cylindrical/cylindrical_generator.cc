@@ -245,19 +245,10 @@ std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g,
 
 }  // namespace
 
-void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
-  options.ExpectOnlyKeys(
-      {"size_draw", "size_limit", "tilt", "section", "columns", "axial_coupling", "axial_orders"});
-  ParseElasticOptions(options);  // the elastic law's keys, checked here so that validate sees them
-  if (auto node = options.Find("size_draw")) {
-    options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart
-                                                                               : SizeDraw::kPerCell;
-  }
-  if (auto node = options.Find("size_limit")) {
-    options_.size_limit = node->AsOneOf({"two_point", "radial"}) == "two_point"
-                              ? SizeLimit::kTwoPoint
-                              : SizeLimit::kRadial;
-  }
+void CylindricalVariationGenerator::DoConfigure(const SurfaceOptions& options) {
+  const CylindricalOptions& parsed = OptionsAs<CylindricalOptions>(options);
+  options_.size_draw = parsed.size_draw;
+  options_.size_limit = parsed.size_limit;
 }
 
 SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,

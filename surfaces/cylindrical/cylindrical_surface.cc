@@ -12,6 +12,7 @@
 #include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 #include "surfaces/cylindrical/elastic_cost.h"
 
 namespace fitfeel::cylindrical {
@@ -52,16 +53,16 @@ std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view na
   return nullptr;
 }
 
-void CylindricalSurface::DoCheckOptions(const ConfigNode& options) const {
-  CylindricalVariationGenerator generator;
-  generator.Configure(options);
+std::shared_ptr<const SurfaceOptions> CylindricalSurface::DoParseOptions(
+    const ConfigNode& options) const {
+  return ParseCylindricalOptions(options);
 }
 
 double CylindricalSurface::DoEstimatePrepareSeconds(const ModelSettings& model,
                                                     const GridShape& inner, const GridShape& outer,
                                                     double depth_steps) const {
   if (model.law != "elastic") return 0.0;
-  return ElasticPrepareSeconds(ElasticOptionsOf(model), std::max(inner.rows, outer.rows),
+  return ElasticPrepareSeconds(CylindricalOptionsOf(model).elastic, std::max(inner.rows, outer.rows),
                                std::max(inner.columns, outer.columns), depth_steps);
 }
 

@@ -26,8 +26,8 @@ class CylindricalSurface final : public SurfaceType {
                    const ConfigNode& pair_node) const override;
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
   RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const override;
-  // model.options: the generator's keys (size_draw, size_limit), checked by configuring one.
-  void DoCheckOptions(const ConfigNode& options) const override;
+  // model.options: the generator's keys and the elastic law's (CylindricalOptions).
+  std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const override;
   // The elastic law's worst case (elastic_cost.h); the other laws' prepare is the cells'.
   double DoEstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
                                   const GridShape& outer, double depth_steps) const override;

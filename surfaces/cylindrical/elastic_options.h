@@ -1,12 +1,5 @@
 #pragma once
 
-#include <limits>
-
-#include "framework/core/config_node.h"
-#include "framework/core/quantity.h"
-#include "surfaces/cylindrical/elastic/axial_coupling.h"
-#include "framework/model/model_settings.h"
-
 namespace fitfeel::cylindrical {
 
 // The elastic model's keys under `model.options` (law `elastic`):
@@ -38,38 +31,5 @@ struct ElasticOptions {
   static constexpr int kDefaultAxialOrders = 6;
   int axial_orders = kDefaultAxialOrders;
 };
-
-inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
-  ElasticOptions o;
-  if (auto node = options.Find("tilt")) {
-    const std::string text = node->AsString();
-    if (text == "fixed") {
-      o.tilt = false;
-    } else if (text != "free") {
-      o.tilt_stiffness =
-          node->AsQuantityIn(Dimension::kAngularStiffness, 0.0, std::numeric_limits<double>::max());
-    }
-  }
-  if (auto node = options.Find("section")) {
-    o.plane_strain = node->AsOneOf({"plane_stress", "plane_strain"}) == "plane_strain";
-  }
-  if (auto node = options.Find("columns")) {
-    o.columns = static_cast<int>(
-        node->AsInteger(ElasticOptions::kFewestColumns, ElasticOptions::kMostColumns));
-    if (o.columns % 2 != 0) {
-      node->Fail("an even number of columns", node->Describe());
-    }
-  }
-  if (auto node = options.Find("axial_coupling")) o.axial_coupling = node->AsBool();
-  if (auto node = options.Find("axial_orders")) {
-    o.axial_orders = static_cast<int>(node->AsInteger(0, AxialCoupling::kHighestOrder));
-  }
-  return o;
-}
-
-// The scene's elastic options: its `model.options`, or the defaults without any.
-inline ElasticOptions ElasticOptionsOf(const ModelSettings& settings) {
-  return settings.extra ? ParseElasticOptions(*settings.extra) : ElasticOptions{};
-}
 
 }  // namespace fitfeel::cylindrical

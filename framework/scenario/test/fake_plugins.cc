@@ -67,8 +67,11 @@ class FakeCylinder : public SurfaceType {
     }
   }
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view) const override { return nullptr; }
-  void DoCheckOptions(const ConfigNode& options) const override {
+  std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const override {
     options.ExpectOnlyKeys({"tabulate"});
+    auto parsed = std::make_shared<FakeOptions>();
+    if (auto tabulate = options.Find("tabulate")) parsed->tabulate = tabulate->AsBool();
+    return parsed;
   }
 };
 
