@@ -289,4 +289,53 @@ SizeRange TwoPointSizes(const CylinderSamples& s) {
   return out;
 }
 
+CylinderSamples SamplesFromGrid(double nominal_radius, const SurfaceGrid& grid,
+                                const Eigen::VectorXd& deviation) {
+  if (deviation.size() != grid.size() || grid.row_position.size() != grid.rows ||
+      grid.column_angle.size() != grid.columns) {
+    throw std::invalid_argument("skin model shape: grid and variation sizes disagree");
+  }
+  CylinderSamples s;
+  s.nominal_radius = nominal_radius;
+  s.y = grid.row_position;
+  s.theta = grid.column_angle;
+  s.deviation.resize(grid.rows, grid.columns);
+  for (int i = 0; i < grid.rows; ++i)
+    for (int j = 0; j < grid.columns; ++j) s.deviation(i, j) = deviation(grid.index(i, j));
+  return s;
+}
+
+double EvaluateCylinderForm(FormCharacteristic characteristic, const CylinderSamples& s) {
+  switch (characteristic) {
+    case FormCharacteristic::kRoundness: {
+      if (s.theta.size() < 4) return 0.0;
+      double worst = 0.0;
+      const Eigen::Matrix2Xd directions = s.Directions();
+      for (long i = 0; i < s.y.size(); ++i) {
+        worst = std::max(
+            worst, MinimumZoneRoundness(s.SectionPoints(static_cast<int>(i), directions)).value);
+      }
+      return worst;
+    }
+    case FormCharacteristic::kGeneratrixStraightness: {
+      double worst = 0.0;
+      Eigen::Matrix2Xd profile(2, s.y.size());
+      profile.row(0) = s.y.transpose();
+      for (long j = 0; j < s.theta.size(); ++j) {
+        profile.row(1) = s.deviation.col(j).transpose();
+        worst = std::max(worst, ProfileStraightness(profile));
+      }
+      return worst;
+    }
+    case FormCharacteristic::kAxisStraightness:
+      if (s.theta.size() < 3) return 0.0;
+      return AxisStraightness(s.y, SectionCentres(s));
+    case FormCharacteristic::kCylindricity:
+      return MinimumZoneCylindricity(s).value;
+    default:
+      throw std::invalid_argument("a cylinder has no characteristic '" + ToString(characteristic) +
+                                  "'");
+  }
+}
+
 }  // namespace fitfeel::metrology

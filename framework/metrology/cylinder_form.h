@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 
 #include "framework/core/export.h"
+#include "framework/model/gps_spec.h"
+#include "framework/model/skin_model_shape.h"
 
 namespace fitfeel::metrology {
 
@@ -64,5 +66,16 @@ struct SizeRange {
 // nominal one: v(i, j) + v(i, j + n/2). Needs an even column count with theta(j + n/2) =
 // theta(j) + pi; throws std::invalid_argument otherwise.
 FITFEEL_API SizeRange TwoPointSizes(const CylinderSamples& samples);
+
+// The grid and per-cell radial deviations of a cylindrical skin model shape as samples.
+FITFEEL_API CylinderSamples SamplesFromGrid(double nominal_radius, const SurfaceGrid& grid,
+                                            const Eigen::VectorXd& deviation);
+
+// One form characteristic of a cylinder (roundness: the worst section; generatrix straightness:
+// the worst column, as a 2-D profile (y, v); axis straightness: least-squares section centres in a
+// minimum cylinder; cylindricity: minimum zone). Throws std::invalid_argument for a characteristic
+// a cylinder does not have.
+FITFEEL_API double EvaluateCylinderForm(FormCharacteristic characteristic,
+                                        const CylinderSamples& samples);
 
 }  // namespace fitfeel::metrology

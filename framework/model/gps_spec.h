@@ -87,12 +87,18 @@ inline bool PoissonInRange(double nu) { return nu >= kMinPoisson && nu < kMaxPoi
 class FITFEEL_API Geometry {
  public:
   virtual ~Geometry();
-  // Nominal area of the mating surface that carries a skin model shape, m^2.
-  virtual double nominal_area() const = 0;
-  // Length of the mating surface along the direction of the constrained motion, m.
-  virtual double mating_length() const = 0;
+  // Nominal area of the mating surface that carries a skin model shape, m^2 (finite, >= 0).
+  double nominal_area() const;
+  // Length of the mating surface along the direction of the constrained motion, m (finite,
+  // >= 0).
+  double mating_length() const;
   // One line for summaries, e.g. "cylinder d=20 mm l=40 mm".
-  virtual std::string Describe() const = 0;
+  std::string Describe() const;
+
+ protected:
+  virtual double DoNominalArea() const = 0;
+  virtual double DoMatingLength() const = 0;
+  virtual std::string DoDescribe() const = 0;
 };
 
 // Everything the scenario says about one part.

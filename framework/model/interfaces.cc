@@ -37,6 +37,21 @@ VariationGenerator::~VariationGenerator() = default;
 ContactAnalyzer::~ContactAnalyzer() = default;
 ResistanceLaw::~ResistanceLaw() = default;
 SurfaceType::~SurfaceType() = default;
+SurfaceOptions::~SurfaceOptions() = default;
+
+double Geometry::nominal_area() const {
+  const double area = DoNominalArea();
+  FITFEEL_DEMAND(area >= 0.0 && std::isfinite(area));
+  return area;
+}
+
+double Geometry::mating_length() const {
+  const double length = DoMatingLength();
+  FITFEEL_DEMAND(length >= 0.0 && std::isfinite(length));
+  return length;
+}
+
+std::string Geometry::Describe() const { return DoDescribe(); }
 
 GridShape Discretizer::Shape(const PartSpec& part, const Resolution& resolution) const {
   if (!part.geometry) throw UserError("part '" + part.name + "' has no geometry to discretize");
@@ -72,9 +87,9 @@ SkinModelShape VariationGenerator::Generate(const PartSpec& part, const SurfaceG
   return sms;
 }
 
-void VariationGenerator::Configure(const ConfigNode& options) { DoConfigure(options); }
+void VariationGenerator::Configure(const SurfaceOptions& options) { DoConfigure(options); }
 
-void VariationGenerator::DoConfigure(const ConfigNode& options) { options.ExpectOnlyKeys({}); }
+void VariationGenerator::DoConfigure(const SurfaceOptions&) {}
 
 void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                               const PartSpec& outer, const SkinModelShape& outer_sms,
@@ -182,6 +197,80 @@ double ResistanceLaw::DoPressurePerInterference() const {
   throw UnsupportedError("this resistance law reports no contact pressure per unit interference");
 }
 
+namespace {
+
+// The pair a surface type's meshes and lead-in are made for: the inner part, then the outer one,
+// each with its parsed geometry.
+void CheckInnerThenOuter(const PartSpec& inner, const PartSpec& outer, const char* what) {
+  if (inner.role != Role::kInner || outer.role != Role::kOuter || inner.geometry == nullptr ||
+      outer.geometry == nullptr) {
+    throw UserError(std::string(what) +
+                    " needs the inner part, then the outer part, each with its geometry");
+  }
+}
+
+}  // namespace
+
+std::vector<FormCharacteristic> SurfaceType::form_characteristics() const {
+  return DoFormCharacteristics();
+}
+
+std::vector<SurfaceType::DeclaredCharacteristic> SurfaceType::declared_characteristics() const {
+  std::vector<DeclaredCharacteristic> declared = DoDeclaredCharacteristics();
+  for (const DeclaredCharacteristic& d : declared) FITFEEL_DEMAND(!d.name.empty() && d.max >= 0.0);
+  return declared;
+}
+
+std::vector<SurfaceType::DeclaredCharacteristic> SurfaceType::DoDeclaredCharacteristics() const {
+  return {};
+}
+
+std::vector<std::string> SurfaceType::law_names() const {
+  std::vector<std::string> names = DoLawNames();
+  for (const std::string& name : names) FITFEEL_DEMAND(!name.empty());
+  return names;
+}
+
+bool SurfaceType::renders_forces() const { return DoRendersForces(); }
+
+bool SurfaceType::DoRendersForces() const { return true; }
+
+std::string SurfaceType::limitation() const {
+  std::string text = DoLimitation();
+  FITFEEL_DEMAND(DoRendersForces() || !text.empty());
+  return text;
+}
+
+std::string SurfaceType::DoLimitation() const { return {}; }
+
+bool SurfaceType::rotational() const { return DoRotational(); }
+
+bool SurfaceType::DoRotational() const { return false; }
+
+std::unique_ptr<Discretizer> SurfaceType::MakeDiscretizer() const { return DoMakeDiscretizer(); }
+
+std::unique_ptr<VariationGenerator> SurfaceType::MakeVariationGenerator() const {
+  return DoMakeVariationGenerator();
+}
+
+std::unique_ptr<ContactAnalyzer> SurfaceType::MakeContactAnalyzer() const {
+  return DoMakeContactAnalyzer();
+}
+
+CoarseMeshes SurfaceType::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+  CheckInnerThenOuter(inner, outer, "coarse meshes");
+  return DoMakeCoarseMeshes(inner, outer);
+}
+
+CoarseMeshes SurfaceType::DoMakeCoarseMeshes(const PartSpec&, const PartSpec&) const { return {}; }
+
+LeadIn SurfaceType::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+  CheckInnerThenOuter(inner, outer, "a lead-in");
+  return DoMakeLeadIn(inner, outer);
+}
+
+LeadIn SurfaceType::DoMakeLeadIn(const PartSpec&, const PartSpec&) const { return {}; }
+
 std::shared_ptr<const Geometry> SurfaceType::ParseGeometry(const PartSpec& part,
                                                            const ConfigNode& geometry) const {
   auto parsed = DoParseGeometry(part, geometry);
@@ -196,9 +285,19 @@ void SurfaceType::CheckPair(const PartSpec& inner, const PartSpec& outer,
 
 void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode&) const {}
 
-void SurfaceType::CheckOptions(const ConfigNode& options) const { DoCheckOptions(options); }
+std::shared_ptr<const SurfaceOptions> SurfaceType::ParseOptions(const ConfigNode& options) const {
+  if (!options.is_map()) options.Fail("a map of surface-specific options", options.Describe());
+  options.Keys();  // no repeated keys
+  auto parsed = DoParseOptions(options);
+  FITFEEL_DEMAND(parsed != nullptr);
+  return parsed;
+}
 
-void SurfaceType::DoCheckOptions(const ConfigNode& options) const { options.ExpectOnlyKeys({}); }
+std::shared_ptr<const SurfaceOptions> SurfaceType::DoParseOptions(
+    const ConfigNode& options) const {
+  options.ExpectOnlyKeys({});
+  return std::make_shared<const SurfaceOptions>();
+}
 
 double SurfaceType::EstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
                                            const GridShape& outer, double depth_steps) const {

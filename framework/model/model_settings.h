@@ -1,11 +1,11 @@
 #pragma once
 
-#include <optional>
+#include <memory>
 #include <string>
 
-#include "framework/core/config_node.h"
 #include "framework/model/discretizer.h"
 #include "framework/model/friction.h"
+#include "framework/model/surface_options.h"
 #include "framework/model/variation_generator.h"
 
 namespace fitfeel {
@@ -27,7 +27,9 @@ struct ModelSettings {
   Resolution resolution;               // m x n, or auto
   TextureMode texture = TextureMode::kExpected;
   double depth_step = 0.0;             // tabulation step along the mating axis, m (0 = auto)
-  std::optional<ConfigNode> extra;     // surface-specific keys under model.options, if any
+  // The surface type's `model.options`, parsed at load (SurfaceType::ParseOptions); null: the
+  // scene gave none, and the surface's objects take their defaults (OptionsAs).
+  std::shared_ptr<const SurfaceOptions> options;
 };
 
 // The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in

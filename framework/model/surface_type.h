@@ -30,7 +30,8 @@ struct CharacteristicCheck {
 
 // What a surface plugin registers: one kind of mating surface (cylindrical, planar, ...) with the
 // four model interfaces of the design card. Objects it makes keep their plugin library loaded (the
-// registry never unloads a library).
+// registry never unloads a library). Every public method is non-virtual: it checks its arguments
+// (and what the plugin returns) and calls the protected virtual Do... that a plugin overrides.
 class FITFEEL_API SurfaceType {
  public:
   virtual ~SurfaceType();
@@ -43,12 +44,13 @@ class FITFEEL_API SurfaceType {
   // Checks the pair as a whole once both parts are parsed (e.g. the nominal sizes agree);
   // throws ScenarioError at `pair_node`.
   void CheckPair(const PartSpec& inner, const PartSpec& outer, const ConfigNode& pair_node) const;
-  // Checks the scenario's `model.options` map (surface-specific model switches) at load time;
-  // throws ScenarioError at the offending key.
-  void CheckOptions(const ConfigNode& options) const;
+  // Parses and checks the scenario's `model.options` map (surface-specific model switches) once,
+  // when the scene loads; throws ScenarioError at the offending key. The result, never null, is
+  // the scene's ModelSettings::options, which the surface's objects read (OptionsAs).
+  std::shared_ptr<const SurfaceOptions> ParseOptions(const ConfigNode& options) const;
 
   // Form characteristics this surface type models; others in a scenario are refused.
-  virtual std::vector<FormCharacteristic> form_characteristics() const = 0;
+  std::vector<FormCharacteristic> form_characteristics() const;
   // Tolerance characteristics of its own that the surface type reads from a part's `form:` map
   // beside the ISO 1101 ones (into FormSpec::declared): a zone limit in [0, max] with its
   // dimension. Limits that depend on the geometry are the surface type's to check in
@@ -58,15 +60,16 @@ class FITFEEL_API SurfaceType {
     Dimension dimension;
     double max;
   };
-  virtual std::vector<DeclaredCharacteristic> declared_characteristics() const { return {}; }
-  // Law names this surface offers; the first is the default.
-  virtual std::vector<std::string> law_names() const = 0;
+  std::vector<DeclaredCharacteristic> declared_characteristics() const;
+  // Law names this surface offers; the first is the default. None when it renders no forces.
+  std::vector<std::string> law_names() const;
   // False for a surface type that can be discretised but has no resistance law yet (thread stub);
-  // `limitation()` then says why, and running a scene with it is refused with that message.
-  virtual bool renders_forces() const { return true; }
-  virtual std::string limitation() const { return {}; }
+  // `limitation()` then says why (never empty then), and running a scene with it is refused with
+  // that message.
+  bool renders_forces() const;
+  std::string limitation() const;
   // The constrained motion: translation along the mating axis, or rotation about it / the centre.
-  virtual bool rotational() const { return false; }
+  bool rotational() const;
 
   // Evaluates every characteristic of `part`'s spec (size limits, each form tolerance) on a
   // generated skin model shape, as a metrologist would (minimum zone where ISO defaults to it).
@@ -74,9 +77,12 @@ class FITFEEL_API SurfaceType {
   std::vector<CharacteristicCheck> EvaluateCharacteristics(const PartSpec& part,
                                                            const SkinModelShape& sms) const;
 
-  virtual std::unique_ptr<Discretizer> MakeDiscretizer() const = 0;
-  virtual std::unique_ptr<VariationGenerator> MakeVariationGenerator() const = 0;
-  virtual std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const = 0;
+  // New objects of the surface's model classes; null when the surface type provides none (a
+  // test double), which whoever prepares a scene refuses. A surface that cannot make one yet
+  // throws UnsupportedError saying why.
+  std::unique_ptr<Discretizer> MakeDiscretizer() const;
+  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const;
+  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const;
   // Throws UserError naming the offered laws if `name` is not one of them.
   std::unique_ptr<ResistanceLaw> MakeLaw(std::string_view name) const;
 
@@ -90,29 +96,20 @@ class FITFEEL_API SurfaceType {
                                 const GridShape& outer, double depth_steps) const;
 
   // The parts' coarse meshes for collision in free motion (the positioning stage's FCL query),
-  // in the frames CoarseMeshes describes; built once before a run, never in the tick. Default:
-  // empty meshes, meaning this surface type models no collision in free motion (the moving part
-  // passes through the fixed one without resistance until the constrained stage takes over), so
-  // that a surface plugin without meshes still runs. Throws UserError if the parts cannot be
-  // meshed.
-  virtual CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
-    (void)inner;
-    (void)outer;
-    return {};
-  }
+  // in the frames CoarseMeshes describes; built once before a run, never in the tick. Empty
+  // meshes mean this surface type models no collision in free motion (the moving part passes
+  // through the fixed one without resistance until the constrained stage takes over). Throws
+  // UserError unless `inner` and `outer` are the inner and the outer part, each with its
+  // geometry, or if the parts cannot be meshed.
+  CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const;
 
   // The lead-in of the pair (LeadIn, described with the inner part moving; the positioning stage
   // uses it for either part moving): the free region its chamfers leave an aligned moving part,
   // in which the positioning stage guides the part as a god object, and the depth at which the
-  // constrained stage takes over. Built once before a run. Default:
-  // empty (no lead-in: free motion collides the coarse meshes, if any, and the hand-over asks
-  // for the part near the axis at the entrance). Throws UserError if the parts cannot be
-  // profiled.
-  virtual LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
-    (void)inner;
-    (void)outer;
-    return {};
-  }
+  // constrained stage takes over. Built once before a run. Empty: no lead-in (free motion
+  // collides the coarse meshes, if any, and the hand-over asks for the part near the axis at the
+  // entrance). Throws UserError as MakeCoarseMeshes does, or if the parts cannot be profiled.
+  LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const;
 
   // The render mesh of `part`'s mating surface on its grid, for a viewer (RenderMesh says the
   // frames); not for the tick. Empty when the surface type provides none (the default): a viewer
@@ -123,19 +120,36 @@ class FITFEEL_API SurfaceType {
  protected:
   virtual std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                           const ConfigNode& geometry) const = 0;
+  // Default: no check of the pair.
   virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                            const ConfigNode& pair_node) const;
-  virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
-  // Default: the surface takes no options, so any key is unknown.
-  virtual void DoCheckOptions(const ConfigNode& options) const;
-  // Default: an empty mesh (no render mesh for this surface type).
-  virtual RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const;
-  // Default: 0 (the per-cell estimate covers the surface's laws).
-  virtual double DoEstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
-                                          const GridShape& outer, double depth_steps) const;
+  // Default: the surface takes no options, so any key is unknown (a plain SurfaceOptions).
+  virtual std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const;
+  virtual std::vector<FormCharacteristic> DoFormCharacteristics() const = 0;
+  // Default: none.
+  virtual std::vector<DeclaredCharacteristic> DoDeclaredCharacteristics() const;
+  virtual std::vector<std::string> DoLawNames() const = 0;
+  // Default: true, with no limitation.
+  virtual bool DoRendersForces() const;
+  virtual std::string DoLimitation() const;
+  // Default: false (a translation along the mating axis).
+  virtual bool DoRotational() const;
   // Default: throws UnsupportedError (a surface type without a metrology binding yet).
   virtual std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const;
+  virtual std::unique_ptr<Discretizer> DoMakeDiscretizer() const = 0;
+  virtual std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const = 0;
+  virtual std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const = 0;
+  virtual std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const = 0;
+  // Default: 0 (the per-cell estimate covers the surface's laws).
+  virtual double DoEstimatePrepareSeconds(const ModelSettings& model, const GridShape& inner,
+                                          const GridShape& outer, double depth_steps) const;
+  // Default: empty meshes, so that a surface plugin without meshes still runs.
+  virtual CoarseMeshes DoMakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const;
+  // Default: no lead-in.
+  virtual LeadIn DoMakeLeadIn(const PartSpec& inner, const PartSpec& outer) const;
+  // Default: an empty mesh (no render mesh for this surface type).
+  virtual RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const;
 };
 
 }  // namespace fitfeel

@@ -2,10 +2,10 @@
 
 #include <random>
 
-#include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
+#include "framework/model/surface_options.h"
 
 namespace fitfeel {
 
@@ -42,13 +42,14 @@ class FITFEEL_API VariationGenerator {
   virtual ~VariationGenerator();
   SkinModelShape Generate(const PartSpec& part, const SurfaceGrid& grid, TextureMode texture,
                           Rng& rng) const;
-  // Applies the surface type's keys of the scenario's `model.options` (ModelSettings::extra),
-  // once, before Generate; throws ScenarioError at an unknown or malformed key. Whoever prepares
-  // a scene calls it when `extra` is present. The default accepts no key.
-  void Configure(const ConfigNode& options);
+  // Takes the scene's parsed `model.options` (ModelSettings::options, which the surface type's
+  // ParseOptions made), once, before Generate; whoever prepares a scene calls it when the scene
+  // has options. Throws UserError for another surface type's options.
+  void Configure(const SurfaceOptions& options);
 
  protected:
-  virtual void DoConfigure(const ConfigNode& options);
+  // Default: the generator has no options of its own.
+  virtual void DoConfigure(const SurfaceOptions& options);
   virtual SkinModelShape DoGenerate(const PartSpec& part, const SurfaceGrid& grid,
                                     TextureMode texture, Rng& rng) const = 0;
   // The process models (PartSpec::process) the generator draws from; the default, the paper's.

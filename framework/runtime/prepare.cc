@@ -36,7 +36,7 @@ SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng) {
     throw UnsupportedError("surface type '" + scene.surface_id +
                            "' provides no discretizer or variation generator");
   }
-  if (scene.model.extra) generator->Configure(*scene.model.extra);
+  if (scene.model.options) generator->Configure(*scene.model.options);
   const SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
   const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
   shapes.discretize_seconds = SecondsSince(t);

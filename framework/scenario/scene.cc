@@ -251,11 +251,8 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
     }
   }
   if (std::optional<ConfigNode> options = node.Find("options")) {
-    if (!options->is_map()) options->Fail("a map of surface-specific options", options->Describe());
-    options->Keys();  // no repeated keys
-    Located(*options, "options the surface type accepts",
-            [&] { surface.CheckOptions(*options); });
-    model.extra = *options;
+    model.options = Located(*options, "options the surface type accepts",
+                            [&] { return surface.ParseOptions(*options); });
   }
   return model;
 }

@@ -7,7 +7,7 @@
 #include "framework/core/error.h"
 #include "framework/metrology/circle_fit.h"
 #include "framework/metrology/cylinder_form.h"
-#include "framework/model/surface_of_revolution.h"
+#include "surfaces/common/surface_of_revolution.h"
 
 namespace fitfeel::conical {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "framework/model/gps_spec.h"
 #include "framework/model/skin_model_shape.h"
-#include "framework/model/surface_of_revolution.h"
 #include "framework/model/surface_type.h"
+#include "surfaces/common/surface_of_revolution.h"
 #include "surfaces/conical/conical_geometry.h"
 
 namespace fitfeel::conical {

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "framework/model/surface_of_revolution.h"
+#include "surfaces/common/surface_of_revolution.h"
 #include "surfaces/conical/conical_form.h"
 #include "surfaces/conical/conical_geometry.h"
 

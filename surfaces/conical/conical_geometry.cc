@@ -60,12 +60,12 @@ double ConicalGeometry::DiameterAt(double axial) const {
                                : small_diameter_ + taper_ * (length_ - axial);
 }
 
-double ConicalGeometry::nominal_area() const {
+double ConicalGeometry::DoNominalArea() const {
   // Lateral area of a frustum: pi * mean diameter * slant length.
   return M_PI * mean_diameter() * length_ / std::cos(half_angle_);
 }
 
-std::string ConicalGeometry::Describe() const {
+std::string ConicalGeometry::DoDescribe() const {
   char ratio[32];
   std::snprintf(ratio, sizeof ratio, "1:%.4g", 1.0 / taper_);
   std::string text = std::string(role_ == Role::kInner ? "taper pin" : "taper hole") +

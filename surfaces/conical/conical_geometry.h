@@ -37,9 +37,10 @@ class ConicalGeometry final : public Geometry {
   const Chamfer& chamfer() const { return chamfer_; }
   void set_chamfer(const Chamfer& chamfer) { chamfer_ = chamfer; }
 
-  double nominal_area() const override;
-  double mating_length() const override { return length_; }
-  std::string Describe() const override;
+ protected:
+  double DoNominalArea() const override;
+  double DoMatingLength() const override { return length_; }
+  std::string DoDescribe() const override;
 
  private:
   Role role_;

@@ -7,7 +7,7 @@
 
 #include "framework/core/error.h"
 #include "framework/model/convex_polygon.h"
-#include "framework/model/surface_of_revolution.h"
+#include "surfaces/common/surface_of_revolution.h"
 #include "surfaces/conical/conical_geometry.h"
 
 namespace fitfeel::conical {

@@ -4,9 +4,9 @@
 
 #include <Eigen/Core>
 
-#include "framework/model/column_response_table.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/texture_contact.h"
+#include "surfaces/common/column_response_table.h"
 
 namespace fitfeel::conical {
 

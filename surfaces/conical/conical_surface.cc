@@ -15,20 +15,20 @@
 
 namespace fitfeel::conical {
 
-std::vector<FormCharacteristic> ConicalSurface::form_characteristics() const {
+std::vector<FormCharacteristic> ConicalSurface::DoFormCharacteristics() const {
   return {FormCharacteristic::kAxisStraightness, FormCharacteristic::kGeneratrixStraightness,
           FormCharacteristic::kRoundness};
 }
 
-std::unique_ptr<Discretizer> ConicalSurface::MakeDiscretizer() const {
+std::unique_ptr<Discretizer> ConicalSurface::DoMakeDiscretizer() const {
   return std::make_unique<ConicalDiscretizer>();
 }
 
-std::unique_ptr<VariationGenerator> ConicalSurface::MakeVariationGenerator() const {
+std::unique_ptr<VariationGenerator> ConicalSurface::DoMakeVariationGenerator() const {
   return std::make_unique<ConicalVariationGenerator>();
 }
 
-std::unique_ptr<ContactAnalyzer> ConicalSurface::MakeContactAnalyzer() const {
+std::unique_ptr<ContactAnalyzer> ConicalSurface::DoMakeContactAnalyzer() const {
   return std::make_unique<ConicalContactAnalyzer>();
 }
 
@@ -67,11 +67,12 @@ std::vector<CharacteristicCheck> ConicalSurface::DoEvaluateCharacteristics(
   return EvaluateConeCharacteristics(part, sms);
 }
 
-CoarseMeshes ConicalSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+CoarseMeshes ConicalSurface::DoMakeCoarseMeshes(const PartSpec& inner,
+                                                const PartSpec& outer) const {
   return MakeConicalCoarseMeshes(inner, outer);
 }
 
-LeadIn ConicalSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+LeadIn ConicalSurface::DoMakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
   return MakeConicalLeadIn(inner, outer);
 }
 

@@ -13,16 +13,15 @@ namespace fitfeel::conical {
 // Characteristics: size (two-point), axis straightness, generatrix straightness, roundness.
 // Law "gps": DIN 7190 taper press fit per cell (see conical_law.h).
 class ConicalSurface final : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override;
-  std::vector<std::string> law_names() const override { return {"gps"}; }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override;
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
-  CoarseMeshes MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const override;
-  LeadIn MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const override;
-
  protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override;
+  std::vector<std::string> DoLawNames() const override { return {"gps"}; }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override;
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override;
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override;
+  CoarseMeshes DoMakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const override;
+  LeadIn DoMakeLeadIn(const PartSpec& inner, const PartSpec& outer) const override;
+
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                   const ConfigNode& geometry) const override;
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,

@@ -11,16 +11,16 @@
 #include <Eigen/Dense>
 
 #include "framework/core/error.h"
-#include "framework/core/fixed_lane_dot.h"
 #include "framework/core/least_norm.h"
 #include "framework/core/number_text.h"
 #include "framework/core/parallel.h"
 #include "framework/core/simd_clones.h"
 #include "framework/model/convex_polygon.h"
-#include "framework/model/grid_rows.h"
-#include "framework/model/section_contact.h"
+#include "surfaces/common/grid_rows.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
-#include "surfaces/cylindrical/elastic_options.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
+#include "surfaces/cylindrical/fixed_lane_dot.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -207,7 +207,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         throw UserError("the elastic model needs equally spaced columns");
       }
     }
-    const ElasticOptions options = ElasticOptionsOf(settings);
+    const ElasticOptions options = CylindricalOptionsOf(settings).elastic;
     block_ = 1;
     while (n_ / block_ > options.columns || n_ % block_ != 0 || (n_ / block_) % 2 != 0) {
       ++block_;
@@ -750,9 +750,9 @@ void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
     const auto mode = static_cast<std::size_t>(job / 2);
     const int order = mode == 0 ? 0 : coupled_orders_[mode - 1];
     if (job % 2 == 0) {
-      (*shaft)[mode] = AxialCoupling::Shared(shaft_body_, shaft_coupling_rows_, order);
+      (*shaft)[mode] = AxialCoupling(shaft_body_, shaft_coupling_rows_, order);
     } else {
-      (*hub)[mode] = AxialCoupling::Shared(hub_body_, hub_coupling_rows_, order);
+      (*hub)[mode] = AxialCoupling(hub_body_, hub_coupling_rows_, order);
     }
   });
 }

@@ -8,10 +8,10 @@
 
 #include <Eigen/Core>
 
-#include "framework/model/axial_coupling.h"
+#include "surfaces/cylindrical/elastic/axial_coupling.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/convex_polygon.h"
-#include "framework/model/section_contact.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
 #include "framework/model/texture_contact.h"
 #include "surfaces/cylindrical/coupling_newton.h"
 
@@ -42,9 +42,9 @@ namespace fitfeel::cylindrical {
 // Elastic model (law `elastic`, docs/contact-mechanics.md). Where the assembly space of the
 // smoothed gaps is empty, the part's equilibrium in offset and (unless fixed) tilt is solved
 // against the elastic contact of every slice: non-negative pressure per column, compliance per
-// circumferential harmonic (Michell; framework/model/section_contact.h). The elastic solve runs on
-// the grid's columns averaged in blocks to at most 120 (harmonics up to 60, waviness down to
-// 1 mm at d = 20 mm). The anchor is then the equilibrium offset at the middle of the engaged
+// circumferential harmonic (Michell; elastic/section_contact.h). The elastic solve runs on the
+// grid's columns averaged in blocks to at most 120 (harmonics up to 60, waviness down to 1 mm at
+// d = 20 mm). The anchor is then the equilibrium offset at the middle of the engaged
 // length, and the tables add the normal force sum p A and the tilt.
 //
 // Per tick: linear interpolation between the two neighbouring depth steps of every tabulated

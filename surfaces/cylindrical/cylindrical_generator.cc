@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/metrology/sms_conformance.h"
-#include "framework/model/process_model.h"
-#include "framework/model/random_draws.h"
+#include "surfaces/cylindrical/sms_conformance.h"
+#include "surfaces/cylindrical/process_model.h"
+#include "surfaces/cylindrical/random_draws.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
 #include "surfaces/cylindrical/elastic_options.h"
@@ -245,19 +245,10 @@ std::pair<double, double> Spread(const Eigen::VectorXd& f, const SurfaceGrid& g,
 
 }  // namespace
 
-void CylindricalVariationGenerator::DoConfigure(const ConfigNode& options) {
-  options.ExpectOnlyKeys(
-      {"size_draw", "size_limit", "tilt", "section", "columns", "axial_coupling", "axial_orders"});
-  ParseElasticOptions(options);  // the elastic law's keys, checked here so that validate sees them
-  if (auto node = options.Find("size_draw")) {
-    options_.size_draw = node->AsOneOf({"per_part", "per_cell"}) == "per_part" ? SizeDraw::kPerPart
-                                                                               : SizeDraw::kPerCell;
-  }
-  if (auto node = options.Find("size_limit")) {
-    options_.size_limit = node->AsOneOf({"two_point", "radial"}) == "two_point"
-                              ? SizeLimit::kTwoPoint
-                              : SizeLimit::kRadial;
-  }
+void CylindricalVariationGenerator::DoConfigure(const SurfaceOptions& options) {
+  const CylindricalOptions& parsed = OptionsAs<CylindricalOptions>(options);
+  options_.size_draw = parsed.size_draw;
+  options_.size_limit = parsed.size_limit;
 }
 
 SkinModelShape CylindricalVariationGenerator::DoGenerate(const PartSpec& part,

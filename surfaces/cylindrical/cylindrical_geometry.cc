@@ -13,9 +13,9 @@ namespace {
 constexpr double kMaxSize = 10.0;
 }  // namespace
 
-double CylindricalGeometry::nominal_area() const { return std::numbers::pi * diameter_ * length_; }
+double CylindricalGeometry::DoNominalArea() const { return std::numbers::pi * diameter_ * length_; }
 
-std::string CylindricalGeometry::Describe() const {
+std::string CylindricalGeometry::DoDescribe() const {
   std::ostringstream out;
   // Millimetres with up to 4 decimals: 20 mm, 19.9875 mm.
   auto mm = [](double m) {

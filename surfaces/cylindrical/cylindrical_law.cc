@@ -60,8 +60,8 @@ double LameRadialStiffness(double pressure_per_interference, double d1, double e
   return pressure_per_interference * std::numbers::pi * d1 * engaged_length / 2.0;
 }
 
-void GpsLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
-                       const ModelSettings& settings) {
+void PressFitLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
+                            const ModelSettings& settings) {
   CheckMaterial(inner);
   CheckMaterial(outer);
   const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
@@ -69,37 +69,51 @@ void GpsLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
   stiffness_ = settings.contact_stiffness;
   d1_ = d.d1;
   pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
+  PrepareLaw(inner, outer, d);
+}
+
+void PressFitLaw::PrepareLaw(const PartSpec&, const PartSpec&, const PressFitDimensions&) {}
+
+double PressFitLaw::RadialAndNormal(const ContactState& contact, Wrench* out) const noexcept {
+  out->SetZero();
+  if (!contact.engaged) return 0.0;
+  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
+  Eigen::Vector2d radial;
+  const double normal = Normal(contact, k, &radial);
+  out->force.x() = radial.x();
+  out->force.z() = radial.y();
+  return normal;
+}
+
+void PressFitLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
+                             Wrench* out) const noexcept {
+  const double normal = RadialAndNormal(contact, out);
+  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
+}
+
+void PressFitLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
+                                      LawState* state, Wrench* out) const noexcept {
+  const double normal = RadialAndNormal(contact, out);
+  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
+}
+
+void GpsLaw::PrepareLaw(const PartSpec& inner, const PartSpec& outer,
+                        const PressFitDimensions& d) {
   const double hub_re = outer.material.yield_strength, shaft_re = inner.material.yield_strength;
   hub_yield_pressure_ = hub_re > 0.0 ? HubYieldPressure(d.d1, d.d2, hub_re) : 0.0;
   shaft_yield_pressure_ = shaft_re > 0.0 ? ShaftYieldPressure(d.d1, d.di, shaft_re) : 0.0;
 }
 
-double GpsLaw::Normal(const ContactState& contact, Wrench* out) const noexcept {
-  out->SetZero();
-  if (!contact.engaged) return 0.0;
-  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
-  const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
-  out->force.x() = radial.x();
-  out->force.z() = radial.y();
-  const double pressure_sum = pressure_per_interference_ * contact.interference_volume;  // eq. 11
-  return radial.norm() + pressure_sum;                                                   // eq. 12
-}
-
-void GpsLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
-                        Wrench* out) const noexcept {
-  const double normal = Normal(contact, out);
-  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
-}
-
-void GpsLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                                 LawState* state, Wrench* out) const noexcept {
-  const double normal = Normal(contact, out);
-  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
+double GpsLaw::Normal(const ContactState& contact, double k,
+                      Eigen::Vector2d* radial) const noexcept {
+  *radial = -k * contact.penetration * contact.penetration_direction;
+  const double pressure_sum = pressure_per_interference() * contact.interference_volume;  // eq. 11
+  return radial->norm() + pressure_sum;                                                   // eq. 12
 }
 
 ElasticLimitCheck GpsLaw::DoCheckElasticLimit(const ContactState& contact) const noexcept {
   ElasticLimitCheck check;
-  const double peak = pressure_per_interference_ * contact.max_interference;
+  const double peak = pressure_per_interference() * contact.max_interference;
   if (!(peak > 0.0)) return check;
   if (hub_yield_pressure_ > 0.0) {
     check.utilisation = peak / hub_yield_pressure_;
@@ -112,75 +126,23 @@ ElasticLimitCheck GpsLaw::DoCheckElasticLimit(const ContactState& contact) const
   return check;
 }
 
-void ElasticLaw::DoPrepare(const PartSpec& inner, const PartSpec& outer,
-                           const ModelSettings& settings) {
-  CheckMaterial(inner);
-  CheckMaterial(outer);
-  const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
-  friction_ = StickSlipFriction(FrictionOf(settings));
-  stiffness_ = settings.contact_stiffness;
-  d1_ = d.d1;
-  pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
+double ElasticLaw::Normal(const ContactState& contact, double k,
+                          Eigen::Vector2d* radial) const noexcept {
+  *radial = -k * contact.penetration * contact.penetration_direction;
+  return std::max(contact.normal_force, radial->norm());
 }
 
-double ElasticLaw::Normal(const ContactState& contact, Wrench* out) const noexcept {
-  out->SetZero();
-  if (!contact.engaged) return 0.0;
-  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
-  const Eigen::Vector2d radial = -k * contact.penetration * contact.penetration_direction;
-  out->force.x() = radial.x();
-  out->force.z() = radial.y();
-  return std::max(contact.normal_force, radial.norm());
-}
-
-void ElasticLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
-                            Wrench* out) const noexcept {
-  const double normal = Normal(contact, out);
-  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
-}
-
-void ElasticLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                                     LawState* state, Wrench* out) const noexcept {
-  const double normal = Normal(contact, out);
-  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
-}
-
-void Ve1Law::DoPrepare(const PartSpec& inner, const PartSpec& outer,
-                       const ModelSettings& settings) {
-  CheckMaterial(inner);
-  CheckMaterial(outer);
-  const PressFitDimensions d = PressFitDimensionsOf(inner, outer);
-  friction_ = StickSlipFriction(FrictionOf(settings));
-  stiffness_ = settings.contact_stiffness;
-  d1_ = d.d1;
-  pressure_per_interference_ = LamePressurePerInterference(d, inner.material, outer.material);
+void Ve1Law::PrepareLaw(const PartSpec& inner, const PartSpec& outer, const PressFitDimensions&) {
   clearance_ = 0.5 * (outer.size.nominal - inner.size.nominal);
   if (clearance_ < 0.0) clearance_ = 0.0;  // ideal geometry never interferes in VE1
 }
 
-double Ve1Law::Normal(const ContactState& contact, Wrench* out) const noexcept {
-  out->SetZero();
-  if (!contact.engaged) return 0.0;
-  const double k = Stiffness(stiffness_, pressure_per_interference_, d1_, contact.engaged_length);
+double Ve1Law::Normal(const ContactState& contact, double k,
+                      Eigen::Vector2d* radial) const noexcept {
   const double penetration = std::max(0.0, contact.offset_distance - clearance_);
-  const Eigen::Vector2d radial =
-      -k * penetration *
-      Eigen::Vector2d(std::cos(contact.offset_angle), std::sin(contact.offset_angle));
-  out->force.x() = radial.x();
-  out->force.z() = radial.y();
-  return radial.norm();
-}
-
-void Ve1Law::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
-                        Wrench* out) const noexcept {
-  const double normal = Normal(contact, out);
-  out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
-}
-
-void Ve1Law::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                                 LawState* state, Wrench* out) const noexcept {
-  const double normal = Normal(contact, out);
-  out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
+  *radial = -k * penetration *
+            Eigen::Vector2d(std::cos(contact.offset_angle), std::sin(contact.offset_angle));
+  return radial->norm();
 }
 
 }  // namespace fitfeel::cylindrical

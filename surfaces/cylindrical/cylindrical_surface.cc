@@ -5,43 +5,46 @@
 #include <algorithm>
 #include <string>
 
-#include "framework/metrology/sms_conformance.h"
+#include "surfaces/cylindrical/sms_conformance.h"
 #include "surfaces/cylindrical/cylindrical_coarse_mesh.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 #include "surfaces/cylindrical/elastic_cost.h"
 
 namespace fitfeel::cylindrical {
-std::vector<FormCharacteristic> CylindricalSurface::form_characteristics() const {
+std::vector<FormCharacteristic> CylindricalSurface::DoFormCharacteristics() const {
   return {FormCharacteristic::kAxisStraightness, FormCharacteristic::kGeneratrixStraightness,
           FormCharacteristic::kRoundness, FormCharacteristic::kCylindricity};
 }
 
 // "gps" (the paper's eqs. 9-12), "elastic" (harmonic-compliance contact checked against FEM,
 // docs/contact-mechanics.md) and "ve1" (the paper's ideal-geometry baseline).
-std::vector<std::string> CylindricalSurface::law_names() const { return {"gps", "elastic", "ve1"}; }
+std::vector<std::string> CylindricalSurface::DoLawNames() const {
+  return {"gps", "elastic", "ve1"};
+}
 
-std::unique_ptr<Discretizer> CylindricalSurface::MakeDiscretizer() const {
+std::unique_ptr<Discretizer> CylindricalSurface::DoMakeDiscretizer() const {
   return std::make_unique<CylindricalDiscretizer>();
 }
 
-std::unique_ptr<VariationGenerator> CylindricalSurface::MakeVariationGenerator() const {
+std::unique_ptr<VariationGenerator> CylindricalSurface::DoMakeVariationGenerator() const {
   return std::make_unique<CylindricalVariationGenerator>();
 }
 
-std::unique_ptr<ContactAnalyzer> CylindricalSurface::MakeContactAnalyzer() const {
+std::unique_ptr<ContactAnalyzer> CylindricalSurface::DoMakeContactAnalyzer() const {
   return std::make_unique<CylinderContactAnalyzer>();
 }
 
-CoarseMeshes CylindricalSurface::MakeCoarseMeshes(const PartSpec& inner,
+CoarseMeshes CylindricalSurface::DoMakeCoarseMeshes(const PartSpec& inner,
                                                   const PartSpec& outer) const {
   return MakeCylindricalCoarseMeshes(inner, outer);
 }
 
-LeadIn CylindricalSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+LeadIn CylindricalSurface::DoMakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
   return MakeCylindricalLeadIn(inner, outer);
 }
 
@@ -52,22 +55,23 @@ std::unique_ptr<ResistanceLaw> CylindricalSurface::DoMakeLaw(std::string_view na
   return nullptr;
 }
 
-void CylindricalSurface::DoCheckOptions(const ConfigNode& options) const {
-  CylindricalVariationGenerator generator;
-  generator.Configure(options);
+std::shared_ptr<const SurfaceOptions> CylindricalSurface::DoParseOptions(
+    const ConfigNode& options) const {
+  return ParseCylindricalOptions(options);
 }
 
 double CylindricalSurface::DoEstimatePrepareSeconds(const ModelSettings& model,
                                                     const GridShape& inner, const GridShape& outer,
                                                     double depth_steps) const {
   if (model.law != "elastic") return 0.0;
-  return ElasticPrepareSeconds(ElasticOptionsOf(model), std::max(inner.rows, outer.rows),
+  return ElasticPrepareSeconds(CylindricalOptionsOf(model).elastic,
+                               std::max(inner.rows, outer.rows),
                                std::max(inner.columns, outer.columns), depth_steps);
 }
 
 std::vector<CharacteristicCheck> CylindricalSurface::DoEvaluateCharacteristics(
     const PartSpec& part, const SkinModelShape& sms) const {
-  const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(part, sms);
+  const ConformanceReport report = EvaluateCylindricalSms(part, sms);
   std::vector<CharacteristicCheck> checks;
   for (const auto& item : report.items) {
     if (!item.specified) continue;

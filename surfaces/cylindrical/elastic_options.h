@@ -1,12 +1,5 @@
 #pragma once
 
-#include <limits>
-
-#include "framework/core/config_node.h"
-#include "framework/core/quantity.h"
-#include "framework/model/axial_coupling.h"
-#include "framework/model/model_settings.h"
-
 namespace fitfeel::cylindrical {
 
 // The elastic model's keys under `model.options` (law `elastic`):
@@ -28,9 +21,8 @@ struct ElasticOptions {
   double tilt_stiffness = 0.0;  // what holds its tilt, N*m/rad (0 = nothing)
   bool plane_strain = false;
   int columns = kDefaultColumns;
-  // The hub's and the shaft's deformation coupled along their axes
-  // (framework/model/axial_coupling.h); false leaves every section on its own (plane sections),
-  // for comparison.
+  // The hub's and the shaft's deformation coupled along their axes (elastic/axial_coupling.h);
+  // false leaves every section on its own (plane sections), for comparison.
   bool axial_coupling = true;
   // With the axial coupling, the orders 1 .. axial_orders are coupled too (0: the breathing mode
   // alone): order 1 is the parts' bending and shear along their axes, the others their lobing.
@@ -39,38 +31,5 @@ struct ElasticOptions {
   static constexpr int kDefaultAxialOrders = 6;
   int axial_orders = kDefaultAxialOrders;
 };
-
-inline ElasticOptions ParseElasticOptions(const ConfigNode& options) {
-  ElasticOptions o;
-  if (auto node = options.Find("tilt")) {
-    const std::string text = node->AsString();
-    if (text == "fixed") {
-      o.tilt = false;
-    } else if (text != "free") {
-      o.tilt_stiffness =
-          node->AsQuantityIn(Dimension::kAngularStiffness, 0.0, std::numeric_limits<double>::max());
-    }
-  }
-  if (auto node = options.Find("section")) {
-    o.plane_strain = node->AsOneOf({"plane_stress", "plane_strain"}) == "plane_strain";
-  }
-  if (auto node = options.Find("columns")) {
-    o.columns = static_cast<int>(
-        node->AsInteger(ElasticOptions::kFewestColumns, ElasticOptions::kMostColumns));
-    if (o.columns % 2 != 0) {
-      node->Fail("an even number of columns", node->Describe());
-    }
-  }
-  if (auto node = options.Find("axial_coupling")) o.axial_coupling = node->AsBool();
-  if (auto node = options.Find("axial_orders")) {
-    o.axial_orders = static_cast<int>(node->AsInteger(0, AxialCoupling::kHighestOrder));
-  }
-  return o;
-}
-
-// The scene's elastic options: its `model.options`, or the defaults without any.
-inline ElasticOptions ElasticOptionsOf(const ModelSettings& settings) {
-  return settings.extra ? ParseElasticOptions(*settings.extra) : ElasticOptions{};
-}
 
 }  // namespace fitfeel::cylindrical

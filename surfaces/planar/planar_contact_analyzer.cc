@@ -6,7 +6,7 @@
 #include <string>
 
 #include "framework/core/error.h"
-#include "framework/model/grid_rows.h"
+#include "surfaces/common/grid_rows.h"
 
 namespace fitfeel::planar {
 namespace {

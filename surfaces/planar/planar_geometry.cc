@@ -7,7 +7,7 @@
 
 namespace fitfeel::planar {
 
-std::string PlanarGeometry::Describe() const {
+std::string PlanarGeometry::DoDescribe() const {
   return std::string(faces_ == 2 ? "pair of flat faces" : "square (two pairs of flat faces)") +
          " b=" + FormatQuantity(width_, Dimension::kLength) +
          " l=" + FormatQuantity(length_, Dimension::kLength) +

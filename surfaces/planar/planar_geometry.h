@@ -31,9 +31,10 @@ class PlanarGeometry final : public Geometry {
   const Chamfer& chamfer() const { return chamfer_; }
   void set_chamfer(const Chamfer& chamfer) { chamfer_ = chamfer; }
 
-  double nominal_area() const override { return faces_ * height_ * length_; }
-  double mating_length() const override { return length_; }
-  std::string Describe() const override;
+ protected:
+  double DoNominalArea() const override { return faces_ * height_ * length_; }
+  double DoMatingLength() const override { return length_; }
+  std::string DoDescribe() const override;
 
  private:
   Role role_;

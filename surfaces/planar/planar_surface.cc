@@ -13,20 +13,20 @@
 
 namespace fitfeel::planar {
 
-std::vector<FormCharacteristic> PlanarSurface::form_characteristics() const {
+std::vector<FormCharacteristic> PlanarSurface::DoFormCharacteristics() const {
   return {FormCharacteristic::kStraightness, FormCharacteristic::kFlatness,
           FormCharacteristic::kParallelism, FormCharacteristic::kAxisStraightness};
 }
 
-std::unique_ptr<Discretizer> PlanarSurface::MakeDiscretizer() const {
+std::unique_ptr<Discretizer> PlanarSurface::DoMakeDiscretizer() const {
   return std::make_unique<PlanarDiscretizer>();
 }
 
-std::unique_ptr<VariationGenerator> PlanarSurface::MakeVariationGenerator() const {
+std::unique_ptr<VariationGenerator> PlanarSurface::DoMakeVariationGenerator() const {
   return std::make_unique<PlanarVariationGenerator>();
 }
 
-std::unique_ptr<ContactAnalyzer> PlanarSurface::MakeContactAnalyzer() const {
+std::unique_ptr<ContactAnalyzer> PlanarSurface::DoMakeContactAnalyzer() const {
   return std::make_unique<PlanarContactAnalyzer>();
 }
 
@@ -69,11 +69,11 @@ std::vector<CharacteristicCheck> PlanarSurface::DoEvaluateCharacteristics(
   return EvaluatePlanarCharacteristics(part, sms);
 }
 
-CoarseMeshes PlanarSurface::MakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
+CoarseMeshes PlanarSurface::DoMakeCoarseMeshes(const PartSpec& inner, const PartSpec& outer) const {
   return MakePlanarCoarseMeshes(inner, outer);
 }
 
-LeadIn PlanarSurface::MakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
+LeadIn PlanarSurface::DoMakeLeadIn(const PartSpec& inner, const PartSpec& outer) const {
   const PlanarGeometry& key = PlanarGeometryOf(inner);
   const PlanarGeometry& slot = PlanarGeometryOf(outer);
   const Chamfer& end = key.chamfer();

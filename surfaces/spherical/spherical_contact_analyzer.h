@@ -1,6 +1,6 @@
 #pragma once
 
-#include "framework/model/column_table_analyzer.h"
+#include "surfaces/common/column_table_analyzer.h"
 #include "surfaces/spherical/spherical_scan_analyzer.h"
 
 namespace fitfeel::spherical {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "framework/model/surface_of_revolution.h"
+#include "surfaces/common/surface_of_revolution.h"
 #include "surfaces/spherical/spherical_geometry.h"
 
 namespace fitfeel::spherical {

@@ -7,7 +7,7 @@
 
 #include "framework/metrology/circle_fit.h"
 #include "framework/metrology/linear_program.h"
-#include "framework/model/surface_of_revolution.h"
+#include "surfaces/common/surface_of_revolution.h"
 
 namespace fitfeel::spherical {
 namespace {

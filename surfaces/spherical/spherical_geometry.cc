@@ -14,9 +14,9 @@ double SphericalGeometry::mean_axis_distance() const {
   return (h * std::sqrt(a * a - h * h) + a * a * std::asin(h / a)) / width_;
 }
 
-double SphericalGeometry::nominal_area() const { return M_PI * diameter_ * width_; }
+double SphericalGeometry::DoNominalArea() const { return M_PI * diameter_ * width_; }
 
-std::string SphericalGeometry::Describe() const {
+std::string SphericalGeometry::DoDescribe() const {
   std::string text = std::string(role_ == Role::kInner ? "ball" : "socket") +
                      " dk=" + FormatQuantity(diameter_, Dimension::kLength) +
                      " band B=" + FormatQuantity(width_, Dimension::kLength);

@@ -33,10 +33,11 @@ class SphericalGeometry final : public Geometry {
   // y, 2 pi a dy): (1/B) * integral of sqrt(a^2 - y^2) over [-B/2, B/2], m.
   double mean_axis_distance() const;
 
+ protected:
   // A zone of a sphere has area 2 pi a * height (Archimedes): 2 pi a B.
-  double nominal_area() const override;
-  double mating_length() const override { return width_; }
-  std::string Describe() const override;
+  double DoNominalArea() const override;
+  double DoMatingLength() const override { return width_; }
+  std::string DoDescribe() const override;
 
  private:
   Role role_;

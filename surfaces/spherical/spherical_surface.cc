@@ -13,19 +13,19 @@
 
 namespace fitfeel::spherical {
 
-std::vector<FormCharacteristic> SphericalSurface::form_characteristics() const {
+std::vector<FormCharacteristic> SphericalSurface::DoFormCharacteristics() const {
   return {FormCharacteristic::kRoundness, FormCharacteristic::kSphericity};
 }
 
-std::unique_ptr<Discretizer> SphericalSurface::MakeDiscretizer() const {
+std::unique_ptr<Discretizer> SphericalSurface::DoMakeDiscretizer() const {
   return std::make_unique<SphericalDiscretizer>();
 }
 
-std::unique_ptr<VariationGenerator> SphericalSurface::MakeVariationGenerator() const {
+std::unique_ptr<VariationGenerator> SphericalSurface::DoMakeVariationGenerator() const {
   return std::make_unique<SphericalVariationGenerator>();
 }
 
-std::unique_ptr<ContactAnalyzer> SphericalSurface::MakeContactAnalyzer() const {
+std::unique_ptr<ContactAnalyzer> SphericalSurface::DoMakeContactAnalyzer() const {
   return std::make_unique<SphericalContactAnalyzer>();
 }
 

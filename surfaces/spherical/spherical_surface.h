@@ -14,15 +14,14 @@ namespace fitfeel::spherical {
 // sphericity. The constrained motion is the rotation about the bearing axis (rotational()).
 // Law "gps": thick-shell pressure per cell, friction torque (see spherical_law.h).
 class SphericalSurface final : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override;
-  std::vector<std::string> law_names() const override { return {"gps"}; }
-  bool rotational() const override { return true; }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override;
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
-
  protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override;
+  std::vector<std::string> DoLawNames() const override { return {"gps"}; }
+  bool DoRotational() const override { return true; }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override;
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override;
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override;
+
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                   const ConfigNode& geometry) const override;
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,

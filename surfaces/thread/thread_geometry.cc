@@ -36,7 +36,7 @@ double HelicoidGeometry::flank_area() const {
          (AreaPrimitive(outer_radius()) - AreaPrimitive(inner_radius()));
 }
 
-std::string HelicoidGeometry::Describe() const {
+std::string HelicoidGeometry::DoDescribe() const {
   return "thread d=" + FormatQuantity(diameter_, Dimension::kLength) +
          " P=" + FormatQuantity(pitch_, Dimension::kLength) +
          " flank angle=" + FormatQuantity(flank_angle_, Dimension::kAngle) +

@@ -41,9 +41,10 @@ class HelicoidGeometry final : public Geometry {
   double AreaPrimitive(double r) const;
   double flank_area() const;  // one flank, closed form
 
-  double nominal_area() const override { return 2.0 * flank_area(); }
-  double mating_length() const override { return length_; }
-  std::string Describe() const override;
+ protected:
+  double DoNominalArea() const override { return 2.0 * flank_area(); }
+  double DoMatingLength() const override { return length_; }
+  std::string DoDescribe() const override;
 
  private:
   Role role_;

@@ -9,15 +9,15 @@
 
 namespace fitfeel::thread {
 
-std::unique_ptr<Discretizer> ThreadSurface::MakeDiscretizer() const {
+std::unique_ptr<Discretizer> ThreadSurface::DoMakeDiscretizer() const {
   return std::make_unique<HelicoidDiscretizer>();
 }
 
-std::unique_ptr<VariationGenerator> ThreadSurface::MakeVariationGenerator() const {
+std::unique_ptr<VariationGenerator> ThreadSurface::DoMakeVariationGenerator() const {
   return std::make_unique<HelicoidVariationGenerator>();
 }
 
-std::unique_ptr<ContactAnalyzer> ThreadSurface::MakeContactAnalyzer() const {
+std::unique_ptr<ContactAnalyzer> ThreadSurface::DoMakeContactAnalyzer() const {
   throw UnsupportedError(kLimitation);
 }
 

@@ -21,26 +21,25 @@ inline constexpr const char* kLimitation =
 // fitfeel.surface.thread: a stub that registers, validates and discretizes, and refuses to
 // render forces (renders_forces() is false; analyzers and laws throw UnsupportedError).
 class ThreadSurface final : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override { return {}; }
+ protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override { return {}; }
   // The limits of the pitch deviation and of each flank's half-angle deviation; a half-angle
   // deviation above 5 deg is another thread, not a deviation of this one (the pitch deviation's
   // limit, P/10, depends on the geometry and is checked there).
-  std::vector<DeclaredCharacteristic> declared_characteristics() const override {
+  std::vector<DeclaredCharacteristic> DoDeclaredCharacteristics() const override {
     return {{"pitch_error", Dimension::kLength, std::numeric_limits<double>::infinity()},
             {"flank_angle_error", Dimension::kAngle, 5.0 * std::numbers::pi / 180.0}};
   }
-  std::vector<std::string> law_names() const override { return {}; }
-  bool renders_forces() const override { return false; }
-  std::string limitation() const override { return kLimitation; }
-  bool rotational() const override { return true; }
+  std::vector<std::string> DoLawNames() const override { return {}; }
+  bool DoRendersForces() const override { return false; }
+  std::string DoLimitation() const override { return kLimitation; }
+  bool DoRotational() const override { return true; }
 
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override;
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override;
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override;
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override;
   // Throws UnsupportedError with kLimitation.
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override;
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override;
 
- protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                   const ConfigNode& geometry) const override;
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,

@@ -7,7 +7,7 @@
 
 namespace fitfeel::example_slide {
 
-std::string SlideGeometry::Describe() const {
+std::string SlideGeometry::DoDescribe() const {
   std::string text = std::string(rail_width_ > 0.0 ? "slot" : "block") +
                      " b=" + FormatQuantity(width_, Dimension::kLength) +
                      " l=" + FormatQuantity(length_, Dimension::kLength) +

@@ -22,9 +22,10 @@ class SlideGeometry final : public Geometry {
   // Width of each rail across x (the slot's walls, compressed by a press fit), m; 0 for the block.
   double rail_width() const { return rail_width_; }
 
-  double nominal_area() const override { return 2.0 * height_ * length_; }
-  double mating_length() const override { return length_; }
-  std::string Describe() const override;
+ protected:
+  double DoNominalArea() const override { return 2.0 * height_ * length_; }
+  double DoMatingLength() const override { return length_; }
+  std::string DoDescribe() const override;
 
  private:
   double width_;

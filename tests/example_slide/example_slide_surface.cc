@@ -9,15 +9,15 @@
 
 namespace fitfeel::example_slide {
 
-std::unique_ptr<Discretizer> SlideSurface::MakeDiscretizer() const {
+std::unique_ptr<Discretizer> SlideSurface::DoMakeDiscretizer() const {
   return std::make_unique<SlideDiscretizer>();
 }
 
-std::unique_ptr<VariationGenerator> SlideSurface::MakeVariationGenerator() const {
+std::unique_ptr<VariationGenerator> SlideSurface::DoMakeVariationGenerator() const {
   return std::make_unique<SlideVariationGenerator>();
 }
 
-std::unique_ptr<ContactAnalyzer> SlideSurface::MakeContactAnalyzer() const {
+std::unique_ptr<ContactAnalyzer> SlideSurface::DoMakeContactAnalyzer() const {
   return std::make_unique<SlideContactAnalyzer>();
 }
 

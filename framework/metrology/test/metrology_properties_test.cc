@@ -10,7 +10,6 @@
 
 #include "framework/metrology/circle_fit.h"
 #include "framework/metrology/cylinder_form.h"
-#include "framework/metrology/sms_conformance.h"
 
 namespace fitfeel::metrology {
 namespace {

@@ -19,9 +19,11 @@ namespace {
 class LengthGeometry final : public Geometry {
  public:
   LengthGeometry(double diameter, double length) : diameter_(diameter), length_(length) {}
-  double nominal_area() const override { return std::numbers::pi * diameter_ * length_; }
-  double mating_length() const override { return length_; }
-  std::string Describe() const override { return "test cylinder"; }
+
+ protected:
+  double DoNominalArea() const override { return std::numbers::pi * diameter_ * length_; }
+  double DoMatingLength() const override { return length_; }
+  std::string DoDescribe() const override { return "test cylinder"; }
 
  private:
   double diameter_, length_;
@@ -81,22 +83,21 @@ class FacingAnalyzer final : public ContactAnalyzer {
 };
 
 class TestCylinder final : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override {
+ protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override {
     return {FormCharacteristic::kRoundness};
   }
-  std::vector<std::string> law_names() const override { return {"lame", "ideal"}; }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override {
+  std::vector<std::string> DoLawNames() const override { return {"lame", "ideal"}; }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override {
     return std::make_unique<GridDiscretizer>();
   }
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override {
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override {
     return std::make_unique<UniformGenerator>();
   }
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override {
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override {
     return std::make_unique<FacingAnalyzer>();
   }
 
- protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                   const ConfigNode& node) const override {
     node.ExpectOnlyKeys({"length"});

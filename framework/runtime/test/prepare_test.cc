@@ -39,16 +39,15 @@ TEST(PrepareTest, AnotherSeedGivesOtherSkinModelShapes) {
 }
 
 class MuteSurface final : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override { return {}; }
-  std::vector<std::string> law_names() const override { return {"none"}; }
-  bool renders_forces() const override { return false; }
-  std::string limitation() const override { return "thread contact is not modelled"; }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override { return nullptr; }
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override { return nullptr; }
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override { return nullptr; }
-
  protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override { return {}; }
+  std::vector<std::string> DoLawNames() const override { return {"none"}; }
+  bool DoRendersForces() const override { return false; }
+  std::string DoLimitation() const override { return "thread contact is not modelled"; }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override { return nullptr; }
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override { return nullptr; }
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override { return nullptr; }
+
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec&,
                                                   const ConfigNode&) const override {
     return nullptr;

@@ -19,9 +19,11 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 class FakeGeometry final : public Geometry {
  public:
   FakeGeometry(double diameter, double length) : diameter_(diameter), length_(length) {}
-  double nominal_area() const override { return std::numbers::pi * diameter_ * length_; }
-  double mating_length() const override { return length_; }
-  std::string Describe() const override {
+
+ protected:
+  double DoNominalArea() const override { return std::numbers::pi * diameter_ * length_; }
+  double DoMatingLength() const override { return length_; }
+  std::string DoDescribe() const override {
     return "cylinder d=" + FormatQuantity(diameter_, Dimension::kLength) +
            " l=" + FormatQuantity(length_, Dimension::kLength);
   }
@@ -32,17 +34,16 @@ class FakeGeometry final : public Geometry {
 };
 
 class FakeCylinder : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override {
+ protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override {
     return {FormCharacteristic::kAxisStraightness, FormCharacteristic::kGeneratrixStraightness,
             FormCharacteristic::kRoundness, FormCharacteristic::kCylindricity};
   }
-  std::vector<std::string> law_names() const override { return {"gps", "ve1"}; }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override { return nullptr; }
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override { return nullptr; }
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override { return nullptr; }
+  std::vector<std::string> DoLawNames() const override { return {"gps", "ve1"}; }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override { return nullptr; }
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override { return nullptr; }
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override { return nullptr; }
 
- protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                   const ConfigNode& node) const override {
     if (part.role == Role::kOuter) {
@@ -67,16 +68,19 @@ class FakeCylinder : public SurfaceType {
     }
   }
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view) const override { return nullptr; }
-  void DoCheckOptions(const ConfigNode& options) const override {
+  std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const override {
     options.ExpectOnlyKeys({"tabulate"});
+    auto parsed = std::make_shared<FakeOptions>();
+    if (auto tabulate = options.Find("tabulate")) parsed->tabulate = tabulate->AsBool();
+    return parsed;
   }
 };
 
 class FakeThread final : public FakeCylinder {
- public:
-  bool renders_forces() const override { return false; }
-  std::vector<std::string> law_names() const override { return {}; }
-  std::string limitation() const override { return "thread resistance laws are not written yet"; }
+ protected:
+  bool DoRendersForces() const override { return false; }
+  std::vector<std::string> DoLawNames() const override { return {}; }
+  std::string DoLimitation() const override { return "thread resistance laws are not written yet"; }
 };
 
 class FakeDevice final : public Device {

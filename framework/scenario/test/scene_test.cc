@@ -515,9 +515,8 @@ TEST_F(SceneTest, FullScenarioIsParsedIntoSi) {
   EXPECT_EQ(scene.model.resolution.columns, 72);
   EXPECT_EQ(scene.model.texture, TextureMode::kSampled);
   EXPECT_EQ(scene.model.depth_step, 0.5e-3);
-  ASSERT_TRUE(scene.model.extra.has_value());
-  EXPECT_EQ(scene.model.extra->path(), "model.options");
-  EXPECT_TRUE(scene.model.extra->Child("tabulate").AsBool());
+  ASSERT_NE(scene.model.options, nullptr);
+  EXPECT_TRUE(OptionsAs<test::FakeOptions>(scene.model.options).tabulate);
 
   EXPECT_EQ(scene.device_id, "test.device.fake");
   ASSERT_NE(scene.device, nullptr);
@@ -556,7 +555,8 @@ TEST_F(SceneTest, MinimalScenarioTakesTheDocumentedDefaults) {
   EXPECT_TRUE(scene.model.resolution.is_auto());
   EXPECT_EQ(scene.model.texture, TextureMode::kExpected);
   EXPECT_EQ(scene.model.depth_step, 0.0);
-  EXPECT_FALSE(scene.model.extra.has_value());
+  EXPECT_EQ(scene.model.options, nullptr);
+  EXPECT_FALSE(OptionsAs<test::FakeOptions>(scene.model.options).tabulate);
   EXPECT_FALSE(scene.safety.has_value());
   EXPECT_EQ(scene.run.rate, 1000.0);
   EXPECT_EQ(scene.run.duration, 0.25);

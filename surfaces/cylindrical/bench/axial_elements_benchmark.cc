@@ -1,15 +1,15 @@
-// The parts' axial elements (framework/model/axial_coupling.h), which the elastic law solves once
-// per scene for each coupled order: a 20 mm shaft and its 30 mm hub over 40 mm of 0.5 mm rows
-// (paper-case1-h7js6's coupling rows) and over longer parts of the same rows, for the breathing
-// mode and for an order past it. The elements' cost in docs/performance.md comes from here:
+// The parts' axial elements (surfaces/cylindrical/elastic/axial_coupling.h), which the elastic
+// law solves once per scene for each coupled order: a 20 mm shaft and its 30 mm hub over 40 mm of
+// 0.5 mm rows (paper-case1-h7js6's coupling rows) and over longer parts of the same rows, for the
+// breathing mode and for an order past it. The elements' cost in docs/performance.md comes from here:
 //   build/bench/fitfeel_surface_cylindrical_benchmark --benchmark_filter=AxialElements
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
-#include "framework/model/axial_coupling.h"
+#include "surfaces/cylindrical/elastic/axial_coupling.h"
 
-namespace fitfeel {
+namespace fitfeel::cylindrical {
 namespace {
 
 void BM_AxialElements(benchmark::State& state) {
@@ -34,4 +34,4 @@ BENCHMARK(BM_AxialElements)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
-}  // namespace fitfeel
+}  // namespace fitfeel::cylindrical

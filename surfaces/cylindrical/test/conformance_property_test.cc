@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "framework/metrology/sms_conformance.h"
+#include "surfaces/cylindrical/sms_conformance.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/test/test_parts.h"
@@ -88,7 +88,7 @@ TEST(CylindricalConformance, EveryShapeMeetsEveryToleranceItCameFrom) {
     for (int seed = 1; seed <= c.seeds; ++seed) {
       Rng rng(seed);
       const SkinModelShape sms = generator.Generate(c.part, grid, c.texture, rng);
-      const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(c.part, sms);
+      const ConformanceReport report = EvaluateCylindricalSms(c.part, sms);
       for (const auto& item : report.items) {
         if (item.pass) continue;
         if (++failures > 5) break;
@@ -114,7 +114,7 @@ TEST(CylindricalConformance, PerCellSizeMeetsTheSizeLimits) {
   for (int seed = 1; seed <= 50; ++seed) {
     Rng rng(seed);
     const SkinModelShape sms = generator.Generate(part, grid, TextureMode::kSampled, rng);
-    EXPECT_TRUE(metrology::EvaluateCylindricalSms(part, sms).Find("size")->pass) << seed;
+    EXPECT_TRUE(EvaluateCylindricalSms(part, sms).Find("size")->pass) << seed;
   }
 }
 
@@ -129,7 +129,7 @@ TEST(CylindricalConformance, FormIsNotTriviallyZero) {
   for (int seed = 1; seed <= seeds; ++seed) {
     Rng rng(seed);
     const SkinModelShape sms = generator.Generate(part, grid, TextureMode::kExpected, rng);
-    const auto report = metrology::EvaluateCylindricalSms(part, sms);
+    const auto report = EvaluateCylindricalSms(part, sms);
     roundness += report.Find("roundness")->value / seeds;
     axis += report.Find("axis_straightness")->value / seeds;
   }

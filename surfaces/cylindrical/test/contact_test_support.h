@@ -9,16 +9,24 @@
 #include <numbers>
 #include <string>
 
+#include "framework/core/config_node.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/model_settings.h"
 #include "framework/model/skin_model_shape.h"
 #include "surfaces/cylindrical/cylindrical_geometry.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 
 namespace fitfeel::cylindrical::testing {
 
 inline constexpr double kPi = std::numbers::pi;
 inline constexpr double kUm = 1e-6;
+
+// `model.options` as a scene file gives them, parsed as the loader parses them.
+inline std::shared_ptr<const CylindricalOptions> ParsedOptions(const std::string& yaml,
+                                                               const std::string& file = "test") {
+  return ParseCylindricalOptions(ConfigNode::Parse(yaml, file, "model.options"));
+}
 
 inline SurfaceGrid MakeGrid(int rows, int columns, double diameter, double length) {
   SurfaceGrid g;

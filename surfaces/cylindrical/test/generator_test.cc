@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
-#include "framework/metrology/sms_conformance.h"
+#include "surfaces/cylindrical/sms_conformance.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/test/test_parts.h"
 
@@ -81,7 +81,7 @@ TEST(CylindricalVariationGenerator, PerCellSizeIsWhiteNoiseWithinTheLimits) {
   EXPECT_GT(s.dimension_part.maxCoeff() - s.dimension_part.minCoeff(), 4e-6);
   EXPECT_GE(s.dimension_part.minCoeff(), -4e-6);
   EXPECT_LE(s.dimension_part.maxCoeff(), 4e-6);
-  const auto report = metrology::EvaluateCylindricalSms(part, s);
+  const auto report = EvaluateCylindricalSms(part, s);
   EXPECT_TRUE(report.Find("size")->pass);
 }
 
@@ -104,7 +104,7 @@ TEST(CylindricalVariationGenerator, FormWiderThanTheSizeToleranceIsScaledBack) {
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     const SkinModelShape s = Make(part, seed, TextureMode::kExpected);
     scaled += s.scaled_back_cells > 0;
-    EXPECT_TRUE(metrology::EvaluateCylindricalSms(part, s).AllPass()) << seed;
+    EXPECT_TRUE(EvaluateCylindricalSms(part, s).AllPass()) << seed;
   }
   EXPECT_GT(scaled, 0);
 }
@@ -118,9 +118,9 @@ TEST(CylindricalVariationGenerator, RegeneratesThenScalesBackAComponentThatFails
   part.form.tolerance[FormCharacteristic::kRoundness] = 0.0;
   const SkinModelShape s = Make(part, 4, TextureMode::kExpected);
   EXPECT_EQ(s.regenerations, GeneratorOptions{}.max_regenerations);
-  const auto report = metrology::EvaluateCylindricalSms(part, s);
+  const auto report = EvaluateCylindricalSms(part, s);
   EXPECT_TRUE(report.AllPass());
-  EXPECT_LE(report.Find("roundness")->value, metrology::kEvaluationSlack);
+  EXPECT_LE(report.Find("roundness")->value, kEvaluationSlack);
 }
 
 TEST(CylindricalVariationGenerator, RefusesCharacteristicsACylinderDoesNotHave) {

@@ -8,6 +8,7 @@
 
 #include "framework/core/error.h"
 #include "surfaces/cylindrical/cylindrical_generator.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 #include "surfaces/cylindrical/elastic_options.h"
 #include "surfaces/cylindrical/test/test_parts.h"
 
@@ -99,22 +100,35 @@ TEST(CylindricalGeometry, PairNeedsOneNominalDiameter) {
                ScenarioError);
 }
 
-TEST(CylindricalVariationGenerator, ReadsItsModelOptions) {
+TEST(CylindricalOptions, ParsesTheGeneratorsAndTheElasticLawsKeysOnce) {
+  const auto parsed =
+      ParseCylindricalOptions(Node("{size_draw: per_cell, size_limit: radial}", "model.options"));
+  EXPECT_EQ(parsed->size_draw, SizeDraw::kPerCell);
+  EXPECT_EQ(parsed->size_limit, SizeLimit::kRadial);
   CylindricalVariationGenerator g;
-  g.Configure(Node("{size_draw: per_cell, size_limit: radial}", "model.options"));
+  g.Configure(*parsed);
   EXPECT_EQ(g.options().size_draw, SizeDraw::kPerCell);
   EXPECT_EQ(g.options().size_limit, SizeLimit::kRadial);
-  EXPECT_THROW(g.Configure(Node("{size_draw: per_row}", "model.options")), ScenarioError);
-  EXPECT_THROW(g.Configure(Node("{sizes: per_cell}", "model.options")), ScenarioError);
-  // The elastic law's keys are checked here too: axial_orders is an order from 0 to 12.
-  g.Configure(Node("{axial_orders: 0}", "model.options"));
-  g.Configure(Node("{axial_orders: 12}", "model.options"));
-  for (const char* bad : {"{axial_orders: 13}", "{axial_orders: -1}", "{axial_orders: two}"}) {
-    EXPECT_THROW(g.Configure(Node(bad, "model.options")), ScenarioError) << bad;
+  EXPECT_THROW(ParseCylindricalOptions(Node("{size_draw: per_row}", "model.options")),
+               ScenarioError);
+  EXPECT_THROW(ParseCylindricalOptions(Node("{sizes: per_cell}", "model.options")),
+               ScenarioError);
+  // The elastic law's keys: axial_orders is an order from 0 to 12.
+  for (int orders : {0, 12}) {
+    const std::string yaml = "{axial_orders: " + std::to_string(orders) + "}";
+    EXPECT_EQ(ParseCylindricalOptions(Node(yaml, "model.options"))->elastic.axial_orders, orders);
   }
-  EXPECT_EQ(ParseElasticOptions(Node("{axial_orders: 3}", "model.options")).axial_orders, 3);
-  EXPECT_EQ(ParseElasticOptions(Node("{}", "model.options")).axial_orders,
+  for (const char* bad : {"{axial_orders: 13}", "{axial_orders: -1}", "{axial_orders: two}"}) {
+    EXPECT_THROW(ParseCylindricalOptions(Node(bad, "model.options")), ScenarioError) << bad;
+  }
+  EXPECT_EQ(ParseCylindricalOptions(Node("{}", "model.options"))->elastic.axial_orders,
             ElasticOptions::kDefaultAxialOrders);
+  // Settings without options take the defaults; another surface's options are refused.
+  EXPECT_EQ(CylindricalOptionsOf(ModelSettings{}).size_draw, SizeDraw::kPerPart);
+  ModelSettings foreign;
+  foreign.options = std::make_shared<const SurfaceOptions>();
+  EXPECT_THROW(CylindricalOptionsOf(foreign), UserError);
+  EXPECT_THROW(g.Configure(*foreign.options), UserError);
 }
 
 }  // namespace

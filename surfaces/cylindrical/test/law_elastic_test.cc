@@ -10,10 +10,11 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "framework/model/harmonic_compliance.h"
 #include "framework/testing/fem_data.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
+#include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 #include "surfaces/cylindrical/elastic_options.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 #include "surfaces/cylindrical/test/solid_cases.h"
@@ -78,7 +79,7 @@ TEST(ElasticLaw, AxialCouplingRefusesAGridItCannotSolveInTime) {
   const PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
   auto prepare = [&](const char* options) {
     ModelSettings settings = Elastic(TextureMode::kSampled);
-    settings.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+    settings.options = ParsedOptions(options, "scene.yaml");
     CylinderContactAnalyzer analyzer;
     analyzer.Prepare(shaft, MakeSms(MakeGrid(rows, 24, 0.020, 0.040), [](int, int) { return 0.0; }),
                      bushing, MakeSms(MakeGrid(20, 24, 0.020, 0.020), [](int, int) { return 0.0; }),
@@ -100,7 +101,7 @@ TEST(ElasticLaw, Din7190SmoothingOfAUniformPressFit) {
   // smoothing 0.8 (1.6 + 1.6) um on the diameter, i.e. 1099.6 x (5 - 1.28) = 4090 N. That is
   // DIN 7190's plane sections, which the model gives without its axial coupling.
   ModelSettings plane = Elastic();
-  plane.extra = ConfigNode::Parse("{axial_coupling: false}", "test", "model.options");
+  plane.options = ParsedOptions("{axial_coupling: false}");
   ElasticPair p([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; }, plane);
   ElasticPair coupled([](int, int) { return 5 * kUm; }, [](int, int) { return 0.0; });
   EXPECT_NEAR(p.analyzer.smoothing(), 1.28 * kUm, 1e-15);
@@ -167,7 +168,7 @@ TEST(ElasticLaw, OvalInterferenceCarriesOnlyItsMean) {
   // ovality adds nothing to the breathing.
   const double p0 = 5.8333e12;
   ModelSettings plane = Elastic(TextureMode::kSampled);
-  plane.extra = ConfigNode::Parse("{axial_coupling: false}", "test", "model.options");
+  plane.options = ParsedOptions("{axial_coupling: false}");
   for (double ratio : {0.15, 0.3, 1.0}) {
     const double d2 = 4 * kUm, d0 = ratio * d2;
     auto oval = [&](int, int j) { return d0 + d2 * std::cos(2 * 2 * kPi * j / 360); };
@@ -211,7 +212,7 @@ TEST(ElasticLaw, TiltedBoreWithinTheClearanceCarriesNothing) {
           0.3 * phi);
       // Held straight, the same part is pressed at both ends of the bore.
       ModelSettings fixed = free;
-      fixed.extra = ConfigNode::Parse("{tilt: fixed}", "test", "model.options");
+      fixed.options = ParsedOptions("{tilt: fixed}");
       ElasticPair held(shaft, bore, fixed);
       EXPECT_GT(OutcomeAt(held.analyzer, held.law, 30e-3, AnchorNear(held.analyzer, 30e-3))
                     .state.normal_force,
@@ -250,7 +251,7 @@ TEST(ElasticLaw, ColumnsOptionSetsTheSolveResolution) {
   // columns: 240; an odd count or one outside 24..1440 is refused where it is written.
   auto columns_of = [](const char* options) {
     ModelSettings s = Elastic(TextureMode::kSampled);
-    if (options != nullptr) s.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+    if (options != nullptr) s.options = ParsedOptions(options, "scene.yaml");
     ElasticPair p([](int, int) { return 2 * kUm; }, [](int, int) { return 0.0; }, s, 240);
     return p.analyzer.elastic_columns();
   };
@@ -259,7 +260,7 @@ TEST(ElasticLaw, ColumnsOptionSetsTheSolveResolution) {
   EXPECT_EQ(columns_of("{columns: 60}"), 60);
   for (const char* bad : {"{columns: 121}", "{columns: 12}", "{columns: 2000}", "{columns: x}"}) {
     try {
-      ParseElasticOptions(ConfigNode::Parse(bad, "scene.yaml", "model.options"));
+      ParsedOptions(bad, "scene.yaml");
       ADD_FAILURE() << bad << " accepted";
     } catch (const ScenarioError& e) {
       EXPECT_NE(std::string(e.what()).find("model.options.columns"), std::string::npos) << e.what();
@@ -276,7 +277,7 @@ TEST(ElasticLaw, SolveColumnsKeepTheHarmonicsTheyResolve) {
   for (int order : {20, 50}) {
     auto force = [order](const char* options) {
       ModelSettings s = Elastic(TextureMode::kSampled);
-      s.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+      s.options = ParsedOptions(options, "scene.yaml");
       ElasticPair p([](int, int) { return 0.5 * kUm; },
                     [order](int, int j) {
                       return 1.0 * kUm * std::cos(order * 2.0 * std::numbers::pi * j / 360.0);
@@ -352,8 +353,7 @@ TEST(ElasticLaw, AgreesWithCalculixOnEveryContactCase) {
     // plane section: so is the model here (the shaft runs through the hub, whose ends its
     // axial coupling would stiffen by 1.6 %, as the axisymmetric cases below check).
     ModelSettings fine = Elastic(TextureMode::kSampled);
-    fine.extra =
-        ConfigNode::Parse("{columns: 240, axial_coupling: false}", "test", "model.options");
+    fine.options = ParsedOptions("{columns: 240, axial_coupling: false}");
     ElasticPair elastic(
         shaft, [](int, int) { return 0.0; }, fine, columns);
     elastic.shaft.texture = TextureSpec{};
@@ -391,7 +391,7 @@ struct FieldPair {
       : shaft(MakeShaft(0.020, shaft_length)),
         bushing(MakeBushing(0.020, 0.020, hub_diameter)),
         settings(std::move(base)) {
-    settings.extra = ConfigNode::Parse(options, "test", "model.options");
+    settings.options = ParsedOptions(options);
     const int rows = static_cast<int>(std::lround(shaft_length / shaft_row));
     analyzer.Prepare(shaft, MakeSms(MakeGrid(rows, 72, 0.020, shaft_length), shaft_v), bushing,
                      MakeSms(MakeGrid(40, 72, 0.020, 0.020), [](int, int) { return 0.0; }),

@@ -15,8 +15,10 @@
 #include "framework/plugin/registry.h"
 #include "framework/scenario/scene.h"
 #include "framework/testing/source_tree.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 #include "surfaces/cylindrical/cylindrical_surface.h"
 #include "surfaces/cylindrical/elastic_cost.h"
+#include "surfaces/cylindrical/test/contact_test_support.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -26,7 +28,7 @@ namespace fs = std::filesystem;
 ModelSettings ElasticWith(const std::string& options = "{}") {
   ModelSettings model;
   model.law = "elastic";
-  model.extra = ConfigNode::Parse(options, "scene.yaml", "model.options");
+  model.options = testing::ParsedOptions(options, "scene.yaml");
   return model;
 }
 

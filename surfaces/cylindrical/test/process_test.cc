@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "framework/core/error.h"
-#include "framework/metrology/sms_conformance.h"
-#include "framework/model/process_model.h"
+#include "surfaces/cylindrical/sms_conformance.h"
+#include "surfaces/cylindrical/process_model.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_generator.h"
 #include "surfaces/cylindrical/test/test_parts.h"
@@ -43,7 +43,7 @@ Sample Draw(const PartSpec& part, int parts, std::uint64_t seed) {
     sum += d;
     sum2 += d * d;
     s.rejections += sms.rejections;
-    s.all_conform = s.all_conform && metrology::EvaluateCylindricalSms(part, sms).AllPass();
+    s.all_conform = s.all_conform && EvaluateCylindricalSms(part, sms).AllPass();
   }
   s.parts = parts;
   s.mean = sum / parts;
@@ -135,7 +135,7 @@ TEST(StatisticalProcess, FormWellInsideItsToleranceAndEveryPartConforms) {
   const int n = 300;
   for (int k = 0; k < n; ++k) {
     const SkinModelShape sms = generator.Generate(part, grid, TextureMode::kExpected, rng);
-    const metrology::ConformanceReport report = metrology::EvaluateCylindricalSms(part, sms);
+    const ConformanceReport report = EvaluateCylindricalSms(part, sms);
     ASSERT_TRUE(report.AllPass()) << "part " << k;
     double most = 0.0;
     for (const auto& [c, tol] : part.form.tolerance) {

@@ -29,7 +29,7 @@ TEST_P(CylindricalScenarioConformance, MeetsItsTolerancesOverAHundredSeeds) {
   ASSERT_EQ(scene.surface_id, "fitfeel.surface.cylindrical");
   const auto discretizer = scene.surface->MakeDiscretizer();
   const auto generator = scene.surface->MakeVariationGenerator();
-  if (scene.model.extra) generator->Configure(*scene.model.extra);
+  if (scene.model.options) generator->Configure(*scene.model.options);
   const SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
   const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
   int checked = 0;

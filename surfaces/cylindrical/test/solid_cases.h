@@ -12,6 +12,7 @@
 #include "framework/testing/fem_data.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
+#include "surfaces/cylindrical/cylindrical_options.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
 namespace fitfeel::cylindrical::testing {
@@ -52,7 +53,7 @@ inline double SolidCaseElasticForce(const SolidCase& c, const std::string& optio
   const PartSpec shaft = MakeShaft(0.020, 0.020), bushing = MakeBushing(0.020, 0.020, 0.030);
   ModelSettings settings = Settings(0.15, 0.0, TextureMode::kSampled);
   settings.law = "elastic";
-  settings.extra = ConfigNode::Parse(options, "test", "model.options");
+  settings.options = ParsedOptions(options);
   CylinderContactAnalyzer analyzer;
   analyzer.Prepare(
       shaft,

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/testing/assembly_space_check.h"
-#include "framework/testing/column_table_checks.h"
+#include "surfaces/common/test/column_table_checks.h"
 
 #include "surfaces/spherical/spherical_contact_analyzer.h"
 #include "surfaces/spherical/spherical_discretizer.h"

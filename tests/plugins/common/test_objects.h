@@ -17,18 +17,17 @@ namespace fitfeel::test_plugins {
 // A surface type that can be listed and instantiated but models nothing: it stands for a surface
 // whose resistance law does not exist yet (renders_forces() is false).
 class InertSurface final : public SurfaceType {
- public:
-  std::vector<FormCharacteristic> form_characteristics() const override { return {}; }
-  std::vector<std::string> law_names() const override { return {}; }
-  bool renders_forces() const override { return false; }
-  std::string limitation() const override {
+ protected:
+  std::vector<FormCharacteristic> DoFormCharacteristics() const override { return {}; }
+  std::vector<std::string> DoLawNames() const override { return {}; }
+  bool DoRendersForces() const override { return false; }
+  std::string DoLimitation() const override {
     return "test surface: parses no geometry and has no resistance law";
   }
-  std::unique_ptr<Discretizer> MakeDiscretizer() const override { Unsupported(); }
-  std::unique_ptr<VariationGenerator> MakeVariationGenerator() const override { Unsupported(); }
-  std::unique_ptr<ContactAnalyzer> MakeContactAnalyzer() const override { Unsupported(); }
+  std::unique_ptr<Discretizer> DoMakeDiscretizer() const override { Unsupported(); }
+  std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override { Unsupported(); }
+  std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override { Unsupported(); }
 
- protected:
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec&,
                                                   const ConfigNode&) const override {
     Unsupported();
