@@ -22,7 +22,9 @@
 namespace fitfeel {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// No upper limit on a quantity (a name no other framework source gives a file-private constant:
+// the unity build compiles several sources as one).
+constexpr double kUnlimited = std::numeric_limits<double>::infinity();
 
 // The scheduler's rate: below 100 Hz a haptic loop is felt as vibration, above 10 kHz no device
 // or OS timer keeps the period.
@@ -229,7 +231,7 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   model.contact_stiffness =
       stiffness.is_scalar() && stiffness.AsString() == "auto"
           ? 0.0
-          : stiffness.AsQuantityIn(Dimension::kStiffness, 0.0, kInfinity,
+          : stiffness.AsQuantityIn(Dimension::kStiffness, 0.0, kUnlimited,
                                    /*min_inclusive=*/false);
   if (std::optional<ConfigNode> resolution = node.Find("resolution")) {
     model.resolution = ParseResolution(*resolution);
@@ -246,7 +248,7 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
       const double longest =
           std::min(parts.inner.geometry->mating_length(), parts.outer.geometry->mating_length());
       model.depth_step =
-          step->AsQuantityIn(Dimension::kLength, 0.0, longest > 0.0 ? longest : kInfinity,
+          step->AsQuantityIn(Dimension::kLength, 0.0, longest > 0.0 ? longest : kUnlimited,
                              /*min_inclusive=*/false);
     }
   }
