@@ -26,9 +26,7 @@ ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const Resist
 
 ConstrainedStage::ConstrainedStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law,
                                    const Options& options)
-    : analyzer_(analyzer),
-      law_(law),
-      options_(options),
+    : options_(options),
       search_(analyzer, law),
       settle_(search_),
       god_object_(search_, options.proxy_stiffness) {
@@ -99,13 +97,13 @@ void ConstrainedStage::EvaluateInAnalyzerFrame(const PartState& part, StageState
     out->gap_direction.setZero();
     return;
   }
-  analyzer_.Evaluate(out->pose, &out->contact);
+  search_.analyzer().Evaluate(out->pose, &out->contact);
   ++out->contact_evaluations;
   // Out of engagement (withdrawn, about to hand back to positioning) the junctions let go, so a
   // later re-entry forms its contact afresh rather than at a stale anchor.
   if (!out->contact.engaged) run->law = LawState{};
-  law_.Evaluate(out->contact, motion, &run->law, &out->wrench);
-  out->elastic = law_.CheckElasticLimit(out->contact);
+  search_.law().Evaluate(out->contact, motion, &run->law, &out->wrench);
+  out->elastic = search_.law().CheckElasticLimit(out->contact);
   out->stiffness =
       search_.RadialStiffness(out->pose, motion, out->wrench, &out->contact_evaluations);
   SetGap(out);

@@ -68,10 +68,9 @@ class FITFEEL_API ConstrainedStage final : public Stage {
   void EvaluateInAnalyzerFrame(const PartState& part, StageState* state,
                                StageOutput* out) const noexcept;
 
-  const ContactAnalyzer& analyzer_;
-  const ResistanceLaw& law_;
   Options options_;
-  // The probes and searches the two placements share, then the placements (both refer to it).
+  // The analyzer and law with the probes and searches the two placements share, then the
+  // placements (both refer to it).
   ContactSearch search_;
   QuasiStaticSettle settle_;
   GodObject god_object_;  // used only where options_.proxy_stiffness is finite
