@@ -109,6 +109,12 @@ inline std::filesystem::path EmptyFolder(const std::string& group, const std::st
   return dir;
 }
 
+// An empty folder <test temp dir>/<group>/<running test's name>. The temporary folder is the
+// process's own (framework/testing/test_main.cc), so no process number is needed in the name.
+inline std::filesystem::path EmptyTestFolder(const std::string& group) {
+  return EmptyFolder(group, ::testing::UnitTest::GetInstance()->current_test_info()->name());
+}
+
 namespace internal {
 
 // A capture file of its own for each run of each test process, outside the folder the CLI runs

@@ -36,15 +36,7 @@ struct BadLine {
 };
 
 // An empty folder of this process and test to run the CLI in (it must write nothing there).
-std::filesystem::path TestFolder() {
-  const std::filesystem::path dir =
-      std::filesystem::path(::testing::TempDir()) /
-      ("fitfeel-command-line-" + std::to_string(::getpid()) + "-" +
-       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path TestFolder() { return test_support::EmptyTestFolder("command-line"); }
 
 std::string Describe(const BadLine& line) {
   return "fitfeel " + test_support::ShellWords(line.words);

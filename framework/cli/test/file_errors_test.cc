@@ -30,12 +30,7 @@ constexpr const char* kLoop = "too many levels of symbolic links";
 class FileErrorsTest : public ::testing::Test {
  protected:
   FileErrorsTest()
-      : dir_(fs::path(::testing::TempDir()) /
-             ("fitfeel-file-errors-" + std::to_string(::getpid()) + "-" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+      : dir_(test_support::EmptyTestFolder("file-errors")) {}
   ~FileErrorsTest() override { fs::remove_all(dir_); }
 
   // The shipped default scenario with its shaft measured from `file` (relative to the scenario).

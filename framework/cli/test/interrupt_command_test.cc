@@ -65,11 +65,7 @@ std::vector<std::string> Entries(const fs::path& folder) {
 class InterruptCommandTest : public ::testing::Test {
  protected:
   InterruptCommandTest()
-      : dir_(fs::path(::testing::TempDir()) /
-             ("fitfeel-interrupt-" + std::to_string(::getpid()) + "-" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())),
-        out_(dir_ / "out") {
-    fs::remove_all(dir_);
+      : dir_(test_support::EmptyTestFolder("interrupt")), out_(dir_ / "out") {
     fs::create_directories(out_);
     // Ten minutes on the real clock: the run cannot end before the test signals it, however
     // loaded the machine, and it writes 1 000 rows a second meanwhile.

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+
 namespace fitfeel {
 namespace {
 
@@ -20,12 +22,7 @@ namespace fs = std::filesystem;
 class PathCheckTest : public ::testing::Test {
  protected:
   PathCheckTest()
-      : dir_(fs::temp_directory_path() /
-             ("fitfeel-path-check-" + std::to_string(::getpid()) + "-" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+      : dir_(test_support::EmptyTestFolder("path-check")) {}
   ~PathCheckTest() override { fs::remove_all(dir_); }
   fs::path dir_;
 };

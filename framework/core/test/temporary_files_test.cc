@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/cli_runner.h"
+
 namespace fitfeel {
 namespace {
 
@@ -18,12 +20,7 @@ namespace fs = std::filesystem;
 class TemporaryFilesTest : public ::testing::Test {
  protected:
   TemporaryFilesTest()
-      : dir_(fs::temp_directory_path() /
-             ("fitfeel-temporary-files-" + std::to_string(::getpid()) + "-" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+      : dir_(test_support::EmptyTestFolder("temporary-files")) {}
   ~TemporaryFilesTest() override { fs::remove_all(dir_); }
 
   fs::path Touch(const std::string& name) const {

@@ -10,6 +10,7 @@
 #include "framework/core/interrupt.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/test/fake_scene.h"
+#include "framework/testing/cli_runner.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
 
@@ -18,15 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A folder of this process and test only, not created.
-fs::path TestDir() {
-  const fs::path dir =
-      fs::temp_directory_path() /
-      ("fitfeel-interrupted-run-" + std::to_string(::getpid()) + "-" +
-       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::remove_all(dir);
-  return dir;
-}
+// A folder of this test only, not created.
+fs::path TestDir() { return test_support::EmptyTestFolder("interrupted-run") / "out"; }
 
 // Sets the flag during the tick numbered `at` (from 1), as a signal handler would between two
 // ticks: the tick under way completes, the next one does not start.

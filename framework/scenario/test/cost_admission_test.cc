@@ -42,11 +42,7 @@ const std::string kLargeScene =
 class CostAdmission : public ::testing::Test {
  protected:
   CostAdmission()
-      : dir_(fs::path(::testing::TempDir()) /
-             ("fitfeel_cost_admission_" + std::to_string(::getpid()) + "_" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())),
-        work_(dir_ / "work") {
-    fs::remove_all(dir_);
+      : dir_(fitfeel::test_support::EmptyTestFolder("cost-admission")), work_(dir_ / "work") {
     fs::create_directories(work_);
   }
   ~CostAdmission() override { fs::remove_all(dir_); }

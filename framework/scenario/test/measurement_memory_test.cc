@@ -37,12 +37,7 @@ using ::testing::HasSubstr;
 class MeasurementMemory : public ::testing::Test {
  protected:
   MeasurementMemory()
-      : dir_(fs::path(::testing::TempDir()) /
-             ("fitfeel_measurement_memory_" + std::to_string(::getpid()) + "_" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+      : dir_(test_support::EmptyTestFolder("measurement-memory")) {}
   ~MeasurementMemory() override { fs::remove_all(dir_); }
 
   // The paper scene with its shaft measured from the point cloud `points` (in dir_).
