@@ -58,7 +58,7 @@ struct fitfeel_scene {
   std::unique_ptr<fitfeel::PluginRegistry> registry;
   fitfeel::Scene scene;
   fitfeel::PreparedScene prepared;
-  std::unique_ptr<fitfeel::ConstrainedStage> constrained;
+  std::unique_ptr<fitfeel::Stage> constrained;
   std::unique_ptr<fitfeel::PositioningStage> positioning;
   std::unique_ptr<fitfeel::capi_detail::HostDevice> device;
   std::unique_ptr<fitfeel::Scheduler> scheduler;

@@ -22,6 +22,10 @@ struct PartState {
   // scene's part_motion.radial_load once the part is past the entrance where its radial motion is
   // quasi-static; zero otherwise (held, dynamic, or still outside).
   Eigen::Vector2d settle_load{0.0, 0.0};
+  // About the mating axis (several-feature scenes): whether the part turns under the contact's
+  // torque (else it keeps the device's twist), and the torque applied about +y then, N*m.
+  bool free_rotation = false;
+  double applied_torque = 0.0;
 };
 
 // The moving part's pose in the fixed part's mating frame (positioning_stage.h gives the

@@ -1,6 +1,8 @@
 #include "framework/runtime/prepare.h"
 
 #include <chrono>
+#include <cmath>
+#include <string>
 #include <utility>
 
 #include "framework/core/error.h"
@@ -22,23 +24,24 @@ PreparedScene::~PreparedScene() = default;
 PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
 PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
 
-SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng) {
-  if (!scene.surface) {
-    throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
-  }
+namespace {
+
+SkinModelShapes GenerateShapes(const SurfaceType& surface, const std::string& surface_id,
+                               const PartSpec& inner, const PartSpec& outer,
+                               const ModelSettings& model, Rng& rng) {
   // One discretizer and generator for both parts: the surface type decides the grid of each part
   // from its own geometry.
   SkinModelShapes shapes;
   auto t = Clock::now();
-  const auto discretizer = scene.surface->MakeDiscretizer();
-  const auto generator = scene.surface->MakeVariationGenerator();
+  const auto discretizer = surface.MakeDiscretizer();
+  const auto generator = surface.MakeVariationGenerator();
   if (!discretizer || !generator) {
-    throw UnsupportedError("surface type '" + scene.surface_id +
+    throw UnsupportedError("surface type '" + surface_id +
                            "' provides no discretizer or variation generator");
   }
-  if (scene.model.options) generator->Configure(*scene.model.options);
-  const SurfaceGrid inner_grid = discretizer->Discretize(scene.inner, scene.model.resolution);
-  const SurfaceGrid outer_grid = discretizer->Discretize(scene.outer, scene.model.resolution);
+  if (model.options) generator->Configure(*model.options);
+  const SurfaceGrid inner_grid = discretizer->Discretize(inner, model.resolution);
+  const SurfaceGrid outer_grid = discretizer->Discretize(outer, model.resolution);
   shapes.discretize_seconds = SecondsSince(t);
   t = Clock::now();
   // A measured part takes no draw: the other part's draws are those it gets with the same seed
@@ -46,12 +49,45 @@ SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng) {
   auto shape = [&](const PartSpec& part, const SurfaceGrid& grid) {
     return part.measured
                ? MeasuredSkinModelShape(*part.measured, grid, part.size.nominal / 2.0)
-               : generator->Generate(part, grid, scene.model.texture, rng);
+               : generator->Generate(part, grid, model.texture, rng);
   };
-  shapes.inner = shape(scene.inner, inner_grid);
-  shapes.outer = shape(scene.outer, outer_grid);
+  shapes.inner = shape(inner, inner_grid);
+  shapes.outer = shape(outer, outer_grid);
   shapes.generate_seconds = SecondsSince(t);
   return shapes;
+}
+
+// Uniform over the disc of diameter `zone` (ISO 1101's cylindrical position zone seen along the
+// axis): radius zone/2 sqrt(u), direction 2 pi v.
+Eigen::Vector2d DrawInZone(double zone, Rng& rng) {
+  const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+  const double v = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+  const double r = 0.5 * zone * std::sqrt(u), phi = 2.0 * M_PI * v;
+  return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+}  // namespace
+
+PreparedFeature::PreparedFeature() = default;
+PreparedFeature::~PreparedFeature() = default;
+PreparedFeature::PreparedFeature(PreparedFeature&&) noexcept = default;
+PreparedFeature& PreparedFeature::operator=(PreparedFeature&&) noexcept = default;
+
+SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng) {
+  if (!scene.surface) {
+    throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
+  }
+  return GenerateShapes(*scene.surface, scene.surface_id, scene.inner, scene.outer, scene.model,
+                        rng);
+}
+
+SkinModelShapes GenerateSkinModelShapes(const MatingFeature& feature, Rng& rng) {
+  if (!feature.surface) {
+    throw UserError("feature '" + feature.name + "' has no surface type '" + feature.surface_id +
+                    "'");
+  }
+  return GenerateShapes(*feature.surface, feature.surface_id, feature.inner, feature.outer,
+                        feature.model, rng);
 }
 
 PreparedScene Prepare(const Scene& scene) {
@@ -84,6 +120,36 @@ PreparedScene Prepare(const Scene& scene) {
   prepared.law = scene.surface->MakeLaw(scene.model.law);
   prepared.law->Prepare(scene.inner, scene.outer, scene.model);
   prepared.analyze_seconds = SecondsSince(t);
+
+  for (std::size_t i = 1; i < scene.features.size(); ++i) {
+    const MatingFeature& feature = scene.features[i];
+    if (!feature.surface->renders_forces()) {
+      throw UnsupportedError("surface type '" + feature.surface_id +
+                             "' cannot render forces yet: " + feature.surface->limitation());
+    }
+    SkinModelShapes more = GenerateSkinModelShapes(feature, prepared.rng);
+    prepared.discretize_seconds += more.discretize_seconds;
+    prepared.generate_seconds += more.generate_seconds;
+    t = Clock::now();
+    PreparedFeature p;
+    p.inner_sms = std::make_unique<SkinModelShape>(std::move(more.inner));
+    p.outer_sms = std::make_unique<SkinModelShape>(std::move(more.outer));
+    p.analyzer = feature.surface->MakeContactAnalyzer();
+    if (!p.analyzer) {
+      throw UnsupportedError("surface type '" + feature.surface_id +
+                             "' provides no contact analyzer");
+    }
+    p.analyzer->Prepare(feature.inner, *p.inner_sms, feature.outer, *p.outer_sms, feature.model);
+    p.law = feature.surface->MakeLaw(feature.model.law);
+    p.law->Prepare(feature.inner, feature.outer, feature.model);
+    prepared.analyze_seconds += SecondsSince(t);
+    prepared.more_features.push_back(std::move(p));
+  }
+  for (const MatingFeature& feature : scene.features) {
+    prepared.position_deviations.push_back(
+        {DrawInZone(feature.placement.inner_position, prepared.rng),
+         DrawInZone(feature.placement.outer_position, prepared.rng)});
+  }
 
   prepared.total_seconds = SecondsSince(start);
   return prepared;

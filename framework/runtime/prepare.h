@@ -1,6 +1,10 @@
 #pragma once
 
+#include <array>
 #include <memory>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
@@ -11,6 +15,20 @@
 #include "framework/scenario/scene.h"
 
 namespace fitfeel {
+
+// A mating feature of a several-feature scene after the datum one, prepared (its skin model
+// shapes, analyzer and law).
+struct FITFEEL_API PreparedFeature {
+  PreparedFeature();
+  ~PreparedFeature();
+  PreparedFeature(PreparedFeature&&) noexcept;
+  PreparedFeature& operator=(PreparedFeature&&) noexcept;
+
+  std::unique_ptr<SkinModelShape> inner_sms;
+  std::unique_ptr<SkinModelShape> outer_sms;
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+};
 
 // Everything a run needs that depends only on the scene, built once before the tick loop: the skin
 // model shapes of both parts, the contact analyzer's tables and the prepared law. The stages hold
@@ -32,6 +50,12 @@ struct FITFEEL_API PreparedScene {
   std::unique_ptr<ContactAnalyzer> analyzer;
   std::unique_ptr<ResistanceLaw> law;
   bool rotational = false;  // the constrained motion is a rotation (torque is reported)
+  // A several-feature scene: the features after the datum one (Scene::features[1...]), drawn and
+  // prepared in that order after it, and then where each feature's axis lies off its nominal
+  // place on the inner and the outer side (drawn within its position tolerance, joint frame, m;
+  // zero for the datum feature). Empty for a one-feature scene.
+  std::vector<PreparedFeature> more_features;
+  std::vector<std::array<Eigen::Vector2d, 2>> position_deviations;
 
   // Wall time of each prepare step, s.
   double discretize_seconds = 0.0;
@@ -54,10 +78,14 @@ struct SkinModelShapes {
 // this so that the same scene and seed give the same shapes everywhere. Works for surface types
 // without a law too.
 FITFEEL_API SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng);
+// The same for one feature of a several-feature scene.
+FITFEEL_API SkinModelShapes GenerateSkinModelShapes(const MatingFeature& feature, Rng& rng);
 
 // Builds the prepared scene: seeds the generator from scene.run.seed, discretizes and generates
 // the skin model shape of the inner part and then of the outer part with the surface's
-// Discretizer and VariationGenerator, prepares the contact analyzer and the law. Throws
+// Discretizer and VariationGenerator, prepares the contact analyzer and the law. A several-feature
+// scene then does the same for each further feature in order, and last draws the features'
+// positions (inner side, then outer, feature by feature). Throws
 // UnsupportedError for a surface type that cannot render forces, UserError for anything the
 // surface plugin refuses.
 FITFEEL_API PreparedScene Prepare(const Scene& scene);

@@ -1,6 +1,10 @@
 #include "framework/runtime/scene_stages.h"
 
+#include <array>
 #include <cmath>
+#include <vector>
+
+#include "framework/runtime/joint_stage.h"
 
 namespace fitfeel {
 
@@ -24,8 +28,30 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
   if (limited && free_motion.free_stiffness > 0.0) {
     mating.proxy_stiffness = free_motion.free_stiffness;
   }
-  stages.constrained =
-      std::make_unique<ConstrainedStage>(*prepared.analyzer, *prepared.law, mating);
+  if (scene.features.empty()) {
+    stages.constrained =
+        std::make_unique<ConstrainedStage>(*prepared.analyzer, *prepared.law, mating);
+    return stages;
+  }
+  std::vector<JointFeature> features;
+  for (std::size_t i = 0; i < scene.features.size(); ++i) {
+    const MatingFeature& feature = scene.features[i];
+    JointFeature f;
+    f.analyzer = i == 0 ? prepared.analyzer.get() : prepared.more_features[i - 1].analyzer.get();
+    f.law = i == 0 ? prepared.law.get() : prepared.more_features[i - 1].law.get();
+    f.moving = feature.moving;
+    const std::array<Eigen::Vector2d, 2>& deviation = prepared.position_deviations.at(i);
+    const bool inner_moves = feature.moving == Role::kInner;
+    f.moving_axis = feature.placement.at + deviation[inner_moves ? 0 : 1];
+    f.fixed_axis = feature.placement.at + deviation[inner_moves ? 1 : 0];
+    f.angle = feature.placement.angle;
+    f.engages_after = feature.placement.engages_after;
+    features.push_back(f);
+  }
+  JointStage::Options joint;
+  joint.depth_origin = mating.depth_origin;
+  joint.proxy_stiffness = mating.proxy_stiffness;
+  stages.constrained = std::make_unique<JointStage>(std::move(features), joint);
   return stages;
 }
 

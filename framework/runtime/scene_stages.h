@@ -18,11 +18,14 @@ namespace fitfeel {
 //  - constrained: mating depth counted from the positioning stage's depth origin, and the part a
 //    god object across the axis coupled by k_free when the device renders a finite stiffness
 //    (a hand at a haptic device); a device without a limit (a robot) holds it rigidly.
+// A several-feature scene's positioning is its first (datum) feature's, and its constrained
+// stage a JointStage over every feature with the same depth origin and coupling.
 // The stages refer into `prepared`, which must outlive them. Throws UserError for what the
 // surface plugin refuses.
 struct FITFEEL_API SceneStages {
   std::unique_ptr<PositioningStage> positioning;
-  std::unique_ptr<ConstrainedStage> constrained;
+  // A ConstrainedStage, or for a several-feature scene a JointStage over its features.
+  std::unique_ptr<Stage> constrained;
 };
 FITFEEL_API SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
                                         const DeviceSpec& spec);

@@ -260,6 +260,8 @@ bool Scheduler::Tick(double time) noexcept {
   record.wrench = output.wrench;
   record.device_wrench = device_wrench;
   record.elastic = output.elastic;
+  record.feature_count = output.feature_count;
+  record.feature_axial = output.feature_axial;
   record.stiffness = output.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;

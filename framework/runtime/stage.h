@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <string_view>
@@ -8,6 +9,7 @@
 #include "framework/core/wrench.h"
 #include "framework/runtime/part_state.h"
 #include "framework/model/contact_analyzer.h"
+#include "framework/model/joint_features.h"
 #include "framework/model/resistance_law.h"
 
 namespace fitfeel {
@@ -39,6 +41,10 @@ struct StageOutput {
   // The contact analyzer's evaluations this tick (Stage::Evaluate counts from 0): the tick's
   // cost in its own unit, the same on every machine, where its time is the machine's.
   int contact_evaluations = 0;
+  // A joint of several features (JointStage): each feature's axial force on the moving part
+  // (scene y, N), in the scene's order; the rest of the output sums them. 0 features otherwise.
+  int feature_count = 0;
+  std::array<double, kMaxJointFeatures> feature_axial{};
 };
 
 class Stage;

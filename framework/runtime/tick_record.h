@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -21,6 +22,9 @@ struct TickRecord {
   Wrench wrench;              // model wrench on the moving part after the finite guard, N / N*m
   Wrench device_wrench;       // what the safety chain wrote to the device, device N / N*m
   ElasticLimitCheck elastic;  // the contact's stresses against yield (DIN 7190)
+  // A joint of several features: each feature's axial force (StageOutput::feature_axial).
+  int feature_count = 0;
+  std::array<double, kMaxJointFeatures> feature_axial{};
   double stiffness = 0.0;     // radial contact stiffness handed to the device, N/m
   double compute_us = 0.0;    // wall time from device read to device write, us (a measurement)
   StageId stage = StageId::kPositioning;

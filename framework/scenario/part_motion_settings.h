@@ -1,5 +1,8 @@
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 namespace fitfeel {
 
 // Standard gravity (CGPM 1901), m/s^2: turns the part's weight into its mass.
@@ -28,12 +31,49 @@ inline constexpr double kMaxPartDamping = 1e6;
 // The largest radial load a scene may give, N.
 inline constexpr double kMaxRadialLoad = 1e4;
 
+// How the moving part turns about the mating axis (several-feature scenes).
+enum class RotationMotion {
+  // At the device's twist (a device that senses it; otherwise none): the holder takes the torque.
+  kHeld,
+  // The part turns where the contact's torque balances the applied torque (quasi-static).
+  kFree,
+};
+
+// A torque about the mating axis at a time (N*m at s); between points it varies linearly, after
+// the last it stays.
+struct TorquePoint {
+  double time = 0.0;
+  double torque = 0.0;
+};
+
+// The largest torque a scene may apply about the axis, N*m (a hand's grip turns a few N*m; a
+// wrench some hundreds).
+inline constexpr double kMaxAppliedTorque = 1e4;
+
 struct PartMotionSettings {
   RadialMotion radial = RadialMotion::kQuasiStatic;
   double damping = 0.0;  // viscous damping of the part's radial motion, N*s/m (dynamic)
   // The load across the axis, N, along the scene's -z (down), acting once the part's leading end
   // is past the entrance (y >= 0): before it the holder carries the part.
   double radial_load = 0.0;
+  RotationMotion rotation = RotationMotion::kHeld;
+  // Applied about +y while the rotation is free (empty: none), times increasing.
+  std::vector<TorquePoint> torque;
 };
+
+// The applied torque at `time` (N*m): linear between the points, the last one's after them, the
+// first one's before; 0 without points. Allocates nothing.
+inline double TorqueAt(const std::vector<TorquePoint>& points, double time) noexcept {
+  if (points.empty()) return 0.0;
+  if (time <= points.front().time) return points.front().torque;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (time <= points[i].time) {
+      const TorquePoint &a = points[i - 1], &b = points[i];
+      const double span = b.time - a.time;
+      return span > 0.0 ? a.torque + (b.torque - a.torque) * (time - a.time) / span : b.torque;
+    }
+  }
+  return points.back().torque;
+}
 
 }  // namespace fitfeel

@@ -16,11 +16,12 @@
 #include "framework/plugin/registry.h"
 #include "framework/safety/safety_settings.h"
 #include "framework/scenario/part_parser.h"
+#include "framework/scenario/scene_sections.h"
 #include "framework/core/line_endings.h"
 #include "framework/scenario/yaml_file.h"
 
 namespace fitfeel {
-namespace {
+namespace scenario {
 
 // No upper limit on a quantity (a name no other framework source gives a file-private constant:
 // the unity build compiles several sources as one).
@@ -39,19 +40,6 @@ constexpr double kMaxFriction = 1.5;
 // prepared within the design card's second and describes no feature of a machined surface.
 constexpr long kMaxGridSide = 10000;
 constexpr long kMaxGridCells = 4'000'000;
-
-// Runs a plugin's check on `node`: a plugin that refuses with a plain UserError (no location of its
-// own) is refused at `node`, so that no refusal reaches the user without file, line and key.
-template <typename Check>
-auto Located(const ConfigNode& node, const std::string& expected, Check&& check) {
-  try {
-    return check();
-  } catch (const ScenarioError&) {
-    throw;
-  } catch (const UserError& e) {
-    node.Fail(expected, e.what());
-  }
-}
 
 std::string ThreeDigits(double value) {
   char text[32];
@@ -103,15 +91,8 @@ std::shared_ptr<SurfaceType> ResolveSurface(const ConfigNode& node, const Plugin
   return surface;
 }
 
-struct Parts {
-  PartSpec inner;
-  PartSpec outer;
-  Role moving = Role::kInner;
-};
-
-Parts ParseParts(const ConfigNode& root, const SurfaceType& surface,
+Parts ParseParts(const ConfigNode& node, const ConfigNode& moving_node, const SurfaceType& surface,
                  const std::string& surface_id) {
-  const ConfigNode node = root.Child("parts");
   const std::vector<std::string> names = node.Keys();
   if (names.size() != 2) {
     node.Fail("exactly two parts, one with role inner and one with role outer",
@@ -149,7 +130,7 @@ Parts ParseParts(const ConfigNode& root, const SurfaceType& surface,
   }
   Located(node, "a pair of parts the surface type accepts",
           [&] { surface.CheckPair(parts.inner, parts.outer, node); });
-  const std::string moving = root.Child("moving").AsOneOf({names[0], names[1]});
+  const std::string moving = moving_node.AsOneOf({names[0], names[1]});
   parts.moving = moving == parts.inner.name ? Role::kInner : Role::kOuter;
   return parts;
 }
@@ -263,8 +244,39 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (!node.is_map()) {
     node.Fail("a map with the keys radial, damping and radial_load", node.Describe());
   }
-  node.ExpectOnlyKeys({"radial", "damping", "radial_load"});
+  node.ExpectOnlyKeys({"radial", "damping", "radial_load", "rotation", "torque"});
   PartMotionSettings motion;
+  if (std::optional<ConfigNode> rotation = node.Find("rotation")) {
+    motion.rotation = rotation->AsOneOf({"held", "free"}) == "held" ? RotationMotion::kHeld
+                                                                    : RotationMotion::kFree;
+  }
+  if (std::optional<ConfigNode> torque = node.Find("torque")) {
+    if (motion.rotation != RotationMotion::kFree) {
+      torque->Fail("a torque only with rotation: free (a held part's torque is the holder's)",
+                   torque->Describe());
+    }
+    const auto value = [](const ConfigNode& n) {
+      return n.AsQuantityIn(Dimension::kTorque, -kMaxAppliedTorque, kMaxAppliedTorque);
+    };
+    if (torque->is_scalar()) {
+      motion.torque.push_back({0.0, value(*torque)});
+    } else {
+      const char* const expected = "a torque, or a list of {time, torque} with times increasing";
+      if (!torque->is_sequence()) torque->Fail(expected, torque->Describe());
+      for (const ConfigNode& item : torque->Items()) {
+        if (!item.is_map()) item.Fail("a map {time, torque}", item.Describe());
+        item.ExpectOnlyKeys({"time", "torque"});
+        const ConfigNode time = item.Child("time");
+        TorquePoint point{time.AsQuantityIn(Dimension::kTime, 0.0, kMaxDuration),
+                          value(item.Child("torque"))};
+        if (!motion.torque.empty() && !(point.time > motion.torque.back().time)) {
+          time.Fail("a time after the previous point's", time.Describe());
+        }
+        motion.torque.push_back(point);
+      }
+      if (motion.torque.empty()) torque->Fail(expected, "an empty list");
+    }
+  }
   if (std::optional<ConfigNode> radial = node.Find("radial")) {
     const std::string name = radial->AsOneOf({"held", "quasi_static", "dynamic"});
     motion.radial = name == "held"           ? RadialMotion::kHeld
@@ -363,14 +375,10 @@ SceneCost GridCost(const GridShape shapes[2], const PartSpec& inner, const PartS
   return cost;
 }
 
-// The grid each part gets and what preparing the scene costs; refuses, at the key that causes it,
-// a resolution the surface type cannot discretize, a depth table over the analyzers' cap and,
-// unless `allow_large`, a cost over the large-scene thresholds or outputs over the large-output
-// one.
-SceneCost CheckPrepare(const ConfigNode& root, const SurfaceType& surface, const PartSpec& inner,
-                       const PartSpec& outer, const ModelSettings& model, const RunSettings& run,
+SceneCost CheckPrepare(const ConfigNode& model_node, const ConfigNode& duration,
+                       const SurfaceType& surface, const PartSpec& inner, const PartSpec& outer,
+                       const ModelSettings& model, const RunSettings& run,
                        const LoadOptions& options) {
-  const ConfigNode model_node = root.Child("model");
   const std::optional<ConfigNode> resolution_node = model_node.Find("resolution");
   const ConfigNode& grid_key = resolution_node ? *resolution_node : model_node;
   const std::unique_ptr<Discretizer> discretizer = surface.MakeDiscretizer();
@@ -409,7 +417,7 @@ SceneCost CheckPrepare(const ConfigNode& root, const SurfaceType& surface, const
       const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
       const bool table = step_node && model.depth_step > 0.0 &&
                          vertices * kSecondsPerTableVertex > cells * kSecondsPerCell;
-      const ConfigNode key = refusal->output ? root.Child("run").Child("duration")
+      const ConfigNode key = refusal->output ? duration
                              : table         ? *step_node
                                              : grid_key;
       key.Fail(refusal->expected, key.Describe() + ": " + refusal->found);
@@ -431,9 +439,11 @@ SceneCost CheckPrepare(const ConfigNode& root, const SurfaceType& surface, const
   return cost;
 }
 
-}  // namespace
+}  // namespace scenario
 
 namespace {
+
+using namespace scenario;
 
 Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
                     const PluginRegistry& registry, const LoadOptions& options);
@@ -459,12 +469,24 @@ namespace {
 
 Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
                     const PluginRegistry& registry, const LoadOptions& options) {
-  root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "part_motion",
-                       "model", "device", "safety", "run"});
+  root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "features",
+                       "part_motion", "model", "device", "safety", "run"});
+  // A scene joins its two parts over one mating feature (surface, parts) or several (features).
+  const bool several = root.Has("features");
+  if (several) {
+    for (const char* key : {"surface", "parts"}) {
+      if (root.Has(key)) {
+        root.Child(key).Fail("no `" + std::string(key) +
+                                 "` beside `features` (each feature names its surface and parts)",
+                             "both");
+      }
+    }
+  }
   // Every required section is present before any is interpreted, so a missing one is reported
   // first rather than after an unrelated plugin error.
-  for (const char* key : {"scenario", "surface", "parts", "moving", "model", "device", "run"}) {
-    root.Child(key);
+  for (const char* key : {"scenario", "moving", "device", "run"}) root.Child(key);
+  if (!several) {
+    for (const char* key : {"surface", "parts", "model"}) root.Child(key);
   }
 
   Scene scene;
@@ -476,16 +498,23 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
               name.Describe());
   }
   scene.description = root.StringOr("description", "");
-
-  scene.surface = ResolveSurface(root.Child("surface"), registry, options, &scene.surface_id);
-  Parts parts = ParseParts(root, *scene.surface, scene.surface_id);
-  scene.moving = parts.moving;
   if (std::optional<ConfigNode> motion = root.Find("part_motion")) {
     scene.part_motion = ParsePartMotion(*motion);
+    if (!several && scene.part_motion.rotation == RotationMotion::kFree) {
+      motion->Child("rotation").Fail(
+          "rotation: free only in a several-feature scene (features), whose flanks can stop it",
+          "a one-feature scene");
+    }
   }
-  scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);
-  scene.inner = std::move(parts.inner);
-  scene.outer = std::move(parts.outer);
+  if (!several) {
+    scene.surface = ResolveSurface(root.Child("surface"), registry, options, &scene.surface_id);
+    Parts parts = ParseParts(root.Child("parts"), root.Child("moving"), *scene.surface,
+                             scene.surface_id);
+    scene.moving = parts.moving;
+    scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);
+    scene.inner = std::move(parts.inner);
+    scene.outer = std::move(parts.outer);
+  }
 
   const ConfigNode device = root.Child("device");
   if (!device.is_map()) {
@@ -512,8 +541,13 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
     scene.safety = ParseSafetySection(*safety);
   }
   scene.run = ParseRun(root.Child("run"));
-  scene.cost = CheckPrepare(root, *scene.surface, scene.inner, scene.outer, scene.model,
-                            scene.run, options);
+  if (several) {
+    ParseFeatures(root, registry, options, &scene);
+  } else {
+    scene.cost = CheckPrepare(root.Child("model"), root.Child("run").Child("duration"),
+                              *scene.surface, scene.inner, scene.outer, scene.model, scene.run,
+                              options);
+  }
   return scene;
 }
 

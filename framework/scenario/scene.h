@@ -6,11 +6,15 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
 #include "framework/device/device.h"
 #include "framework/model/gps_spec.h"
+#include "framework/model/joint_features.h"
 #include "framework/model/model_settings.h"
 #include "framework/model/surface_type.h"
 #include "framework/safety/safety_settings.h"
@@ -29,7 +33,7 @@ enum class ClockMode { kVirtual, kRealTime };
 // scheduler checks at compile time that its records fit these, so the loader's refusal and the
 // scheduler's agree.
 inline constexpr double kStreamBytesPerTick = 32.0;
-inline constexpr double kTraceBytesPerTick = 448.0;
+inline constexpr double kTraceBytesPerTick = 512.0;
 inline constexpr double kRecordingBytesPerTick = 240.0;
 // The buffers of one run: beyond this a scene is refused rather than swapped.
 inline constexpr double kMaxRunBufferBytes = 2.0 * 1024 * 1024 * 1024;
@@ -90,6 +94,35 @@ struct RunSettings {
   bool write_recording = false;
 };
 
+// Where a mating feature of a several-feature scene lies (docs/assemblies.md). The joint frame is
+// the fixed body's: y along the insertion, its origin on the first feature's axis at that
+// feature's entrance; both bodies' datums coincide there at nominal. Every feature's axis is
+// parallel to y.
+struct FeaturePlacement {
+  Eigen::Vector2d at{0.0, 0.0};  // (x, z) of the feature's axis in the joint frame, nominal, m
+  double angle = 0.0;            // the feature's own frame turned about y from the joint's, rad
+  // Insertion of the first feature before this one meets (its entrance or leading end lies that
+  // much further back), m; 0 for the first.
+  double engages_after = 0.0;
+  // ISO 1101 position tolerance of the feature's axis on each body (diameter of the cylindrical
+  // zone about its nominal place), m; 0: exact. Drawn once per seed.
+  double inner_position = 0.0;
+  double outer_position = 0.0;
+};
+
+// One mating feature of a several-feature scene: a surface type with its pair of part sides and
+// its own model settings (the scene's `model` unless the feature gives its own).
+struct MatingFeature {
+  std::string name;
+  std::string surface_id;
+  std::shared_ptr<const SurfaceType> surface;
+  PartSpec inner;
+  PartSpec outer;
+  Role moving = Role::kInner;  // the side of this feature on the moving body
+  ModelSettings model;
+  FeaturePlacement placement;
+};
+
 // A fully parsed and checked scenario, in SI units. Nothing has run yet: the device is configured
 // but not started, and no skin model shape exists.
 struct Scene {
@@ -108,6 +141,11 @@ struct Scene {
   std::optional<SafetySection> safety;  // the `safety` section when present (force scaling etc.)
   RunSettings run;
   SceneCost cost;
+  // A several-feature scene (`features`): every feature, the first one also in surface, inner,
+  // outer, moving and model above, so that what reads one feature reads the datum feature. Empty
+  // for a one-feature scene.
+  std::vector<MatingFeature> features;
+  std::string fixed_body, moving_body;  // the two bodies' names (several-feature scenes)
 };
 
 struct LoadOptions {

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framework/core/export.h"
+#include "framework/model/contact_analyzer.h"
+#include "framework/model/gps_spec.h"
+#include "framework/model/resistance_law.h"
+#include "framework/runtime/stage.h"
+
+namespace fitfeel {
+
+// One mating feature of a joint, as the joint stage reads it: its prepared analyzer and law, the
+// side of it on the moving body, and where its axis lies on each body in the joint frame (the
+// fixed body's, y along the insertion; the moving body at zero offset and twist), deviations
+// drawn within their position tolerances included.
+struct JointFeature {
+  const ContactAnalyzer* analyzer = nullptr;
+  const ResistanceLaw* law = nullptr;
+  Role moving = Role::kInner;
+  Eigen::Vector2d moving_axis{0.0, 0.0};  // (x, z), m
+  Eigen::Vector2d fixed_axis{0.0, 0.0};   // (x, z), m
+  double angle = 0.0;                     // the feature's frame turned about y, rad
+  double engages_after = 0.0;             // joint depth at which the feature's depth is 0, m
+};
+
+// Mating over several features at once (docs/assemblies.md): the moving body's pose (depth along
+// the joint's axis, offset across it, twist about it) gives each feature its own mating pose;
+// each feature's analyzer and law give its wrench, and the body's free degrees of freedom (the
+// offset under the scene's load or the hand's coupling spring, the twist where the rotation is
+// free) settle where the summed wrench, the load and the applied torque balance. A robot holds the
+// offset where the device puts it (radial: held) or lets it settle under the load (quasi-static);
+// a hand at a haptic device (finite proxy stiffness) couples the body to the device across the
+// axis by that spring, as the one-feature god object does. The depth is the device's.
+//
+// The balance is a damped Newton iteration on (x, z, rho theta) with a finite-difference Jacobian
+// and a proximal term k_r (q_prev - q) that keeps it well posed where nothing but the load acts
+// (clearance); once the body stops moving the term vanishes and the balance is exact. Per tick:
+// no allocation, bounded work (kMaxIterations).
+class FITFEEL_API JointStage final : public Stage {
+ public:
+  struct Options {
+    // As ConstrainedStage::Options: the scene-frame y of joint depth 0, and the coupling spring
+    // of a hand (infinite: a robot holds the body).
+    double depth_origin = 0.0;
+    double proxy_stiffness = std::numeric_limits<double>::infinity();
+  };
+  // Newton iterations of one tick's balance at most.
+  static constexpr int kMaxIterations = 8;
+
+  // Every feature's analyzer and law must be prepared and outlive the stage. Throws UserError for
+  // fewer than two or more than kMaxJointFeatures features, an unprepared analyzer or bad
+  // options.
+  JointStage(std::vector<JointFeature> features, const Options& options);
+  const Options& options() const { return options_; }
+  const std::vector<JointFeature>& features() const { return features_; }
+  // The length that turns the twist into the balance's third coordinate (rho): the farthest
+  // feature axis from the joint's, or 10 mm where all lie on it.
+  double lever() const { return lever_; }
+
+ protected:
+  StageId DoId() const override { return StageId::kConstrained; }
+  std::unique_ptr<StageState> DoMakeState() const override;
+  void DoEvaluate(const PartState& part, StageState* state,
+                  StageOutput* out) const noexcept override;
+
+ private:
+  struct Sum;
+  // The summed wrench of every feature (without history) with the body at offset (x, z) = q.head(2)
+  // and twist q(2) / lever, at `depth`; with `states` (one per feature), the run's stateful
+  // friction, advanced, and the per-feature outputs written to `out`.
+  void Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part, LawState* states,
+                Sum* sum, StageOutput* out) const noexcept;
+
+  std::vector<JointFeature> features_;
+  Options options_;
+  double lever_ = 0.01;
+};
+
+}  // namespace fitfeel
