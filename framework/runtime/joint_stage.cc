@@ -57,8 +57,8 @@ Eigen::Vector2d Turn(const Eigen::Vector2d& v, double angle) {
 
 JointStage::JointStage(std::vector<JointFeature> features, const Options& options)
     : features_(std::move(features)), options_(options) {
-  if (features_.size() < 2 || features_.size() > static_cast<std::size_t>(kMaxJointFeatures)) {
-    throw UserError("joint stage: 2 to " + std::to_string(kMaxJointFeatures) +
+  if (features_.empty() || features_.size() > static_cast<std::size_t>(kMaxJointFeatures)) {
+    throw UserError("joint stage: 1 to " + std::to_string(kMaxJointFeatures) +
                     " features, not " + std::to_string(features_.size()));
   }
   double lever = 0.0;
@@ -163,7 +163,8 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
   Eigen::Vector3d q = run->q;
   if (!free_offset) q.head<2>() = device_offset;
   if (!free_twist) q.z() = device_arc;
-  const Eigen::Vector3d previous = q;
+  // The proximal term's anchor: where the current iteration started.
+  Eigen::Vector3d anchor = q;
   const double k_spring = hand ? options_.proxy_stiffness : 0.0;
   const Eigen::Vector2d load = hand ? Eigen::Vector2d::Zero() : part.settle_load;
   const double torque = free_twist ? part.applied_torque : 0.0;
@@ -179,7 +180,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
                       (sum.wrench.torque.y() + torque) / lever_);
     g.head<2>() += k_spring * (device_offset - at.head<2>());
     // A hand's spring holds the offset already; the proximal term holds what nothing else does.
-    const Eigen::Vector3d proximal = kProximalStiffness * (previous - at);
+    const Eigen::Vector3d proximal = kProximalStiffness * (anchor - at);
     if (!hand) g.head<2>() += proximal.head<2>();
     g.z() += proximal.z();
     for (int k = 0; k < 3; ++k) {
@@ -244,7 +245,17 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
         }
       }
       q += t * step;
+      // The next iteration's anchor is where this one ended: the residual there without the
+      // proximal term is the true one (a proximal point iteration, so that a body that nothing
+      // but the load moves travels up to the load over k_r each iteration, not each tick).
       g = g_t;
+      const Eigen::Vector3d proximal = kProximalStiffness * (anchor - q);
+      if (!hand) g.head<2>() -= proximal.head<2>();
+      g.z() -= proximal.z();
+      for (int k = 0; k < 3; ++k) {
+        if (!active[k]) g[k] = 0.0;
+      }
+      anchor = q;
     }
   }
   run->q = q;

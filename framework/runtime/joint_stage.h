@@ -51,8 +51,9 @@ class FITFEEL_API JointStage final : public Stage {
   // Newton iterations of one tick's balance at most.
   static constexpr int kMaxIterations = 8;
 
-  // Every feature's analyzer and law must be prepared and outlive the stage. Throws UserError for
-  // fewer than two or more than kMaxJointFeatures features, an unprepared analyzer or bad
+  // Every feature's analyzer and law must be prepared and outlive the stage (a scene joins 2 or
+  // more; one alone is a feature run apart, for comparison). Throws UserError for none or more
+  // than kMaxJointFeatures features, an unprepared analyzer or bad
   // options.
   JointStage(std::vector<JointFeature> features, const Options& options);
   const Options& options() const { return options_; }
