@@ -51,6 +51,20 @@ std::string TraceHeader() {
          "device_fault";
 }
 
+std::string TraceHeader(const std::vector<std::string>& features) {
+  std::string header = TraceHeader();
+  for (const std::string& name : features) header += ",axial_" + name + "_N";
+  return header;
+}
+
+void AppendTraceRow(std::string* out, const TickRecord& r, int features) {
+  AppendTraceRow(out, r);
+  for (int i = 0; i < features && i < kMaxJointFeatures; ++i) {
+    *out += ',';
+    AppendShortestDecimal(out, r.feature_axial[i]);
+  }
+}
+
 std::string TraceRow(const TickRecord& r) {
   std::string row;
   row.reserve(256);
@@ -111,6 +125,14 @@ void SummaryBuilder::Add(const TickRecord& r) {
   torque_.Add(r.wrench.torque.norm());
   depth_.Add(r.pose.depth * 1e3);
   if (r.contact.interference) ++interference_ticks_;
+  if (r.feature_count > 0) {
+    features_ = r.feature_count;
+    for (int i = 0; i < r.feature_count && i < kMaxJointFeatures; ++i) {
+      feature_axial_[i].Add(std::abs(r.feature_axial[i]));
+    }
+    axis_torque_.Add(r.wrench.torque.y());
+    twist_.Add(r.pose.angle);
+  }
 }
 
 nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& trace,
@@ -159,6 +181,16 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   j["fy_N"] = fy.ToJson();
   j["radial_resistance_N"] = radial.ToJson();
   if (info.rotational) j["torque_Nm"] = torque.ToJson();
+  if (!info.features.empty()) {
+    // Each feature's share of the axial resistance (|fy| of its own wrench), by name.
+    nlohmann::json features = nlohmann::json::object();
+    for (std::size_t i = 0; i < info.features.size() && i < feature_axial_.size(); ++i) {
+      features[info.features[i]] = {{"axial_resistance_N", feature_axial_[i].ToJson()}};
+    }
+    j["features"] = features;
+    j["axis_torque_Nm"] = axis_torque_.ToJson();
+    j["twist_rad"] = twist_.ToJson();
+  }
   j["depth_mm"] = depth.ToJson();
   // Where and by how much the contact's stresses came closest to (or passed) the yield strength.
   nlohmann::json elastic = {{"yielding_ticks", yielding_ticks}};

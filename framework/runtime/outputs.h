@@ -5,6 +5,7 @@
 #include <limits>
 #include <filesystem>
 #include <string>
+#include <array>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,7 @@ namespace fitfeel {
 struct RunInfo {
   std::string scenario;
   std::filesystem::path scenario_file;
+  std::vector<std::string> features;  // a several-feature scene's, in order
   std::uint64_t seed = 0;
   std::string surface;
   std::string law;
@@ -59,10 +61,15 @@ struct RecordingOutput {
 // physical newtons. The dev_* columns at the end are what the safety chain sent to the device
 // (device newtons: scaled, coupled, limited).
 FITFEEL_API std::string TraceHeader();
+// The same with a column per feature of a several-feature scene after the others:
+// axial_<feature>_N, each feature's axial force (TickRecord::feature_axial).
+FITFEEL_API std::string TraceHeader(const std::vector<std::string>& features);
 // One row of trace.csv (no newline). Numbers in their shortest exact decimal form.
 FITFEEL_API std::string TraceRow(const TickRecord& record);
 // The same row appended to `out` (no newline): no allocation once `out` has room.
 FITFEEL_API void AppendTraceRow(std::string* out, const TickRecord& record);
+// The same with `features` per-feature columns (TraceHeader(features)).
+FITFEEL_API void AppendTraceRow(std::string* out, const TickRecord& record, int features);
 
 // Running mean, minimum and maximum of a sample.
 struct RunningSummary {
@@ -91,6 +98,11 @@ class FITFEEL_API SummaryBuilder {
 
  private:
   RunningSummary axial_, fy_, radial_, torque_, depth_;
+  // A several-feature scene: each feature's axial force, and the torque about the axis and the
+  // twist (every constrained tick).
+  std::array<RunningSummary, kMaxJointFeatures> feature_axial_;
+  int features_ = 0;
+  RunningSummary axis_torque_, twist_;
   std::uint64_t interference_ticks_ = 0;
   std::uint64_t yielding_ticks_ = 0;
   TickRecord worst_;  // the tick with the largest elastic-limit utilisation

@@ -39,6 +39,9 @@ void Stage::Evaluate(const PartState& part, StageState* state,
   FITFEEL_DEMAND(out != nullptr);
   FITFEEL_DEMAND(state != nullptr && state->owner() == this);
   out->contact_evaluations = 0;
+  // Only a joint of several features writes its features' forces; every other tick has none.
+  out->feature_count = 0;
+  out->feature_axial.fill(0.0);
   DoEvaluate(part, state, out);
   out->stage = id();
 }

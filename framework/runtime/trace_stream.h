@@ -26,6 +26,8 @@ struct StreamOutputs {
   bool trace = true;
   bool summary = true;
   std::optional<RecordingInfo> recording;  // set: write recording.csv with this header
+  // A several-feature scene's features: a trace column of each one's axial force.
+  std::vector<std::string> features;
 };
 
 // The run's outputs written while it runs, so that memory stays bounded whatever its duration:

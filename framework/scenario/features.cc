@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -162,6 +163,12 @@ void ParseFeatures(const ConfigNode& root, const PluginRegistry& registry,
                    surface.Describe() + ", whose parts turn about a centre");
     }
     const ConfigNode parts_node = f.Child("parts");
+    // Every feature joins the moving body to the fixed one: refused at the feature's parts, not at
+    // `moving`, where they name another.
+    if (parts_node.is_map() && !parts_node.Has(moving.AsString())) {
+      parts_node.Fail("the moving part '" + moving.AsString() + "' among the feature's parts",
+                      "the parts " + JoinList(parts_node.Keys()));
+    }
     Parts parts = ParseParts(parts_node, moving, *feature.surface, feature.surface_id);
     const std::string moving_body = moving.AsString();
     const std::string fixed_body =
@@ -202,6 +209,16 @@ void ParseFeatures(const ConfigNode& root, const PluginRegistry& registry,
                  "their cross-sections overlapping by " +
                      FormatQuantity(overlap, Dimension::kLength));
       }
+    }
+  }
+
+  // A scene-wide model that no feature takes would be read by nothing: refused, not ignored.
+  if (std::optional<ConfigNode> model = root.Find("model")) {
+    bool used = false;
+    for (const std::string& name : names) used = used || !node.Child(name).Has("model");
+    if (!used) {
+      model->Fail("no scene-wide `model` where every feature gives its own",
+                  "a model no feature uses");
     }
   }
 

@@ -242,7 +242,8 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
 
 PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (!node.is_map()) {
-    node.Fail("a map with the keys radial, damping and radial_load", node.Describe());
+    node.Fail("a map with the keys radial, damping, radial_load, rotation and torque",
+              node.Describe());
   }
   node.ExpectOnlyKeys({"radial", "damping", "radial_load", "rotation", "torque"});
   PartMotionSettings motion;

@@ -60,17 +60,8 @@ std::string DescribePart(const PartSpec& part, bool moving) {
   return out;
 }
 
-}  // namespace
-
-std::string DescribeScene(const Scene& scene) {
-  std::string out = "scenario     " + scene.name + " (" + scene.file.string() + ")\n";
-  if (!scene.description.empty()) out += "description  " + scene.description + "\n";
-  out += "surface      " + scene.surface_id + "\n";
-  out += "parts\n";
-  out += DescribePart(scene.inner, scene.moving == Role::kInner);
-  out += DescribePart(scene.outer, scene.moving == Role::kOuter);
-  const ModelSettings& model = scene.model;
-  out += "model        law " + model.law + ", friction " + Number(model.friction) +
+std::string DescribeModel(const ModelSettings& model) {
+  return "law " + model.law + ", friction " + Number(model.friction) +
          " (static " + Number(model.static_friction) + ", breakaway " +
          FormatQuantity(model.breakaway_displacement, Dimension::kLength) + ")" +
          ", contact stiffness " +
@@ -82,7 +73,57 @@ std::string DescribeScene(const Scene& scene) {
                                      : std::to_string(model.resolution.rows) + " x " +
                                            std::to_string(model.resolution.columns)) +
          ", texture " + TextureModeName(model.texture) +
-         ", depth step " + (model.depth_step > 0.0 ? Length(model.depth_step) : "auto") + "\n";
+         ", depth step " + (model.depth_step > 0.0 ? Length(model.depth_step) : "auto");
+}
+
+// Where a feature of a several-feature scene lies, as the loader understood it.
+std::string DescribePlacement(const MatingFeature& f, bool datum) {
+  if (datum) return "the datum: its axis is the joint's";
+  const FeaturePlacement& p = f.placement;
+  std::string out = "at x " + Length(p.at.x()) + ", z " + Length(p.at.y());
+  if (p.angle != 0.0) out += ", turned " + FormatQuantity(p.angle, Dimension::kAngle);
+  if (p.engages_after > 0.0) out += ", engages after " + Length(p.engages_after);
+  if (p.inner_position > 0.0) {
+    out += ", position " + f.inner.name + " " + Length(p.inner_position);
+  }
+  if (p.outer_position > 0.0) {
+    out += ", position " + f.outer.name + " " + Length(p.outer_position);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string DescribeScene(const Scene& scene) {
+  std::string out = "scenario     " + scene.name + " (" + scene.file.string() + ")\n";
+  if (!scene.description.empty()) out += "description  " + scene.description + "\n";
+  if (scene.features.empty()) {
+    out += "surface      " + scene.surface_id + "\n";
+    out += "parts\n";
+    out += DescribePart(scene.inner, scene.moving == Role::kInner);
+    out += DescribePart(scene.outer, scene.moving == Role::kOuter);
+    out += "model        " + DescribeModel(scene.model) + "\n";
+  } else {
+    out += "bodies       " + scene.fixed_body + " (fixed), " + scene.moving_body + " (moving)\n";
+    for (std::size_t i = 0; i < scene.features.size(); ++i) {
+      const MatingFeature& f = scene.features[i];
+      out += "feature      " + f.name + ": " + f.surface_id + ", " + DescribePlacement(f, i == 0) +
+             "\n";
+      out += DescribePart(f.inner, f.moving == Role::kInner);
+      out += DescribePart(f.outer, f.moving == Role::kOuter);
+      out += "  model      " + DescribeModel(f.model) + "\n";
+    }
+    const PartMotionSettings& motion = scene.part_motion;
+    out += "rotation     " +
+           std::string(motion.rotation == RotationMotion::kFree ? "free" : "held") +
+           " about the axis";
+    for (const TorquePoint& point : motion.torque) {
+      out += (&point == &motion.torque.front() ? ", torque " : ", ") +
+             FormatQuantity(point.torque, Dimension::kTorque) + " at " +
+             FormatQuantity(point.time, Dimension::kTime);
+    }
+    out += "\n";
+  }
   out += "device       " + scene.device_id;
   if (scene.device) {
     const std::string model_name = scene.device->spec().model;

@@ -7,12 +7,16 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <limits>
 #include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "framework/core/error.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/joint_stage.h"
 #include "framework/runtime/prepare.h"
@@ -225,6 +229,60 @@ TEST(TwoPinPlate, JamsExactlyWhereThePitchMismatchExceedsTheClearances) {
   EXPECT_EQ(pressed, 0) << "E7 holes clear an m6 pin on their own";
   EXPECT_GT(jammed, 3);
   EXPECT_GT(free, 3);
+}
+
+}  // namespace
+}  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+std::string ShippedText(const char* file) {
+  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / file);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string Replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// The loader's refusal of `text`, or "" when it loads.
+std::string Refusal(const std::string& text) {
+  try {
+    LoadSceneFromYaml(text, "edited.yaml", Registry());
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
+  const std::string hub = ShippedText("keyed-hub.yaml");
+  ASSERT_EQ(Refusal(hub), "");
+  // The key placed inside the shaft: its cross-section overlaps the bore's shaft.
+  std::string refusal = Refusal(Replaced(hub, "at: {x: 0 mm, z: 16.3 mm}", "at: {x: 0 mm, z: 10 mm}"));
+  EXPECT_NE(refusal.find("edited.yaml:"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("features.key.at"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("overlapping"), std::string::npos) << refusal;
+  // The datum feature placed off the joint's axis.
+  refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.cylindrical\n",
+                             "    surface: fitfeel.surface.cylindrical\n    at: {x: 1 mm, z: 0 mm}\n"));
+  EXPECT_NE(refusal.find("features.bore.at"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("datum"), std::string::npos) << refusal;
+  // A feature joining another pair of parts.
+  refusal = Refusal(Replaced(hub, "      hub:\n        role: outer\n        size: 8 mm JS9",
+                             "      collar:\n        role: outer\n        size: 8 mm JS9"));
+  EXPECT_NE(refusal.find("features.key.parts"), std::string::npos) << refusal;
+  // A spherical feature turns about a centre: it cannot join an axial joint.
+  refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.planar", "    surface: fitfeel.surface.spherical"));
+  EXPECT_NE(refusal.find("features.key.surface"), std::string::npos) << refusal;
+  // A free rotation needs a feature whose flanks can stop it.
+  refusal = Refusal(Replaced(ShippedText("pin-cylindrical.yaml"), "part_motion:\n",
+                             "part_motion:\n  rotation: free\n"));
+  EXPECT_NE(refusal.find("part_motion.rotation"), std::string::npos) << refusal;
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ TEST(TraceStreamTest, StreamedTraceAndSummaryEqualTheKeptOnes) {
   testing::KinematicDevice device(-1e-3, 10e-3, {0.0, -20e-6});
   device.Start(1e-3);
   // A ring of 8 rows: the virtual loop waits for the writer again and again, and loses nothing.
-  TraceStream stream({dir, true, true, std::nullopt}, nullptr, 8);
+  TraceStream stream({dir, true, true, std::nullopt, {}}, nullptr, 8);
   SchedulerSettings settings{1000.0, 0.5, ClockMode::kVirtual};
   settings.stream = &stream.ring();
   Scheduler streamed(device, s.positioning, s.constrained, settings);
@@ -133,7 +133,7 @@ TEST(TraceStreamTest, UnderARealTimeClockAFullRingDropsAndCountsRowsAndNeverWait
 TEST(TraceStreamTest, AnUnfinishedStreamLeavesNothing) {
   const fs::path dir = StreamDir("unfinished");
   {
-    TraceStream stream({dir, true, true, RecordingInfo{"x"}});
+    TraceStream stream({dir, true, true, RecordingInfo{"x"}, {}});
     StreamRow row;
     row.has_sample = true;
     ASSERT_TRUE(stream.ring().TryPush(row));
@@ -146,7 +146,7 @@ TEST(TraceStreamTest, AnUnfinishedStreamLeavesNothing) {
 TEST(TraceStreamTest, ARefusedRecordingSampleFailsTheRunAndLeavesNothing) {
   const fs::path dir = StreamDir("refused");
   fs::create_directories(dir);
-  TraceStream stream({dir, true, true, RecordingInfo{"x"}});
+  TraceStream stream({dir, true, true, RecordingInfo{"x"}, {}});
   StreamRow row;
   row.has_sample = true;
   row.sample.velocity.x() = std::numeric_limits<double>::quiet_NaN();
