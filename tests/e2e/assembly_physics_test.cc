@@ -20,6 +20,7 @@
 #include "framework/plugin/registry.h"
 #include "framework/runtime/joint_stage.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/scenario/scene.h"
 
@@ -283,6 +284,44 @@ TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
   refusal = Refusal(Replaced(ShippedText("pin-cylindrical.yaml"), "part_motion:\n",
                              "part_motion:\n  rotation: free\n"));
   EXPECT_NE(refusal.find("part_motion.rotation"), std::string::npos) << refusal;
+}
+
+}  // namespace
+}  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// The keyed hub slid on by a person's hand (the simulated scripted hand, aiming 0.3 mm off the
+// axis, with tremor): the god object's spring couples the hub across the axis, and what the hand
+// feels stays the spring's pull and the friction, with no energy created.
+TEST(KeyedHub, AHandSlidesItOnPassively) {
+  std::string text = ShippedText("keyed-hub.yaml");
+  const std::size_t motion = text.find("part_motion:");
+  const std::size_t run = text.find("run:");
+  ASSERT_NE(motion, std::string::npos);
+  ASSERT_NE(run, std::string::npos);
+  text = text.substr(0, motion) +
+         "part_motion:\n  radial: held\n"
+         "device:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n"
+         "  hand: {mass: 0.5 kg, stiffness: 2000 N/m, damping: 20 N*s/m, tremor: true,"
+         " aim_error: [0.3 mm, 0 mm]}\n"
+         "  waypoints:\n    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
+         "    - {time: 4 s, position: [0 mm, 44 mm, 0 mm]}\n" +
+         Replaced(text.substr(run), "duration: 5.2 s", "duration: 4.5 s");
+  RunOptions options;
+  const RunResult result = RunScene(LoadSceneFromYaml(text, "hand.yaml", Registry()), options);
+  EXPECT_EQ(result.stats.guard_faults, 0u);
+  EXPECT_GT(result.summary["depth_mm"]["max"].get<double>(), 40.0);
+  EXPECT_EQ(result.summary["safety"]["energy_created_J"].get<double>(), 0.0);
+  // The hand aims 0.3 mm off the axis; the bore holds the hub within its clearance, so the
+  // coupling pulls the hand back until its own stiffness (2000 N/m over 0.3 mm: 0.6 N) and its
+  // tremor balance: about a newton, never the contact's kN.
+  EXPECT_LT(result.summary["radial_resistance_N"]["max"].get<double>(), 5.0);
+  std::printf("keyed hub by hand: depth %.4g mm, radial at most %.4g N, axial at most %.4g N\n",
+              result.summary["depth_mm"]["max"].get<double>(),
+              result.summary["radial_resistance_N"]["max"].get<double>(),
+              result.summary["axial_resistance_N"]["max"].get<double>());
 }
 
 }  // namespace
