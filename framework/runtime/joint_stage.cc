@@ -45,6 +45,10 @@ constexpr int kLineSearchSteps = 6;
 
 struct JointState final : StageState {
   Eigen::Vector3d q{0.0, 0.0, 0.0};  // offset (x, z), lever * twist
+  // The last finite-difference Jacobian of the balance, reused while its steps make progress
+  // (the contacts' stiffness changes only where one starts or ends).
+  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Identity();
+  bool jacobian_valid = false;
   std::array<LawState, kMaxJointFeatures> law;
 };
 
@@ -160,6 +164,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
   if (out->stage != StageId::kConstrained) {
     run->q = Eigen::Vector3d(out->pose.offset.x(), out->pose.offset.y(), lever_ * out->pose.angle);
     run->law = {};
+    run->jacobian_valid = false;
   }
   Eigen::Vector3d q = run->q;
   if (!free_offset) q.head<2>() = device_offset;
@@ -203,12 +208,16 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     for (int iteration = 0; sum.engaged && iteration < kMaxIterations; ++iteration) {
       const double scale = sum.wrench.force.norm() + load.norm() + std::abs(torque) / lever_;
       if (g.lpNorm<Eigen::Infinity>() <= kForceTolerance * (1.0 + scale)) break;
-      Eigen::Matrix3d jacobian = Eigen::Matrix3d::Identity();
-      for (int k = 0; k < 3; ++k) {
-        if (!active[k]) continue;
-        Eigen::Vector3d probe = q;
-        probe[k] += kDifferenceStep;
-        jacobian.col(k) = (residual(probe) - g) / kDifferenceStep;
+      Eigen::Matrix3d& jacobian = run->jacobian;
+      if (!run->jacobian_valid) {
+        jacobian.setIdentity();
+        for (int k = 0; k < 3; ++k) {
+          if (!active[k]) continue;
+          Eigen::Vector3d probe = q;
+          probe[k] += kDifferenceStep;
+          jacobian.col(k) = (residual(probe) - g) / kDifferenceStep;
+        }
+        run->jacobian_valid = true;
       }
       Eigen::Vector3d step = jacobian.partialPivLu().solve(-g);
       if (!step.allFinite() || !(step.dot(g) > 0.0)) {
@@ -246,6 +255,9 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
         }
       }
       q += t * step;
+      // A step that did not halve the residual had a stale or kinked Jacobian: the next one
+      // differences afresh.
+      const double before = g.norm();
       // The next iteration's anchor is where this one ended: the residual there without the
       // proximal term is the true one (a proximal point iteration, so that a body that nothing
       // but the load moves travels up to the load over k_r each iteration, not each tick).
@@ -257,6 +269,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
         if (!active[k]) g[k] = 0.0;
       }
       anchor = q;
+      if (!(g.norm() < 0.5 * before)) run->jacobian_valid = false;
     }
   }
   run->q = q;
