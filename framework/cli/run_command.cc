@@ -23,6 +23,8 @@
 #include "framework/core/path_check.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
+#include "framework/runtime/sequence_run.h"
+#include "framework/scenario/sequence.h"
 #include "framework/scenario/scene.h"
 
 namespace fitfeel::cli {
@@ -136,6 +138,48 @@ void PrintSummary(const RunResult& r) {
   }
 }
 
+// What a run of the scenario `name` takes from the command line: its folder (checked), seed and
+// clock, the progress line and the interrupt's cooperation.
+RunOptions CommandRunOptions(const RunArgs& args, const std::string& name, Progress* progress,
+                             InterruptScope* interrupt) {
+  RunOptions options;
+  options.out_dir = args.out.empty() ? fs::path("out") / name : fs::path(args.out);
+  CheckOutputFolder("--out", options.out_dir);
+  options.seed = args.seed;
+  if (args.realtime) options.clock = ClockMode::kRealTime;
+  if (args.virtual_clock) options.clock = ClockMode::kVirtual;
+  options.watch = [progress](const Scheduler* scheduler) {
+    if (scheduler) {
+      progress->Start(scheduler);
+    } else {
+      progress->Stop();
+    }
+  };
+  options.stop = &InterruptFlag();
+  options.prepared = [interrupt](const PreparedScene&) { interrupt->Cooperate(); };
+  SweepStaleTemporaries(options.out_dir);
+  return options;
+}
+
+// A sequence: its steps in order, each printed as a run is, then the sequence's summary.
+void RunSteps(const RunArgs& args, const fs::path& file, const PluginRegistry& registry,
+              const LoadOptions& load, InterruptScope& interrupt) {
+  const Sequence sequence = LoadSequence(file, registry, load);
+  Progress progress;
+  const RunOptions options = CommandRunOptions(args, sequence.name, &progress, &interrupt);
+  for (const SequenceStep& step : sequence.steps) {
+    SweepStaleTemporaries(options.out_dir / step.scene.name);
+  }
+  const SequenceResult result = RunSequence(sequence, options);
+  std::printf("fitfeel run: sequence %s (%s), %zu steps\n", sequence.name.c_str(),
+              file.string().c_str(), result.steps.size());
+  for (std::size_t k = 0; k < result.steps.size(); ++k) {
+    std::printf("\nstep %zu: %s\n", k + 1, sequence.steps[k].scene.name.c_str());
+    PrintSummary(result.steps[k]);
+  }
+  if (!result.summary.empty()) std::printf("\nsummary %s\n", result.summary.string().c_str());
+}
+
 void Run(const RunArgs& args) {
   // Until the scene is prepared nothing is written and SIGINT or SIGTERM ends the process at once;
   // from then on the run stops at the next tick boundary and removes its temporaries: an
@@ -148,25 +192,13 @@ void Run(const RunArgs& args) {
   // Every check of the scenario happens here, before anything runs or any file is created.
   LoadOptions load;
   load.allow_large = args.allow_large;
+  if (IsSequenceFile(file)) {
+    RunSteps(args, file, registry, load, interrupt);
+    return;
+  }
   Scene scene = LoadScene(file, registry, load);
-
-  RunOptions options;
-  options.out_dir = args.out.empty() ? fs::path("out") / scene.name : fs::path(args.out);
-  CheckOutputFolder("--out", options.out_dir);
-  options.seed = args.seed;
-  if (args.realtime) options.clock = ClockMode::kRealTime;
-  if (args.virtual_clock) options.clock = ClockMode::kVirtual;
   Progress progress;
-  options.watch = [&progress](const Scheduler* scheduler) {
-    if (scheduler) {
-      progress.Start(scheduler);
-    } else {
-      progress.Stop();
-    }
-  };
-  options.stop = &InterruptFlag();
-  options.prepared = [&interrupt](const PreparedScene&) { interrupt.Cooperate(); };
-  SweepStaleTemporaries(options.out_dir);
+  const RunOptions options = CommandRunOptions(args, scene.name, &progress, &interrupt);
   const RunResult result = RunScene(std::move(scene), options);
   PrintSummary(result);
 }

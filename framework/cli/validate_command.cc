@@ -7,6 +7,7 @@
 #include "framework/plugin/registry.h"
 #include "framework/scenario/scene.h"
 #include "framework/scenario/scene_summary.h"
+#include "framework/scenario/sequence.h"
 
 namespace fitfeel::cli {
 
@@ -30,6 +31,10 @@ void AddValidateCommand(CLI::App& app) {
     }
     LoadOptions options;
     options.allow_large = *allow_large;
+    if (IsSequenceFile(*file)) {
+      std::cout << DescribeSequence(LoadSequence(*file, registry, options)) << "valid\n";
+      return;
+    }
     const Scene scene = LoadScene(*file, registry, options);
     std::cout << DescribeScene(scene) << "valid\n";
   });

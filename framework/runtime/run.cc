@@ -158,6 +158,8 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
                         std::to_string(scheduler.planned_ticks()) + " ticks; no outputs written");
     }
     result.stats = scheduler.stats();
+    result.final_pose = scheduler.last_output().pose;
+    result.final_stage = scheduler.last_output().stage;
     info.device_report = scene.device->report();
     if (info.device_report.IsTrue("stopped_on_faults")) {
       result.notes.push_back("warning: the device '" + scene.device_id +

@@ -42,6 +42,10 @@ struct RunResult {
   OutputPaths paths;
   nlohmann::json summary;
   std::vector<std::string> notes;  // one line each, for the user (stiffness beyond the device...)
+  // Where the last tick left the moving part (a sequence's next step seats it there), and in
+  // which stage.
+  MatingPose final_pose;
+  StageId final_stage = StageId::kPositioning;
 };
 
 // A whole run of a loaded scene: Prepare, the two stages, the device started at run.rate, the

@@ -43,7 +43,12 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
     const std::array<Eigen::Vector2d, 2>& deviation = prepared.position_deviations.at(i);
     const bool inner_moves = feature.moving == Role::kInner;
     f.moving_axis = feature.placement.at + deviation[inner_moves ? 0 : 1];
-    f.fixed_axis = feature.placement.at + deviation[inner_moves ? 1 : 0];
+    // A part an earlier step seated sits where it was left, in the feature's frame turned into
+    // the joint's.
+    const double c = std::cos(feature.placement.angle), s = std::sin(feature.placement.angle);
+    const Eigen::Vector2d seat(c * feature.placement.seat.x() + s * feature.placement.seat.y(),
+                               -s * feature.placement.seat.x() + c * feature.placement.seat.y());
+    f.fixed_axis = feature.placement.at + deviation[inner_moves ? 1 : 0] + seat;
     f.angle = feature.placement.angle;
     f.engages_after = feature.placement.engages_after;
     features.push_back(f);

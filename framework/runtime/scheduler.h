@@ -128,6 +128,8 @@ class FITFEEL_API Scheduler {
   const std::vector<RecordedSample>& recording() const { return recording_; }
   const SafetyChain& safety() const { return run_.chain; }
   const RunStats& stats() const { return stats_; }
+  // The last tick's stage output (where the part was left), after Run.
+  const StageOutput& last_output() const { return run_.output; }
   // The statistics of the ticks done so far, as a finished run reports them (not for the tick: it
   // allocates), for hosts that step the scheduler themselves and write outputs between steps.
   RunStats StatsSoFar() const;

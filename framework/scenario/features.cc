@@ -129,8 +129,8 @@ FeaturePlacement ParsePlacement(const ConfigNode& node, bool datum, const std::s
 
 }  // namespace
 
-void ParseFeatures(const ConfigNode& root, const PluginRegistry& registry,
-                   const LoadOptions& options, Scene* scene) {
+void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
+                   const PluginRegistry& registry, const LoadOptions& options, Scene* scene) {
   const ConfigNode node = root.Child("features");
   if (!node.is_map()) node.Fail("a map from feature name to its surface and parts", node.Describe());
   const std::vector<std::string> names = node.Keys();
@@ -230,7 +230,6 @@ void ParseFeatures(const ConfigNode& root, const PluginRegistry& registry,
   scene->moving = datum.moving;
   scene->model = datum.model;
 
-  const ConfigNode duration = root.Child("run").Child("duration");
   for (std::size_t i = 0; i < scene->features.size(); ++i) {
     const MatingFeature& feature = scene->features[i];
     const ConfigNode f = node.Child(names[i]);

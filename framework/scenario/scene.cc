@@ -293,15 +293,32 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   return motion;
 }
 
-RunSettings ParseRun(const ConfigNode& node) {
-  node.ExpectOnlyKeys({"rate", "duration", "seed", "clock", "outputs"});
+// The scheduler's own limits on a run's length, checked here so that `validate` refuses what
+// `run` would.
+void CheckTicks(const ConfigNode& duration, const RunSettings& run) {
+  const double ticks = std::round(run.duration * run.rate);
+  if (ticks < 1.0) {
+    duration.Fail(
+        "a run of at least one tick (1 / run.rate = " + ThreeDigits(1.0 / run.rate) + " s)",
+        duration.Describe() + " at " + ThreeDigits(run.rate) + " Hz");
+  }
+}
+
+double ParseDuration(const ConfigNode& node) {
+  return node.AsQuantityIn(Dimension::kTime, 0.0, kMaxDuration, /*min_inclusive=*/false);
+}
+
+RunSettings ParseRun(const ConfigNode& node, bool sequence) {
+  if (sequence) {
+    node.ExpectOnlyKeys({"rate", "seed", "clock", "outputs"});
+  } else {
+    node.ExpectOnlyKeys({"rate", "duration", "seed", "clock", "outputs"});
+  }
   RunSettings run;
   if (std::optional<ConfigNode> rate = node.Find("rate")) {
     run.rate = rate->AsQuantityIn(Dimension::kFrequency, kMinRate, kMaxRate);
   }
-  run.duration = node.Child("duration")
-                     .AsQuantityIn(Dimension::kTime, 0.0, kMaxDuration,
-                                   /*min_inclusive=*/false);
+  if (!sequence) run.duration = ParseDuration(node.Child("duration"));
   if (std::optional<ConfigNode> seed = node.Find("seed")) {
     run.seed = seed->AsSeed();
   }
@@ -323,14 +340,7 @@ RunSettings ParseRun(const ConfigNode& node) {
       if (output == "recording") run.write_recording = true;
     }
   }
-  // The scheduler's own limits, checked here so that `validate` refuses what `run` would.
-  const ConfigNode duration = node.Child("duration");
-  const double ticks = std::round(run.duration * run.rate);
-  if (ticks < 1.0) {
-    duration.Fail(
-        "a run of at least one tick (1 / run.rate = " + ThreeDigits(1.0 / run.rate) + " s)",
-        duration.Describe() + " at " + ThreeDigits(run.rate) + " Hz");
-  }
+  if (!sequence) CheckTicks(node.Child("duration"), run);
   static_assert(kMaxDuration * kMaxRate * kStreamBytesPerTick <= kMaxRunBufferBytes,
                 "the longest run at the highest rate fits the scheduler's buffer cap");
   return run;
@@ -446,9 +456,6 @@ namespace {
 
 using namespace scenario;
 
-Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
-                    const PluginRegistry& registry, const LoadOptions& options);
-
 }  // namespace
 
 Scene LoadScene(const std::filesystem::path& file, const PluginRegistry& registry,
@@ -466,12 +473,26 @@ Scene LoadSceneFromYaml(std::string_view text, const std::filesystem::path& name
   return LoadSceneFrom(root, name, registry, options);
 }
 
-namespace {
+namespace scenario {
 
 Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
-                    const PluginRegistry& registry, const LoadOptions& options) {
-  root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "features",
-                       "part_motion", "model", "device", "safety", "run"});
+                    const PluginRegistry& registry, const LoadOptions& options,
+                    const RunSettings* step_run) {
+  if (step_run != nullptr) {
+    root.ExpectOnlyKeys({"step", "description", "surface", "parts", "moving", "features",
+                         "part_motion", "model", "device", "safety", "duration", "seated"});
+  } else {
+    if (root.Has("steps")) {
+      root.Child("steps").Fail(
+          "a scenario of one assembly step here (`fitfeel run` and `fitfeel validate` take a "
+          "sequence of steps)",
+          "a sequence of steps");
+    }
+    root.ExpectOnlyKeys({"scenario", "description", "surface", "parts", "moving", "features",
+                         "part_motion", "model", "device", "safety", "run"});
+  }
+  const char* const name_key = step_run != nullptr ? "step" : "scenario";
+  const char* const run_key = step_run != nullptr ? "duration" : "run";
   // A scene joins its two parts over one mating feature (surface, parts) or several (features).
   const bool several = root.Has("features");
   if (several) {
@@ -485,17 +506,18 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   }
   // Every required section is present before any is interpreted, so a missing one is reported
   // first rather than after an unrelated plugin error.
-  for (const char* key : {"scenario", "moving", "device", "run"}) root.Child(key);
+  for (const char* key : {name_key, "moving", "device", run_key}) root.Child(key);
   if (!several) {
     for (const char* key : {"surface", "parts", "model"}) root.Child(key);
   }
 
   Scene scene;
   scene.file = file;
-  const ConfigNode name = root.Child("scenario");
+  const ConfigNode name = root.Child(name_key);
   scene.name = name.AsString();
   if (!IsPlainName(scene.name)) {
-    name.Fail("a scenario name of letters, digits, '_', '-' or '.' (it names outputs)",
+    name.Fail(std::string("a ") + name_key +
+                  " name of letters, digits, '_', '-' or '.' (it names outputs)",
               name.Describe());
   }
   scene.description = root.StringOr("description", "");
@@ -541,18 +563,26 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
     // settings as they are.
     scene.safety = ParseSafetySection(*safety);
   }
-  scene.run = ParseRun(root.Child("run"));
-  if (several) {
-    ParseFeatures(root, registry, options, &scene);
+  const ConfigNode duration = step_run != nullptr ? root.Child("duration")
+                                                  : root.Child("run").Child("duration");
+  if (step_run != nullptr) {
+    scene.run = *step_run;
+    scene.run.duration = ParseDuration(duration);
+    CheckTicks(duration, scene.run);
   } else {
-    scene.cost = CheckPrepare(root.Child("model"), root.Child("run").Child("duration"),
+    scene.run = ParseRun(root.Child("run"), /*sequence=*/false);
+  }
+  if (several) {
+    ParseFeatures(root, duration, registry, options, &scene);
+  } else {
+    scene.cost = CheckPrepare(root.Child("model"), duration,
                               *scene.surface, scene.inner, scene.outer, scene.model, scene.run,
                               options);
   }
   return scene;
 }
 
-}  // namespace
+}  // namespace scenario
 
 SceneCost EstimateSceneCost(const Scene& scene) {
   if (scene.surface == nullptr || scene.inner.geometry == nullptr ||

@@ -108,6 +108,9 @@ struct FeaturePlacement {
   // zone about its nominal place), m; 0: exact. Drawn once per seed.
   double inner_position = 0.0;
   double outer_position = 0.0;
+  // In a sequence: where an earlier step left the part that this feature's fixed side belongs to,
+  // across its axis, in the feature's frame (m), added to the fixed side's place; zero otherwise.
+  Eigen::Vector2d seat{0.0, 0.0};
 };
 
 // One mating feature of a several-feature scene: a surface type with its pair of part sides and

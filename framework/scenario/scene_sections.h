@@ -3,6 +3,7 @@
 // The scenario loader's section parsers, shared by the one-feature loader (scene.cc) and the
 // several-feature one (features.cc). Internal to the scenario library.
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,7 +66,19 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const ConfigNode& duration,
 // The `features` section of a several-feature scene; fills scene->features and the datum
 // feature's fields (surface, inner, outer, moving, model) and adds their preparation to
 // scene->cost. `root` is the scenario's map.
-void ParseFeatures(const ConfigNode& root, const PluginRegistry& registry,
-                   const LoadOptions& options, Scene* scene);
+void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
+                   const PluginRegistry& registry, const LoadOptions& options, Scene* scene);
+
+// The `run` section: with `sequence`, a sequence's (rate, seed, clock and outputs; each step gives
+// its own duration).
+RunSettings ParseRun(const ConfigNode& node, bool sequence);
+
+// One scene from its map: a scenario (`step_run` null) or a step of a sequence, which has `step`
+// for `scenario`, `duration` for `run` (the rest of the run is the sequence's, `*step_run`) and
+// may say which of its features sit on a part an earlier step seated (`seated`, read by the
+// sequence's loader).
+Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
+                    const PluginRegistry& registry, const LoadOptions& options,
+                    const RunSettings* step_run = nullptr);
 
 }  // namespace fitfeel::scenario

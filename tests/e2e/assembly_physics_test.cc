@@ -22,6 +22,8 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
+#include "framework/runtime/sequence_run.h"
+#include "framework/scenario/sequence.h"
 #include "framework/scenario/scene.h"
 
 namespace fitfeel {
@@ -322,6 +324,123 @@ TEST(KeyedHub, AHandSlidesItOnPassively) {
               result.summary["depth_mm"]["max"].get<double>(),
               result.summary["radial_resistance_N"]["max"].get<double>(),
               result.summary["axial_resistance_N"]["max"].get<double>());
+}
+
+}  // namespace
+}  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// The hub turned under a small torque, held on the axis: the twist at which the key's flank
+// stops it (as in KeyedHub.TurnsFreelyUntilTheKeyFlankStopsIt).
+double FlankAngle(const Scene& scene) {
+  const PreparedScene prepared = Prepare(scene);
+  const SceneStages stages = MakeSceneStages(scene, prepared, Robot());
+  Driven hub(*stages.constrained);
+  double angle = 0.0;
+  for (int tick = 0; tick < 400; ++tick) {
+    PartState part = At(30e-3, 1e-3 * tick);
+    part.velocity.setZero();
+    part.free_rotation = true;
+    part.applied_torque = 1.0;
+    angle = hub.Tick(part).pose.angle;
+  }
+  return angle;
+}
+
+TEST(Sequence, TheSeatedKeySitsInTheHubStepWhereTheKeyStepLeftIt) {
+  const Sequence sequence =
+      LoadSequence(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "key-then-hub.yaml",
+                   Registry());
+  ASSERT_EQ(sequence.steps.size(), 2u);
+  ASSERT_EQ(sequence.steps[1].seated.size(), 1u);
+  RunOptions options;  // no folder: nothing written
+  const SequenceResult result = RunSequence(sequence, options);
+  ASSERT_EQ(result.steps.size(), 2u);
+  EXPECT_EQ(result.steps[0].final_stage, StageId::kConstrained);
+  // The key pressed between its N9 walls settles where they balance, off the keyway's middle.
+  const double seat = result.steps[0].final_pose.offset.x();
+  EXPECT_NE(seat, 0.0);
+  EXPECT_LT(std::abs(seat), 20e-6);
+  EXPECT_EQ(result.summary_json["steps"][0]["seated_offset_um"][0].get<double>(), seat * 1e6);
+  // The hub step with the key where step 1 left it against the same step with the key on its
+  // keyway's axis: the flank that stops the hub's turn is that much nearer or farther, so the
+  // angle at which it stops differs by the seat over the key's lever arm.
+  Scene seated = sequence.steps[1].scene, centred = sequence.steps[1].scene;
+  seated.run.seed = centred.run.seed = 2;  // the sequence's seed 1, plus the step's index
+  const int key = sequence.steps[1].seated[0].feature;
+  seated.features[key].placement.seat = Eigen::Vector2d(seat, 0.0);
+  const double lever = seated.features[key].placement.at.norm();
+  const double shift = (FlankAngle(seated) - FlankAngle(centred)) * lever;
+  EXPECT_NEAR(std::abs(shift), std::abs(seat), 0.01 * std::abs(seat) + 1e-9);
+  std::printf("key then hub: the key seats %.4g um off its keyway's middle; the hub's flank "
+              "stop moves %.4g um\n", seat * 1e6, shift * 1e6);
+  // The hub step as the sequence ran it is the seated one, bit for bit.
+  EXPECT_EQ(result.steps[1].summary["axial_resistance_N"],
+            RunScene(seated, options).summary["axial_resistance_N"]);
+}
+
+TEST(Sequence, AStepThatCannotSeatLeavesNoOutputs) {
+  std::string text = ShippedText("key-then-hub.yaml");
+  // Step 1 stops before the key reaches its keyway: there is nothing for step 2 to sit on.
+  text = Replaced(text, "    duration: 0.54 s", "    duration: 0.05 s");
+  const fs::path dir = fs::path(testing::TempDir()) / "sequence-refused";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path file = dir / "short.yaml";
+  {
+    std::ofstream out(file);
+    out << text;
+  }
+  const Sequence sequence = LoadSequence(file, Registry());
+  RunOptions options;
+  options.out_dir = dir / "out";
+  try {
+    RunSequence(sequence, options);
+    ADD_FAILURE() << "a seat on a part in free motion ran";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("free motion"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(options.out_dir / "key" / "trace.csv"));
+  EXPECT_FALSE(fs::exists(options.out_dir / "summary.json"));
+}
+
+TEST(Sequence, SeatsAndStepsAreCheckedAtLoad) {
+  const std::string text = ShippedText("key-then-hub.yaml");
+  const fs::path dir = fs::path(testing::TempDir()) / "sequence-load";
+  fs::create_directories(dir);
+  const auto refusal = [&](const std::string& edited) -> std::string {
+    const fs::path file = dir / "edited.yaml";
+    {
+      std::ofstream out(file);
+      out << edited;
+    }
+    try {
+      LoadSequence(file, Registry());
+    } catch (const ScenarioError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  ASSERT_EQ(refusal(text), "");
+  // A seat on a step that has not run yet.
+  std::string r = refusal(Replaced(text, "seated: {key: {step: key, carry: x}}",
+                                   "seated: {key: {step: hub, carry: x}}"));
+  EXPECT_NE(r.find("steps[1].seated.key.step"), std::string::npos) << r;
+  // A seat on a feature the step does not have.
+  r = refusal(Replaced(text, "seated: {key: {step: key, carry: x}}", "seated: {pin: key}"));
+  EXPECT_NE(r.find("steps[1].seated"), std::string::npos) << r;
+  // Two steps of one name.
+  r = refusal(Replaced(text, "  - step: hub", "  - step: key"));
+  EXPECT_NE(r.find("steps[1].step"), std::string::npos) << r;
+  // The scene loader takes one step's scene, never a sequence.
+  try {
+    LoadScene(dir / "edited.yaml", Registry());
+    ADD_FAILURE() << "LoadScene took a sequence";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("steps"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Every scenario shipped in scenarios/ validates and runs with the real CLI and plugins, and
-// writes the output contract's files with a constrained stage whose statistics in summary.json
+// writes (for a sequence, for each step) the output contract's files with a constrained stage whose statistics in summary.json
 // are those of the ticks in trace.csv (two outputs written by separate code from one run).
 #include <algorithm>
 #include <cmath>
@@ -34,18 +34,9 @@ std::vector<std::string> Scenarios() {
   return names;
 }
 
-class EveryScenarioTest : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(EveryScenarioTest, ValidatesAndRunsToTheOutputContract) {
-  const fs::path file = fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / (GetParam() + ".yaml");
-  const auto validated = RunFitfeel("validate " + ShellQuote(file.string()));
-  ASSERT_EQ(validated.exit_code, 0) << validated.out << validated.err;
-  EXPECT_NE(validated.out.find("valid"), std::string::npos);
-
-  const fs::path out = EmptyFolder("every-scenario", GetParam()) / "run";
-  const auto run =
-      RunFitfeel("run " + ShellQuote(file.string()) + " --out " + ShellQuote(out.string()));
-  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+// One run's folder against the output contract: trace.csv's constrained ticks are those
+// summary.json reports.
+void CheckRunFolder(const fs::path& out) {
   const std::string trace = ReadText(out / "trace.csv");
   EXPECT_EQ(trace.rfind("t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us", 0), 0u);
   const nlohmann::json summary = nlohmann::json::parse(ReadText(out / "summary.json"));
@@ -93,6 +84,31 @@ TEST_P(EveryScenarioTest, ValidatesAndRunsToTheOutputContract) {
         << key;
   }
   EXPECT_EQ(summary["guard_faults"], 0);
+}
+
+class EveryScenarioTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryScenarioTest, ValidatesAndRunsToTheOutputContract) {
+  const fs::path file = fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / (GetParam() + ".yaml");
+  const auto validated = RunFitfeel("validate " + ShellQuote(file.string()));
+  ASSERT_EQ(validated.exit_code, 0) << validated.out << validated.err;
+  EXPECT_NE(validated.out.find("valid"), std::string::npos);
+
+  const fs::path out = EmptyFolder("every-scenario", GetParam()) / "run";
+  const auto run =
+      RunFitfeel("run " + ShellQuote(file.string()) + " --out " + ShellQuote(out.string()));
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  // A sequence writes each step's run into a folder of its own, listed in its summary.json.
+  const nlohmann::json top = nlohmann::json::parse(ReadText(out / "summary.json"));
+  if (top.contains("steps")) {
+    ASSERT_FALSE(top["steps"].empty());
+    for (const auto& step : top["steps"]) {
+      SCOPED_TRACE(step["step"].get<std::string>());
+      CheckRunFolder(out / step["folder"].get<std::string>());
+    }
+    return;
+  }
+  CheckRunFolder(out);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, EveryScenarioTest, ::testing::ValuesIn(Scenarios()),

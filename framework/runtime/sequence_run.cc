@@ -1,0 +1,94 @@
+#include "framework/runtime/sequence_run.h"
+
+#include <string>
+#include <system_error>
+
+#include "framework/core/atomic_files.h"
+#include "framework/core/error.h"
+
+namespace fitfeel {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Removes what a finished step wrote, and its folder when nothing else is left in it.
+void RemoveOutputs(const RunResult& result) {
+  std::error_code ignored;
+  fs::path folder;
+  for (const fs::path& path :
+       {result.paths.trace, result.paths.summary, result.paths.recording}) {
+    if (path.empty()) continue;
+    folder = path.parent_path();
+    fs::remove(path, ignored);
+  }
+  if (!folder.empty() && fs::is_empty(folder, ignored)) fs::remove(folder, ignored);
+}
+
+}  // namespace
+
+SequenceResult RunSequence(const Sequence& sequence, const RunOptions& options) {
+  if (sequence.steps.empty()) throw UserError("sequence '" + sequence.name + "' has no step");
+  SequenceResult result;
+  const std::uint64_t seed = options.seed ? *options.seed : sequence.run.seed;
+  try {
+    for (std::size_t k = 0; k < sequence.steps.size(); ++k) {
+      const SequenceStep& step = sequence.steps[k];
+      Scene scene = step.scene;
+      scene.run.seed = seed + k;
+      for (const SequenceStep::Seat& seat : step.seated) {
+        const RunResult& seated = result.steps.at(seat.step);
+        if (seated.final_stage != StageId::kConstrained) {
+          throw UserError("sequence '" + sequence.name + "': step '" +
+                          sequence.steps[seat.step].scene.name +
+                          "' ended with its part in free motion, not seated, so step '" +
+                          scene.name + "' cannot sit its feature '" +
+                          scene.features.at(seat.feature).name +
+                          "' on it (give that step a longer duration)");
+        }
+        Eigen::Vector2d& place = scene.features.at(seat.feature).placement.seat;
+        place = seated.final_pose.offset;
+        if (!seat.x) place.x() = 0.0;
+        if (!seat.z) place.y() = 0.0;
+      }
+      RunOptions step_options = options;
+      step_options.seed.reset();
+      if (!options.out_dir.empty()) step_options.out_dir = options.out_dir / scene.name;
+      result.steps.push_back(RunScene(std::move(scene), step_options));
+    }
+  } catch (...) {
+    for (const RunResult& done : result.steps) RemoveOutputs(done);
+    throw;
+  }
+  nlohmann::json j;
+  j["scenario"] = sequence.name;
+  j["scenario_file"] = sequence.file.string();
+  j["seed"] = seed;
+  nlohmann::json steps = nlohmann::json::array();
+  for (std::size_t k = 0; k < result.steps.size(); ++k) {
+    const RunResult& r = result.steps[k];
+    nlohmann::json s;
+    s["step"] = sequence.steps[k].scene.name;
+    s["seed"] = seed + k;
+    s["folder"] = sequence.steps[k].scene.name;
+    s["seated_offset_um"] = {r.final_pose.offset.x() * 1e6, r.final_pose.offset.y() * 1e6};
+    s["final_depth_mm"] = r.final_pose.depth * 1e3;
+    s["axial_resistance_N"] = r.summary.value("axial_resistance_N", nlohmann::json());
+    s["radial_resistance_N"] = r.summary.value("radial_resistance_N", nlohmann::json());
+    if (r.summary.contains("features")) s["features"] = r.summary["features"];
+    steps.push_back(s);
+  }
+  j["steps"] = steps;
+  result.summary_json = j;
+  if (!options.out_dir.empty() && sequence.run.write_summary) {
+    try {
+      WriteFilesAtomically(options.out_dir, {{"summary.json", j.dump(2) + "\n"}});
+    } catch (...) {
+      for (const RunResult& done : result.steps) RemoveOutputs(done);
+      throw;
+    }
+    result.summary = options.out_dir / "summary.json";
+  }
+  return result;
+}
+
+}  // namespace fitfeel
