@@ -9,6 +9,7 @@
 #include <Eigen/LU>
 
 #include "framework/core/error.h"
+#include "framework/runtime/joint_lead_in.h"
 #include "framework/runtime/contact_search.h"
 
 namespace fitfeel {
@@ -125,6 +126,14 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
     if (outer) {
       w.force = w.force.cwiseProduct(reflect);
       w.torque = w.torque.cwiseProduct(reflect);
+    }
+    // Before its surfaces overlap, a feature's moving part may meet its lead-in: the hub's
+    // keyway the key's end, a plate's second hole its pin's chamfer.
+    if (pose.depth < 0.0 && !f.lead_in.empty()) {
+      const LeadInPush push = PushOfLeadIn(f.lead_in, pose.depth + f.lead_in.capture_depth(),
+                                           pose.offset, f.lead_in_stiffness);
+      w.force += Eigen::Vector3d(push.across.x(), push.axial, push.across.y());
+      sum->engaged = sum->engaged || push.touching;
     }
     // Back into the joint frame, and about the body's reference axis.
     const Eigen::Vector2d fxz = Turn(Eigen::Vector2d(w.force.x(), w.force.z()), f.angle);

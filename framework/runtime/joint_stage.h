@@ -9,6 +9,7 @@
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/resistance_law.h"
+#include "framework/collision/lead_in.h"
 #include "framework/runtime/stage.h"
 
 namespace fitfeel {
@@ -25,6 +26,11 @@ struct JointFeature {
   Eigen::Vector2d fixed_axis{0.0, 0.0};   // (x, z), m
   double angle = 0.0;                     // the feature's frame turned about y, rad
   double engages_after = 0.0;             // joint depth at which the feature's depth is 0, m
+  // A feature after the datum: its chamfers and entrance face, met before its surfaces overlap
+  // (PushOfLeadIn), and the stiffness they are rendered with (N/m; 0: not rendered). The datum's
+  // lead-in is the positioning stage's.
+  LeadIn lead_in;
+  double lead_in_stiffness = 0.0;
 };
 
 // Mating over several features at once (docs/assemblies.md): the moving body's pose (depth along

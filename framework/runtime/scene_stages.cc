@@ -51,6 +51,15 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
     f.fixed_axis = feature.placement.at + deviation[inner_moves ? 1 : 0] + seat;
     f.angle = feature.placement.angle;
     f.engages_after = feature.placement.engages_after;
+    if (i > 0) {
+      f.lead_in = feature.surface->MakeLeadIn(feature.inner, feature.outer);
+      // A hand meets the lead-in through the god object's spring, as it meets the datum's; a
+      // robot meets it as stiff as the feature's contact (the datum's where the feature's is the
+      // law's own, `auto`).
+      const double contact = feature.model.contact_stiffness > 0.0 ? feature.model.contact_stiffness
+                                                                   : scene.model.contact_stiffness;
+      f.lead_in_stiffness = std::isfinite(mating.proxy_stiffness) ? mating.proxy_stiffness : contact;
+    }
     features.push_back(f);
   }
   JointStage::Options joint;

@@ -51,6 +51,19 @@ DeviceSpec Robot() {
   return spec;
 }
 
+// A shipped several-feature scene prepared for a robot, with its joint stage.
+struct RobotJoint {
+  explicit RobotJoint(const char* file)
+      : scene(Shipped(file)),
+        prepared(Prepare(scene)),
+        stages(MakeSceneStages(scene, prepared, Robot())),
+        joint(dynamic_cast<const JointStage*>(stages.constrained.get())) {}
+  Scene scene;
+  PreparedScene prepared;
+  SceneStages stages;
+  const JointStage* joint;
+};
+
 // One stage driven tick by tick, with its own run state and output.
 struct Driven {
   explicit Driven(const Stage& s) : stage(s), state(s.MakeState()) {}
@@ -129,10 +142,8 @@ TEST(KeyedHub, AxialForceIsTheSumOfItsFeaturesRunApart) {
 }
 
 TEST(KeyedHub, TurnsFreelyUntilTheKeyFlankStopsIt) {
-  const Scene scene = Shipped("keyed-hub.yaml");
-  const PreparedScene prepared = Prepare(scene);
-  const SceneStages stages = MakeSceneStages(scene, prepared, Robot());
-  const auto* joint = dynamic_cast<const JointStage*>(stages.constrained.get());
+  const RobotJoint prepared("keyed-hub.yaml");
+  const JointStage* joint = prepared.joint;
   ASSERT_NE(joint, nullptr);
   const JointFeature& key = joint->features()[1];
   const double depth = 30e-3;
@@ -440,6 +451,80 @@ TEST(Sequence, SeatsAndStepsAreCheckedAtLoad) {
     ADD_FAILURE() << "LoadScene took a sequence";
   } catch (const ScenarioError& e) {
     EXPECT_NE(std::string(e.what()).find("steps"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// The hub started turned about the shaft: its keyway off the key. Within the key's lead-in (its
+// chamfer and the keyway's entrance) the chamfers turn a free hub into line and it slides on;
+// beyond it the key's end meets the hub's face and stops it.
+TEST(KeyedHub, FindsItsKeywayOrStopsOnTheKeysEnd) {
+  const RobotJoint prepared("keyed-hub.yaml");
+  const Scene& scene = prepared.scene;
+  const JointStage* joint = prepared.joint;
+  ASSERT_NE(joint, nullptr);
+  const JointFeature& key = joint->features()[1];
+  ASSERT_FALSE(key.lead_in.empty());
+  const double lever = key.moving_axis.norm();
+  // How far across its flanks the keyway may be off the key and still take it: the lead-in's
+  // outer edge (the key's and the keyway's chamfers over the play).
+  const double capture = key.lead_in.boundary()[1].y();
+  std::printf("keyed hub: the key's lead-in takes the keyway up to %.4g mm off (%.4g mrad)\n",
+              capture * 1e3, capture / lever * 1e3);
+  const Eigen::Vector2d load(0.0, -scene.part_motion.radial_load);
+
+  // Within the lead-in, free to turn: the chamfer brings the keyway over the key.
+  {
+    Driven hub(*joint);
+    const double start = 0.6 * capture / lever;
+    hub.out.pose.angle = start;
+    double angle = start, axial = 0.0;
+    for (int i = 0; i <= 200; ++i) {
+      PartState part = At(1e-4 * i + joint->options().depth_origin, 1e-3 * i);  // to 20 mm
+      part.settle_load = load;
+      part.free_rotation = true;
+      const StageOutput& out = hub.Tick(part);
+      angle = out.pose.angle;
+      axial = out.wrench.force.y();
+    }
+    // In line within the keyway's play, and sliding on with the weight's friction.
+    EXPECT_LT(std::abs(angle), 1e-3) << "started at " << start;
+    EXPECT_LT(std::abs(axial), 5.0);
+    std::printf("keyed hub: started %.4g mrad off, the chamfers turn it to %.4g mrad\n",
+                start * 1e3, angle * 1e3);
+  }
+  // Beyond the lead-in, held turned: the key's end on the hub's face, an axial stop. The face
+  // stands where the key's lead-in begins: the key's depth 0 less its lead-in's capture depth,
+  // plus the face's place in the lead-in.
+  {
+    const double face = key.engages_after - key.lead_in.capture_depth() + key.lead_in.boundary()[0].x();
+    Driven hub(*joint);
+    const double start = 1.5 * capture / lever;
+    double stop_depth = std::numeric_limits<double>::quiet_NaN(), axial = 0.0, across = 0.0,
+           depth = 0.0;
+    for (int i = 0; i <= 150; ++i) {
+      depth = face - 100e-6 + 1e-6 * i;  // to 50 um past the face
+      PartState part = At(depth + joint->options().depth_origin, 1e-3 * i);
+      part.settle_load = load;
+      part.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(start, Eigen::Vector3d::UnitY()));
+      const StageOutput& out = hub.Tick(part);
+      if (std::isnan(stop_depth) && out.feature_axial[1] < 0.0) stop_depth = out.pose.depth;
+      axial = out.feature_axial[1];
+      across = std::hypot(out.wrench.force.x(), out.wrench.force.z() + load.y());
+    }
+    EXPECT_GT(stop_depth, face);
+    EXPECT_LE(stop_depth, face + 1.01e-6);
+    // 50 um past the face at the robot's stiffness (the bore's k_p): the press meets a wall.
+    EXPECT_NEAR(axial, -key.lead_in_stiffness * (depth - face), 1e-6 * std::abs(axial) + 1.0);
+    // Along the axis only: an end on a face turns nothing.
+    EXPECT_LT(across, 1.0);
+    std::printf("keyed hub: held %.4g mrad off, the key's end stops the hub at %.4g mm; 50 um "
+                "further takes %.4g N\n", start * 1e3, stop_depth * 1e3, axial);
   }
 }
 
