@@ -249,6 +249,15 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
     scene->cost.prepare_seconds += cost.prepare_seconds;
     scene->cost.law_prepare_seconds += cost.law_prepare_seconds;
   }
+  // Each feature fits the thresholds alone; so must the scene's preparation of all of them.
+  if (!options.allow_large) {
+    SceneCost admitted = scene->cost;
+    if (!options.writes_outputs) admitted.output_bytes = 0.0;
+    if (const std::optional<CostRefusal> refusal = LargeCostRefusal(admitted)) {
+      node.Fail(refusal->expected + " (all the features together)",
+                node.Describe() + ": " + refusal->found);
+    }
+  }
 }
 
 }  // namespace fitfeel::scenario

@@ -293,6 +293,11 @@ TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
   // A spherical feature turns about a centre: it cannot join an axial joint.
   refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.planar", "    surface: fitfeel.surface.spherical"));
   EXPECT_NE(refusal.find("features.key.surface"), std::string::npos) << refusal;
+  // Features each admitted alone but too costly together: refused at `features`.
+  refusal = Refusal(Replaced(ShippedText("two-pin-location.yaml"), "  resolution: auto",
+                             "  resolution: {rows: 1250, columns: 1000}"));
+  EXPECT_NE(refusal.find(": features: "), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("all the features together"), std::string::npos) << refusal;
   // A free rotation needs a feature whose flanks can stop it.
   refusal = Refusal(Replaced(ShippedText("pin-cylindrical.yaml"), "part_motion:\n",
                              "part_motion:\n  rotation: free\n"));
