@@ -209,7 +209,7 @@ TEST_F(ServerTest, ClientThatVanishesMidFrameCostsNothing) {
 }
 
 // A several-feature scene: after the scene message, every feature's inner and outer mesh, in
-// the scenario's order.
+// the scenario's order; the page's placement module is served beside the page.
 TEST(Server, SendsEveryFeaturesMeshes) {
   PluginRegistry registry;
   registry.LoadAll();
@@ -232,6 +232,17 @@ TEST(Server, SendsEveryFeaturesMeshes) {
     EXPECT_EQ(beast::buffers_to_string(buffer.data()), model.mesh_frame(k)) << k;
   }
   ws.close(websocket::close_code::normal);
+
+  tcp::socket socket(io);
+  socket.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server.port()));
+  http::request<http::empty_body> get(http::verb::get, "/joint.js", 11);
+  get.set(http::field::host, "127.0.0.1");
+  http::write(socket, get);
+  http::response<http::string_body> reply;
+  beast::flat_buffer http_buffer;
+  http::read(socket, http_buffer, reply);
+  EXPECT_EQ(reply.result_int(), 200);
+  EXPECT_NE(reply.body().find("export function bodyPose"), std::string::npos);
 }
 
 TEST(Server, RefusesAnAddressItCannotBind) {
