@@ -46,6 +46,7 @@ class FITFEEL_API ViewModel {
   const std::string& mesh_frame(int k) const;
   bool renders_forces() const { return law_ != nullptr; }
   Role moving() const { return scene_.moving; }
+  bool several_features() const { return !scene_.features.empty(); }
   const std::string& status() const { return status_; }
 
   // Pressure map (quantised) and assembly space at the sample's pose (in the outer part's frame,
