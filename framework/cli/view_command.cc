@@ -45,7 +45,9 @@ struct ViewArgs {
   bool allow_large = false;
 };
 
-// The constrained rows of a finished run as viewer samples (the trace keeps no torque there).
+// The constrained rows of a finished run as viewer samples. A several-feature scene's rows take
+// the trace's torque, whose component about the axis its page shows; a one-feature scene's rows
+// carry none (a rotational pair's finished run shows 0 N*m where its live run shows the torque).
 std::vector<view::ViewSample> HistoryOf(const plot::ConstrainedTrace& t,
                                         const view::ViewModel& model) {
   std::vector<view::ViewSample> rows(t.t_s.size());
@@ -65,6 +67,11 @@ std::vector<view::ViewSample> HistoryOf(const plot::ConstrainedTrace& t,
     s.force[0] = t.fx_N[k];
     s.force[1] = t.fy_N[k];
     s.force[2] = t.fz_N[k];
+    if (model.several_features() && !t.ty_Nm.empty()) {
+      s.torque[0] = t.tx_Nm[k];
+      s.torque[1] = t.ty_Nm[k];
+      s.torque[2] = t.tz_Nm[k];
+    }
     s.stage = 1;
     view::InOuterPartsFrame(&s, model.moving());
     model.FillContact(&s);

@@ -158,6 +158,10 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   const bool has_offset = index.count("offset_x_um") && index.count("offset_z_um");
   const std::size_t offset_x = has_offset ? index.at("offset_x_um") : 0;
   const std::size_t offset_z = has_offset ? index.at("offset_z_um") : 0;
+  const bool has_torque = index.count("tx_Nm") && index.count("ty_Nm") && index.count("tz_Nm");
+  const std::size_t tx = has_torque ? index.at("tx_Nm") : 0;
+  const std::size_t ty = has_torque ? index.at("ty_Nm") : 0;
+  const std::size_t tz = has_torque ? index.at("tz_Nm") : 0;
 
   ConstrainedTrace trace;
   std::string line;
@@ -196,6 +200,11 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
     if (has_offset) {
       trace.offset_x_um.push_back(number(offset_x));
       trace.offset_z_um.push_back(number(offset_z));
+    }
+    if (has_torque) {
+      trace.tx_Nm.push_back(number(tx));
+      trace.ty_Nm.push_back(number(ty));
+      trace.tz_Nm.push_back(number(tz));
     }
   }
   if (trace.t_s.empty()) {

@@ -49,6 +49,11 @@ struct ConstrainedTrace {
   // It differs from the device's x_mm, z_mm where the part was settled quasi-statically.
   std::vector<double> offset_x_um;
   std::vector<double> offset_z_um;
+  // The torque on the moving part, when the trace has the columns tx_Nm, ty_Nm and tz_Nm; empty
+  // otherwise.
+  std::vector<double> tx_Nm;
+  std::vector<double> ty_Nm;
+  std::vector<double> tz_Nm;
 };
 
 struct RunRecord {

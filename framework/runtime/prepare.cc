@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "framework/core/error.h"
 #include "framework/model/measured_surface.h"
@@ -90,6 +91,16 @@ SkinModelShapes GenerateSkinModelShapes(const MatingFeature& feature, Rng& rng) 
                         feature.model, rng);
 }
 
+std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(const Scene& scene, Rng& rng) {
+  std::vector<std::array<Eigen::Vector2d, 2>> deviations;
+  deviations.reserve(scene.features.size());
+  for (const MatingFeature& feature : scene.features) {
+    deviations.push_back({DrawInZone(feature.placement.inner_position, rng),
+                          DrawInZone(feature.placement.outer_position, rng)});
+  }
+  return deviations;
+}
+
 PreparedScene Prepare(const Scene& scene) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
@@ -145,11 +156,7 @@ PreparedScene Prepare(const Scene& scene) {
     prepared.analyze_seconds += SecondsSince(t);
     prepared.more_features.push_back(std::move(p));
   }
-  for (const MatingFeature& feature : scene.features) {
-    prepared.position_deviations.push_back(
-        {DrawInZone(feature.placement.inner_position, prepared.rng),
-         DrawInZone(feature.placement.outer_position, prepared.rng)});
-  }
+  prepared.position_deviations = DrawPositionDeviations(scene, prepared.rng);
 
   prepared.total_seconds = SecondsSince(start);
   return prepared;

@@ -81,6 +81,14 @@ FITFEEL_API SkinModelShapes GenerateSkinModelShapes(const Scene& scene, Rng& rng
 // The same for one feature of a several-feature scene.
 FITFEEL_API SkinModelShapes GenerateSkinModelShapes(const MatingFeature& feature, Rng& rng);
 
+// Where each feature's axis lies off its nominal place on its inner and its outer side, drawn
+// within its position tolerance (joint frame, m): inner side then outer, feature by feature, zero
+// for a side without a tolerance (the datum feature's), which still takes its draws. Prepare
+// draws these last, after every feature's skin model shapes; the viewer draws them the same way
+// so that it shows the run's parts. Empty for a one-feature scene.
+FITFEEL_API std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(const Scene& scene,
+                                                                               Rng& rng);
+
 // Builds the prepared scene: seeds the generator from scene.run.seed, discretizes and generates
 // the skin model shape of the inner part and then of the outer part with the surface's
 // Discretizer and VariationGenerator, prepares the contact analyzer and the law. A several-feature

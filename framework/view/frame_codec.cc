@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include "framework/core/error.h"
 
@@ -85,8 +86,13 @@ double QuantisePressure(const Eigen::VectorXd& pressure, std::vector<std::uint8_
   return max;
 }
 
-std::string EncodeMeshFrame(int part, const RenderMesh& mesh, const Eigen::VectorXd& variation) {
+std::string EncodeMeshFrame(int part, const RenderMesh& mesh, const Eigen::VectorXd& variation,
+                            int feature) {
   if (part != 0 && part != 1) throw UserError("viewer mesh frame: part must be 0 or 1");
+  if (feature < 0 || feature > std::numeric_limits<std::uint16_t>::max()) {
+    throw UserError("viewer mesh frame: feature index " + std::to_string(feature) +
+                    " outside 0..65535");
+  }
   const std::size_t cells = mesh.directions.size();
   if (mesh.corners.size() != 4 * cells ||
       (cells > 0 && static_cast<std::size_t>(variation.size()) != cells)) {
@@ -101,7 +107,7 @@ std::string EncodeMeshFrame(int part, const RenderMesh& mesh, const Eigen::Vecto
   w.Header(FrameKind::kMesh);
   w.Put<std::uint8_t>(static_cast<std::uint8_t>(part));
   w.Put<std::uint8_t>(cells == 0 ? 1 : 0);  // placeholder: no render mesh
-  w.Put<std::uint16_t>(0);
+  w.Put<std::uint16_t>(static_cast<std::uint16_t>(feature));
   w.Put<std::uint32_t>(static_cast<std::uint32_t>(cells));
   for (const auto& c : mesh.corners) {
     for (int i = 0; i < 3; ++i) w.F32(c[i]);
@@ -166,6 +172,48 @@ std::string EncodeHistoryFrame(const std::vector<ViewSample>& samples) {
     w.F32(s.stage);
   }
   return w.Take();
+}
+
+namespace {
+
+// Checks the magic, the version and the kind of a frame's header, which it reads.
+void ReadHeader(Reader& r, std::string_view frame, FrameKind expected, const char* what) {
+  if (frame.size() < kHeaderBytes || frame.substr(0, 4) != "FFVW") {
+    throw UserError(std::string("viewer frame: not a ") + what + " frame (too short or no magic)");
+  }
+  r.Get<std::uint32_t>();
+  const auto version = r.Get<std::uint16_t>();
+  const auto kind = r.Get<std::uint16_t>();
+  if (version != kFrameVersion || kind != static_cast<std::uint16_t>(expected)) {
+    throw UserError("viewer frame: version " + std::to_string(version) + " kind " +
+                    std::to_string(kind) + ", expected a version " +
+                    std::to_string(kFrameVersion) + " " + what + " frame");
+  }
+}
+
+}  // namespace
+
+DecodedMesh DecodeMeshFrame(std::string_view frame) {
+  Reader r(frame);
+  ReadHeader(r, frame, FrameKind::kMesh, "mesh");
+  DecodedMesh d;
+  d.part = r.Get<std::uint8_t>();
+  d.placeholder = r.Get<std::uint8_t>() != 0;
+  d.feature = r.Get<std::uint16_t>();
+  const std::size_t cells = r.Get<std::uint32_t>();
+  if (r.remaining() != 64 * cells) {
+    throw UserError("viewer frame: " + std::to_string(r.remaining()) + " bytes after the mesh " +
+                    "header, expected " + std::to_string(64 * cells));
+  }
+  const auto vector = [&r] {
+    const double x = r.F32(), y = r.F32();
+    return Eigen::Vector3d(x, y, r.F32());
+  };
+  for (std::size_t k = 0; k < 4 * cells; ++k) d.mesh.corners.push_back(vector());
+  for (std::size_t k = 0; k < cells; ++k) d.mesh.directions.push_back(vector());
+  d.variation.resize(static_cast<Eigen::Index>(cells));
+  for (std::size_t k = 0; k < cells; ++k) d.variation[static_cast<Eigen::Index>(k)] = r.F32();
+  return d;
 }
 
 DecodedState DecodeStateFrame(std::string_view frame) {

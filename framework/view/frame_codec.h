@@ -47,14 +47,28 @@ struct StateExtras {
 FITFEEL_API double QuantisePressure(const Eigen::VectorXd& pressure,
                                     std::vector<std::uint8_t>* out);
 
-// Mesh frame of one part (0 inner, 1 outer). `variation` holds V per cell (m); an empty mesh is
-// encoded with zero cells and the placeholder flag. Throws UserError for sizes that disagree.
+// Mesh frame of one part (0 inner, 1 outer) of the scene's `feature` (its index in
+// Scene::features; 0 for the datum feature and for a one-feature scene). `variation` holds V per
+// cell (m); an empty mesh is encoded with zero cells and the placeholder flag. Throws UserError for
+// sizes that disagree or a feature index over 65535.
 FITFEEL_API std::string EncodeMeshFrame(int part, const RenderMesh& mesh,
-                                        const Eigen::VectorXd& variation);
+                                        const Eigen::VectorXd& variation, int feature = 0);
 // State frame. Throws UserError for more than 65535 polygon vertices.
 FITFEEL_API std::string EncodeStateFrame(const ViewSample& sample, const StateExtras& extras);
 // History frame: one row of kHistoryRowFloats f32 per sample.
 FITFEEL_API std::string EncodeHistoryFrame(const std::vector<ViewSample>& samples);
+
+// Decoded mesh frame (tests read frames back with it): the corners and directions at f32
+// precision.
+struct DecodedMesh {
+  int part = 0;
+  int feature = 0;
+  bool placeholder = false;
+  RenderMesh mesh;
+  Eigen::VectorXd variation;
+};
+// Throws UserError for a frame that is not a well-formed mesh frame.
+FITFEEL_API DecodedMesh DecodeMeshFrame(std::string_view frame);
 
 // Decoded state frame (tests and tools read frames back with it).
 struct DecodedState {

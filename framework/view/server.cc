@@ -54,9 +54,10 @@ struct Server::Impl {
         options(o),
         acceptor(io),
         timer(io),
-        scene_frame(std::make_shared<const std::string>(m.scene_message())),
-        mesh_frames{std::make_shared<const std::string>(m.mesh_frame(0)),
-                    std::make_shared<const std::string>(m.mesh_frame(1))} {
+        scene_frame(std::make_shared<const std::string>(m.scene_message())) {
+    for (int k = 0; k < m.mesh_count(); ++k) {
+      mesh_frames.push_back(std::make_shared<const std::string>(m.mesh_frame(k)));
+    }
     if (!h.empty()) SetHistory(std::move(h));
   }
 
@@ -137,7 +138,7 @@ struct Server::Impl {
   Frame latest_frame;
   // Encoded once, queued to every client as the same buffers.
   const Frame scene_frame;
-  const Frame mesh_frames[2];
+  std::vector<Frame> mesh_frames;  // filled by the constructor, read-only afterwards
 };
 
 // One WebSocket client. Frames the client must get (scene, meshes, history) queue in order; state
@@ -154,7 +155,7 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
     ws.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
       self->Queue(self->server.scene_frame, true);
-      for (int part : {0, 1}) self->Queue(self->server.mesh_frames[part], false);
+      for (const Frame& mesh : self->server.mesh_frames) self->Queue(mesh, false);
       if (self->server.history_frame) self->Queue(self->server.history_frame, false);
       if (self->server.latest_frame) self->Offer(self->server.latest_frame);
       self->Read();

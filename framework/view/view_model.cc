@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,6 +21,20 @@ MatingPose PoseOf(const ViewSample& s) {
   pose.angle = s.angle;
   return pose;
 }
+
+// R(angle) of docs/assemblies.md: (x, z) -> (x cos + z sin, -x sin + z cos).
+Eigen::Vector2d Turn(const Eigen::Vector2d& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
+}
+
+// The reflection in z that takes (x, z) between the scene frame and the outer part's frame where
+// the outer part moves (AnalyzerPose); nothing otherwise. Its own inverse.
+Eigen::Vector2d Reflect(const Eigen::Vector2d& v, Role moving) {
+  return moving == Role::kOuter ? Eigen::Vector2d(v.x(), -v.y()) : v;
+}
+
+const char* RoleName(Role role) { return role == Role::kInner ? "inner" : "outer"; }
 
 nlohmann::json PartJson(const PartSpec& part, const SkinModelShape& sms, bool placeholder) {
   const Eigen::VectorXd& v = sms.variation;
@@ -42,6 +59,12 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed) : scene_(scene) {
   SkinModelShapes shapes = GenerateSkinModelShapes(scene, rng);
   inner_ = std::make_unique<SkinModelShape>(std::move(shapes.inner));
   outer_ = std::make_unique<SkinModelShape>(std::move(shapes.outer));
+  // The further features' shapes and then every feature's position, in Prepare's order of draws.
+  std::vector<SkinModelShapes> more;
+  for (std::size_t i = 1; i < scene.features.size(); ++i) {
+    more.push_back(GenerateSkinModelShapes(scene.features[i], rng));
+  }
+  position_deviations_ = DrawPositionDeviations(scene, rng);
   const SurfaceType& surface = *scene.surface;
   if (!surface.renders_forces()) {
     status_ = "this surface type renders no forces: " + surface.limitation();
@@ -62,10 +85,43 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed) : scene_(scene) {
   }
   const RenderMesh inner_mesh = surface.MakeRenderMesh(scene.inner, inner_->grid);
   const RenderMesh outer_mesh = surface.MakeRenderMesh(scene.outer, outer_->grid);
-  mesh_frames_[0] = EncodeMeshFrame(0, inner_mesh, inner_->variation);
-  mesh_frames_[1] = EncodeMeshFrame(1, outer_mesh, outer_->variation);
+  bool placeholder = inner_mesh.empty() || outer_mesh.empty();
+  nlohmann::json features = nlohmann::json::array();
+  if (scene.features.empty()) {
+    mesh_frames_.push_back(EncodeMeshFrame(0, inner_mesh, inner_->variation));
+    mesh_frames_.push_back(EncodeMeshFrame(1, outer_mesh, outer_->variation));
+  }
+  for (std::size_t i = 0; i < scene.features.size(); ++i) {
+    const MatingFeature& feature = scene.features[i];
+    const SkinModelShape& inner = i == 0 ? *inner_ : more[i - 1].inner;
+    const SkinModelShape& outer = i == 0 ? *outer_ : more[i - 1].outer;
+    nlohmann::json parts = nlohmann::json::object();
+    for (const Role role : {Role::kInner, Role::kOuter}) {
+      const PartSpec& part = role == Role::kInner ? feature.inner : feature.outer;
+      const SkinModelShape& sms = role == Role::kInner ? inner : outer;
+      const RenderMesh mesh = feature.surface->MakeRenderMesh(part, sms.grid);
+      placeholder = placeholder || mesh.empty();
+      const PartPlacement placement = PlacementOf(feature, role, position_deviations_[i]);
+      placements_.push_back(placement);
+      const int side = role == Role::kInner ? 0 : 1;
+      mesh_frames_.push_back(
+          EncodeMeshFrame(side, PlaceMesh(placement, mesh), sms.variation, static_cast<int>(i)));
+      nlohmann::json j = PartJson(part, sms, mesh.empty());
+      j["body"] = placement.moving ? "moving" : "fixed";
+      j["deviation_um"] = {placement.deviation.x() * 1e6, placement.deviation.y() * 1e6};
+      parts[RoleName(role)] = j;
+    }
+    features.push_back({{"name", feature.name},
+                        {"surface", feature.surface_id},
+                        {"law", feature.model.law},
+                        {"moving", RoleName(feature.moving)},
+                        {"at_mm", {feature.placement.at.x() * 1e3, feature.placement.at.y() * 1e3}},
+                        {"angle_deg", feature.placement.angle * 180.0 / M_PI},
+                        {"engages_after_mm", feature.placement.engages_after * 1e3},
+                        {"inner", parts["inner"]},
+                        {"outer", parts["outer"]}});
+  }
 
-  const bool placeholder = inner_mesh.empty() || outer_mesh.empty();
   nlohmann::json j = {
       {"type", "scene"},
       {"scenario", scene.name},
@@ -83,22 +139,50 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed) : scene_(scene) {
                                        : ""},
       {"pressure", pressure_per_interference_ > 0.0},
       {"duration_s", scene.run.duration}};
+  // Only a several-feature scene's message names the features: a one-feature scene's stays the
+  // one its pages read.
+  if (!scene.features.empty()) {
+    j["features"] = features;
+    j["moving_body"] = scene.moving_body;
+    j["fixed_body"] = scene.fixed_body;
+  }
   scene_message_ = j.dump();
 }
 
-const std::string& ViewModel::mesh_frame(int part) const {
-  if (part != 0 && part != 1) throw UserError("viewer: part must be 0 (inner) or 1 (outer)");
-  return mesh_frames_[part];
+const std::string& ViewModel::mesh_frame(int k) const {
+  if (k < 0 || k >= mesh_count()) {
+    throw UserError("viewer: mesh frame " + std::to_string(k) + " of " +
+                    std::to_string(mesh_count()));
+  }
+  return mesh_frames_[static_cast<std::size_t>(k)];
+}
+
+MatingPose ViewModel::DatumPose(const ViewSample& sample) const {
+  MatingPose pose = PoseOf(sample);
+  if (scene_.features.empty()) return pose;
+  // The sample's offset is in the datum's outer part's frame; the JointStage gives the datum
+  // feature R(-angle) o of the body's offset o in the joint frame (its axis is the joint's), which
+  // its analyzer takes in its outer part's frame.
+  const double angle = scene_.features.front().placement.angle;
+  pose.offset = Reflect(Turn(Reflect(pose.offset, scene_.moving), -angle), scene_.moving);
+  return pose;
 }
 
 StateExtras ViewModel::Extras(const ViewSample& sample) const {
   StateExtras x;
   if (!analyzer_) return x;
-  const MatingPose pose = PoseOf(sample);
+  const MatingPose pose = DatumPose(sample);
   if (!std::isfinite(pose.depth) || !pose.offset.allFinite() || !std::isfinite(pose.angle)) {
     return x;
   }
   x.assembly_space_known = analyzer_->AssemblySpace(pose, &x.assembly_space);
+  if (!scene_.features.empty()) {
+    // Back into the sample's frame, where the page draws the moving axis over it.
+    const double angle = scene_.features.front().placement.angle;
+    for (Eigen::Vector2d& v : x.assembly_space) {
+      v = Reflect(Turn(Reflect(v, scene_.moving), angle), scene_.moving);
+    }
+  }
   if (pressure_per_interference_ > 0.0) {
     Eigen::VectorXd delta;
     analyzer_->InterferenceMap(pose, &delta);
@@ -110,7 +194,7 @@ StateExtras ViewModel::Extras(const ViewSample& sample) const {
 void ViewModel::FillContact(ViewSample* sample) const {
   if (!analyzer_) return;
   ContactState c;
-  analyzer_->Evaluate(PoseOf(*sample), &c);
+  analyzer_->Evaluate(DatumPose(*sample), &c);
   sample->engaged = c.engaged;
   sample->interference = c.interference;
   sample->offset_distance = c.offset_distance;

@@ -1,15 +1,19 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/resistance_law.h"
 #include "framework/scenario/scene.h"
 #include "framework/view/frame_codec.h"
+#include "framework/view/part_placement.h"
 #include "framework/view/view_sample.h"
 
 namespace fitfeel::view {
@@ -19,6 +23,10 @@ namespace fitfeel::view {
 // draws them (same scene, same seed, same shapes), their render meshes, and a contact analyzer and
 // law of its own, so that pressure maps and assembly spaces are computed on the server's thread
 // without touching the objects the tick uses.
+//
+// A several-feature scene: every feature's two parts, drawn (shapes, then position deviations)
+// as Prepare draws them, their render meshes placed in the joint frame (PartPlacement), and the
+// datum feature's analyzer and law for the pressure map and the assembly space.
 class FITFEEL_API ViewModel {
  public:
   // Throws UserError/ScenarioError as a run would for a scene that cannot be prepared. A surface
@@ -31,10 +39,14 @@ class FITFEEL_API ViewModel {
 
   // The scene message (JSON text) a client receives first.
   const std::string& scene_message() const { return scene_message_; }
-  // The mesh frame of the inner (0) or outer (1) part.
-  const std::string& mesh_frame(int part) const;
+  // The mesh frames a client receives after the scene message, in order: the inner (0) and the
+  // outer (1) part of a one-feature scene; of a several-feature scene, each feature's inner part
+  // and then its outer part (frame 2 i + side), feature by feature.
+  int mesh_count() const { return static_cast<int>(mesh_frames_.size()); }
+  const std::string& mesh_frame(int k) const;
   bool renders_forces() const { return law_ != nullptr; }
   Role moving() const { return scene_.moving; }
+  bool several_features() const { return !scene_.features.empty(); }
   const std::string& status() const { return status_; }
 
   // Pressure map (quantised) and assembly space at the sample's pose (in the outer part's frame,
@@ -45,7 +57,20 @@ class FITFEEL_API ViewModel {
   // the forces.
   void FillContact(ViewSample* sample) const;
 
+  // A several-feature scene: each feature's position deviations as drawn (inner side, outer side;
+  // joint frame, m) and where each part is drawn (feature i's inner part at 2 i, its outer part at
+  // 2 i + 1). Empty for a one-feature scene.
+  const std::vector<std::array<Eigen::Vector2d, 2>>& position_deviations() const {
+    return position_deviations_;
+  }
+  const std::vector<PartPlacement>& placements() const { return placements_; }
+
  private:
+  // The pose the datum feature's analyzer takes for a sample: the sample's own in a one-feature
+  // scene; in a several-feature scene the datum feature's pose in its own frame (turned by its
+  // `angle`), as the JointStage gives it.
+  MatingPose DatumPose(const ViewSample& sample) const;
+
   Scene scene_;
   std::unique_ptr<SkinModelShape> inner_, outer_;
   std::unique_ptr<ContactAnalyzer> analyzer_;
@@ -53,7 +78,9 @@ class FITFEEL_API ViewModel {
   double pressure_per_interference_ = 0.0;  // Pa/m; 0 when the law reports none
   std::string status_;
   std::string scene_message_;
-  std::string mesh_frames_[2];
+  std::vector<std::string> mesh_frames_;
+  std::vector<std::array<Eigen::Vector2d, 2>> position_deviations_;
+  std::vector<PartPlacement> placements_;
 };
 
 }  // namespace fitfeel::view

@@ -3,9 +3,10 @@
 // then saves a screenshot.
 //
 // node --experimental-websocket screenshot.mjs URL OUT.png [--min-frames N] [--timeout S]
-//      [--size WxH] [--eval JS]
+//      [--size WxH] [--eval JS] [--expect JS]
 // --eval runs JS in the page once the frames came (e.g. moves the time slider) and waits for
-// one more frame. Exit 0 on success, 1 with a message otherwise.
+// one more frame. --expect JS, evaluated in the page once the picture is drawn, must give true
+// (anything else is reported). Exit 0 on success, 1 with a message otherwise.
 import { spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync, existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -21,6 +22,7 @@ const minFrames = Number(option('--min-frames', '1'));
 const timeoutMs = 1000 * Number(option('--timeout', '90'));
 const [width, height] = option('--size', '1280x800').split('x').map(Number);
 const script = option('--eval', '');
+const expectation = option('--expect', '');
 const chromium = process.env.CHROMIUM || '/usr/bin/chromium';
 
 const profile = mkdtempSync(join(tmpdir(), 'fitfeel-chromium-'));
@@ -97,6 +99,10 @@ if (script) {
 await evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');
 const { data } = await page('Page.captureScreenshot', { format: 'png' });
 writeFileSync(out, Buffer.from(data, 'base64'));
+if (expectation) {
+  const result = await evaluate(expectation);
+  if (result !== true) fail(`the page gives ${JSON.stringify(result)} for ${expectation}`);
+}
 console.log(`screenshot: ${out} after ${await frames()} frames`);
 ws.close();
 cleanUp();

@@ -52,6 +52,22 @@ TEST(LoadSummary, ReadsTheRecordedGrids) {
   EXPECT_TRUE(summary.law.empty());
 }
 
+TEST(LoadConstrainedTrace, ReadsTheTorqueWhereTheTraceHasIt) {
+  ScratchDir dir;
+  WriteFile(dir.path() / "trace.csv",
+            "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tx_Nm,ty_Nm,tz_Nm\n"
+            "0,positioning,-1,0,0,0,0,0,0\n"
+            "0.001,constrained,0.5,1,-2,3,0.1,-5,0.3\n");
+  const ConstrainedTrace trace = LoadConstrainedTrace(dir.path() / "trace.csv");
+  ASSERT_EQ(trace.ty_Nm.size(), 1u);
+  EXPECT_DOUBLE_EQ(trace.tx_Nm[0], 0.1);
+  EXPECT_DOUBLE_EQ(trace.ty_Nm[0], -5.0);
+  EXPECT_DOUBLE_EQ(trace.tz_Nm[0], 0.3);
+  WriteFile(dir.path() / "trace.csv",
+            "t_s,stage,depth_mm,fx_N,fy_N,fz_N\n0.001,constrained,0.5,1,-2,3\n");
+  EXPECT_TRUE(LoadConstrainedTrace(dir.path() / "trace.csv").ty_Nm.empty());
+}
+
 TEST(LoadRun, MissingFolderIsRefused) {
   ScratchDir dir;
   EXPECT_THAT(MessageOf([&] { LoadRun(dir.path() / "absent"); }), HasSubstr("does not exist"));

@@ -122,6 +122,7 @@ TEST(FrameCodec, MeshFrameHoldsCornersDirectionsAndVariation) {
   EXPECT_EQ(At<std::uint16_t>(f, 6), static_cast<std::uint16_t>(FrameKind::kMesh));
   EXPECT_EQ(At<std::uint8_t>(f, 8), 1);  // outer
   EXPECT_EQ(At<std::uint8_t>(f, 9), 0);  // not a placeholder
+  EXPECT_EQ(At<std::uint16_t>(f, 10), 0);  // the datum feature (a one-feature scene's only one)
   EXPECT_EQ(At<std::uint32_t>(f, 12), 2u);
   EXPECT_FLOAT_EQ(At<float>(f, 16 + 4 * 3 * 4 + 4), 0.0f);  // cell 1, corner 0, y
   EXPECT_FLOAT_EQ(At<float>(f, 16 + 96 + 24), 4e-6f);        // V of cell 0
@@ -129,6 +130,28 @@ TEST(FrameCodec, MeshFrameHoldsCornersDirectionsAndVariation) {
   EXPECT_THROW(EncodeMeshFrame(0, mesh, Eigen::VectorXd::Zero(3)), UserError);
   mesh.corners.pop_back();
   EXPECT_THROW(EncodeMeshFrame(0, mesh, v), UserError);
+}
+
+TEST(FrameCodec, MeshFrameNamesItsFeatureAndRoundTrips) {
+  RenderMesh mesh;
+  for (int k = 0; k < 4; ++k) mesh.corners.emplace_back(60e-3, -k * 1e-3, 16.3e-3);
+  mesh.directions.emplace_back(0.0, 0.0, 1.0);
+  Eigen::VectorXd v(1);
+  v << -3e-6;
+  const std::string f = EncodeMeshFrame(0, mesh, v, 7);
+  EXPECT_EQ(At<std::uint16_t>(f, 10), 7);
+  const DecodedMesh d = DecodeMeshFrame(f);
+  EXPECT_EQ(d.part, 0);
+  EXPECT_EQ(d.feature, 7);
+  EXPECT_FALSE(d.placeholder);
+  ASSERT_EQ(d.mesh.corners.size(), 4u);
+  EXPECT_FLOAT_EQ(static_cast<float>(d.mesh.corners[3].y()), -3e-3f);
+  EXPECT_FLOAT_EQ(static_cast<float>(d.mesh.corners[0].z()), 16.3e-3f);
+  EXPECT_FLOAT_EQ(static_cast<float>(d.variation[0]), -3e-6f);
+  EXPECT_THROW(EncodeMeshFrame(0, mesh, v, 65536), UserError);
+  EXPECT_THROW(EncodeMeshFrame(0, mesh, v, -1), UserError);
+  EXPECT_THROW(DecodeMeshFrame(f.substr(0, f.size() - 1)), UserError);
+  EXPECT_THROW(DecodeMeshFrame(EncodeStateFrame(SampleFrame(), StateExtras{})), UserError);
 }
 
 TEST(FrameCodec, EmptyMeshIsAPlaceholder) {

@@ -208,6 +208,43 @@ TEST_F(ServerTest, ClientThatVanishesMidFrameCostsNothing) {
   EXPECT_EQ(Get("/").rfind("HTTP/1.1 200", 0), 0u);
 }
 
+// A several-feature scene: after the scene message, every feature's inner and outer mesh, in
+// the scenario's order; the page's placement module is served beside the page.
+TEST(Server, SendsEveryFeaturesMeshes) {
+  PluginRegistry registry;
+  registry.LoadAll();
+  const ViewModel model(LoadScene("scenarios/keyed-hub.yaml", registry), 1);
+  ASSERT_EQ(model.mesh_count(), 4);
+  Server server(model, nullptr, {}, ServerOptions{});
+  server.Start();
+  asio::io_context io;
+  websocket::stream<tcp::socket> ws(io);
+  ws.next_layer().connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server.port()));
+  ws.handshake("127.0.0.1", "/ws");
+  beast::flat_buffer buffer;
+  ws.read(buffer);
+  EXPECT_TRUE(ws.got_text());
+  EXPECT_NE(beast::buffers_to_string(buffer.data()).find("\"features\""), std::string::npos);
+  for (int k = 0; k < 4; ++k) {
+    buffer.consume(buffer.size());
+    ws.read(buffer);
+    EXPECT_TRUE(ws.got_binary());
+    EXPECT_EQ(beast::buffers_to_string(buffer.data()), model.mesh_frame(k)) << k;
+  }
+  ws.close(websocket::close_code::normal);
+
+  tcp::socket socket(io);
+  socket.connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), server.port()));
+  http::request<http::empty_body> get(http::verb::get, "/joint.js", 11);
+  get.set(http::field::host, "127.0.0.1");
+  http::write(socket, get);
+  http::response<http::string_body> reply;
+  beast::flat_buffer http_buffer;
+  http::read(socket, http_buffer, reply);
+  EXPECT_EQ(reply.result_int(), 200);
+  EXPECT_NE(reply.body().find("export function bodyPose"), std::string::npos);
+}
+
 TEST(Server, RefusesAnAddressItCannotBind) {
   PluginRegistry registry;
   registry.LoadAll();

@@ -13,7 +13,7 @@ export function frameKind(buffer) {
 
 export function readMesh(buffer) {
   const v = new DataView(buffer);
-  const part = v.getUint8(8), placeholder = v.getUint8(9) !== 0;
+  const part = v.getUint8(8), placeholder = v.getUint8(9) !== 0, feature = v.getUint16(10, true);
   const cells = v.getUint32(12, true);
   let at = 16;
   const floats = (count) => {
@@ -22,7 +22,7 @@ export function readMesh(buffer) {
     return out;
   };
   const corners = floats(cells * 12), directions = floats(cells * 3), variation = floats(cells);
-  return { part, placeholder, cells, corners, directions, variation };
+  return { part, feature, placeholder, cells, corners, directions, variation };
 }
 
 export function readState(buffer) {

@@ -1,8 +1,11 @@
 // fitfeel view: draws the parts, the contact pressure, the resistances, the assembly space and
-// the force trace from the frames the server streams over /ws (frames.js reads them).
+// the force trace from the frames the server streams over /ws (frames.js reads them). A
+// several-feature scene draws every feature's parts in the joint frame (joint.js), names the
+// features in the panel and over the 3D view, and moves the moving body's parts together.
 import * as THREE from '/three/build/three.module.js';
 import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
 import * as F from '/frames.js';
+import * as J from '/joint.js';
 
 const $ = (id) => document.getElementById(id);
 const MM = 1000;  // frames are in m; the scene is drawn in mm
@@ -16,10 +19,22 @@ function viridis(t) {
   return VIRIDIS[i].map((a, k) => (a + u * (VIRIDIS[i + 1][k] - a)) / 255);
 }
 
+// Meshes and geometries are indexed 2 feature + part (part 0 inner, 1 outer): a one-feature
+// scene's are 0 and 1.
 const view = {
   scene: null, meshes: [null, null], geometry: [null, null], factor: 100, state: null,
   trace: [], history: null, frames: 0, finished: false,
+  holders: [],  // several-feature scene: the group holding each part's mesh within its body
+  labels: [],   // several-feature scene: each feature's name over its fixed part
 };
+// A several-feature scene (the scene message lists its features).
+const joint = () => Boolean(view.scene && view.scene.features && view.scene.features.length);
+// Each feature's colour: the datum feature's outer part keeps the one-feature page's blue-grey;
+// the others take Okabe and Ito's colour-blind-safe set, away from the pressure map's viridis.
+const FEATURE_COLOURS = [0x8a9bb0, 0xd55e00, 0xcc79a7, 0xe69f00, 0x0072b2, 0x009e73, 0x56b4e9,
+  0x882255];
+const featureColour = (i) => FEATURE_COLOURS[i % FEATURE_COLOURS.length];
+const cssColour = (c) => `#${c.toString(16).padStart(6, '0')}`;
 
 // --- three.js scene -------------------------------------------------------------------------
 const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -39,6 +54,7 @@ function requestRender() {
   requestAnimationFrame(() => {
     renderPending = false;
     renderer.render(scene, camera);
+    if (view.labels.length) placeLabels();
   });
 }
 controls.addEventListener('change', requestRender);
@@ -46,8 +62,10 @@ scene.add(new THREE.HemisphereLight(0xffffff, 0x888880, 0.85));
 const sun = new THREE.DirectionalLight(0xffffff, 0.55);
 sun.position.set(1, 2, 3);
 scene.add(sun);
-const moving = new THREE.Group();   // the inner part, placed at the pose
-const fixed = new THREE.Group();    // the outer part
+// One feature: the inner part, placed at the pose, and the outer part. Several: the moving body's
+// parts, placed at the body's pose, and the fixed body's.
+const moving = new THREE.Group();
+const fixed = new THREE.Group();
 scene.add(moving, fixed);
 const axialArrow = new THREE.ArrowHelper(new THREE.Vector3(0, -1, 0), new THREE.Vector3(), 1,
   0xc0392b);
@@ -104,6 +122,10 @@ function displace(part) {
 }
 
 function addPart(mesh) {
+  if (joint()) {
+    addFeaturePart(mesh);
+    return;
+  }
   const group = mesh.part === 0 ? moving : fixed;
   group.clear ? group.clear() : group.children.slice().forEach((c) => group.remove(c));
   view.meshes[mesh.part] = mesh;
@@ -134,15 +156,117 @@ function addPart(mesh) {
   requestRender();
 }
 
+// A several-feature scene's part: its mesh comes placed in the joint frame (on the moving body: at
+// the body's zero pose), held by a group of its own that draws its position deviation
+// exaggerated. Inner parts are opaque, outer parts translucent, each feature in its colour; the
+// datum feature's inner part carries the pressure map.
+function addFeaturePart(mesh) {
+  const feature = view.scene.features[mesh.feature];
+  if (!feature) return;
+  const k = 2 * mesh.feature + mesh.part;
+  const side = mesh.part === 0 ? feature.inner : feature.outer;
+  if (view.holders[k] && view.holders[k].parent) view.holders[k].parent.remove(view.holders[k]);
+  const holder = new THREE.Group();
+  view.holders[k] = holder;
+  view.meshes[k] = mesh;
+  (side.body === 'moving' ? moving : fixed).add(holder);
+  const colour = featureColour(mesh.feature);
+  if (mesh.placeholder) {
+    // No render mesh: a box at the feature's place stands in.
+    const size = 4, box = new THREE.BoxGeometry(size, size, size);
+    const m = new THREE.Mesh(box, new THREE.MeshLambertMaterial({ color: colour, transparent: true,
+      opacity: mesh.part === 0 ? 0.9 : 0.3 }));
+    m.position.set(feature.at_mm[0], mesh.part === 0 ? size / 2 : -size / 2, feature.at_mm[1]);
+    holder.add(m);
+    view.geometry[k] = null;
+  } else {
+    const g = buildGeometry(mesh);
+    view.geometry[k] = g;
+    displace(k);
+    const material = k === 0
+      ? new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide })
+      : mesh.part === 0
+        ? new THREE.MeshLambertMaterial({ color: colour, side: THREE.DoubleSide })
+        : new THREE.MeshLambertMaterial({ color: colour, side: THREE.DoubleSide, transparent: true,
+          opacity: 0.35, depthWrite: false });
+    holder.add(new THREE.Mesh(g, material));
+  }
+  shiftDeviation(k);
+  document.body.dataset.parts = view.holders.filter((h) => h).length;
+  if (view.scene.features.every((f, i) => view.meshes[2 * i] && view.meshes[2 * i + 1])) {
+    frameCamera();
+    makeLabels();
+  }
+  requestRender();
+}
+
+// The part's position deviation drawn `factor` times its size (its mesh carries it once).
+function shiftDeviation(k) {
+  const holder = view.holders[k], feature = view.scene.features[k >> 1];
+  if (!holder || !feature) return;
+  holder.position.set(...J.deviationShift((k & 1) ? feature.outer : feature.inner, view.factor));
+}
+
+// Each feature's name over its fixed part's far end (the end away from the moving body), kept
+// apart on the screen where two would overlap.
+function makeLabels() {
+  for (const label of view.labels) label.element.remove();
+  view.labels = [];
+  fixed.updateMatrixWorld(true);
+  view.scene.features.forEach((feature, i) => {
+    const k = 2 * i + (feature.inner.body === 'fixed' ? 0 : 1);
+    const box = new THREE.Box3().expandByObject(view.holders[k]);
+    if (box.isEmpty()) return;
+    const element = document.createElement('div');
+    element.className = 'feature-label';
+    element.textContent = feature.name;
+    element.style.borderLeftColor = cssColour(featureColour(i));
+    $('scene').appendChild(element);
+    const centre = box.getCenter(new THREE.Vector3());
+    view.labels.push({ element, anchor: new THREE.Vector3(centre.x, box.max.y, box.max.z) });
+  });
+  requestRender();
+}
+
+function placeLabels() {
+  const el = $('scene'), w = el.clientWidth, h = el.clientHeight, taken = [];
+  for (const label of view.labels) {
+    const p = label.anchor.clone().project(camera);
+    const visible = p.z < 1 && Math.abs(p.x) <= 1 && Math.abs(p.y) <= 1;
+    label.element.hidden = !visible;
+    if (!visible) continue;
+    const x = (p.x + 1) / 2 * w;
+    let y = (1 - p.y) / 2 * h;
+    const width = label.element.offsetWidth, height = label.element.offsetHeight;
+    // A label stands on its anchor (its bottom edge's centre, viewer.css); one that would cover an
+    // earlier one moves up past it.
+    for (let moved = true; moved;) {
+      moved = false;
+      for (const t of taken) {
+        if (Math.abs(x - t.x) < (width + t.width) / 2 && y > t.y - t.height && y - height < t.y) {
+          y = t.y - t.height;
+          moved = true;
+        }
+      }
+    }
+    taken.push({ x, y, width, height });
+    label.element.style.left = `${x}px`;
+    label.element.style.top = `${y}px`;
+  }
+}
+
 // Both parts as they stand before insertion (the moving one's leading end at the entrance), seen
 // from the side, slightly from above and in front.
 function frameCamera() {
   const saved = moving.position.clone();
+  const twist = moving.rotation.y;
   moving.position.set(0, 0, 0);
+  if (joint()) moving.rotation.set(0, 0, 0);
   moving.updateMatrixWorld(true);
   const box = new THREE.Box3();
   for (const group of [moving, fixed]) box.expandByObject(group);
   moving.position.copy(saved);
+  if (joint()) moving.rotation.set(0, twist, 0);
   moving.updateMatrixWorld(true);
   if (box.isEmpty()) return;
   const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3());
@@ -177,13 +301,24 @@ function arrowLength(force) {
 }
 
 function place(state) {
+  if (joint()) {
+    // The moving body at its pose in the joint frame; the resistances on it at its datum part's
+    // mating end.
+    J.placeBody(moving, J.bodyPose(state, view.scene, view.factor));
+    drawArrows(moving.position.clone(), J.bodyForce(state, view.scene));
+    return;
+  }
   const s = view.factor;
   const rotational = view.scene && view.scene.rotational;
   moving.position.set(MM * s * state.offsetX, rotational ? 0 : MM * state.depth,
     MM * s * state.offsetZ);
   moving.rotation.set(0, -state.angle, 0);
   const tip = new THREE.Vector3(moving.position.x, moving.position.y, moving.position.z);
-  const [fx, fy, fz] = state.force, radial = Math.hypot(fx, fz);
+  drawArrows(tip, state.force);
+}
+
+function drawArrows(tip, force) {
+  const [fx, fy, fz] = force, radial = Math.hypot(fx, fz);
   axialArrow.position.copy(tip);
   axialArrow.setDirection(new THREE.Vector3(0, fy >= 0 ? 1 : -1, 0));
   const la = arrowLength(fy);
@@ -215,7 +350,9 @@ function showState(state) {
   $('forces').innerHTML =
     `<span class="axial">axial resistance ${fmt(Math.abs(fy))} N</span><br>` +
     `<span class="radial">radial resistance ${fmt(Math.hypot(fx, fz))} N</span>` +
-    (view.scene && view.scene.rotational ? `<br>torque ${fmt(Math.hypot(...state.torque))} N·m` : '');
+    (view.scene && view.scene.rotational ? `<br>torque ${fmt(Math.hypot(...state.torque))} N·m` : '') +
+    (joint() ? `<br>twist ${fmt(1e3 * state.angle)} mrad · torque about the axis ` +
+      `${fmt(state.torque[1])} N·m` : '');
   drawLegend(state);
   drawSpace(state);
   if (!finished && state.stage === 1) {
@@ -322,6 +459,9 @@ function setFactor(exponent) {
   view.factor = Math.pow(10, exponent);
   $('factor-value').textContent = view.factor >= 10 ? Math.round(view.factor) : view.factor.toFixed(1);
   displace(0); displace(1);
+  for (let k = 2; k < view.meshes.length; ++k) displace(k);
+  view.holders.forEach((h, k) => shiftDeviation(k));
+  if (view.labels.length) makeLabels();  // over the fixed parts, where this factor draws them
   if (view.state) place(view.state);
   requestRender();
 }
@@ -334,10 +474,12 @@ $('time').addEventListener('input', (e) => {
   if (socket && socket.readyState === 1) socket.send(`seek ${i}`);
 });
 
-// Default exaggeration: the largest deviation drawn as 4 % of the part's radius.
+// Default exaggeration: the largest deviation drawn as 4 % of the (datum) inner part's radius.
 function defaultFactor(info) {
-  const v = Math.max(Math.abs(info.inner.variation_min_um), Math.abs(info.inner.variation_max_um),
-    Math.abs(info.outer.variation_min_um), Math.abs(info.outer.variation_max_um)) * 1e-3;  // mm
+  const parts = info.features && info.features.length
+    ? info.features.flatMap((f) => [f.inner, f.outer]) : [info.inner, info.outer];
+  const v = Math.max(...parts.map((p) => Math.max(Math.abs(p.variation_min_um),
+    Math.abs(p.variation_max_um)))) * 1e-3;  // mm
   const radius = Math.max(info.inner.nominal_size_mm, 1) / 2;
   if (!(v > 0)) return 1;
   return Math.min(Math.max(0.04 * radius / v, 1), 10000);
@@ -349,6 +491,7 @@ function onScene(info) {
   $('subtitle').textContent = `${info.surface} · law ${info.law || '–'} · seed ${info.seed} · ` +
     `${info.inner.name} (${info.inner.rows}×${info.inner.columns}) in ${info.outer.name} ` +
     `(${info.outer.rows}×${info.outer.columns})`;
+  if (info.features && info.features.length) showFeatures(info);
   const notes = [info.status, info.placeholder_note].filter((s) => s);
   $('note').hidden = notes.length === 0;
   $('note').textContent = notes.join('; ');
@@ -361,6 +504,44 @@ function onScene(info) {
   const e = Math.log10(defaultFactor(info));
   $('factor').value = e;
   setFactor(e);
+}
+
+// The features of a several-feature scene in the panel: each one's colour, name, surface, parts
+// (which body each is on) and placement, and the pressure map's and assembly space's feature.
+function showFeatures(info) {
+  const datum = info.features[0];
+  $('subtitle').textContent = `${info.features.length} features · ${info.moving_body} (moving) on ` +
+    `${info.fixed_body} (fixed) · seed ${info.seed}`;
+  $('pressure-title').textContent = `Contact pressure on ${datum.inner.name} at ${datum.name}`;
+  $('space-title').textContent = `Assembly space of ${datum.name} at the current section`;
+  const list = $('features');
+  list.replaceChildren();
+  const mm = (x) => fmt(x, 4);
+  info.features.forEach((f, i) => {
+    const item = document.createElement('li');
+    const swatch = document.createElement('span');
+    swatch.className = 'swatch';
+    swatch.style.background = cssColour(featureColour(i));
+    const name = document.createElement('b');
+    name.textContent = f.name;
+    const side = (p) => `${p.name} ${p.body}` + (p.deviation_um.some((d) => d !== 0)
+      ? ` (position deviation ${p.deviation_um.map((d) => d.toFixed(1)).join(', ')} µm)` : '');
+    const where = i === 0 ? 'datum' : `at (${mm(f.at_mm[0])}, ${mm(f.at_mm[1])}) mm` +
+      (f.engages_after_mm ? `, engages after ${mm(f.engages_after_mm)} mm` : '');
+    const details = document.createElement('div');
+    details.className = 'hint';
+    details.textContent = `${f.surface.replace('fitfeel.surface.', '')}, law ${f.law}, ${where}` +
+      (f.angle_deg ? `, turned ${mm(f.angle_deg)}°` : '') +
+      ` · inner: ${side(f.inner)} · outer: ${side(f.outer)}`;
+    item.append(swatch, name, details);
+    list.appendChild(item);
+  });
+  $('features-note').textContent = `${info.moving_body}'s parts move with its pose, ` +
+    `${info.fixed_body}'s stay; inner parts opaque, outer parts translucent; x, z of the joint frame.`;
+  $('features-panel').hidden = false;
+  $('factor-hint').textContent = 'Nominal shapes true to scale; the deviations V, the parts\' ' +
+    'position deviations and the moving body\'s offset across the axis are drawn multiplied by ' +
+    'this factor, its depth and twist true.';
 }
 
 function onHistory(rows) {

@@ -1,0 +1,191 @@
+// What the viewer draws of a scene (ViewModel): a one-feature scene's two parts in their own
+// frames; a several-feature scene's every part, drawn as the run draws it and placed in the joint
+// frame (PartPlacement).
+#include "framework/view/view_model.h"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "framework/plugin/registry.h"
+#include "framework/runtime/prepare.h"
+#include "framework/scenario/scene.h"
+#include "framework/view/frame_codec.h"
+#include "framework/view/part_placement.h"
+
+namespace fitfeel::view {
+namespace {
+
+const PluginRegistry& ViewTestRegistry() {
+  static const PluginRegistry* registry = [] {
+    auto* r = new PluginRegistry();
+    r->LoadAll();
+    return r;
+  }();
+  return *registry;
+}
+
+// Centroid and extent of a decoded mesh's corners, m.
+struct MeshBox {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d min, max;
+};
+MeshBox BoxOf(const RenderMesh& mesh) {
+  MeshBox b;
+  b.min = b.max = mesh.corners.front();
+  for (const Eigen::Vector3d& c : mesh.corners) {
+    b.centroid += c;
+    b.min = b.min.cwiseMin(c);
+    b.max = b.max.cwiseMax(c);
+  }
+  b.centroid /= static_cast<double>(mesh.corners.size());
+  return b;
+}
+
+TEST(ViewModelPlacement, PlacesAPointBackTurnedAndOnItsAxis) {
+  PartPlacement p;
+  p.axis = Eigen::Vector2d(10e-3, 0.0);
+  p.angle = M_PI / 2;
+  p.setback = 3e-3;
+  // Moved back 3 mm along its own -y, then R(90 deg): (x, z) -> (z, -x), then onto its axis.
+  const Eigen::Vector3d point(1e-3, -2e-3, 0.0);
+  EXPECT_TRUE(PlacePoint(p, point).isApprox(Eigen::Vector3d(10e-3, -5e-3, -1e-3), 1e-12));
+  // Half a turn about z first: (x, y, z) -> (-x, -y, z), so the part's body lies along +y.
+  p.half_turn = true;
+  EXPECT_TRUE(PlacePoint(p, point).isApprox(Eigen::Vector3d(10e-3, 5e-3, 1e-3), 1e-12));
+  // Directions turn and do not move.
+  EXPECT_TRUE(PlaceDirection(p, Eigen::Vector3d(1.0, 0.0, 0.0))
+                  .isApprox(Eigen::Vector3d(0.0, 0.0, 1.0), 1e-12));
+}
+
+TEST(ViewModelPlacement, OneFeatureSceneSendsItsPartsInTheirOwnFrames) {
+  const Scene scene = LoadScene("scenarios/paper-case1-h7js6.yaml", ViewTestRegistry());
+  const ViewModel model(scene, 1);
+  ASSERT_EQ(model.mesh_count(), 2);
+  Rng rng(1);
+  const SkinModelShapes shapes = GenerateSkinModelShapes(scene, rng);
+  EXPECT_EQ(model.mesh_frame(0),
+            EncodeMeshFrame(0, scene.surface->MakeRenderMesh(scene.inner, shapes.inner.grid),
+                            shapes.inner.variation));
+  EXPECT_EQ(model.mesh_frame(1),
+            EncodeMeshFrame(1, scene.surface->MakeRenderMesh(scene.outer, shapes.outer.grid),
+                            shapes.outer.variation));
+  EXPECT_FALSE(nlohmann::json::parse(model.scene_message()).contains("features"));
+  EXPECT_TRUE(model.position_deviations().empty());
+}
+
+// The keyed hub: the hub (every feature's outer part) moves. Its key stands on the shaft at
+// (0, 16.3 mm), 5 mm back from the shaft's end.
+TEST(ViewModelPlacement, KeyedHubDrawsBothFeaturesAtTheirPlaces) {
+  const Scene scene = LoadScene("scenarios/keyed-hub.yaml", ViewTestRegistry());
+  const ViewModel model(scene, 1);
+  ASSERT_EQ(model.mesh_count(), 4);
+  // The deviations the run draws (same scene, same seed).
+  Scene seeded = scene;
+  seeded.run.seed = 1;
+  const PreparedScene prepared = Prepare(seeded);
+  ASSERT_EQ(model.position_deviations().size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    for (int side = 0; side < 2; ++side) {
+      EXPECT_EQ(model.position_deviations()[i][side], prepared.position_deviations[i][side]);
+    }
+  }
+  const Eigen::Vector2d key_dev = model.position_deviations()[1][0];
+  const Eigen::Vector2d keyway_dev = model.position_deviations()[1][1];
+  EXPECT_GT(key_dev.norm(), 0.0);
+  EXPECT_LE(key_dev.norm(), 10e-6);  // half the 20 um zone
+
+  const DecodedMesh shaft = DecodeMeshFrame(model.mesh_frame(0));
+  const DecodedMesh hub = DecodeMeshFrame(model.mesh_frame(1));
+  const DecodedMesh key = DecodeMeshFrame(model.mesh_frame(2));
+  const DecodedMesh keyway = DecodeMeshFrame(model.mesh_frame(3));
+  EXPECT_EQ(key.feature, 1);
+  EXPECT_EQ(key.part, 0);
+  EXPECT_EQ(keyway.part, 1);
+  // The fixed shaft's body lies along +y from its end at the joint's origin (60 mm), the moving
+  // hub's behind its entrance (45 mm); both on the joint's axis.
+  const MeshBox s = BoxOf(shaft.mesh), h = BoxOf(hub.mesh);
+  EXPECT_NEAR(s.min.y(), 0.0, 1e-9);
+  EXPECT_NEAR(s.max.y(), 60e-3, 1e-7);
+  EXPECT_NEAR(h.min.y(), -45e-3, 1e-7);
+  EXPECT_NEAR(h.max.y(), 0.0, 1e-9);
+  EXPECT_NEAR(s.centroid.x(), 0.0, 1e-9);
+  EXPECT_NEAR(s.centroid.z(), 0.0, 1e-9);
+  // The key centred at z = 16.3 mm plus its deviation (to a tenth of a micrometre: the
+  // deviation itself is micrometres), 5 mm back, 40 mm long; the keyway at its own deviation.
+  const MeshBox k = BoxOf(key.mesh), w = BoxOf(keyway.mesh);
+  EXPECT_NEAR(k.centroid.x(), key_dev.x(), 1e-7);
+  EXPECT_NEAR(k.centroid.z(), 16.3e-3 + key_dev.y(), 1e-7);
+  EXPECT_NEAR(k.min.y(), 5e-3, 1e-7);
+  EXPECT_NEAR(k.max.y(), 45e-3, 1e-7);
+  EXPECT_NEAR(k.max.z() - k.min.z(), 2.6e-3, 1e-7);  // the flank height
+  EXPECT_NEAR(w.centroid.x(), keyway_dev.x(), 1e-7);
+  EXPECT_NEAR(w.centroid.z(), 16.3e-3 + keyway_dev.y(), 1e-7);
+  EXPECT_NEAR(w.min.y(), -45e-3, 1e-7);
+
+  // Which body each part is on, and the features named for the page.
+  ASSERT_EQ(model.placements().size(), 4u);
+  for (int k2 = 0; k2 < 4; ++k2) EXPECT_EQ(model.placements()[k2].moving, k2 % 2 == 1);
+  const nlohmann::json j = nlohmann::json::parse(model.scene_message());
+  ASSERT_EQ(j["features"].size(), 2u);
+  EXPECT_EQ(j["features"][1]["name"], "key");
+  EXPECT_EQ(j["features"][1]["inner"]["body"], "fixed");
+  EXPECT_EQ(j["features"][1]["outer"]["body"], "moving");
+  EXPECT_NEAR(j["features"][1]["at_mm"][1].get<double>(), 16.3, 1e-9);
+  EXPECT_EQ(j["moving_body"], "hub");
+}
+
+// The two-pin plate: its second hole and pin 60 mm along x, each at its own deviation.
+TEST(ViewModelPlacement, TwoPinPlateDrawsItsSecondHole60MillimetresAlongX) {
+  const Scene scene = LoadScene("scenarios/two-pin-location.yaml", ViewTestRegistry());
+  const ViewModel model(scene, 3);
+  ASSERT_EQ(model.mesh_count(), 4);
+  const Eigen::Vector2d pin_dev = model.position_deviations()[1][0];
+  const Eigen::Vector2d hole_dev = model.position_deviations()[1][1];
+  EXPECT_GT((pin_dev - hole_dev).norm(), 0.0);
+  const MeshBox a = BoxOf(DecodeMeshFrame(model.mesh_frame(1)).mesh);
+  const MeshBox pin = BoxOf(DecodeMeshFrame(model.mesh_frame(2)).mesh);
+  const MeshBox hole = BoxOf(DecodeMeshFrame(model.mesh_frame(3)).mesh);
+  EXPECT_NEAR(a.centroid.x(), 0.0, 1e-9);
+  EXPECT_NEAR(pin.centroid.x(), 60e-3 + pin_dev.x(), 1e-7);
+  EXPECT_NEAR(pin.centroid.z(), pin_dev.y(), 1e-7);
+  EXPECT_NEAR(hole.centroid.x(), 60e-3 + hole_dev.x(), 1e-7);
+  EXPECT_NEAR(hole.centroid.z(), hole_dev.y(), 1e-7);
+  EXPECT_NEAR(hole.min.y(), -10e-3, 1e-7);  // the plate, 10 mm thick, behind its entrance
+}
+
+// A datum feature turned about the axis: its analyzer takes the pose in its own turned frame,
+// and the assembly space comes back in the page's frame, turned as the feature is.
+TEST(ViewModelPlacement, TurnedDatumGivesItsAssemblySpaceInThePagesFrame) {
+  std::ifstream in("scenarios/keyed-hub.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bore = "  bore:\n    surface: fitfeel.surface.cylindrical\n";
+  const std::size_t at = text.find(bore);
+  ASSERT_NE(at, std::string::npos);
+  std::string turned_text = text;
+  turned_text.insert(at + bore.size(), "    angle: 90 deg\n");
+  const ViewModel plain(LoadSceneFromYaml(text, "keyed-hub.yaml", ViewTestRegistry()), 1);
+  const ViewModel turned(LoadSceneFromYaml(turned_text, "turned.yaml", ViewTestRegistry()), 1);
+  ViewSample sample;
+  sample.depth = 20e-3;
+  sample.offset_x = 2e-6;
+  sample.offset_z = -1e-6;
+  const StateExtras p = plain.Extras(sample), t = turned.Extras(sample);
+  ASSERT_TRUE(p.assembly_space_known);
+  ASSERT_GT(p.assembly_space.size(), 2u);
+  ASSERT_EQ(t.assembly_space.size(), p.assembly_space.size());
+  // The hub moves: the page's frame is the joint frame reflected in z, where the joint frame's
+  // R(90 deg) turns (x, z) to (-z, x).
+  for (std::size_t v = 0; v < p.assembly_space.size(); ++v) {
+    const Eigen::Vector2d& q = p.assembly_space[v];
+    EXPECT_TRUE(t.assembly_space[v].isApprox(Eigen::Vector2d(-q.y(), q.x()), 1e-9))
+        << v << ": " << t.assembly_space[v].transpose() << " against " << q.transpose();
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::view
