@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -77,6 +78,8 @@ class FITFEEL_API JointStage final : public Stage {
                 Sum* sum, StageOutput* out) const noexcept;
 
   std::vector<JointFeature> features_;
+  // Each feature's angle's cosine and sine.
+  std::array<double, kMaxJointFeatures> feature_cos_{}, feature_sin_{};
   Options options_;
   double lever_ = 0.01;
 };
