@@ -37,6 +37,9 @@ struct JointStage::Sum {
   int evaluations = 0;
   bool engaged = false;  // some feature's surfaces overlap axially
   std::array<Share, kMaxJointFeatures> share;
+  // Each feature's contact there (one per feature, kept by the run): the tick's last evaluation
+  // of the balance is where it ends, and its contacts serve the run's wrench.
+  ContactState* contact = nullptr;
 };
 
 // What a run of the stage keeps from tick to tick.
@@ -51,6 +54,12 @@ struct JointStage::RunState final : StageState {
   std::array<bool, kMaxJointFeatures> jacobian_pushes{};
   std::array<Eigen::Matrix3d, kMaxJointFeatures> feature_jacobian;
   std::array<LawState, kMaxJointFeatures> law;
+  // The tick's work space, kept here so that a tick initialises none of it: the contacts of the
+  // balance's last evaluation, and the pose and shares of the evaluation beyond a kink where the
+  // last line search stopped short of it.
+  std::array<ContactState, kMaxJointFeatures> contacts;
+  Eigen::Vector3d beyond_at{0.0, 0.0, 0.0};
+  std::array<Share, kMaxJointFeatures> beyond;
 };
 
 namespace {
@@ -135,7 +144,8 @@ std::unique_ptr<StageState> JointStage::DoMakeState() const {
 
 void JointStage::FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, double twist,
                                double depth, const PartState& part, LawState* state,
-                               ContactState* contact, Wrench* wrench) const noexcept {
+                               bool contact_known, ContactState* contact,
+                               Wrench* wrench) const noexcept {
   const JointFeature& f = features_[i];
   const double c = feature_cos_[i], s = feature_sin_[i];
   // The feature's pose in its own frame (the joint frame turned by f.angle).
@@ -145,7 +155,7 @@ void JointStage::FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, d
   pose.angle = twist;
   const bool outer = f.moving == Role::kOuter;
   const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
-  f.analyzer->Evaluate(AnalyzerPose(pose, f.moving), contact);
+  if (!contact_known) f.analyzer->Evaluate(AnalyzerPose(pose, f.moving), contact);
   MatingMotion motion;
   const Eigen::Vector2d v = Turn(Eigen::Vector2d(part.velocity.x(), part.velocity.z()), c, -s);
   motion.velocity = Eigen::Vector3d(v.x(), part.velocity.y(), v.y());
@@ -177,6 +187,8 @@ void JointStage::FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, d
 
 void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part,
                           LawState* states, Sum* sum, StageOutput* out) const noexcept {
+  // The contacts of the last evaluation where it was at the same pose (the same tick).
+  const bool contacts_known = sum->evaluations > 0 && sum->at == q;
   sum->at = q;
   sum->wrench.SetZero();
   sum->engaged = false;
@@ -189,11 +201,11 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
     // fixed axis.
     const Eigen::Vector2d arm = Turn(f.moving_axis, twist_c, twist_s);
     const Eigen::Vector2d relative = offset + arm - f.fixed_axis;
-    ContactState contact;
+    ContactState& contact = sum->contact[i];
     Wrench w;
     FeatureWrench(i, relative, twist, depth, part, states == nullptr ? nullptr : &states[i],
-                  &contact, &w);
-    ++sum->evaluations;
+                  contacts_known, &contact, &w);
+    if (!contacts_known) ++sum->evaluations;
     sum->engaged = sum->engaged || contact.engaged;
     // About the body's reference axis.
     const Eigen::Vector3d lever_arm(arm.x(), 0.0, arm.y());
@@ -242,7 +254,7 @@ void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double de
     ContactState contact;
     Wrench w;
     FeatureWrench(i, share.relative + kDifferenceStep * basis.col(k), share.twist, depth, part,
-                  nullptr, &contact, &w);
+                  nullptr, false, &contact, &w);
     ++*evaluations;
     along.col(k) =
         (Eigen::Vector3d(w.force.x(), w.force.z(), w.torque.y()) - at) / kDifferenceStep;
@@ -303,6 +315,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     if (!active[k]) proximal_stiffness[k] = 0.0;
   }
   Sum sum;
+  sum.contact = run->contacts.data();
   // The balance's residual: the generalised force on the body in (x, z, arc) at q.
   const auto residual = [&](const Eigen::Vector3d& at) {
     Evaluate(at, depth, part, nullptr, &sum, nullptr);
@@ -324,8 +337,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     // Where the last line search stopped short of a kink of the contacts (a contact that starts,
     // a wall that turns): its evaluation beyond the root.
     const std::size_t n = features_.size();
-    Eigen::Vector3d beyond_at = Eigen::Vector3d::Zero();
-    std::array<Share, kMaxJointFeatures> beyond;
+    std::array<Share, kMaxJointFeatures>& beyond = run->beyond;
     bool kinked = false;
     // The forces derive from a convex energy (each feature's springs on its convex assembly
     // space or Winkler bed, the load, the spring and the proximal term) whose gradient is -g:
@@ -381,12 +393,12 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
           if (!beyond[i].pushes) continue;
           const Eigen::Vector3d here = sum.share[i].Generalised(lever_);
           const Eigen::Vector3d there = beyond[i].Generalised(lever_);
-          const Eigen::Vector3d predicted = here + run->feature_jacobian[i] * (beyond_at - q);
+          const Eigen::Vector3d predicted = here + run->feature_jacobian[i] * (run->beyond_at - q);
           if ((there - predicted).norm() <= kJacobianMiss * (there - here).norm()) continue;
           Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
           AddFeatureJacobian(i, beyond[i], depth, part, &sum.evaluations, &stiffness);
           model += Masked(stiffness, active);
-          Eigen::Vector3d push = there + stiffness * (q - beyond_at);
+          Eigen::Vector3d push = there + stiffness * (q - run->beyond_at);
           for (int k = 0; k < 3; ++k) {
             if (!active[k]) push[k] = 0.0;
           }
@@ -413,7 +425,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
       Eigen::Vector3d g_t = residual(q + step);
       double f_t = g_t.dot(step);
       if (f_t < -line_tolerance) {
-        beyond_at = sum.at;
+        run->beyond_at = sum.at;
         std::copy_n(sum.share.begin(), n, beyond.begin());
         double t_high = 1.0, f_high = f_t;
         int side = 0;
@@ -429,7 +441,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
           } else {
             t_high = t;
             f_high = f_t;
-            beyond_at = sum.at;
+            run->beyond_at = sum.at;
             std::copy_n(sum.share.begin(), n, beyond.begin());
             if (side == -1) f_low *= 0.5;
             side = -1;

@@ -78,13 +78,15 @@ class FITFEEL_API JointStage final : public Stage {
   // Feature i's wrench on the moving body in the joint frame, its torque about the feature's own
   // axis, with the feature's moving axis at `relative` (x, z) from its fixed axis and the body
   // twisted by `twist`, at joint depth `depth`; with `state`, the run's stateful friction,
-  // advanced. `contact`: the analyzer's answer, in the analyzer's frame.
+  // advanced. `contact`: the analyzer's answer at that pose, in the analyzer's frame (read
+  // where `contact_known`, written otherwise).
   void FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, double twist, double depth,
-                     const PartState& part, LawState* state, ContactState* contact,
-                     Wrench* wrench) const noexcept;
+                     const PartState& part, LawState* state, bool contact_known,
+                     ContactState* contact, Wrench* wrench) const noexcept;
   // The summed wrench of every feature (without history) with the body at offset (x, z) = q.head(2)
   // and twist q(2) / lever, at `depth`; with `states` (one per feature), the run's stateful
-  // friction, advanced, and the per-feature outputs written to `out`.
+  // friction, advanced, and the per-feature outputs written to `out`. Where `sum` was last
+  // evaluated at q (in the same tick), its contacts serve again, uncounted.
   void Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part, LawState* states,
                 Sum* sum, StageOutput* out) const noexcept;
   // Adds to `jacobian` feature i's share of the derivative of the generalised force on (x, z,
