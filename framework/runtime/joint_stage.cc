@@ -217,8 +217,8 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
     share.arm = arm;
     share.force = Eigen::Vector2d(w.force.x(), w.force.z());
     share.torque = w.torque.y();
-    share.pushes = share.force != Eigen::Vector2d::Zero() || share.torque != 0.0 ||
-                   contact.interference;
+    share.pushes =
+        share.force != Eigen::Vector2d::Zero() || share.torque != 0.0 || contact.interference;
     if (out != nullptr) {
       out->feature_axial[i] = w.force.y();
       const ElasticLimitCheck elastic = f.law->CheckElasticLimit(contact);
@@ -256,8 +256,7 @@ void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double de
     FeatureWrench(i, share.relative + kDifferenceStep * basis.col(k), share.twist, depth, part,
                   nullptr, false, &contact, &w);
     ++*evaluations;
-    along.col(k) =
-        (Eigen::Vector3d(w.force.x(), w.force.z(), w.torque.y()) - at) / kDifferenceStep;
+    along.col(k) = (Eigen::Vector3d(w.force.x(), w.force.z(), w.torque.y()) - at) / kDifferenceStep;
   }
   // The basis is orthonormal: d/du = along * basis^T.
   const Eigen::Matrix<double, 3, 2> d_u = along * basis.transpose();
