@@ -261,7 +261,9 @@ void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double de
   // The basis is orthonormal: d/du = along * basis^T.
   const Eigen::Matrix<double, 3, 2> d_u = along * basis.transpose();
   // u = o + R(theta) a - b: du/dq = [I, perp(arm) / lever] with perp(arm) = (arm_z, -arm_x), the
-  // arm's derivative along the twist.
+  // arm's derivative along the twist. The twist the feature's analyzer also reads (its pose's
+  // angle) is not differenced: the shipped analyzers ignore it, and a Jacobian that misses it
+  // costs a line search, not the balance.
   Eigen::Matrix<double, 2, 3> u_q;
   u_q.leftCols<2>().setIdentity();
   u_q.col(2) = Eigen::Vector2d(share.arm.y(), -share.arm.x()) / lever_;
