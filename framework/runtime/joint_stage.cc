@@ -14,12 +14,53 @@
 
 namespace fitfeel {
 
+// One feature's share of the summed wrench at a pose, as the Jacobian reads it.
+struct JointStage::Share {
+  // Its share of the balance's generalised force on (x, z, lever * twist): its force across the
+  // axis and its torque about the body's reference axis over the lever.
+  Eigen::Vector3d Generalised(double lever) const {
+    return {force.x(), force.y(), (torque + arm.y() * force.x() - arm.x() * force.y()) / lever};
+  }
+
+  double twist = 0.0;                  // the body's, rad
+  Eigen::Vector2d relative{0.0, 0.0};  // its moving axis from its fixed one, joint frame
+  Eigen::Vector2d arm{0.0, 0.0};       // its moving axis from the body's reference axis
+  Eigen::Vector2d force{0.0, 0.0};     // its force across the axis, joint frame
+  double torque = 0.0;                 // its own torque about its axis
+  bool pushes = false;                 // in contact: its wrench changes with its offset
+};
+
 // The summed wrench on the moving body about its reference axis (scene frame), as a balance reads
 // it.
 struct JointStage::Sum {
+  Eigen::Vector3d at{0.0, 0.0, 0.0};  // the pose (x, z, lever * twist)
   Wrench wrench;
   int evaluations = 0;
   bool engaged = false;  // some feature's surfaces overlap axially
+  std::array<Share, kMaxJointFeatures> share;
+  // Each feature's contact there (one per feature, kept by the run): the tick's last evaluation
+  // of the balance is where it ends, and its contacts serve the run's wrench.
+  ContactState* contact = nullptr;
+};
+
+// What a run of the stage keeps from tick to tick.
+struct JointStage::RunState final : StageState {
+  Eigen::Vector3d q{0.0, 0.0, 0.0};  // offset (x, z), lever * twist
+  // The balance's last Jacobian, reused on later iterations and ticks while the same features
+  // push and its steps land (the contacts' stiffness changes only where one starts or ends, or
+  // slides onto another wall): which features pushed where it was taken, and each one's share
+  // of it, differenced on its own.
+  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Identity();
+  bool jacobian_valid = false;
+  std::array<bool, kMaxJointFeatures> jacobian_pushes{};
+  std::array<Eigen::Matrix3d, kMaxJointFeatures> feature_jacobian;
+  std::array<LawState, kMaxJointFeatures> law;
+  // The tick's work space, kept here so that a tick initialises none of it: the contacts of the
+  // balance's last evaluation, and the pose and shares of the evaluation beyond a kink where the
+  // last line search stopped short of it.
+  std::array<ContactState, kMaxJointFeatures> contacts;
+  Eigen::Vector3d beyond_at{0.0, 0.0, 0.0};
+  std::array<Share, kMaxJointFeatures> beyond;
 };
 
 namespace {
@@ -35,28 +76,40 @@ constexpr double kProximalStiffness = 1e7;
 // holds, so that a body in clearance reaches its wall within an iteration or two, and short
 // enough that a step never leaves the tables' range.
 constexpr double kMaxStep = 50e-6;
-// Finite-difference step of the Jacobian, m: exact for the laws' piecewise-linear springs away
-// from a kink, and far above the rounding of an offset of millimetres.
-constexpr double kDifferenceStep = 1e-9;
+// Finite-difference step of the Jacobian, m, taken on each feature's relative offset (micrometres)
+// into its contact: exact for the laws' piecewise-linear springs away from a kink, far above the
+// rounding of the offset (k h ~ 0.03 N against forces of newtons for N/nm walls), and inside the
+// tenths of a nanometre a load of newtons presses a N/nm wall, where a step of a nanometre
+// leaves a contact that holds the body and a step out of it crosses its kink.
+constexpr double kDifferenceStep = 1e-11;
 // A balance is reached where the residual force is below this fraction of the forces at play
-// (the contacts', the load's and the torque's at the lever), plus this much of a newton.
+// along the free coordinates (the contacts', the load's and the torque's at the lever), plus
+// this much of a newton.
 constexpr double kForceTolerance = 1e-6;
+// The share of an iteration's residual that its step may leave on a Jacobian kept from an
+// earlier iteration; more, and the next one differences afresh. On the piecewise-linear contacts
+// a current Jacobian leaves rounding; one that leaves a third or a half (a contact's stiffness
+// where it has slid onto another wall) would only be refreshed after many short steps.
+constexpr double kJacobianMiss = 0.1;
 // Regula falsi steps of one line search at most.
 constexpr int kLineSearchSteps = 6;
 
-struct JointState final : StageState {
-  Eigen::Vector3d q{0.0, 0.0, 0.0};  // offset (x, z), lever * twist
-  // The last finite-difference Jacobian of the balance, reused while its steps make progress
-  // (the contacts' stiffness changes only where one starts or ends).
-  Eigen::Matrix3d jacobian = Eigen::Matrix3d::Identity();
-  bool jacobian_valid = false;
-  std::array<LawState, kMaxJointFeatures> law;
-};
-
-// The (x, z) rotation by `angle` about +y: (x, z) -> (x c + z s, -x s + z c).
-Eigen::Vector2d Turn(const Eigen::Vector2d& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
+// The (x, z) rotation by an angle about +y, given its cosine c and sine s: (x, z) -> (x c + z s,
+// -x s + z c). The features' angles are turned into c and s once, by the constructor, and the
+// twist once per evaluation of the balance: taken at every turn they cost a sixth of the tick.
+Eigen::Vector2d Turn(const Eigen::Vector2d& v, double c, double s) {
   return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
+}
+
+// `jacobian` with the rows and columns of the held coordinates zeroed.
+Eigen::Matrix3d Masked(const Eigen::Matrix3d& jacobian, const std::array<bool, 3>& active) {
+  Eigen::Matrix3d masked = jacobian;
+  for (int k = 0; k < 3; ++k) {
+    if (active[k]) continue;
+    masked.row(k).setZero();
+    masked.col(k).setZero();
+  }
+  return masked;
 }
 
 }  // namespace
@@ -74,6 +127,10 @@ JointStage::JointStage(std::vector<JointFeature> features, const Options& option
     }
     lever = std::max({lever, f.moving_axis.norm(), f.fixed_axis.norm()});
   }
+  for (std::size_t i = 0; i < features_.size(); ++i) {
+    feature_cos_[i] = std::cos(features_[i].angle);
+    feature_sin_[i] = std::sin(features_[i].angle);
+  }
   if (lever > 0.0) lever_ = lever;
   if (!std::isfinite(options.depth_origin) || !(options.proxy_stiffness > 0.0)) {
     throw UserError("joint stage: the depth origin must be finite and the proxy stiffness > 0");
@@ -81,69 +138,101 @@ JointStage::JointStage(std::vector<JointFeature> features, const Options& option
 }
 
 std::unique_ptr<StageState> JointStage::DoMakeState() const {
-  return std::make_unique<JointState>();
+  auto state = std::make_unique<RunState>();
+  state->feature_jacobian.fill(Eigen::Matrix3d::Zero());
+  return state;
+}
+
+bool JointStage::FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, double twist,
+                               double depth, const PartState& part, LawState* state,
+                               bool contact_known, ContactState* contact,
+                               Wrench* wrench) const noexcept {
+  const JointFeature& f = features_[i];
+  const double c = feature_cos_[i], s = feature_sin_[i];
+  // The feature's pose in its own frame (the joint frame turned by f.angle).
+  MatingPose pose;
+  pose.depth = depth - f.engages_after;
+  pose.offset = Turn(relative, c, -s);
+  pose.angle = twist;
+  const bool outer = f.moving == Role::kOuter;
+  const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
+  if (!contact_known) f.analyzer->Evaluate(AnalyzerPose(pose, f.moving), contact);
+  MatingMotion motion;
+  const Eigen::Vector2d v = Turn(Eigen::Vector2d(part.velocity.x(), part.velocity.z()), c, -s);
+  motion.velocity = Eigen::Vector3d(v.x(), part.velocity.y(), v.y());
+  motion.angular_velocity = part.angular_velocity;
+  if (outer) {
+    motion.velocity = motion.velocity.cwiseProduct(reflect);
+    motion.angular_velocity = motion.angular_velocity.cwiseProduct(reflect);
+  }
+  motion.depth = pose.depth;
+  motion.angle = pose.angle;
+  Wrench w;
+  if (state == nullptr) {
+    f.law->Evaluate(*contact, motion, &w);
+  } else {
+    // Out of engagement the junctions let go, so a re-entry forms its contact afresh.
+    if (!contact->engaged) *state = LawState{};
+    f.law->Evaluate(*contact, motion, state, &w);
+  }
+  if (outer) {
+    w.force = w.force.cwiseProduct(reflect);
+    w.torque = w.torque.cwiseProduct(reflect);
+  }
+  // Before its surfaces overlap, a feature's moving part may meet its lead-in: the hub's keyway
+  // the key's end, a plate's second hole its pin's chamfer.
+  bool on_lead_in = false;
+  if (pose.depth < 0.0 && !f.lead_in.empty()) {
+    const LeadInPush push = PushOfLeadIn(f.lead_in, pose.depth + f.lead_in.capture_depth(),
+                                         pose.offset, f.lead_in_stiffness);
+    w.force += Eigen::Vector3d(push.across.x(), push.axial, push.across.y());
+    on_lead_in = push.touching;
+  }
+  // Back into the joint frame.
+  const Eigen::Vector2d fxz = Turn(Eigen::Vector2d(w.force.x(), w.force.z()), c, s);
+  const Eigen::Vector2d txz = Turn(Eigen::Vector2d(w.torque.x(), w.torque.z()), c, s);
+  wrench->force = Eigen::Vector3d(fxz.x(), w.force.y(), fxz.y());
+  wrench->torque = Eigen::Vector3d(txz.x(), w.torque.y(), txz.y());
+  return on_lead_in;
 }
 
 void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part,
                           LawState* states, Sum* sum, StageOutput* out) const noexcept {
+  // The contacts of the last evaluation where it was at the same pose (the same tick).
+  const bool contacts_known = sum->evaluations > 0 && sum->at == q;
+  sum->at = q;
   sum->wrench.SetZero();
   sum->engaged = false;
   const double twist = q.z() / lever_;
+  const double twist_c = std::cos(twist), twist_s = std::sin(twist);
   const Eigen::Vector2d offset = q.head<2>();
-  const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
   for (std::size_t i = 0; i < features_.size(); ++i) {
     const JointFeature& f = features_[i];
-    // Where the feature's moving axis is, from the body's reference axis, and its pose in the
-    // feature's own frame (the joint frame turned by f.angle).
-    const Eigen::Vector2d arm = Turn(f.moving_axis, twist);
-    MatingPose pose;
-    pose.depth = depth - f.engages_after;
-    pose.offset = Turn(offset + arm - f.fixed_axis, -f.angle);
-    pose.angle = twist;
-    const bool outer = f.moving == Role::kOuter;
-    ContactState contact;
-    f.analyzer->Evaluate(AnalyzerPose(pose, f.moving), &contact);
-    ++sum->evaluations;
-    sum->engaged = sum->engaged || contact.engaged;
-    MatingMotion motion;
-    const Eigen::Vector2d v = Turn(Eigen::Vector2d(part.velocity.x(), part.velocity.z()), -f.angle);
-    motion.velocity = Eigen::Vector3d(v.x(), part.velocity.y(), v.y());
-    motion.angular_velocity = part.angular_velocity;
-    if (outer) {
-      motion.velocity = motion.velocity.cwiseProduct(reflect);
-      motion.angular_velocity = motion.angular_velocity.cwiseProduct(reflect);
-    }
-    motion.depth = pose.depth;
-    motion.angle = pose.angle;
+    // Where the feature's moving axis is, from the body's reference axis and from the feature's
+    // fixed axis.
+    const Eigen::Vector2d arm = Turn(f.moving_axis, twist_c, twist_s);
+    const Eigen::Vector2d relative = offset + arm - f.fixed_axis;
+    ContactState& contact = sum->contact[i];
     Wrench w;
-    if (states == nullptr) {
-      f.law->Evaluate(contact, motion, &w);
-    } else {
-      // Out of engagement the junctions let go, so a re-entry forms its contact afresh.
-      if (!contact.engaged) states[i] = LawState{};
-      f.law->Evaluate(contact, motion, &states[i], &w);
-    }
-    if (outer) {
-      w.force = w.force.cwiseProduct(reflect);
-      w.torque = w.torque.cwiseProduct(reflect);
-    }
-    // Before its surfaces overlap, a feature's moving part may meet its lead-in: the hub's
-    // keyway the key's end, a plate's second hole its pin's chamfer.
-    if (pose.depth < 0.0 && !f.lead_in.empty()) {
-      const LeadInPush push = PushOfLeadIn(f.lead_in, pose.depth + f.lead_in.capture_depth(),
-                                           pose.offset, f.lead_in_stiffness);
-      w.force += Eigen::Vector3d(push.across.x(), push.axial, push.across.y());
-      sum->engaged = sum->engaged || push.touching;
-    }
-    // Back into the joint frame, and about the body's reference axis.
-    const Eigen::Vector2d fxz = Turn(Eigen::Vector2d(w.force.x(), w.force.z()), f.angle);
-    const Eigen::Vector2d txz = Turn(Eigen::Vector2d(w.torque.x(), w.torque.z()), f.angle);
-    const Eigen::Vector3d force(fxz.x(), w.force.y(), fxz.y());
+    const bool on_lead_in =
+        FeatureWrench(i, relative, twist, depth, part, states == nullptr ? nullptr : &states[i],
+                      contacts_known, &contact, &w);
+    if (!contacts_known) ++sum->evaluations;
+    sum->engaged = sum->engaged || contact.engaged || on_lead_in;
+    // About the body's reference axis.
     const Eigen::Vector3d lever_arm(arm.x(), 0.0, arm.y());
-    sum->wrench.force += force;
-    sum->wrench.torque += Eigen::Vector3d(txz.x(), w.torque.y(), txz.y()) + lever_arm.cross(force);
+    sum->wrench.force += w.force;
+    sum->wrench.torque += w.torque + lever_arm.cross(w.force);
+    Share& share = sum->share[i];
+    share.twist = twist;
+    share.relative = relative;
+    share.arm = arm;
+    share.force = Eigen::Vector2d(w.force.x(), w.force.z());
+    share.torque = w.torque.y();
+    share.pushes =
+        share.force != Eigen::Vector2d::Zero() || share.torque != 0.0 || contact.interference;
     if (out != nullptr) {
-      out->feature_axial[i] = force.y();
+      out->feature_axial[i] = w.force.y();
       const ElasticLimitCheck elastic = f.law->CheckElasticLimit(contact);
       if (elastic.utilisation > out->elastic.utilisation) out->elastic = elastic;
       if (i == 0) {
@@ -157,9 +246,52 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
   }
 }
 
+void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double depth,
+                                    const PartState& part, int* evaluations,
+                                    Eigen::Matrix3d* jacobian) const noexcept {
+  // Its wrench (force across the axis, own torque) against its relative offset u, differenced
+  // along two directions: where it pushes, into its contact (against its force: a step out of a
+  // contact pressed a fraction of a nanometre would cross its kink) and along the contact;
+  // otherwise along x and z.
+  const Eigen::Vector3d at(share.force.x(), share.force.y(), share.torque);
+  Eigen::Matrix2d basis = Eigen::Matrix2d::Identity();
+  const double push = share.force.norm();
+  if (push > 0.0) {
+    const Eigen::Vector2d into = -share.force / push;
+    basis.col(0) = into;
+    basis.col(1) = Eigen::Vector2d(-into.y(), into.x());
+  }
+  Eigen::Matrix<double, 3, 2> along;  // d(wrench)/d(u) along the basis' columns
+  for (int k = 0; k < 2; ++k) {
+    ContactState contact;
+    Wrench w;
+    FeatureWrench(i, share.relative + kDifferenceStep * basis.col(k), share.twist, depth, part,
+                  nullptr, false, &contact, &w);
+    ++*evaluations;
+    along.col(k) = (Eigen::Vector3d(w.force.x(), w.force.z(), w.torque.y()) - at) / kDifferenceStep;
+  }
+  // The basis is orthonormal: d/du = along * basis^T.
+  const Eigen::Matrix<double, 3, 2> d_u = along * basis.transpose();
+  // u = o + R(theta) a - b: du/dq = [I, perp(arm) / lever] with perp(arm) = (arm_z, -arm_x), the
+  // arm's derivative along the twist. The twist the feature's analyzer also reads (its pose's
+  // angle) is not differenced: the shipped analyzers ignore it, and a Jacobian that misses it
+  // costs a line search, not the balance.
+  Eigen::Matrix<double, 2, 3> u_q;
+  u_q.leftCols<2>().setIdentity();
+  u_q.col(2) = Eigen::Vector2d(share.arm.y(), -share.arm.x()) / lever_;
+  const Eigen::Matrix<double, 2, 3> force_q = d_u.topRows<2>() * u_q;
+  const Eigen::Matrix<double, 1, 3> torque_q = d_u.row(2) * u_q;
+  jacobian->topRows<2>() += force_q;
+  // The torque about the reference axis, (T + arm_z F_x - arm_x F_z) / lever: its force's share
+  // through the arm, and the arm's own turn with the twist (-arm . F / lever^2).
+  jacobian->row(2) +=
+      (torque_q + share.arm.y() * force_q.row(0) - share.arm.x() * force_q.row(1)) / lever_;
+  (*jacobian)(2, 2) -= share.arm.dot(share.force) / (lever_ * lever_);
+}
+
 void JointStage::DoEvaluate(const PartState& part, StageState* state,
                             StageOutput* out) const noexcept {
-  auto* run = static_cast<JointState*>(state);
+  auto* run = static_cast<RunState*>(state);
   const MatingPose device = MatingPoseOf(part);
   const double depth = device.depth - options_.depth_origin;
   const Eigen::Vector2d device_offset = device.offset;
@@ -187,17 +319,23 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
 
   out->feature_count = static_cast<int>(features_.size());
   out->contact_evaluations = 0;
+  // The proximal term's stiffness along each coordinate: a hand's spring holds the offset
+  // already, the proximal term holds what nothing else does, and a held coordinate is not
+  // balanced.
+  Eigen::Vector3d proximal_stiffness(hand ? 0.0 : kProximalStiffness,
+                                     hand ? 0.0 : kProximalStiffness, kProximalStiffness);
+  for (int k = 0; k < 3; ++k) {
+    if (!active[k]) proximal_stiffness[k] = 0.0;
+  }
   Sum sum;
+  sum.contact = run->contacts.data();
   // The balance's residual: the generalised force on the body in (x, z, arc) at q.
   const auto residual = [&](const Eigen::Vector3d& at) {
     Evaluate(at, depth, part, nullptr, &sum, nullptr);
     Eigen::Vector3d g(sum.wrench.force.x() + load.x(), sum.wrench.force.z() + load.y(),
                       (sum.wrench.torque.y() + torque) / lever_);
     g.head<2>() += k_spring * (device_offset - at.head<2>());
-    // A hand's spring holds the offset already; the proximal term holds what nothing else does.
-    const Eigen::Vector3d proximal = kProximalStiffness * (anchor - at);
-    if (!hand) g.head<2>() += proximal.head<2>();
-    g.z() += proximal.z();
+    g += proximal_stiffness.cwiseProduct(anchor - at);
     for (int k = 0; k < 3; ++k) {
       if (!active[k]) g[k] = 0.0;
     }
@@ -209,26 +347,81 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     if (!sum.engaged) {
       q.head<2>() = device_offset;
     }
+    // Where the last line search stopped short of a kink of the contacts (a contact that starts,
+    // a wall that turns): its evaluation beyond the root.
+    const std::size_t n = features_.size();
+    std::array<Share, kMaxJointFeatures>& beyond = run->beyond;
+    bool kinked = false;
     // The forces derive from a convex energy (each feature's springs on its convex assembly
     // space or Winkler bed, the load, the spring and the proximal term) whose gradient is -g:
     // every step is a Newton direction (or, where that does not descend, the force itself)
     // searched along to where the force along it vanishes, so the energy falls at every step
     // and kinks between contacts cannot make the iteration cycle.
     for (int iteration = 0; sum.engaged && iteration < kMaxIterations; ++iteration) {
-      const double scale = sum.wrench.force.norm() + load.norm() + std::abs(torque) / lever_;
+      // The forces at play along the free coordinates (the contacts' along a held one go to the
+      // holder): the contacts', the load's and the torque's at the lever.
+      Eigen::Vector3d contacts(sum.wrench.force.x(), sum.wrench.force.z(),
+                               sum.wrench.torque.y() / lever_);
+      for (int k = 0; k < 3; ++k) {
+        if (!active[k]) contacts[k] = 0.0;
+      }
+      const double scale = contacts.norm() + load.norm() + std::abs(torque) / lever_;
       if (g.lpNorm<Eigen::Infinity>() <= kForceTolerance * (1.0 + scale)) break;
+      // The contacts' stiffness is kept while the same ones push and its steps land (below);
+      // it changes only where a contact starts or ends, or slides onto another wall.
+      std::array<bool, kMaxJointFeatures> pushes{};
+      for (std::size_t i = 0; i < features_.size(); ++i) pushes[i] = sum.share[i].pushes;
       Eigen::Matrix3d& jacobian = run->jacobian;
+      if (pushes != run->jacobian_pushes) run->jacobian_valid = false;
       if (!run->jacobian_valid) {
-        jacobian.setIdentity();
+        // The features' shares by their own differences, then the terms that are linear in q:
+        // the spring and the proximal term (the load and the torque are constant).
+        jacobian.setZero();
+        for (std::size_t i = 0; i < features_.size(); ++i) {
+          Eigen::Matrix3d& share = run->feature_jacobian[i];
+          share.setZero();
+          if (pushes[i]) AddFeatureJacobian(i, sum.share[i], depth, part, &sum.evaluations, &share);
+          jacobian += Masked(share, active);
+        }
+        run->jacobian_pushes = pushes;
+        jacobian.diagonal() -= Eigen::Vector3d(k_spring, k_spring, 0.0);
+        jacobian.diagonal() -= proximal_stiffness;
+        // A held coordinate neither moves nor is balanced.
         for (int k = 0; k < 3; ++k) {
-          if (!active[k]) continue;
-          Eigen::Vector3d probe = q;
-          probe[k] += kDifferenceStep;
-          jacobian.col(k) = (residual(probe) - g) / kDifferenceStep;
+          if (!active[k]) jacobian(k, k) = 1.0;
         }
         run->jacobian_valid = true;
       }
-      Eigen::Vector3d step = jacobian.partialPivLu().solve(-g);
+      // The contacts are piecewise linear in q, and the step is Newton's on the piece that holds
+      // the body. Where the last line search stopped short of a kink (a contact that starts, or
+      // one that slides onto another wall), the contacts that kinked are modelled as on both
+      // sides of it (their spring here and the one beyond, whose push here is its force beyond
+      // less its stiffness times the way back): in a corner both walls hold the body. On the
+      // piece here alone the step would run into the kink again and the line search creep up
+      // to it step by step.
+      Eigen::Matrix3d model = jacobian;
+      Eigen::Vector3d pushed = g;
+      if (kinked) {
+        for (std::size_t i = 0; i < features_.size(); ++i) {
+          if (!beyond[i].pushes) continue;
+          const Eigen::Vector3d here = sum.share[i].Generalised(lever_);
+          const Eigen::Vector3d there = beyond[i].Generalised(lever_);
+          const Eigen::Vector3d predicted = here + run->feature_jacobian[i] * (run->beyond_at - q);
+          if ((there - predicted).norm() <= kJacobianMiss * (there - here).norm()) continue;
+          Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
+          AddFeatureJacobian(i, beyond[i], depth, part, &sum.evaluations, &stiffness);
+          model += Masked(stiffness, active);
+          Eigen::Vector3d push = there + stiffness * (q - run->beyond_at);
+          for (int k = 0; k < 3; ++k) {
+            if (!active[k]) push[k] = 0.0;
+          }
+          pushed += push;
+        }
+        // The model is no piece of the contacts': the next iteration differences afresh.
+        run->jacobian_valid = false;
+        kinked = false;
+      }
+      Eigen::Vector3d step = model.partialPivLu().solve(-pushed);
       if (!step.allFinite() || !(step.dot(g) > 0.0)) {
         step = g / (kProximalStiffness + k_spring);
       }
@@ -236,13 +429,17 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
       if (length > kMaxStep) step *= kMaxStep / length;
       if (step.norm() < kPicometre) break;
       // Along the step the force's component f(t) = g(q + t step) . step falls from f(0) > 0;
-      // where it is still positive at t = 1 the whole step is taken, else its root is bracketed
-      // in (0, 1) and found by regula falsi with the Illinois modification.
+      // where it is still positive at t = 1, or negative by no more than the balance's tolerance
+      // (a Newton step that lands on the balance), the whole step is taken, else its root is
+      // bracketed in (0, 1) and found by regula falsi with the Illinois modification.
+      const double line_tolerance = kForceTolerance * (1.0 + scale) * step.norm();
       double t_low = 0.0, f_low = g.dot(step);
       double t = 1.0;
       Eigen::Vector3d g_t = residual(q + step);
       double f_t = g_t.dot(step);
-      if (f_t < 0.0) {
+      if (f_t < -line_tolerance) {
+        run->beyond_at = sum.at;
+        std::copy_n(sum.share.begin(), n, beyond.begin());
         double t_high = 1.0, f_high = f_t;
         int side = 0;
         for (int k = 0; k < kLineSearchSteps; ++k) {
@@ -257,28 +454,25 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
           } else {
             t_high = t;
             f_high = f_t;
+            run->beyond_at = sum.at;
+            std::copy_n(sum.share.begin(), n, beyond.begin());
             if (side == -1) f_low *= 0.5;
             side = -1;
           }
-          if (std::abs(f_t) <= kForceTolerance * (1.0 + scale) * step.norm()) break;
+          if (std::abs(f_t) <= line_tolerance) break;
         }
+        kinked = f_t > 0.0;
       }
       q += t * step;
-      // A step that did not halve the residual had a stale or kinked Jacobian: the next one
-      // differences afresh.
-      const double before = g.norm();
+      // On a Jacobian of the contacts that hold the body the step lands on this iteration's
+      // balance, proximal term included, to within rounding: a step that leaves a tenth of the
+      // residual had a stale or kinked one, and the next iteration differences afresh.
+      if (!(g_t.norm() < kJacobianMiss * g.norm())) run->jacobian_valid = false;
       // The next iteration's anchor is where this one ended: the residual there without the
       // proximal term is the true one (a proximal point iteration, so that a body that nothing
       // but the load moves travels up to the load over k_r each iteration, not each tick).
-      g = g_t;
-      const Eigen::Vector3d proximal = kProximalStiffness * (anchor - q);
-      if (!hand) g.head<2>() -= proximal.head<2>();
-      g.z() -= proximal.z();
-      for (int k = 0; k < 3; ++k) {
-        if (!active[k]) g[k] = 0.0;
-      }
+      g = g_t - proximal_stiffness.cwiseProduct(anchor - q);
       anchor = q;
-      if (!(g.norm() < 0.5 * before)) run->jacobian_valid = false;
     }
   }
   run->q = q;

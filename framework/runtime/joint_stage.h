@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -42,10 +43,12 @@ struct JointFeature {
 // a hand at a haptic device (finite proxy stiffness) couples the body to the device across the
 // axis by that spring, as the one-feature god object does. The depth is the device's.
 //
-// The balance is a damped Newton iteration on (x, z, rho theta) with a finite-difference Jacobian
-// and a proximal term k_r (q_prev - q) that keeps it well posed where nothing but the load acts
-// (clearance); once the body stops moving the term vanishes and the balance is exact. Per tick:
-// no allocation, bounded work (kMaxIterations).
+// The balance is a damped Newton iteration on (x, z, rho theta) and a proximal term k_r (q_prev -
+// q) that keeps it well posed where nothing but the load acts (clearance); once the body stops
+// moving the term vanishes and the balance is exact. Its Jacobian is differenced feature by
+// feature, each that pushes on its own offset into its contact, and carried through the
+// feature's placement; it is kept while the same features push and its steps land. Per tick: no
+// allocation, bounded work (kMaxIterations).
 class FITFEEL_API JointStage final : public Stage {
  public:
   struct Options {
@@ -75,14 +78,33 @@ class FITFEEL_API JointStage final : public Stage {
                   StageOutput* out) const noexcept override;
 
  private:
+  struct Share;
   struct Sum;
+  struct RunState;
+  // Feature i's wrench on the moving body in the joint frame, its torque about the feature's own
+  // axis, with the feature's moving axis at `relative` (x, z) from its fixed axis and the body
+  // twisted by `twist`, at joint depth `depth`; with `state`, the run's stateful friction,
+  // advanced. `contact`: the analyzer's answer at that pose, in the analyzer's frame (read
+  // where `contact_known`, written otherwise). The wrench includes the push of the feature's
+  // lead-in before its surfaces overlap; returns whether the lead-in touches.
+  bool FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, double twist, double depth,
+                     const PartState& part, LawState* state, bool contact_known,
+                     ContactState* contact, Wrench* wrench) const noexcept;
   // The summed wrench of every feature (without history) with the body at offset (x, z) = q.head(2)
   // and twist q(2) / lever, at `depth`; with `states` (one per feature), the run's stateful
-  // friction, advanced, and the per-feature outputs written to `out`.
+  // friction, advanced, and the per-feature outputs written to `out`. Where `sum` was last
+  // evaluated at q (in the same tick), its contacts serve again, uncounted.
   void Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part, LawState* states,
                 Sum* sum, StageOutput* out) const noexcept;
+  // Adds to `jacobian` feature i's share of the derivative of the generalised force on (x, z,
+  // lever * twist), differenced at the pose `share` was evaluated at (two evaluations, counted in
+  // `evaluations`).
+  void AddFeatureJacobian(std::size_t i, const Share& share, double depth, const PartState& part,
+                          int* evaluations, Eigen::Matrix3d* jacobian) const noexcept;
 
   std::vector<JointFeature> features_;
+  // Each feature's angle's cosine and sine.
+  std::array<double, kMaxJointFeatures> feature_cos_{}, feature_sin_{};
   Options options_;
   double lever_ = 0.01;
 };
