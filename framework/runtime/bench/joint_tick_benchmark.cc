@@ -27,6 +27,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "framework/runtime/bench/bench_clock.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/scene_stages.h"
@@ -39,22 +40,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double ThreadSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
+using bench::ClockCost;
 
-// Median cost of reading the thread CPU clock, s.
-double ClockCost() {
-  std::vector<double> d(2001);
-  for (double& x : d) {
-    const double a = ThreadSeconds();
-    x = ThreadSeconds() - a;
-  }
-  std::nth_element(d.begin(), d.begin() + 1000, d.end());
-  return d[1000];
-}
+double ThreadSeconds() { return bench::ClockSeconds(CLOCK_THREAD_CPUTIME_ID); }
 
 const PluginRegistry& Registry() {
   static PluginRegistry* registry = [] {

@@ -39,6 +39,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "framework/runtime/bench/bench_clock.h"
 #include "framework/core/error.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/constrained_stage.h"
@@ -56,23 +57,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double ClockSeconds(clockid_t clock) {
-  timespec ts{};
-  clock_gettime(clock, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-// Median cost of reading the thread CPU clock, s (a system call on most kernels).
-double ClockCost() {
-  std::vector<double> d(2001);
-  for (double& x : d) {
-    const double a = ClockSeconds(CLOCK_THREAD_CPUTIME_ID);
-    const double b = ClockSeconds(CLOCK_THREAD_CPUTIME_ID);
-    x = b - a;
-  }
-  std::nth_element(d.begin(), d.begin() + 1000, d.end());
-  return d[1000];
-}
+using bench::ClockCost;
+using bench::ClockSeconds;
 
 fs::path ScenarioDir() {
   if (const char* source = std::getenv("FITFEEL_SOURCE_DIR")) return fs::path(source) / "scenarios";
