@@ -97,7 +97,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
       list.Fail("a list of waypoints {time, position}", list.Describe());
     }
     for (const ConfigNode& item : list.Items()) {
-      item.ExpectOnlyKeys({"time", "position"});
+      item.ExpectOnlyKeys({"time", "position", "angle"});
       Waypoint w;
       w.time = item.Child("time").AsQuantityIn(Dimension::kTime, 0.0, 1e5);
       if (!s.waypoints.empty() && !(w.time > s.waypoints.back().time)) {
@@ -110,6 +110,10 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
         position.Fail("[x, y, z] with units, e.g. [0 mm, -5 mm, 0 mm]", position.Describe());
       for (int i = 0; i < 3; ++i)
         w.position[i] = xyz[i].AsQuantityIn(Dimension::kLength, -10.0, 10.0);
+      // A few turns at most: a wrist turns a part by hand, regripping between turns.
+      if (std::optional<ConfigNode> angle = item.Find("angle")) {
+        w.angle = angle->AsQuantityIn(Dimension::kAngle, -4.0 * M_PI, 4.0 * M_PI);
+      }
       s.waypoints.push_back(w);
     }
   }

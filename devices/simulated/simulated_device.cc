@@ -41,6 +41,7 @@ void Validate(const Settings& s) {
     Require(w.position.allFinite() && w.position.cwiseAbs().maxCoeff() <= 10.0,
             "waypoint positions must be within 10 m of the entrance");
     Require(i == 0 || w.time > s.waypoints[i - 1].time, "waypoint times must increase strictly");
+    Require(InRange(w.angle, -4.0 * M_PI, 4.0 * M_PI), "waypoint angles must be within 2 turns");
   }
   Require(InRange(s.hand_mass, 0.0, 1e3) && s.hand_mass > 0.0, "hand mass must be in (0, 1000] kg");
   Require(InRange(s.hand_stiffness, 0.0, 1e8) && s.hand_stiffness > 0.0,
@@ -124,6 +125,23 @@ void SimulatedDevice::Target(double time, Eigen::Vector3d* position,
   AddHandErrors(time, position, velocity);
 }
 
+void SimulatedDevice::WristTwist(double time, double* angle, double* rate) const noexcept {
+  const auto& w = settings_.waypoints;
+  *rate = 0.0;
+  *angle = w.back().angle;
+  if (time <= w.front().time) {
+    *angle = w.front().angle;
+    return;
+  }
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    if (time < w[i].time) {
+      *rate = (w[i].angle - w[i - 1].angle) / (w[i].time - w[i - 1].time);
+      *angle = w[i - 1].angle + (time - w[i - 1].time) * *rate;
+      return;
+    }
+  }
+}
+
 void SimulatedDevice::AddHandErrors(double time, Eigen::Vector3d* position,
                                     Eigen::Vector3d* velocity) const noexcept {
   position->x() += settings_.aim_error.x();
@@ -168,9 +186,13 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
     // Computed from the time, never accumulated: the axial position is exact at every tick.
     position_.y() = stopped_ ? stop_position_ : -settings_.start_offset + settings_.speed * time;
     velocity_.y() = stopped_ ? 0.0 : settings_.speed;
-  } else if (settings_.mode == Settings::Mode::kConstantRotation) {
+  } else {
     double angle = 0.0, rate = 0.0;
-    Twist(time, &angle, &rate);
+    if (settings_.mode == Settings::Mode::kConstantRotation) {
+      Twist(time, &angle, &rate);
+    } else {
+      WristTwist(time, &angle, &rate);
+    }
     // Reduced to (-pi, pi] before the half angle: the quaternion stays in one hemisphere and the
     // twist MatingPoseOf reads back is the angle itself, to rounding.
     angle = std::remainder(angle, 2.0 * M_PI);

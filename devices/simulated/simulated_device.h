@@ -11,6 +11,9 @@ namespace fitfeel::simulated {
 struct Waypoint {
   double time = 0.0;                        // s since the start of the run
   Eigen::Vector3d position{0.0, 0.0, 0.0};  // leading end, scene frame, m
+  // The wrist's turn about the mating axis y, rad: the device's orientation (the part's twist, a
+  // position the hand holds; it has no dynamics of its own).
+  double angle = 0.0;
 };
 
 struct Settings {
@@ -92,6 +95,9 @@ class SimulatedDevice final : public Device {
   // The aiming error and the tremor, added to the waypoints' target.
   void AddHandErrors(double time, Eigen::Vector3d* position,
                      Eigen::Vector3d* velocity) const noexcept;
+  // kScripted: the wrist's twist about y and its rate at `time`, linear between the waypoints'
+  // angles.
+  void WristTwist(double time, double* angle, double* rate) const noexcept;
   // kConstantRotation: the twist about y and its rate at `time`, from the time alone (exact).
   void Twist(double time, double* angle, double* rate) const noexcept;
 

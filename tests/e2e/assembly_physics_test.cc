@@ -535,3 +535,56 @@ TEST(KeyedHub, FindsItsKeywayOrStopsOnTheKeysEnd) {
 
 }  // namespace
 }  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// A hand turning the hub by its wrist (the device's orientation, rotation held): the hub turns
+// with it and nothing resists until the keyway's wall meets the key's flank, where the clearance
+// geometry puts it; from there the flank takes a torque.
+TEST(KeyedHub, AWristTurnMeetsTheFlankWhereTheClearanceEnds) {
+  const Scene scene = Shipped("keyed-hub.yaml");
+  const PreparedScene prepared = Prepare(scene);
+  DeviceSpec hand;
+  hand.max_stiffness = 4e4;  // the simulated hand's 2 b / T at 1 kHz (devices/simulated)
+  const SceneStages stages = MakeSceneStages(scene, prepared, hand);
+  const auto* joint = dynamic_cast<const JointStage*>(stages.constrained.get());
+  ASSERT_NE(joint, nullptr);
+  const JointFeature& key = joint->features()[1];
+  const double depth = 30e-3;
+  double lo = 0.0, hi = 0.0;
+  XRange(key, depth, &lo, &hi);
+  Driven hub(*joint);
+  double contact_angle = std::numeric_limits<double>::quiet_NaN(), relative_x = 0.0;
+  double quiet = 0.0;  // the largest torque before the flank
+  for (int tick = 0; tick < 2000; ++tick) {
+    const double twist = 1e-6 * tick;  // the wrist turns 1 urad a tick
+    PartState part = At(depth + joint->options().depth_origin, 1e-3 * tick);
+    part.velocity.setZero();
+    part.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(twist, Eigen::Vector3d::UnitY()));
+    const StageOutput& out = hub.Tick(part);
+    const double torque = std::abs(out.wrench.torque.y());
+    if (torque > 0.05) {
+      contact_angle = out.pose.angle;
+      // Where the hub's keyway then is from the key, across its flanks.
+      const double c = std::cos(out.pose.angle), s = std::sin(out.pose.angle);
+      relative_x = out.pose.offset.x() + c * key.moving_axis.x() + s * key.moving_axis.y() -
+                   key.fixed_axis.x();
+      break;
+    }
+    quiet = std::max(quiet, torque);
+  }
+  ASSERT_FALSE(std::isnan(contact_angle)) << "the flank never took the wrist's turn";
+  EXPECT_LT(quiet, 0.05);
+  // At the clearance's end: past it by less than the wrist's turn in one tick brings the keyway
+  // (1 urad at the key's 16.3 mm, 16 nm), the flank's stiffness (N/nm) taking the torque within
+  // it. The hand's soft coupling lets the hub slide across within its bore's clearance as the
+  // flank pushes, so the angle is not the held hub's.
+  EXPECT_GT(relative_x, hi);
+  EXPECT_LT(relative_x, hi + key.moving_axis.norm() * 1e-6);
+  std::printf("keyed hub by the wrist: the flank takes the turn at %.5g mrad, %.4g nm from the "
+              "clearance's end\n", contact_angle * 1e3, (relative_x - hi) * 1e9);
+}
+
+}  // namespace
+}  // namespace fitfeel
