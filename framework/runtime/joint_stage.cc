@@ -9,6 +9,7 @@
 #include <Eigen/LU>
 
 #include "framework/core/error.h"
+#include "framework/core/root_finding.h"
 #include "framework/runtime/joint_lead_in.h"
 #include "framework/runtime/contact_search.h"
 
@@ -61,6 +62,9 @@ struct JointStage::RunState final : StageState {
   std::array<ContactState, kMaxJointFeatures> contacts;
   Eigen::Vector3d beyond_at{0.0, 0.0, 0.0};
   std::array<Share, kMaxJointFeatures> beyond;
+  // A hand's body along the axis (AxialBalance): its joint depth and the time of that tick.
+  double body_depth = 0.0;
+  double body_time = 0.0;
 };
 
 namespace {
@@ -289,11 +293,42 @@ void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double de
   (*jacobian)(2, 2) -= share.arm.dot(share.force) / (lever_ * lever_);
 }
 
+double JointStage::AxialBalance(double device_depth, const Eigen::Vector3d& q,
+                                const PartState& part, RunState* run, int* evaluations) const
+    noexcept {
+  const double k = options_.proxy_stiffness;
+  const double from = run->body_depth;
+  if (device_depth == from) return from;
+  // The tick's period, for the body's velocity (a device's first tick: 1 ms, the scenes' rate).
+  const double period = part.time > run->body_time ? part.time - run->body_time : 1e-3;
+  PartState moving = part;
+  Sum sum;
+  sum.contact = run->contacts.data();
+  // g(d) = k (device - d) + F_y(d): the spring's pull on the body at depth d and the features'
+  // axial force there with the body moving from `from` to d in one tick (the history-free
+  // friction, smoothed in the velocity, and the lead-ins' faces). g falls with d: the friction
+  // resists the way the body moves and the faces push back the deeper it goes; at `from` it has
+  // the spring's sign and at the device the resistance's, so one root lies between.
+  const auto g = [&](double d) {
+    moving.velocity.y() = (d - from) / period;
+    sum.evaluations = 0;
+    Evaluate(q, d, moving, nullptr, &sum, nullptr);
+    *evaluations += sum.evaluations;
+    return k * (device_depth - d) + sum.wrench.force.y();
+  };
+  const double low = from, f_low = g(from);
+  const double high = device_depth, f_high = g(device_depth);
+  if (f_low * f_high > 0.0) return std::abs(f_low) < std::abs(f_high) ? from : device_depth;
+  // To a micronewton of the spring's pull (and a picometre of depth).
+  const double tolerance = 1e-6 * (1.0 + k * std::abs(device_depth - from));
+  return IllinoisRoot(g, low, high, f_low, f_high, tolerance, kAxialSteps);
+}
+
 void JointStage::DoEvaluate(const PartState& part, StageState* state,
                             StageOutput* out) const noexcept {
   auto* run = static_cast<RunState*>(state);
   const MatingPose device = MatingPoseOf(part);
-  const double depth = device.depth - options_.depth_origin;
+  const double device_depth = device.depth - options_.depth_origin;
   const Eigen::Vector2d device_offset = device.offset;
   const double device_arc = lever_ * device.angle;
   const bool hand = std::isfinite(options_.proxy_stiffness);
@@ -306,7 +341,17 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     run->q = Eigen::Vector3d(out->pose.offset.x(), out->pose.offset.y(), lever_ * out->pose.angle);
     run->law = {};
     run->jacobian_valid = false;
+    run->body_depth = out->pose.depth;
+    run->body_time = part.time;
   }
+  out->contact_evaluations = 0;
+  // A hand's body is a god object along the axis too: it follows the device's depth only as
+  // far as the coupling spring overcomes the features' resistance (a jammed plate stays where it
+  // jammed and the hand feels the spring, not the contacts' kilonewtons); a robot's is at the
+  // device's depth.
+  int axial_evaluations = 0;
+  const double depth =
+      hand ? AxialBalance(device_depth, run->q, part, run, &axial_evaluations) : device_depth;
   Eigen::Vector3d q = run->q;
   if (!free_offset) q.head<2>() = device_offset;
   if (!free_twist) q.z() = device_arc;
@@ -318,7 +363,6 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
   const std::array<bool, 3> active = {free_offset, free_offset, free_twist};
 
   out->feature_count = static_cast<int>(features_.size());
-  out->contact_evaluations = 0;
   // The proximal term's stiffness along each coordinate: a hand's spring holds the offset
   // already, the proximal term holds what nothing else does, and a held coordinate is not
   // balanced.
@@ -476,16 +520,20 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     }
   }
   run->q = q;
-  out->contact_evaluations = sum.evaluations;
+  out->contact_evaluations = axial_evaluations + sum.evaluations;
   out->contact = ContactState{};
   out->elastic = ElasticLimitCheck{};
   Evaluate(q, depth, part, run->law.data(), &sum, out);
-  out->contact_evaluations = sum.evaluations;
+  out->contact_evaluations = axial_evaluations + sum.evaluations;
   out->wrench = sum.wrench;
   if (hand) {
     // The device feels the coupling spring across the axis (at the balance, the contact's push).
     out->wrench.force.x() = k_spring * (q.x() - device_offset.x());
     out->wrench.force.z() = k_spring * (q.y() - device_offset.y());
+    // Along the axis too: at the body's depth its spring's pull is the features' resistance.
+    out->wrench.force.y() = k_spring * (depth - device_depth);
+    run->body_depth = depth;
+    run->body_time = part.time;
   }
   out->pose.depth = depth;
   out->pose.offset = q.head<2>();

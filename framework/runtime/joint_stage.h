@@ -57,6 +57,8 @@ class FITFEEL_API JointStage final : public Stage {
     double depth_origin = 0.0;
     double proxy_stiffness = std::numeric_limits<double>::infinity();
   };
+  // Regula falsi steps of a hand's axial balance at most (AxialBalance).
+  static constexpr int kAxialSteps = 8;
   // Newton iterations of one tick's balance at most.
   static constexpr int kMaxIterations = 8;
 
@@ -94,6 +96,11 @@ class FITFEEL_API JointStage final : public Stage {
   // and twist q(2) / lever, at `depth`; with `states` (one per feature), the run's stateful
   // friction, advanced, and the per-feature outputs written to `out`. Where `sum` was last
   // evaluated at q (in the same tick), its contacts serve again, uncounted.
+  // A hand's body along the axis: the depth between the body's last and the device's where the
+  // coupling spring's pull balances the features' axial force at the body's offset and twist `q`
+  // (the last tick's), counting the features' evaluations in `*evaluations`.
+  double AxialBalance(double device_depth, const Eigen::Vector3d& q, const PartState& part,
+                      RunState* run, int* evaluations) const noexcept;
   void Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part, LawState* states,
                 Sum* sum, StageOutput* out) const noexcept;
   // Adds to `jacobian` feature i's share of the derivative of the generalised force on (x, z,

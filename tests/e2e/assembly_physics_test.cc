@@ -310,23 +310,36 @@ TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
 namespace fitfeel {
 namespace {
 
+// A shipped scene with the simulated person's hand in place of its robot: 0.5 kg held by
+// 2000 N/m and 20 N*s/m (devices/simulated), with tremor and `aim` (hand keys, may be empty),
+// its target moving from 2 mm before the entrance to `depth_mm` in `seconds`; `part_motion`
+// replaced by `motion`, the run's duration `from` replaced by `to`.
+std::string ByHand(const char* file, const std::string& motion, const std::string& aim,
+                   double depth_mm, double seconds, const std::string& from,
+                   const std::string& to) {
+  const std::string text = ShippedText(file);
+  const std::size_t motion_at = text.find("part_motion:");
+  const std::size_t run_at = text.find("run:");
+  EXPECT_NE(motion_at, std::string::npos);
+  EXPECT_NE(run_at, std::string::npos);
+  char waypoints[160];
+  std::snprintf(waypoints, sizeof waypoints,
+                "  waypoints:\n    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
+                "    - {time: %g s, position: [0 mm, %g mm, 0 mm]}\n",
+                seconds, depth_mm);
+  return text.substr(0, motion_at) + "part_motion:\n" + motion +
+         "device:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n"
+         "  hand: {mass: 0.5 kg, stiffness: 2000 N/m, damping: 20 N*s/m, tremor: true" +
+         (aim.empty() ? std::string() : ", " + aim) + "}\n" + waypoints +
+         Replaced(text.substr(run_at), from, to);
+}
+
 // The keyed hub slid on by a person's hand (the simulated scripted hand, aiming 0.3 mm off the
 // axis, with tremor): the god object's spring couples the hub across the axis, and what the hand
 // feels stays the spring's pull and the friction, with no energy created.
 TEST(KeyedHub, AHandSlidesItOnPassively) {
-  std::string text = ShippedText("keyed-hub.yaml");
-  const std::size_t motion = text.find("part_motion:");
-  const std::size_t run = text.find("run:");
-  ASSERT_NE(motion, std::string::npos);
-  ASSERT_NE(run, std::string::npos);
-  text = text.substr(0, motion) +
-         "part_motion:\n  radial: held\n"
-         "device:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n"
-         "  hand: {mass: 0.5 kg, stiffness: 2000 N/m, damping: 20 N*s/m, tremor: true,"
-         " aim_error: [0.3 mm, 0 mm]}\n"
-         "  waypoints:\n    - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
-         "    - {time: 4 s, position: [0 mm, 44 mm, 0 mm]}\n" +
-         Replaced(text.substr(run), "duration: 5.2 s", "duration: 4.5 s");
+  const std::string text = ByHand("keyed-hub.yaml", "  radial: held\n", "aim_error: [0.3 mm, 0 mm]",
+                                  44.0, 4.0, "duration: 5.2 s", "duration: 4.5 s");
   RunOptions options;
   const RunResult result = RunScene(LoadSceneFromYaml(text, "hand.yaml", Registry()), options);
   EXPECT_EQ(result.stats.guard_faults, 0u);
@@ -584,6 +597,40 @@ TEST(KeyedHub, AWristTurnMeetsTheFlankWhereTheClearanceEnds) {
   EXPECT_LT(relative_x, hi + key.moving_axis.norm() * 1e-6);
   std::printf("keyed hub by the wrist: the flank takes the turn at %.5g mrad, %.4g nm from the "
               "clearance's end\n", contact_angle * 1e3, (relative_x - hi) * 1e9);
+}
+
+}  // namespace
+}  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// The two-pin plate pushed on by a hand: where the pitch lets it the plate slides on; where it
+// jams, the plate stays where it jammed and the hand feels its coupling spring, never the pins'
+// kilonewtons, and no energy is created.
+TEST(TwoPinPlate, AHandFeelsTheJamThroughItsSpring) {
+  const std::string text = ByHand("two-pin-location.yaml", "  radial: held\n  rotation: free\n",
+                                  "", 10.0, 1.5, "duration: 1.3 s", "duration: 2 s");
+  // Seed 3 jams for the robot (13 um short of room), seed 7 slides on (2.9 um to spare).
+  for (const std::uint64_t seed : {3u, 7u}) {
+    RunOptions options;
+    options.seed = seed;
+    const RunResult result = RunScene(LoadSceneFromYaml(text, "hand.yaml", Registry()), options);
+    const double depth = result.summary["depth_mm"]["max"].get<double>();
+    const double felt = result.summary["safety"]["max_delivered_force_N"].get<double>();
+    EXPECT_EQ(result.stats.guard_faults, 0u);
+    EXPECT_EQ(result.summary["safety"]["energy_created_J"].get<double>(), 0.0) << seed;
+    // The hand's target runs 12 mm past the plate's start: a stuck plate is pushed through the
+    // hand's own stiffness (2000 N/m) by at most that much, 24 N, whatever the pins resist.
+    EXPECT_LT(felt, 24.0) << seed;
+    if (seed == 7) {
+      EXPECT_GT(depth, 9.0) << "the free plate slides on";
+    } else {
+      EXPECT_LT(depth, 1.0) << "the jammed plate stays near the pins' ends";
+    }
+    std::printf("two-pin plate by hand, seed %d: depth %.4g mm, at most %.4g N felt\n",
+                static_cast<int>(seed), depth, felt);
+  }
 }
 
 }  // namespace
