@@ -1,10 +1,13 @@
 // fitfeel view [FILE] [--port N] [--host H] [--trace DIR] [--realtime|--virtual] [--seed N]
+// FILE may be a scene or a sequence (its steps shown one after another), DIR a finished run's
+// folder or a finished sequence's.
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,7 +22,10 @@
 #include "framework/plot/run_record.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
+#include "framework/runtime/sequence_run.h"
 #include "framework/scenario/scene.h"
+#include "framework/scenario/sequence.h"
+#include "framework/view/sequence_view.h"
 #include "framework/view/server.h"
 #include "framework/view/tick_publisher.h"
 #include "framework/view/view_model.h"
@@ -93,6 +99,135 @@ void Serve(view::Server& server, const ViewArgs& args) {
   for (;;) pause();
 }
 
+// A finished sequence's summary.json (DIR/summary.json with `steps`), or nothing for any other
+// folder (LoadRun then reads it as a run's, and says what is wrong with it).
+std::optional<nlohmann::json> SequenceSummary(const fs::path& dir) {
+  std::ifstream in(dir / "summary.json");
+  if (!in) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || !j.contains("steps") || !j["steps"].is_array()) return std::nullopt;
+  return j;
+}
+
+// A finished sequence (fitfeel run's DIR: summary.json over the steps, DIR/<step>/ each step's
+// run): every step drawn as that run drew it (its seed, and its seats where the summary says the
+// earlier steps left their parts) with its history, the page on the last step.
+void ViewFinishedSequence(const ViewArgs& args, const nlohmann::json& summary,
+                          const PluginRegistry& registry, LoadOptions load,
+                          const view::ServerOptions& options) {
+  const fs::path summary_file = fs::path(args.trace) / "summary.json";
+  const auto field = [&](const nlohmann::json& j, const char* key) -> const nlohmann::json& {
+    if (!j.contains(key)) {
+      throw UserError("view: '" + summary_file.string() + "' names no " + key +
+                      " for a step or the sequence, so its steps cannot be drawn again");
+    }
+    return j[key];
+  };
+  load.writes_outputs = false;
+  std::string scenario_file;
+  std::vector<std::string> ran, folders;
+  std::uint64_t ran_seed = 0;
+  std::vector<Eigen::Vector2d> offsets;
+  const nlohmann::json& entries = summary["steps"];
+  try {
+    scenario_file = field(summary, "scenario_file").get<std::string>();
+    ran_seed = field(summary, "seed").get<std::uint64_t>();
+    for (const nlohmann::json& entry : entries) {
+      ran.push_back(field(entry, "step").get<std::string>());
+      folders.push_back(field(entry, "folder").get<std::string>());
+      const nlohmann::json& um = field(entry, "seated_offset_um");
+      offsets.emplace_back(um.at(0).get<double>() * 1e-6, um.at(1).get<double>() * 1e-6);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw UserError("view: '" + summary_file.string() + "' is not a sequence's summary (" +
+                    e.what() + ")");
+  }
+  const Sequence sequence = LoadSequence(scenario_file, registry, load);
+  std::vector<std::string> now;
+  for (const SequenceStep& step : sequence.steps) now.push_back(step.scene.name);
+  if (ran != now) {
+    throw UserError("view: the steps of '" + summary_file.string() + "' are not those of '" +
+                    sequence.file.string() + "': the scenario changed since that run");
+  }
+  const std::uint64_t seed = args.seed.value_or(ran_seed);
+  const std::vector<nlohmann::json> finished(entries.begin(), entries.end());
+  std::vector<view::ServedStep> steps(sequence.steps.size());
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const Scene scene = StepScene(sequence, k, seed, offsets);
+    auto model =
+        std::make_shared<const view::ViewModel>(scene, scene.run.seed, static_cast<int>(k));
+    const plot::RunRecord run = plot::LoadRun(fs::path(args.trace) / folders[k]);
+    steps[k].history = HistoryOf(run.trace, *model);
+    steps[k].model = std::move(model);
+  }
+  view::Server server(std::move(steps),
+                      view::SequenceMessage(sequence, seed, sequence.steps.size() - 1, finished),
+                      options);
+  server.Start();
+  std::printf(
+      "fitfeel view: sequence %s (finished run %s, seed %llu), %zu steps\n  http://%s:%u/\n",
+      sequence.name.c_str(), args.trace.c_str(), static_cast<unsigned long long>(seed),
+      sequence.steps.size(), args.host.c_str(), server.port());
+  std::fflush(stdout);
+  Serve(server, args);
+}
+
+// A sequence run live: its steps in order as `fitfeel run` runs them (RunSequence), each shown
+// from when it starts (SequenceView).
+void ViewSequence(const ViewArgs& args, const fs::path& file, const PluginRegistry& registry,
+                  const LoadOptions& load, const view::ServerOptions& options,
+                  std::optional<InterruptScope>& interrupt) {
+  const Sequence sequence = LoadSequence(file, registry, load);
+  const std::uint64_t seed = args.seed.value_or(sequence.run.seed);
+  view::SequenceView viewer(sequence, seed, options);
+  view::Server& server = viewer.server();
+  server.Start();
+  const std::size_t n = sequence.steps.size();
+  std::printf("fitfeel view: sequence %s (%s, seed %llu), %zu steps\n  http://%s:%u/\n",
+              sequence.name.c_str(), file.string().c_str(), static_cast<unsigned long long>(seed),
+              n, args.host.c_str(), server.port());
+  std::fflush(stdout);
+  if (args.wait) {
+    std::printf("  waiting for a browser to connect before running\n");
+    std::fflush(stdout);
+    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  RunOptions run;
+  run.out_dir = args.out;
+  run.stop = &InterruptFlag();
+  run.prepared = [&interrupt](const PreparedScene&) { interrupt->Cooperate(); };
+  if (!args.out.empty()) {
+    SweepStaleTemporaries(args.out);
+    for (const SequenceStep& step : sequence.steps) {
+      SweepStaleTemporaries(fs::path(args.out) / step.scene.name);
+    }
+  }
+  run.seed = seed;
+  run.clock = args.virtual_clock ? ClockMode::kVirtual : ClockMode::kRealTime;
+  SequenceWatch watch = viewer.Watch();
+  watch.finished = [&, announce = watch.finished](std::size_t k, const RunResult& result,
+                                                  const nlohmann::json& entry) {
+    announce(k, result, entry);
+    const RunStats& s = result.stats;
+    std::printf("  step %zu of %zu: %s, %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max "
+                "%.2f us; %llu samples dropped\n",
+                k + 1, n, sequence.steps[k].scene.name.c_str(),
+                static_cast<unsigned long long>(s.ticks), s.compute_us.p50, s.compute_us.p99,
+                s.compute_us.max, static_cast<unsigned long long>(viewer.publisher(k).dropped()));
+    for (const auto& note : result.notes) std::printf("    %s\n", note.c_str());
+    std::fflush(stdout);
+  };
+  const SequenceResult result = RunSequence(sequence, run, watch);
+  if (InterruptSignal() != 0) return;
+  interrupt.emplace("fitfeel view",
+                    args.out.empty() ? "no outputs written" : "the run's outputs were complete");
+  std::printf("  %d viewer client(s)\n", server.clients());
+  if (!result.summary.empty()) std::printf("  summary %s\n", result.summary.c_str());
+  std::printf("  run finished: the page scrubs each step (Ctrl-C to stop)\n");
+  std::fflush(stdout);
+  Serve(server, args);
+}
+
 void View(const ViewArgs& args) {
   std::optional<InterruptScope> interrupt;
   interrupt.emplace("fitfeel view");
@@ -113,10 +248,19 @@ void View(const ViewArgs& args) {
   load.writes_outputs = !args.out.empty();
 
   if (!args.trace.empty()) {
+    if (const std::optional<nlohmann::json> steps = SequenceSummary(args.trace)) {
+      ViewFinishedSequence(args, *steps, registry, load, options);
+      return;
+    }
     const plot::RunRecord run = plot::LoadRun(args.trace);
     if (!run.summary.scenario_file) {
       throw UserError("view: '" + (fs::path(args.trace) / "summary.json").string() +
                       "' names no scenario_file, so the parts cannot be drawn again");
+    }
+    if (IsSequenceFile(*run.summary.scenario_file)) {
+      throw UserError("view: '" + args.trace + "' is one step of the sequence in '" +
+                      *run.summary.scenario_file +
+                      "': give --trace the sequence's folder (the one above it) to see every step");
     }
     load.writes_outputs = false;
     const Scene scene = LoadScene(*run.summary.scenario_file, registry, load);
@@ -133,6 +277,10 @@ void View(const ViewArgs& args) {
   }
 
   const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
+  if (IsSequenceFile(file)) {
+    ViewSequence(args, file, registry, load, options, interrupt);
+    return;
+  }
   Scene scene = LoadScene(file, registry, load);
   const std::uint64_t seed = args.seed.value_or(scene.run.seed);
   const view::ViewModel model(scene, seed);
@@ -195,9 +343,11 @@ void AddViewCommand(CLI::App& app) {
       "--trace) and shows the parts, contact pressure, resistances, assembly space and force "
       "trace at http://HOST:PORT/");
   cmd->add_option("file", args->file,
-                  std::string("scenario file to run (default: ") + kDefaultScenario + ")");
+                  std::string("scenario file to run, a scene or a sequence of steps (default: ") +
+                      kDefaultScenario + ")");
   cmd->add_option("--trace", args->trace,
-                  "a finished run's folder (trace.csv, summary.json) to scrub instead of running");
+                  "a finished run's folder (trace.csv, summary.json), or a finished sequence's "
+                  "(summary.json over its steps' folders), to scrub instead of running");
   cmd->add_option("--port", args->port, "TCP port (0: any free port; the URL is printed)")
       ->capture_default_str();
   cmd->add_option("--host", args->host,

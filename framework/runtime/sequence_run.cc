@@ -26,34 +26,63 @@ void RemoveOutputs(const RunResult& result) {
 
 }  // namespace
 
-SequenceResult RunSequence(const Sequence& sequence, const RunOptions& options) {
+Scene StepScene(const Sequence& sequence, std::size_t k, std::uint64_t seed,
+                const std::vector<Eigen::Vector2d>& offsets) {
+  const SequenceStep& step = sequence.steps.at(k);
+  Scene scene = step.scene;
+  scene.run.seed = seed + k;
+  for (const SequenceStep::Seat& seat : step.seated) {
+    Eigen::Vector2d& place = scene.features.at(seat.feature).placement.seat;
+    place = offsets.at(seat.step);
+    if (!seat.x) place.x() = 0.0;
+    if (!seat.z) place.y() = 0.0;
+  }
+  return scene;
+}
+
+nlohmann::json StepSummary(const Sequence& sequence, std::size_t k, std::uint64_t seed,
+                           const RunResult& r) {
+  nlohmann::json s;
+  s["step"] = sequence.steps.at(k).scene.name;
+  s["seed"] = seed + k;
+  s["folder"] = sequence.steps[k].scene.name;
+  s["seated_offset_um"] = {r.final_pose.offset.x() * 1e6, r.final_pose.offset.y() * 1e6};
+  s["final_depth_mm"] = r.final_pose.depth * 1e3;
+  s["axial_resistance_N"] = r.summary.value("axial_resistance_N", nlohmann::json());
+  s["radial_resistance_N"] = r.summary.value("radial_resistance_N", nlohmann::json());
+  if (r.summary.contains("features")) s["features"] = r.summary["features"];
+  return s;
+}
+
+SequenceResult RunSequence(const Sequence& sequence, const RunOptions& options,
+                           const SequenceWatch& watch) {
   if (sequence.steps.empty()) throw UserError("sequence '" + sequence.name + "' has no step");
   SequenceResult result;
   const std::uint64_t seed = options.seed ? *options.seed : sequence.run.seed;
+  nlohmann::json steps = nlohmann::json::array();
   try {
+    std::vector<Eigen::Vector2d> offsets;
     for (std::size_t k = 0; k < sequence.steps.size(); ++k) {
       const SequenceStep& step = sequence.steps[k];
-      Scene scene = step.scene;
-      scene.run.seed = seed + k;
       for (const SequenceStep::Seat& seat : step.seated) {
-        const RunResult& seated = result.steps.at(seat.step);
-        if (seated.final_stage != StageId::kConstrained) {
+        if (result.steps.at(seat.step).final_stage != StageId::kConstrained) {
           throw UserError("sequence '" + sequence.name + "': step '" +
                           sequence.steps[seat.step].scene.name +
                           "' ended with its part in free motion, not seated, so step '" +
-                          scene.name + "' cannot sit its feature '" +
-                          scene.features.at(seat.feature).name +
+                          step.scene.name + "' cannot sit its feature '" +
+                          step.scene.features.at(seat.feature).name +
                           "' on it (give that step a longer duration)");
         }
-        Eigen::Vector2d& place = scene.features.at(seat.feature).placement.seat;
-        place = seated.final_pose.offset;
-        if (!seat.x) place.x() = 0.0;
-        if (!seat.z) place.y() = 0.0;
       }
+      Scene scene = StepScene(sequence, k, seed, offsets);
       RunOptions step_options = options;
       step_options.seed.reset();
       if (!options.out_dir.empty()) step_options.out_dir = options.out_dir / scene.name;
+      if (watch.starting) step_options.observer = watch.starting(k, scene);
       result.steps.push_back(RunScene(std::move(scene), step_options));
+      offsets.push_back(result.steps.back().final_pose.offset);
+      steps.push_back(StepSummary(sequence, k, seed, result.steps.back()));
+      if (watch.finished) watch.finished(k, result.steps.back(), steps.back());
     }
   } catch (...) {
     for (const RunResult& done : result.steps) RemoveOutputs(done);
@@ -63,20 +92,6 @@ SequenceResult RunSequence(const Sequence& sequence, const RunOptions& options) 
   j["scenario"] = sequence.name;
   j["scenario_file"] = sequence.file.string();
   j["seed"] = seed;
-  nlohmann::json steps = nlohmann::json::array();
-  for (std::size_t k = 0; k < result.steps.size(); ++k) {
-    const RunResult& r = result.steps[k];
-    nlohmann::json s;
-    s["step"] = sequence.steps[k].scene.name;
-    s["seed"] = seed + k;
-    s["folder"] = sequence.steps[k].scene.name;
-    s["seated_offset_um"] = {r.final_pose.offset.x() * 1e6, r.final_pose.offset.y() * 1e6};
-    s["final_depth_mm"] = r.final_pose.depth * 1e3;
-    s["axial_resistance_N"] = r.summary.value("axial_resistance_N", nlohmann::json());
-    s["radial_resistance_N"] = r.summary.value("radial_resistance_N", nlohmann::json());
-    if (r.summary.contains("features")) s["features"] = r.summary["features"];
-    steps.push_back(s);
-  }
   j["steps"] = steps;
   result.summary_json = j;
   if (!options.out_dir.empty() && sequence.run.write_summary) {

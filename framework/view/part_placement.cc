@@ -9,11 +9,17 @@ PartPlacement PlacementOf(const MatingFeature& feature, Role part,
   const bool inner = part == Role::kInner;
   PartPlacement p;
   p.deviation = deviation[inner ? 0 : 1];
-  p.axis = feature.placement.at + p.deviation;
   p.angle = feature.placement.angle;
   p.setback = inner ? feature.placement.engages_after : 0.0;
   p.half_turn = feature.moving == Role::kOuter;
   p.moving = feature.moving == part;
+  if (!p.moving) {
+    // The seat is in the feature's frame (scene_stages.cc turns it the same way).
+    const double c = std::cos(p.angle), s = std::sin(p.angle);
+    const Eigen::Vector2d& seat = feature.placement.seat;
+    p.seat = Eigen::Vector2d(c * seat.x() + s * seat.y(), -s * seat.x() + c * seat.y());
+  }
+  p.axis = feature.placement.at + p.deviation + p.seat;
   return p;
 }
 

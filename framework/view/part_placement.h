@@ -21,11 +21,16 @@ namespace fitfeel::view {
 // the twist theta about the joint's axis (y), then moved by (offset x, depth, offset z), the
 // JointStage's R(theta) p + o.
 struct PartPlacement {
-  // The part's axis (x, z) in the joint frame: the feature's `at` plus `deviation`, m.
+  // The part's axis (x, z) in the joint frame: the feature's `at` plus `deviation` plus `seat`, m.
   Eigen::Vector2d axis{0.0, 0.0};
   // Of it, the deviation drawn within the part's position tolerance, m (the page draws it
   // exaggerated with the skin model deviations).
   Eigen::Vector2d deviation{0.0, 0.0};
+  // Of it, where an earlier step of a sequence left the part that this fixed part is
+  // (FeaturePlacement::seat, turned into the joint frame as the JointStage turns it), m; zero on
+  // the moving body and outside a sequence. It is that step's offset across its axis, which the
+  // page draws exaggerated as it draws the moving body's.
+  Eigen::Vector2d seat{0.0, 0.0};
   double angle = 0.0;  // the feature's own frame turned about +y from the joint frame, rad
   // How far the part lies back along its own axis, away from its mating end, m: a feature's inner
   // part by its `engages_after` (its leading end lies that much further back).
@@ -38,7 +43,8 @@ struct PartPlacement {
 };
 
 // The placement of `feature`'s `part` (its inner or its outer side), with the feature's drawn
-// position deviations (PreparedScene::position_deviations: inner side, outer side).
+// position deviations (PreparedScene::position_deviations: inner side, outer side) and, on its
+// fixed side, its seat.
 FITFEEL_API PartPlacement PlacementOf(const MatingFeature& feature, Role part,
                                       const std::array<Eigen::Vector2d, 2>& deviation);
 

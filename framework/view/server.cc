@@ -48,35 +48,55 @@ std::vector<ViewSample> Decimate(std::vector<ViewSample> rows, std::size_t max_r
 struct Server::Impl {
   struct Session;
 
-  Impl(const ViewModel& m, TickPublisher* p, std::vector<ViewSample> h, const ServerOptions& o)
-      : model(m),
-        publisher(p),
-        options(o),
-        acceptor(io),
-        timer(io),
-        scene_frame(std::make_shared<const std::string>(m.scene_message())) {
-    for (int k = 0; k < m.mesh_count(); ++k) {
-      mesh_frames.push_back(std::make_shared<const std::string>(m.mesh_frame(k)));
+  // What the server shows of one scene or one step of a sequence, and its run's newest state.
+  struct Step {
+    explicit Step(ServedStep served)
+        : model(std::move(served.model)),
+          publisher(served.publisher),
+          scene_frame(std::make_shared<const std::string>(model->scene_message())) {
+      for (int k = 0; k < model->mesh_count(); ++k) {
+        mesh_frames.push_back(std::make_shared<const std::string>(model->mesh_frame(k)));
+      }
+      if (!served.history.empty()) SetHistory(std::move(served.history));
     }
-    if (!h.empty()) SetHistory(std::move(h));
+
+    void SetHistory(std::vector<ViewSample> rows) {
+      history = Decimate(std::move(rows), kMaxHistoryRows);
+      history_frame = std::make_shared<const std::string>(EncodeHistoryFrame(history));
+      finished = true;
+      if (!have_latest && !history.empty()) {
+        latest = history.back();
+        have_latest = true;
+      }
+    }
+
+    Frame StateFrame(const ViewSample& sample) const {
+      StateExtras extras = model->Extras(sample);
+      extras.run_finished = finished;
+      extras.dropped = publisher ? publisher->dropped() : 0;
+      return std::make_shared<const std::string>(EncodeStateFrame(sample, extras));
+    }
+
+    std::shared_ptr<const ViewModel> model;
+    TickPublisher* publisher;
+    std::vector<ViewSample> history;
+    Frame history_frame;
+    bool finished = false;
+    ViewSample latest;
+    bool have_latest = false;
+    Frame latest_frame;
+    // Encoded once, queued to every client as the same buffers.
+    const Frame scene_frame;
+    std::vector<Frame> mesh_frames;  // filled by the constructor, read-only afterwards
+  };
+
+  Impl(std::vector<ServedStep> served, Frame sequence, const ServerOptions& o)
+      : options(o), acceptor(io), timer(io), sequence_frame(std::move(sequence)) {
+    steps.reserve(served.size());
+    for (ServedStep& step : served) steps.push_back(std::make_shared<Step>(std::move(step)));
   }
 
-  void SetHistory(std::vector<ViewSample> rows) {
-    history = Decimate(std::move(rows), kMaxHistoryRows);
-    history_frame = std::make_shared<const std::string>(EncodeHistoryFrame(history));
-    finished = true;
-    if (!have_latest && !history.empty()) {
-      latest = history.back();
-      have_latest = true;
-    }
-  }
-
-  Frame StateFrame(const ViewSample& sample) {
-    StateExtras extras = model.Extras(sample);
-    extras.run_finished = finished;
-    extras.dropped = publisher ? publisher->dropped() : 0;
-    return std::make_shared<const std::string>(EncodeStateFrame(sample, extras));
-  }
+  std::size_t newest() const { return steps.size() - 1; }
 
   bool OriginAllowed(std::string_view origin) const {
     if (origin.empty()) return true;  // not a browser: no cross-site page behind it
@@ -114,10 +134,11 @@ struct Server::Impl {
 
   void Accept();
   void Pulse();
-  void Broadcast(const Frame& frame);
+  void Collect(std::size_t k);
+  void Broadcast(std::size_t k, const Frame& frame);
+  void BeginStep(std::shared_ptr<Step> step, Frame sequence);
+  void UpdateSequence(Frame sequence);
 
-  const ViewModel& model;
-  TickPublisher* publisher;
   ServerOptions options;
   // Before io: sessions that io's destructor destroys still count themselves out.
   std::atomic<std::uint64_t> frames_sent{0};
@@ -130,44 +151,57 @@ struct Server::Impl {
   std::thread thread;
   unsigned short bound_port = 0;
   std::vector<std::weak_ptr<Session>> sessions;
-  std::vector<ViewSample> history;
-  Frame history_frame;
-  bool finished = false;
-  ViewSample latest;
-  bool have_latest = false;
-  Frame latest_frame;
-  // Encoded once, queued to every client as the same buffers.
-  const Frame scene_frame;
-  std::vector<Frame> mesh_frames;  // filled by the constructor, read-only afterwards
+  // The scene's one step, or the sequence's steps begun so far; the server thread's once serving.
+  // Held by pointer: a sequence's next step is built on the run's thread (its frames encoded
+  // there, Server::BeginStep) and only handed over to this one.
+  std::vector<std::shared_ptr<Step>> steps;
+  Frame sequence_frame;  // null for a scene
 };
 
-// One WebSocket client. Frames the client must get (scene, meshes, history) queue in order; state
-// frames share one slot that always holds the newest, so a slow client bounds its own memory. Every
-// frame is the server's shared buffer (a seek's state frame excepted): queuing one copies a pointer.
+// One WebSocket client. Frames the client must get (sequence, scene, meshes, history) queue in
+// order; state frames share one slot that always holds the newest, so a slow client bounds its own
+// memory. Every frame is the server's shared buffer (a seek's state frame excepted): queuing one
+// copies a pointer. Nothing is queued before the handshake is done (a frame written then would
+// mix with the handshake's response); the handshake's end queues everything the client is due.
 struct Server::Impl::Session : std::enable_shared_from_this<Session> {
   Session(Impl& s, tcp::socket socket) : server(s), ws(std::move(socket)) {}
   ~Session() { server.clients.fetch_sub(1, std::memory_order_relaxed); }
 
   void Start(http::request<http::empty_body> request) {
     server.clients.fetch_add(1, std::memory_order_relaxed);
+    step = server.newest();
     ws.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws.read_message_max(kMaxClientMessage);
     ws.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
-      self->Queue(self->server.scene_frame, true);
-      for (const Frame& mesh : self->server.mesh_frames) self->Queue(mesh, false);
-      if (self->server.history_frame) self->Queue(self->server.history_frame, false);
-      if (self->server.latest_frame) self->Offer(self->server.latest_frame);
+      self->open = true;
+      if (self->server.sequence_frame) self->Queue(self->server.sequence_frame, true);
+      self->Show(self->step);
       self->Read();
     });
   }
 
+  // Step k from its scene message on: the frames of the step shown before that are still
+  // waiting (its newest state, a seek's answer) are dropped, since they would land on k's parts.
+  void Show(std::size_t k) {
+    step = k;
+    if (!open) return;
+    pending_state.reset();
+    const Step& s = *server.steps[k];
+    Queue(s.scene_frame, true);
+    for (const Frame& mesh : s.mesh_frames) Queue(mesh, false);
+    if (s.history_frame) Queue(s.history_frame, false);
+    if (s.latest_frame) Offer(s.latest_frame);
+  }
+
   void Queue(Frame frame, bool text) {
+    if (!open) return;
     queue.emplace_back(std::move(frame), text);
     Write();
   }
 
   void Offer(Frame state) {
+    if (!open) return;
     pending_state = std::move(state);
     Write();
   }
@@ -213,17 +247,24 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
     });
   }
 
-  // "seek N": the state of row N of the finished run's history. Anything else is ignored.
+  // "seek N": the state of row N of the shown step's finished history. "step N": a sequence's
+  // begun step N, shown from its scene message on. Anything else is ignored.
   void Handle(const std::string& message) {
-    if (message.rfind("seek ", 0) != 0 || server.history.empty()) return;
-    std::size_t row = 0;
+    const bool seek = message.rfind("seek ", 0) == 0;
+    if (!seek && (message.rfind("step ", 0) != 0 || !server.sequence_frame)) return;
+    std::size_t n = 0;
     try {
-      row = std::stoul(message.substr(5));
+      n = std::stoul(message.substr(5));
     } catch (const std::exception&) {
       return;
     }
-    if (row >= server.history.size()) return;
-    Offer(server.StateFrame(server.history[row]));
+    if (!seek) {
+      if (n < server.steps.size() && n != step) Show(n);
+      return;
+    }
+    const Step& s = *server.steps[step];
+    if (n >= s.history.size()) return;
+    Offer(s.StateFrame(s.history[n]));
   }
 
   Impl& server;
@@ -231,6 +272,8 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
   beast::flat_buffer buffer;
   std::deque<std::pair<Frame, bool>> queue;
   Frame pending_state;
+  std::size_t step = 0;  // the step shown: its state frames and seeks are this client's
+  bool open = false;     // the handshake is done
   bool writing = false;
   bool closed = false;
 };
@@ -348,36 +391,45 @@ void Server::Impl::Accept() {
   });
 }
 
-void Server::Impl::Broadcast(const Frame& frame) {
+void Server::Impl::Broadcast(std::size_t k, const Frame& frame) {
   sessions.erase(std::remove_if(sessions.begin(), sessions.end(),
                                 [](const std::weak_ptr<Session>& s) { return s.expired(); }),
                  sessions.end());
   for (auto& weak : sessions) {
-    if (auto s = weak.lock()) s->Offer(frame);
+    if (auto s = weak.lock(); s && s->step == k) s->Offer(frame);
   }
 }
 
-// Display rate: the newest sample becomes one state frame for every client.
-void Server::Impl::Pulse() {
+// Step k's newest sample, and its history once its run ended, to the clients on it. Every step
+// is collected, not only the newest: an earlier step's history may come after the next step began.
+void Server::Impl::Collect(std::size_t k) {
+  Step& s = *steps[k];
   bool fresh = false;
-  if (publisher != nullptr) {
+  if (s.publisher != nullptr) {
     ViewSample sample;
-    if (publisher->PopLatest(&sample)) {
-      latest = sample;
-      have_latest = fresh = true;
+    if (s.publisher->PopLatest(&sample)) {
+      s.latest = sample;
+      s.have_latest = fresh = true;
     }
-    if (auto rows = publisher->TakeHistory()) {
-      SetHistory(std::move(*rows));
+    if (auto rows = s.publisher->TakeHistory()) {
+      s.SetHistory(std::move(*rows));
       for (auto& weak : sessions) {
-        if (auto s = weak.lock()) s->Queue(history_frame, false);
+        if (auto session = weak.lock(); session && session->step == k) {
+          session->Queue(s.history_frame, false);
+        }
       }
-      fresh = have_latest;
+      fresh = s.have_latest;
     }
   }
-  if (fresh || (have_latest && !latest_frame)) {
-    latest_frame = StateFrame(latest);
-    Broadcast(latest_frame);
+  if (fresh || (s.have_latest && !s.latest_frame)) {
+    s.latest_frame = s.StateFrame(s.latest);
+    Broadcast(k, s.latest_frame);
   }
+}
+
+// Display rate: each step's newest sample becomes one state frame for every client on it.
+void Server::Impl::Pulse() {
+  for (std::size_t k = 0; k < steps.size(); ++k) Collect(k);
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(1.0 / options.frame_rate));
   timer.expires_after(period);
@@ -386,16 +438,61 @@ void Server::Impl::Pulse() {
   });
 }
 
-Server::Server(const ViewModel& model, TickPublisher* publisher, std::vector<ViewSample> history,
-               const ServerOptions& options) {
+void Server::Impl::BeginStep(std::shared_ptr<Step> step, Frame sequence) {
+  const std::size_t before = newest();
+  steps.push_back(std::move(step));
+  sequence_frame = std::move(sequence);
+  for (auto& weak : sessions) {
+    auto s = weak.lock();
+    if (!s) continue;
+    s->Queue(sequence_frame, true);
+    if (s->step == before) s->Show(newest());
+  }
+}
+
+void Server::Impl::UpdateSequence(Frame sequence) {
+  sequence_frame = std::move(sequence);
+  for (auto& weak : sessions) {
+    if (auto s = weak.lock()) s->Queue(sequence_frame, true);
+  }
+}
+
+namespace {
+
+void CheckOptions(const ServerOptions& options) {
   if (!(options.frame_rate >= 1.0 && options.frame_rate <= 240.0)) {
     throw UserError("viewer frame rate must be in [1, 240] Hz");
   }
-  if (options.max_clients < 1 || options.max_clients > kMaxClientsCap) {
-    throw UserError("viewer: --max-clients must be in 1.." + std::to_string(kMaxClientsCap) +
-                    ", got " + std::to_string(options.max_clients));
+  if (options.max_clients < 1 || options.max_clients > Server::kMaxClientsCap) {
+    throw UserError("viewer: --max-clients must be in 1.." +
+                    std::to_string(Server::kMaxClientsCap) + ", got " +
+                    std::to_string(options.max_clients));
   }
-  impl_ = std::make_unique<Impl>(model, publisher, std::move(history), options);
+}
+
+}  // namespace
+
+Server::Server(const ViewModel& model, TickPublisher* publisher, std::vector<ViewSample> history,
+               const ServerOptions& options) {
+  CheckOptions(options);
+  // The model is borrowed: a shared pointer that owns nothing.
+  std::vector<ServedStep> steps(1);
+  steps[0].model = std::shared_ptr<const ViewModel>(std::shared_ptr<const ViewModel>(), &model);
+  steps[0].publisher = publisher;
+  steps[0].history = std::move(history);
+  impl_ = std::make_unique<Impl>(std::move(steps), nullptr, options);
+}
+
+Server::Server(std::vector<ServedStep> steps, std::string sequence_message,
+               const ServerOptions& options) {
+  CheckOptions(options);
+  if (steps.empty()) throw UserError("viewer: a sequence's server needs its first step");
+  for (const ServedStep& step : steps) {
+    if (!step.model) throw UserError("viewer: a sequence's step has no view model");
+  }
+  impl_ = std::make_unique<Impl>(
+      std::move(steps), std::make_shared<const std::string>(std::move(sequence_message)),
+      options);
 }
 
 Server::~Server() { Stop(); }
@@ -432,6 +529,23 @@ void Server::Stop() {
     impl_->io.stop();
   });
   impl_->thread.join();
+}
+
+void Server::BeginStep(ServedStep step, std::string sequence_message) {
+  if (!step.model) throw UserError("viewer: a sequence's step has no view model");
+  auto frame = std::make_shared<const std::string>(std::move(sequence_message));
+  // The step's frames are made here, on the caller's thread; the server's thread only takes them.
+  auto served = std::make_shared<Impl::Step>(std::move(step));
+  asio::post(impl_->io, [impl = impl_.get(), served, frame]() mutable {
+    impl->BeginStep(std::move(served), std::move(frame));
+  });
+}
+
+void Server::UpdateSequence(std::string sequence_message) {
+  auto frame = std::make_shared<const std::string>(std::move(sequence_message));
+  asio::post(impl_->io, [impl = impl_.get(), frame]() mutable {
+    impl->UpdateSequence(std::move(frame));
+  });
 }
 
 unsigned short Server::port() const { return impl_->bound_port; }

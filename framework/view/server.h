@@ -26,6 +26,16 @@ struct ServerOptions {
   std::function<void(const std::string&)> log;
 };
 
+// One step of a sequence (docs/assemblies.md) as the server shows it: its parts (the model, which
+// the server keeps alive) and its run, live through its publisher or finished as its history.
+struct ServedStep {
+  std::shared_ptr<const ViewModel> model;
+  // The step's live run; borrowed, must outlive the server. Null for a finished step.
+  TickPublisher* publisher = nullptr;
+  // A finished step's rows (a finished sequence opened with --trace), or empty.
+  std::vector<ViewSample> history;
+};
+
 // The viewer's HTTP and WebSocket server (Boost.Beast on one thread of its own): the page and its
 // scripts at fixed paths (anything else 404), the WebSocket at /ws (Origin checked against the
 // served host, messages from the browser at most kMaxClientMessage bytes). Every client gets the
@@ -36,6 +46,14 @@ struct ServerOptions {
 // slower than the frames keeps at most one state frame waiting (the newest); one that disconnects
 // is dropped. Beyond `max_clients` an upgrade is answered 503 with a text body, and a line on
 // standard error says so (once, until a client is served again).
+//
+// A sequence's server shows its steps, each as a scene: the sequence message (JSON text, the
+// steps and what each finished one left) first, then the scene message, meshes, history and state
+// of the step the client is on. A client starts on the newest step (the one the run is in) and
+// moves on with the run: when the next step begins, each client on the step before gets the new
+// sequence message and the new step's scene message and meshes, so the page draws the new step's
+// parts from its scene message on as it draws a scene. A client may ask for any begun step
+// (`step N`, from 0), which it then gets the same way; state frames and seeks are its step's.
 class FITFEEL_API Server {
  public:
   static constexpr std::size_t kMaxClientMessage = 256;
@@ -48,6 +66,11 @@ class FITFEEL_API Server {
   // UserError for a frame rate outside [1, 240] Hz or max_clients outside [1, kMaxClientsCap].
   Server(const ViewModel& model, TickPublisher* publisher, std::vector<ViewSample> history,
          const ServerOptions& options);
+  // A sequence's: its steps so far, the last the one the run is in (every step of a finished
+  // sequence), and the sequence message. Throws as the scene's constructor does, and UserError for
+  // no step or a step without a model.
+  Server(std::vector<ServedStep> steps, std::string sequence_message,
+         const ServerOptions& options);
   ~Server();
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;
@@ -57,6 +80,12 @@ class FITFEEL_API Server {
   void Start();
   // Stops serving and joins the thread; idempotent.
   void Stop();
+  // A sequence's run begins its next step: from the server's thread on, `step` is the newest, and
+  // the clients on the step before move to it with `sequence_message`. Any thread; the step's
+  // publisher may be reporting ticks already.
+  void BeginStep(ServedStep step, std::string sequence_message);
+  // A sequence's message changed (a step finished): every client gets it. Any thread.
+  void UpdateSequence(std::string sequence_message);
   unsigned short port() const;
   // State frames handed to clients so far, and clients connected (any thread; for tests and the
   // command's summary).

@@ -51,7 +51,7 @@ nlohmann::json PartJson(const PartSpec& part, const SkinModelShape& sms, bool pl
 
 ViewModel::~ViewModel() = default;
 
-ViewModel::ViewModel(const Scene& scene, std::uint64_t seed) : scene_(scene) {
+ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step) : scene_(scene) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
@@ -109,6 +109,10 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed) : scene_(scene) {
       nlohmann::json j = PartJson(part, sms, mesh.empty());
       j["body"] = placement.moving ? "moving" : "fixed";
       j["deviation_um"] = {placement.deviation.x() * 1e6, placement.deviation.y() * 1e6};
+      // Only a seated part's names its seat: a scene's message stays the one its pages read.
+      if (!placement.seat.isZero(0.0)) {
+        j["seat_um"] = {placement.seat.x() * 1e6, placement.seat.y() * 1e6};
+      }
       parts[RoleName(role)] = j;
     }
     features.push_back({{"name", feature.name},
@@ -146,6 +150,7 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed) : scene_(scene) {
     j["moving_body"] = scene.moving_body;
     j["fixed_body"] = scene.fixed_body;
   }
+  if (step >= 0) j["step"] = step;
   scene_message_ = j.dump();
 }
 

@@ -31,8 +31,9 @@ class FITFEEL_API ViewModel {
  public:
   // Throws UserError/ScenarioError as a run would for a scene that cannot be prepared. A surface
   // type without a law (or without an analyzer) still gives a model: its parts are shown, without
-  // pressure, and `status()` says why.
-  ViewModel(const Scene& scene, std::uint64_t seed);
+  // pressure, and `status()` says why. `step`: the scene's index among a sequence's steps, which
+  // its scene message names (`step`), or -1 for a scene of its own, whose message names none.
+  ViewModel(const Scene& scene, std::uint64_t seed, int step = -1);
   ~ViewModel();
   ViewModel(const ViewModel&) = delete;
   ViewModel& operator=(const ViewModel&) = delete;

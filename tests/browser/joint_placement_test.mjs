@@ -1,7 +1,8 @@
 // How the viewer's page moves a several-feature scene's parts (framework/view/web/joint.js), with
 // the page's own three.js: the moving body's parts follow its offset and its twist about the
 // joint's axis, R(twist) (at + deviation) + offset (docs/assemblies.md, JointStage), the fixed
-// body's parts stay, and a part's position deviation is drawn exaggerated as the page asks.
+// body's parts stay, and a part's position deviation (and a seated part's seat) is drawn
+// exaggerated as the page asks.
 //
 // node joint_placement_test.mjs THREE_MODULE_JS   (exit 0 when every check holds)
 import assert from 'node:assert/strict';
@@ -64,4 +65,16 @@ near(world(holder, axis), axis, 'zero pose');
 // The fixed body's group is never moved: its parts stay whatever the state.
 const fixed = new THREE.Group();
 near(world(fixed, [0, 25, 16.3]), [0, 25, 16.3], 'fixed part');
+
+// A sequence's seated key (key-then-hub's hub step): its mesh carries its deviation and its seat
+// once, both at their true size; the page draws their sum `factor` times, as it drew the seat
+// while the key step ran (its moving part's offset).
+const seated = { deviation_um: [0.5, -1.0], seat_um: [0.25, 0] };
+const key = new THREE.Group();
+fixed.add(key);
+key.position.set(...J.deviationShift(seated, 100));
+const keyAxis = [0 + 0.75e-3, -5, 16.3 - 1.0e-3];  // at + deviation + seat, mm
+near(world(key, keyAxis), [keyAxis[0] + 99 * 0.75e-3, -5, keyAxis[2] + 99 * -1.0e-3],
+  'seated key', 1e-9);
+near(J.deviationShift(seated, 1), [0, 0, 0], 'factor 1 draws the seat once');
 console.log('joint placement: every check holds');

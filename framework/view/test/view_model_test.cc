@@ -13,7 +13,9 @@
 
 #include "framework/plugin/registry.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/sequence_run.h"
 #include "framework/scenario/scene.h"
+#include "framework/scenario/sequence.h"
 #include "framework/view/frame_codec.h"
 #include "framework/view/part_placement.h"
 
@@ -137,6 +139,39 @@ TEST(ViewModelPlacement, KeyedHubDrawsBothFeaturesAtTheirPlaces) {
   EXPECT_EQ(j["features"][1]["outer"]["body"], "moving");
   EXPECT_NEAR(j["features"][1]["at_mm"][1].get<double>(), 16.3, 1e-9);
   EXPECT_EQ(j["moving_body"], "hub");
+}
+
+// A sequence's step (key-then-hub's hub step) with its key seated where the key step left it:
+// the key (the fixed side of the key feature) drawn moved by the seat, the keyway (on the moving
+// hub) not; the message names the step and the seat. A scene of its own names neither.
+TEST(ViewModelPlacement, ASeatedKeyIsDrawnWhereTheEarlierStepLeftIt) {
+  const Sequence sequence = LoadSequence("scenarios/key-then-hub.yaml", ViewTestRegistry());
+  ASSERT_EQ(sequence.steps.size(), 2u);
+  const Eigen::Vector2d left(2e-6, -1e-6);  // the key step's final offset; `carry: x` takes x
+  const Scene seated = StepScene(sequence, 1, 1, {left});
+  const Scene centred = StepScene(sequence, 1, 1, {Eigen::Vector2d::Zero()});
+  EXPECT_EQ(seated.run.seed, 2u);
+  const ViewModel a(seated, seated.run.seed, 1), b(centred, centred.run.seed, 1);
+  ASSERT_EQ(a.placements().size(), 4u);
+  EXPECT_TRUE(a.placements()[2].seat.isApprox(Eigen::Vector2d(2e-6, 0.0)));
+  EXPECT_TRUE(a.placements()[2].axis.isApprox(b.placements()[2].axis + Eigen::Vector2d(2e-6, 0.0)));
+  for (int k : {0, 1, 3}) {
+    EXPECT_TRUE(a.placements()[k].seat.isZero(0.0)) << k;
+    EXPECT_EQ(a.mesh_frame(k), b.mesh_frame(k)) << k;
+  }
+  const MeshBox key_a = BoxOf(DecodeMeshFrame(a.mesh_frame(2)).mesh);
+  const MeshBox key_b = BoxOf(DecodeMeshFrame(b.mesh_frame(2)).mesh);
+  EXPECT_NEAR(key_a.centroid.x() - key_b.centroid.x(), 2e-6, 1e-8);  // corners sent as f32
+  EXPECT_NEAR(key_a.centroid.z() - key_b.centroid.z(), 0.0, 1e-8);
+
+  const nlohmann::json j = nlohmann::json::parse(a.scene_message());
+  EXPECT_EQ(j["step"], 1);
+  EXPECT_EQ(j["features"][1]["inner"]["seat_um"], nlohmann::json({2.0, 0.0}));
+  EXPECT_FALSE(j["features"][1]["outer"].contains("seat_um"));
+  const nlohmann::json unseated = nlohmann::json::parse(b.scene_message());
+  EXPECT_FALSE(unseated["features"][1]["inner"].contains("seat_um"));
+  const ViewModel plain(LoadScene("scenarios/keyed-hub.yaml", ViewTestRegistry()), 1);
+  EXPECT_FALSE(nlohmann::json::parse(plain.scene_message()).contains("step"));
 }
 
 // The two-pin plate: its second hole and pin 60 mm along x, each at its own deviation.

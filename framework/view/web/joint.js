@@ -43,8 +43,11 @@ export function placeBody(object, pose) {
 
 // How far (mm) the page moves a part's mesh within its body so that the part's position
 // deviation (`deviation_um` of the scene message; the mesh carries it at its true size) is drawn
-// `factor` times its size, as the skin model deviations are.
+// `factor` times its size, as the skin model deviations are; and so is a seated part's seat
+// (`seat_um`: where a sequence's earlier step left it, that step's offset across its axis, which
+// the page drew exaggerated while that step ran).
 export function deviationShift(part, factor) {
   const [x, z] = part.deviation_um;
-  return [(factor - 1) * x * 1e-3, 0, (factor - 1) * z * 1e-3];
+  const [sx, sz] = part.seat_um || [0, 0];
+  return [(factor - 1) * (x + sx) * 1e-3, 0, (factor - 1) * (z + sz) * 1e-3];
 }

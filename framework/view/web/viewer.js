@@ -1,7 +1,9 @@
 // fitfeel view: draws the parts, the contact pressure, the resistances, the assembly space and
 // the force trace from the frames the server streams over /ws (frames.js reads them). A
 // several-feature scene draws every feature's parts in the joint frame (joint.js), names the
-// features in the panel and over the 3D view, and moves the moving body's parts together.
+// features in the panel and over the 3D view, and moves the moving body's parts together. A
+// sequence's steps come one scene after another: each scene message replaces the drawn scene, and
+// the sequence message says which step is shown and what each finished step left.
 import * as THREE from '/three/build/three.module.js';
 import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
 import * as F from '/frames.js';
@@ -26,6 +28,7 @@ const view = {
   trace: [], history: null, frames: 0, finished: false,
   holders: [],  // several-feature scene: the group holding each part's mesh within its body
   labels: [],   // several-feature scene: each feature's name over its fixed part
+  sequence: null,  // a sequence's newest sequence message
 };
 // A several-feature scene (the scene message lists its features).
 const joint = () => Boolean(view.scene && view.scene.features && view.scene.features.length);
@@ -140,12 +143,14 @@ function addPart(mesh) {
       new THREE.LineBasicMaterial({ color: 0x333333 })));
     group.children[1].position.copy(m.position);
     view.geometry[mesh.part] = null;
+    document.body.dataset.parts = view.meshes.filter((m) => m).length;
     if (view.meshes[0] && view.meshes[1]) frameCamera();
     requestRender();
     return;
   }
   const g = buildGeometry(mesh);
   view.geometry[mesh.part] = g;
+  document.body.dataset.parts = view.meshes.filter((m) => m).length;
   displace(mesh.part);
   const material = mesh.part === 0
     ? new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide })
@@ -485,7 +490,42 @@ function defaultFactor(info) {
   return Math.min(Math.max(0.04 * radius / v, 1), 10000);
 }
 
+// Everything drawn of the scene before: a sequence's next step (or another step asked for) draws
+// its own parts from its scene message on, as the first scene is drawn.
+const oneFeatureFactorHint = $('factor-hint').textContent;
+function clearScene() {
+  for (const group of [moving, fixed]) {
+    group.traverse((o) => {
+      if (o.geometry) o.geometry.dispose();
+      if (o.material) o.material.dispose();
+    });
+    group.children.slice().forEach((c) => group.remove(c));  // three.js r111 has no clear()
+    group.position.set(0, 0, 0);
+    group.rotation.set(0, 0, 0);
+  }
+  for (const label of view.labels) label.element.remove();
+  Object.assign(view, { meshes: [null, null], geometry: [null, null], holders: [], labels: [],
+    state: null, trace: [], history: null, finished: false });
+  document.body.dataset.parts = 0;
+  $('features-panel').hidden = true;
+  $('scrub').hidden = true;
+  const placeholder = $('placeholder');
+  if (placeholder) placeholder.remove();
+  $('pressure-title').textContent = 'Contact pressure';
+  $('space-title').textContent = 'Assembly space of the current section';
+  $('factor-hint').textContent = oneFeatureFactorHint;
+  // Nothing of the step before stands for this one's state until its first state frame.
+  $('status').textContent = 'waiting for this step\'s first state';
+  $('forces').replaceChildren();
+  for (const cv of [$('legend'), $('space')]) {
+    cv.getContext('2d').clearRect(0, 0, cv.width, cv.height);
+  }
+  $('space-note').textContent = '';
+  drawTrace();
+}
+
 function onScene(info) {
+  if (view.scene) clearScene();
   view.scene = info;
   $('title').textContent = info.scenario;
   $('subtitle').textContent = `${info.surface} · law ${info.law || '–'} · seed ${info.seed} · ` +
@@ -504,6 +544,70 @@ function onScene(info) {
   const e = Math.log10(defaultFactor(info));
   $('factor').value = e;
   setFactor(e);
+  showSteps();
+}
+
+// --- sequence ------------------------------------------------------------------------------
+function onSequence(info) {
+  view.sequence = info;
+  showSteps();
+}
+
+// A sequence: the shown step's label ("step 2 of 2: hub") under the sequence's name, and every
+// step in the panel: what a finished one left (where its part was left across its axis, its
+// depth, its axial resistance), the others running or waiting. A begun step other than the shown
+// one is a button that asks the server for it.
+function showSteps() {
+  const seq = view.sequence;
+  const shown = view.scene && Number.isInteger(view.scene.step) ? view.scene.step : null;
+  $('steps-panel').hidden = !seq;
+  $('step').hidden = !seq || shown === null;
+  if (!seq) return;
+  $('title').textContent = seq.scenario;
+  const n = seq.steps.length;
+  const state = (k) => (seq.steps[k].finished ? 'finished' : k === seq.newest ? 'running'
+    : 'waiting');
+  if (shown !== null && seq.steps[shown]) {
+    $('step-label').textContent = `step ${shown + 1} of ${n}: ${seq.steps[shown].step}`;
+    const newest = seq.steps[seq.newest];
+    $('step-state').textContent = state(shown) + (shown !== seq.newest
+      ? ` · the run is in step ${seq.newest + 1}: ${newest.step} (${state(seq.newest)})` : '');
+    document.body.dataset.step = shown + 1;
+  }
+  const list = $('steps');
+  list.replaceChildren();
+  seq.steps.forEach((step, k) => {
+    const item = document.createElement('li');
+    item.className = k === shown ? 'shown' : '';
+    let name;
+    if (k !== shown && k <= seq.newest) {
+      name = document.createElement('button');
+      name.dataset.step = k;
+      name.title = `show step ${k + 1}`;
+      name.addEventListener('click', () => {
+        if (socket && socket.readyState === 1) socket.send(`step ${k}`);
+      });
+    } else {
+      name = document.createElement('b');
+    }
+    name.textContent = step.step;
+    const details = document.createElement('span');
+    details.className = 'hint';
+    details.textContent = ` seed ${step.seed} · ${state(k)}` +
+      (step.finished ? stepResult(step) : '');
+    item.append(name, details);
+    list.appendChild(item);
+  });
+}
+
+// What a finished step left: its entry of the sequence's summary.json.
+function stepResult(step) {
+  const [x, z] = step.seated_offset_um, axial = step.axial_resistance_N;
+  return `: part left at offset (${fmt(x)}, ${fmt(z)}) µm, ` +
+    `depth ${fmt(step.final_depth_mm, 4)} mm` +
+    (axial && axial.mean !== null && axial.mean !== undefined
+      ? `; axial resistance mean ${fmt(axial.mean)} N, max ${fmt(axial.max)} N`
+      : '; no constrained tick');
 }
 
 // The features of a several-feature scene in the panel: each one's colour, name, surface, parts
@@ -525,7 +629,9 @@ function showFeatures(info) {
     const name = document.createElement('b');
     name.textContent = f.name;
     const side = (p) => `${p.name} ${p.body}` + (p.deviation_um.some((d) => d !== 0)
-      ? ` (position deviation ${p.deviation_um.map((d) => d.toFixed(1)).join(', ')} µm)` : '');
+      ? ` (position deviation ${p.deviation_um.map((d) => d.toFixed(1)).join(', ')} µm)` : '') +
+      (p.seat_um ? ` (seated at ${p.seat_um.map((d) => fmt(d)).join(', ')} µm by an earlier step)`
+        : '');
     const where = i === 0 ? 'datum' : `at (${mm(f.at_mm[0])}, ${mm(f.at_mm[1])}) mm` +
       (f.engages_after_mm ? `, engages after ${mm(f.engages_after_mm)} mm` : '');
     const details = document.createElement('div');
@@ -562,6 +668,7 @@ function connect() {
     if (typeof event.data === 'string') {
       const msg = JSON.parse(event.data);
       if (msg.type === 'scene') onScene(msg);
+      else if (msg.type === 'sequence') onSequence(msg);
       return;
     }
     const kind = F.frameKind(event.data);
