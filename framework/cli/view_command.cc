@@ -172,6 +172,27 @@ void ViewFinishedSequence(const ViewArgs& args, const nlohmann::json& summary,
   Serve(server, args);
 }
 
+// What a live view's run takes once the page may start it: waits for a browser where asked, then
+// the run's folder, seed and clock, and the interrupt's cooperation (from its first tick on, a
+// signal stops the run at a tick boundary and its temporaries are removed).
+RunOptions LiveRunOptions(const ViewArgs& args, view::Server& server, std::uint64_t seed,
+                          std::optional<InterruptScope>& interrupt) {
+  if (args.wait) {
+    std::printf("  waiting for a browser to connect before running\n");
+    std::fflush(stdout);
+    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  RunOptions run;
+  run.out_dir = args.out;
+  run.stop = &InterruptFlag();
+  run.prepared = [&interrupt](const PreparedScene&) { interrupt->Cooperate(); };
+  if (!args.out.empty()) SweepStaleTemporaries(args.out);
+  run.seed = seed;
+  // A live view is watched at the device's pace unless asked otherwise.
+  run.clock = args.virtual_clock ? ClockMode::kVirtual : ClockMode::kRealTime;
+  return run;
+}
+
 // A sequence run live: its steps in order as `fitfeel run` runs them (RunSequence), each shown
 // from when it starts (SequenceView).
 void ViewSequence(const ViewArgs& args, const fs::path& file, const PluginRegistry& registry,
@@ -187,23 +208,12 @@ void ViewSequence(const ViewArgs& args, const fs::path& file, const PluginRegist
               sequence.name.c_str(), file.string().c_str(), static_cast<unsigned long long>(seed),
               n, args.host.c_str(), server.port());
   std::fflush(stdout);
-  if (args.wait) {
-    std::printf("  waiting for a browser to connect before running\n");
-    std::fflush(stdout);
-    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  RunOptions run;
-  run.out_dir = args.out;
-  run.stop = &InterruptFlag();
-  run.prepared = [&interrupt](const PreparedScene&) { interrupt->Cooperate(); };
+  const RunOptions run = LiveRunOptions(args, server, seed, interrupt);
   if (!args.out.empty()) {
-    SweepStaleTemporaries(args.out);
     for (const SequenceStep& step : sequence.steps) {
       SweepStaleTemporaries(fs::path(args.out) / step.scene.name);
     }
   }
-  run.seed = seed;
-  run.clock = args.virtual_clock ? ClockMode::kVirtual : ClockMode::kRealTime;
   SequenceWatch watch = viewer.Watch();
   watch.finished = [&, announce = watch.finished](std::size_t k, const RunResult& result,
                                                   const nlohmann::json& entry) {
@@ -298,21 +308,7 @@ void View(const ViewArgs& args) {
     return;
   }
 
-  if (args.wait) {
-    std::printf("  waiting for a browser to connect before running\n");
-    std::fflush(stdout);
-    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  RunOptions run;
-  run.out_dir = args.out;
-  // The run writes --out: from its first tick on, a signal stops it at a tick boundary and its
-  // temporaries are removed (RunScene throws Interrupted).
-  run.stop = &InterruptFlag();
-  run.prepared = [&interrupt](const PreparedScene&) { interrupt->Cooperate(); };
-  if (!args.out.empty()) SweepStaleTemporaries(args.out);
-  run.seed = seed;
-  // A live view is watched at the device's pace unless asked otherwise.
-  run.clock = args.virtual_clock ? ClockMode::kVirtual : ClockMode::kRealTime;
+  RunOptions run = LiveRunOptions(args, server, seed, interrupt);
   run.observer = &publisher;
   const RunResult result = RunScene(std::move(scene), run);
   // A signal after the last tick: the outputs are complete, main says so.
