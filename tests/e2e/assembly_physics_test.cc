@@ -635,3 +635,47 @@ TEST(TwoPinPlate, AHandFeelsTheJamThroughItsSpring) {
 
 }  // namespace
 }  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// key-then-hub with a person's hand for the hub: the press seats the key, the hand slides the
+// hub over shaft and key (its wrist holding the twist) and feels no more than its spring.
+TEST(Sequence, AHandSlidesTheHubOverTheSeatedKey) {
+  std::string text = ShippedText("key-then-hub.yaml");
+  const std::size_t hub = text.find("  - step: hub");
+  ASSERT_NE(hub, std::string::npos);
+  std::string step = text.substr(hub);
+  const std::size_t motion = step.find("    part_motion:");
+  const std::size_t duration = step.find("    duration: 5.2 s");
+  ASSERT_NE(motion, std::string::npos);
+  ASSERT_NE(duration, std::string::npos);
+  step = step.substr(0, motion) +
+         "    part_motion: {radial: held}\n"
+         "    device:\n      plugin: fitfeel.device.simulated\n      mode: scripted\n"
+         "      hand: {mass: 0.5 kg, stiffness: 2000 N/m, damping: 20 N*s/m, tremor: true}\n"
+         "      waypoints:\n        - {time: 0 s, position: [0 mm, -2 mm, 0 mm]}\n"
+         "        - {time: 4 s, position: [0 mm, 44 mm, 0 mm]}\n"
+         "    duration: 4.5 s\n";
+  text = text.substr(0, hub) + step;
+  const fs::path dir = fs::path(testing::TempDir()) / "sequence-hand";
+  fs::create_directories(dir);
+  const fs::path file = dir / "by-hand.yaml";
+  {
+    std::ofstream out(file);
+    out << text;
+  }
+  const SequenceResult result = RunSequence(LoadSequence(file, Registry()), RunOptions{});
+  ASSERT_EQ(result.steps.size(), 2u);
+  const nlohmann::json& by_hand = result.steps[1].summary;
+  EXPECT_GT(by_hand["depth_mm"]["max"].get<double>(), 40.0);
+  EXPECT_EQ(by_hand["safety"]["energy_created_J"].get<double>(), 0.0);
+  EXPECT_LT(by_hand["safety"]["max_delivered_force_N"].get<double>(), 5.0);
+  EXPECT_EQ(result.steps[1].stats.guard_faults, 0u);
+  std::printf("key then hub by hand: the hub reaches %.4g mm, at most %.4g N felt\n",
+              by_hand["depth_mm"]["max"].get<double>(),
+              by_hand["safety"]["max_delivered_force_N"].get<double>());
+}
+
+}  // namespace
+}  // namespace fitfeel
