@@ -246,9 +246,9 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
   }
 }
 
-void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double depth,
-                                    const PartState& part, int* evaluations,
-                                    Eigen::Matrix3d* jacobian) const noexcept {
+Eigen::Matrix<double, 3, 2> JointStage::FeatureDifferences(std::size_t i, const Share& share,
+                                                           double depth, const PartState& part,
+                                                           int* evaluations) const noexcept {
   // Its wrench (force across the axis, own torque) against its relative offset u, differenced
   // along two directions: where it pushes, into its contact (against its force: a step out of a
   // contact pressed a fraction of a nanometre would cross its kink) and along the contact;
@@ -271,7 +271,11 @@ void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double de
     along.col(k) = (Eigen::Vector3d(w.force.x(), w.force.z(), w.torque.y()) - at) / kDifferenceStep;
   }
   // The basis is orthonormal: d/du = along * basis^T.
-  const Eigen::Matrix<double, 3, 2> d_u = along * basis.transpose();
+  return along * basis.transpose();
+}
+
+void JointStage::AddCarried(const Eigen::Matrix<double, 3, 2>& d_u, const Share& share,
+                            Eigen::Matrix3d* jacobian) const noexcept {
   // u = o + R(theta) a - b: du/dq = [I, perp(arm) / lever] with perp(arm) = (arm_z, -arm_x), the
   // arm's derivative along the twist. The twist the feature's analyzer also reads (its pose's
   // angle) is not differenced: the shipped analyzers ignore it, and a Jacobian that misses it
@@ -380,7 +384,10 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
         for (std::size_t i = 0; i < features_.size(); ++i) {
           Eigen::Matrix3d& share = run->feature_jacobian[i];
           share.setZero();
-          if (pushes[i]) AddFeatureJacobian(i, sum.share[i], depth, part, &sum.evaluations, &share);
+          if (pushes[i]) {
+            AddCarried(FeatureDifferences(i, sum.share[i], depth, part, &sum.evaluations),
+                       sum.share[i], &share);
+          }
           jacobian += Masked(share, active);
         }
         run->jacobian_pushes = pushes;
@@ -409,7 +416,8 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
           const Eigen::Vector3d predicted = here + run->feature_jacobian[i] * (run->beyond_at - q);
           if ((there - predicted).norm() <= kJacobianMiss * (there - here).norm()) continue;
           Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
-          AddFeatureJacobian(i, beyond[i], depth, part, &sum.evaluations, &stiffness);
+          AddCarried(FeatureDifferences(i, beyond[i], depth, part, &sum.evaluations), beyond[i],
+                     &stiffness);
           model += Masked(stiffness, active);
           Eigen::Vector3d push = there + stiffness * (q - run->beyond_at);
           for (int k = 0; k < 3; ++k) {

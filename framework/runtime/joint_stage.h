@@ -96,11 +96,17 @@ class FITFEEL_API JointStage final : public Stage {
   // evaluated at q (in the same tick), its contacts serve again, uncounted.
   void Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part, LawState* states,
                 Sum* sum, StageOutput* out) const noexcept;
-  // Adds to `jacobian` feature i's share of the derivative of the generalised force on (x, z,
-  // lever * twist), differenced at the pose `share` was evaluated at (two evaluations, counted in
-  // `evaluations`).
-  void AddFeatureJacobian(std::size_t i, const Share& share, double depth, const PartState& part,
-                          int* evaluations, Eigen::Matrix3d* jacobian) const noexcept;
+  // Feature i's wrench (force across the axis in the joint frame, own torque) differenced
+  // against its relative offset at the pose `share` was evaluated at (two evaluations, counted in
+  // `evaluations`): d(force x, force z, torque) / d(relative x, z).
+  Eigen::Matrix<double, 3, 2> FeatureDifferences(std::size_t i, const Share& share, double depth,
+                                                 const PartState& part,
+                                                 int* evaluations) const noexcept;
+  // Adds to `jacobian` the share of the derivative of the generalised force on (x, z, lever *
+  // twist) that a feature whose wrench changes with its relative offset by `d_u` has at the pose
+  // of `share`, carried through the feature's placement.
+  void AddCarried(const Eigen::Matrix<double, 3, 2>& d_u, const Share& share,
+                  Eigen::Matrix3d* jacobian) const noexcept;
 
   std::vector<JointFeature> features_;
   // Each feature's angle's cosine and sine.
