@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include "framework/core/error.h"
@@ -55,6 +56,9 @@ struct JointStage::RunState final : StageState {
   bool jacobian_valid = false;
   std::array<bool, kMaxJointFeatures> jacobian_pushes{};
   std::array<Eigen::Matrix3d, kMaxJointFeatures> feature_jacobian;
+  // Each share's differences against the feature's own relative offset, before the carry
+  // through its placement: the wall it pushes on where the Jacobian was taken.
+  std::array<Eigen::Matrix<double, 3, 2>, kMaxJointFeatures> feature_differences;
   std::array<LawState, kMaxJointFeatures> law;
   // The tick's work space, kept here so that a tick initialises none of it: the contacts of the
   // balance's last evaluation, and the pose and shares of the evaluation beyond a kink where the
@@ -116,6 +120,64 @@ Eigen::Matrix3d Masked(const Eigen::Matrix3d& jacobian, const std::array<bool, 3
   return masked;
 }
 
+// One piece of a round feature's contact (one without a torque of its own about its axis), as a
+// step past a kink reads it: the force across the axis is affine in the feature's relative
+// offset u on the piece, f + D (u - u0), with D its differences at u0. Where the axis is nearest
+// an edge of the assembly polygon, D is stiff along the edge's normal alone and the force
+// vanishes on the edge's line, the wall; where it is nearest a vertex, D is alike in every
+// direction and the force vanishes at the vertex. Between (two depth steps' polygons blended,
+// one at a vertex and the other on an edge), neither.
+struct Piece {
+  // Reads the piece from its differences `d` (force x, z and own torque against u) and its force
+  // `f` at u0, `at` = u0 - u_ref from the point its wall or vertex is placed from; false where it
+  // has a torque of its own or no stiffness.
+  bool Read(const Eigen::Matrix<double, 3, 2>& d, const Eigen::Vector2d& f, double torque,
+            const Eigen::Vector2d& at) {
+    if (torque != 0.0 || d.row(2).squaredNorm() != 0.0) return false;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> square;
+    square.computeDirect(d.topRows<2>().transpose() * d.topRows<2>());
+    const Eigen::Vector2d values = square.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    stiffness = values.y();
+    if (!(stiffness > 0.0)) return false;
+    vertex = values.x() >= (1.0 - kJacobianMiss) * stiffness;
+    wall = values.x() <= kJacobianMiss * stiffness;
+    if (vertex) {
+      point = at - d.topRows<2>().inverse() * f;
+    } else {
+      // normal . w = offset, where the force's part along its stiffest direction vanishes.
+      normal = square.eigenvectors().col(1);
+      const Eigen::Vector2d along = d.topRows<2>() * normal / stiffness;
+      offset = normal.dot(at) - along.dot(f) / stiffness;
+    }
+    return point.allFinite() && std::isfinite(offset);
+  }
+
+  // Where this piece's wall meets the next piece beyond a kink, from u_ref: the crossing of two
+  // walls, or the vertex the piece beyond is held at; false where this piece is no wall, or
+  // there is no such point (parallel walls, a piece beyond that is neither).
+  bool Meets(const Piece& beyond, Eigen::Vector2d* w) const {
+    if (!wall) return false;
+    if (beyond.vertex) {
+      *w = beyond.point;
+      return true;
+    }
+    if (!beyond.wall) return false;
+    Eigen::Matrix2d walls;
+    walls << normal.transpose(), beyond.normal.transpose();
+    // Walls within a milliradian of parallel (one wall differenced twice) meet nowhere near.
+    if (!(std::abs(walls.determinant()) > 1e-3)) return false;
+    *w = walls.inverse() * Eigen::Vector2d(offset, beyond.offset);
+    return w->allFinite();
+  }
+
+  double stiffness = 0.0;            // along its stiffest direction, N/m
+  bool wall = false;                 // stiff along that direction alone
+  bool vertex = false;               // alike in every direction
+  Eigen::Vector2d point{0.0, 0.0};   // a vertex's, from u_ref
+  Eigen::Vector2d normal{1.0, 0.0};  // a wall's line: normal . w = offset
+  double offset = 0.0;
+};
+
 }  // namespace
 
 JointStage::JointStage(std::vector<JointFeature> features, const Options& options)
@@ -144,6 +206,7 @@ JointStage::JointStage(std::vector<JointFeature> features, const Options& option
 std::unique_ptr<StageState> JointStage::DoMakeState() const {
   auto state = std::make_unique<RunState>();
   state->feature_jacobian.fill(Eigen::Matrix3d::Zero());
+  state->feature_differences.fill(Eigen::Matrix<double, 3, 2>::Zero());
   return state;
 }
 
@@ -250,9 +313,9 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
   }
 }
 
-void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double depth,
-                                    const PartState& part, int* evaluations,
-                                    Eigen::Matrix3d* jacobian) const noexcept {
+Eigen::Matrix<double, 3, 2> JointStage::FeatureDifferences(std::size_t i, const Share& share,
+                                                           double depth, const PartState& part,
+                                                           int* evaluations) const noexcept {
   // Its wrench (force across the axis, own torque) against its relative offset u, differenced
   // along two directions: where it pushes, into its contact (against its force: a step out of a
   // contact pressed a fraction of a nanometre would cross its kink) and along the contact;
@@ -275,7 +338,11 @@ void JointStage::AddFeatureJacobian(std::size_t i, const Share& share, double de
     along.col(k) = (Eigen::Vector3d(w.force.x(), w.force.z(), w.torque.y()) - at) / kDifferenceStep;
   }
   // The basis is orthonormal: d/du = along * basis^T.
-  const Eigen::Matrix<double, 3, 2> d_u = along * basis.transpose();
+  return along * basis.transpose();
+}
+
+void JointStage::AddCarried(const Eigen::Matrix<double, 3, 2>& d_u, const Share& share,
+                            Eigen::Matrix3d* jacobian) const noexcept {
   // u = o + R(theta) a - b: du/dq = [I, perp(arm) / lever] with perp(arm) = (arm_z, -arm_x), the
   // arm's derivative along the twist. The twist the feature's analyzer also reads (its pose's
   // angle) is not differenced: the shipped analyzers ignore it, and a Jacobian that misses it
@@ -322,6 +389,16 @@ double JointStage::AxialBalance(double device_depth, const Eigen::Vector3d& q,
   // To a micronewton of the spring's pull (and a picometre of depth).
   const double tolerance = 1e-6 * (1.0 + k * std::abs(device_depth - from));
   return IllinoisRoot(g, low, high, f_low, f_high, tolerance, kAxialSteps);
+}
+
+bool JointStage::OnPolygon(std::size_t i, const Share& near, const Eigen::Vector2d& w, double depth,
+                           const PartState& part, int* evaluations) const noexcept {
+  ContactState contact;
+  Wrench wrench;
+  FeatureWrench(i, near.relative + w, near.twist, depth, part, nullptr, false, &contact, &wrench);
+  ++*evaluations;
+  return Eigen::Vector2d(wrench.force.x(), wrench.force.z()).norm() <=
+         kJacobianMiss * near.force.norm();
 }
 
 void JointStage::DoEvaluate(const PartState& part, StageState* state,
@@ -396,6 +473,10 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
     const std::size_t n = features_.size();
     std::array<Share, kMaxJointFeatures>& beyond = run->beyond;
     bool kinked = false;
+    // Whether the last step was modelled on a vertex and overshot all the same: the walls
+    // differenced on either side of the kink met elsewhere than the body turns (two depth steps'
+    // polygons blended, each with a vertex of its own), and the next kink is modelled without.
+    bool corner_missed = false;
     // The forces derive from a convex energy (each feature's springs on its convex assembly
     // space or Winkler bed, the load, the spring and the proximal term) whose gradient is -g:
     // every step is a Newton direction (or, where that does not descend, the force itself)
@@ -424,7 +505,11 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
         for (std::size_t i = 0; i < features_.size(); ++i) {
           Eigen::Matrix3d& share = run->feature_jacobian[i];
           share.setZero();
-          if (pushes[i]) AddFeatureJacobian(i, sum.share[i], depth, part, &sum.evaluations, &share);
+          if (pushes[i]) {
+            run->feature_differences[i] =
+                FeatureDifferences(i, sum.share[i], depth, part, &sum.evaluations);
+            AddCarried(run->feature_differences[i], sum.share[i], &share);
+          }
           jacobian += Masked(share, active);
         }
         run->jacobian_pushes = pushes;
@@ -438,24 +523,77 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
       }
       // The contacts are piecewise linear in q, and the step is Newton's on the piece that holds
       // the body. Where the last line search stopped short of a kink (a contact that starts, or
-      // one that slides onto another wall), the contacts that kinked are modelled as on both
-      // sides of it (their spring here and the one beyond, whose push here is its force beyond
-      // less its stiffness times the way back): in a corner both walls hold the body. On the
-      // piece here alone the step would run into the kink again and the line search creep up
-      // to it step by step.
+      // one that slides onto another wall), the contacts that kinked are modelled past it: on the
+      // piece here alone the step would run into the kink again and the line search creep up to
+      // it step by step.
       Eigen::Matrix3d model = jacobian;
       Eigen::Vector3d pushed = g;
+      bool cornered = false;
       if (kinked) {
-        for (std::size_t i = 0; i < features_.size(); ++i) {
+        // The features whose force beyond is not what their piece here predicts. Where one
+        // alone kinked, the kink is its own (a corner of its polygon); where several did, their
+        // contacts meet each other's (one starts while another slides).
+        std::array<bool, kMaxJointFeatures> kinks{};
+        int kinking = 0;
+        for (std::size_t i = 0; i < n; ++i) {
           if (!beyond[i].pushes) continue;
           const Eigen::Vector3d here = sum.share[i].Generalised(lever_);
           const Eigen::Vector3d there = beyond[i].Generalised(lever_);
           const Eigen::Vector3d predicted = here + run->feature_jacobian[i] * (run->beyond_at - q);
-          if ((there - predicted).norm() <= kJacobianMiss * (there - here).norm()) continue;
+          kinks[i] = (there - predicted).norm() > kJacobianMiss * (there - here).norm();
+          kinking += kinks[i] ? 1 : 0;
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+          if (!kinks[i]) continue;
+          const Share& near = sum.share[i];
+          const Eigen::Matrix<double, 3, 2> d_beyond =
+              FeatureDifferences(i, beyond[i], depth, part, &sum.evaluations);
+          // Its pieces here and beyond, read where it kinked alone and pushes on both sides, as a
+          // round feature does without a torque of its own (a key's flank has one: its pieces are
+          // no polygon's about its axis).
+          Piece from, past;
+          const bool own = kinking == 1 && near.pushes &&
+                           from.Read(run->feature_differences[i], near.force, near.torque,
+                                     Eigen::Vector2d::Zero()) &&
+                           past.Read(d_beyond, beyond[i].force, beyond[i].torque,
+                                     beyond[i].relative - near.relative);
           Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();
-          AddFeatureJacobian(i, beyond[i], depth, part, &sum.evaluations, &stiffness);
+          Eigen::Vector3d push;
+          Eigen::Vector2d to_vertex;
+          if (own && !corner_missed && from.Meets(past, &to_vertex) &&
+              OnPolygon(i, near, to_vertex, depth, part, &sum.evaluations)) {
+            // It slid along a wall past the wall's end, the vertex where the next wall begins
+            // (checked on the polygon: walls that are not neighbours, where the step slid past
+            // several edges, meet outside it). Past the vertex the axis is pushed back to it
+            // alike from every side (the distance from a convex polygon is the distance from a
+            // vertex wherever that is the nearest point), and a hand's spring or a load that
+            // presses the body into the corner finds its balance there, nanometres off the
+            // vertex; along either wall a step would slide past it again. In place of its piece
+            // here: the vertex's spring, as stiff as the walls.
+            cornered = true;
+            const double k = std::max(from.stiffness, past.stiffness);
+            Share vertex = near;
+            vertex.force = k * to_vertex;
+            Eigen::Matrix<double, 3, 2> d_vertex = Eigen::Matrix<double, 3, 2>::Zero();
+            d_vertex.topRows<2>().diagonal().setConstant(-k);
+            AddCarried(d_vertex, vertex, &stiffness);
+            stiffness -= run->feature_jacobian[i];
+            push = vertex.Generalised(lever_) - near.Generalised(lever_);
+          } else if (own && !from.wall && past.wall) {
+            // Held at a vertex here, it slides off onto the wall beyond: in place of its piece
+            // here, the wall's.
+            AddCarried(d_beyond, beyond[i], &stiffness);
+            push = beyond[i].Generalised(lever_) + stiffness * (q - run->beyond_at) -
+                   near.Generalised(lever_);
+            stiffness -= run->feature_jacobian[i];
+          } else {
+            // Both sides of the kink: its spring here and the one beyond, whose push here is its
+            // force beyond less its stiffness times the way back. A contact about to start is
+            // counted before it does, and where two features' walls meet, both hold the body.
+            AddCarried(d_beyond, beyond[i], &stiffness);
+            push = beyond[i].Generalised(lever_) + stiffness * (q - run->beyond_at);
+          }
           model += Masked(stiffness, active);
-          Eigen::Vector3d push = there + stiffness * (q - run->beyond_at);
           for (int k = 0; k < 3; ++k) {
             if (!active[k]) push[k] = 0.0;
           }
@@ -481,6 +619,7 @@ void JointStage::DoEvaluate(const PartState& part, StageState* state,
       double t = 1.0;
       Eigen::Vector3d g_t = residual(q + step);
       double f_t = g_t.dot(step);
+      corner_missed = cornered && f_t < -line_tolerance;
       if (f_t < -line_tolerance) {
         run->beyond_at = sum.at;
         std::copy_n(sum.share.begin(), n, beyond.begin());

@@ -47,8 +47,9 @@ struct JointFeature {
 // q) that keeps it well posed where nothing but the load acts (clearance); once the body stops
 // moving the term vanishes and the balance is exact. Its Jacobian is differenced feature by
 // feature, each that pushes on its own offset into its contact, and carried through the
-// feature's placement; it is kept while the same features push and its steps land. Per tick: no
-// allocation, bounded work (kMaxIterations).
+// feature's placement; it is kept while the same features push and its steps land. Past a kink
+// where a round feature turned a corner of its assembly polygon, the step is Newton's on the
+// vertex's spring. Per tick: no allocation, bounded work (kMaxIterations).
 class FITFEEL_API JointStage final : public Stage {
  public:
   struct Options {
@@ -103,11 +104,22 @@ class FITFEEL_API JointStage final : public Stage {
                       RunState* run, int* evaluations) const noexcept;
   void Evaluate(const Eigen::Vector3d& q, double depth, const PartState& part, LawState* states,
                 Sum* sum, StageOutput* out) const noexcept;
-  // Adds to `jacobian` feature i's share of the derivative of the generalised force on (x, z,
-  // lever * twist), differenced at the pose `share` was evaluated at (two evaluations, counted in
+  // Feature i's wrench (force across the axis in the joint frame, own torque) differenced
+  // against its relative offset at the pose `share` was evaluated at (two evaluations, counted in
+  // `evaluations`): d(force x, force z, torque) / d(relative x, z).
+  Eigen::Matrix<double, 3, 2> FeatureDifferences(std::size_t i, const Share& share, double depth,
+                                                 const PartState& part,
+                                                 int* evaluations) const noexcept;
+  // Whether feature i, whose share is `near`, lies on its assembly polygon at `w` from near's
+  // relative offset: its force there is at most a tenth of near's (one evaluation, counted in
   // `evaluations`).
-  void AddFeatureJacobian(std::size_t i, const Share& share, double depth, const PartState& part,
-                          int* evaluations, Eigen::Matrix3d* jacobian) const noexcept;
+  bool OnPolygon(std::size_t i, const Share& near, const Eigen::Vector2d& w, double depth,
+                 const PartState& part, int* evaluations) const noexcept;
+  // Adds to `jacobian` the share of the derivative of the generalised force on (x, z, lever *
+  // twist) that a feature whose wrench changes with its relative offset by `d_u` has at the pose
+  // of `share`, carried through the feature's placement.
+  void AddCarried(const Eigen::Matrix<double, 3, 2>& d_u, const Share& share,
+                  Eigen::Matrix3d* jacobian) const noexcept;
 
   std::vector<JointFeature> features_;
   // Each feature's angle's cosine and sine.
