@@ -383,12 +383,25 @@ double JointStage::AxialBalance(double device_depth, const Eigen::Vector3d& q,
     *evaluations += sum.evaluations;
     return k * (device_depth - d) + sum.wrench.force.y();
   };
-  const double low = from, f_low = g(from);
-  const double high = device_depth, f_high = g(device_depth);
-  if (f_low * f_high > 0.0) return std::abs(f_low) < std::abs(f_high) ? from : device_depth;
   // To a micronewton of the spring's pull (and a picometre of depth).
   const double tolerance = 1e-6 * (1.0 + k * std::abs(device_depth - from));
-  return IllinoisRoot(g, low, high, f_low, f_high, tolerance, kAxialSteps);
+  // The body mostly lags the device by the resistance over the spring's stiffness: one step from
+  // the device by that lag (kept between the two depths) lands on the root where the resistance
+  // changes little over the lag, the usual tick; the bracket and its search only where not.
+  const double at_device = g(device_depth);
+  if (std::abs(at_device) <= tolerance) return device_depth;
+  const double lagged = std::clamp(device_depth + at_device / k,
+                                   std::min(from, device_depth), std::max(from, device_depth));
+  const double at_lagged = g(lagged);
+  if (std::abs(at_lagged) <= tolerance) return lagged;
+  if ((at_lagged > 0.0) != (at_device > 0.0)) {
+    return IllinoisRoot(g, lagged, device_depth, at_lagged, at_device, tolerance, kAxialSteps);
+  }
+  const double at_from = g(from);
+  if ((at_from > 0.0) == (at_lagged > 0.0)) {
+    return std::abs(at_from) < std::abs(at_lagged) ? from : lagged;
+  }
+  return IllinoisRoot(g, from, lagged, at_from, at_lagged, tolerance, kAxialSteps);
 }
 
 bool JointStage::OnPolygon(std::size_t i, const Share& near, const Eigen::Vector2d& w, double depth,
