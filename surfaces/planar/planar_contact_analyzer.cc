@@ -7,6 +7,7 @@
 
 #include "framework/core/error.h"
 #include "surfaces/common/grid_rows.h"
+#include "surfaces/planar/planar_geometry.h"
 
 namespace fitfeel::planar {
 namespace {
@@ -54,6 +55,8 @@ void PlanarContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
   CheckShape(inner, inner_sms);
   CheckShape(outer, outer_sms);
   texture_ = ContactTexture(inner.texture, outer.texture, settings.texture);
+  const auto* geometry = dynamic_cast<const PlanarGeometry*>(inner.geometry.get());
+  half_height_ = geometry != nullptr ? 0.5 * geometry->height() : 0.0;
   layout_ = LayoutOf(inner_sms.grid);
   const FaceLayout outer_layout = LayoutOf(outer_sms.grid);
   if (outer_layout.faces != layout_.faces ||
@@ -206,11 +209,15 @@ bool PlanarContactAnalyzer::Locate(double depth, std::size_t* k, double* t) cons
   return true;
 }
 
-double PlanarContactAnalyzer::AnchorAt(std::size_t k, int axis, double x) const noexcept {
+double PlanarContactAnalyzer::AnchorAt(std::size_t k, int axis, double x,
+                                       double twist_reach) const noexcept {
   if (!engaged_[k] || axis >= axes_) return x;
   const std::size_t a = Index(static_cast<int>(k), axis);
   if (empty_[a]) return balance_[a];
-  return std::clamp(x, lower_[a], upper_[a]);
+  const double low = lower_[a] + twist_reach, high = upper_[a] - twist_reach;
+  // Twisted beyond the play: both faces' edges press, the part held between them.
+  if (low > high) return 0.5 * (lower_[a] + upper_[a]);
+  return std::clamp(x, low, high);
 }
 
 void PlanarContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
@@ -235,10 +242,11 @@ void PlanarContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
         interference || (engaged_[nearest] && empty_[Index(static_cast<int>(nearest), axis)]);
   }
   out->interference = interference;
+  const double reach = std::isfinite(pose.angle) ? half_height_ * std::abs(pose.angle) : 0.0;
   Eigen::Vector2d anchor;
   for (int axis = 0; axis < 2; ++axis) {
     const double x = pose.offset[axis];
-    anchor[axis] = w0 * AnchorAt(k, axis, x) + w1 * AnchorAt(k1, axis, x);
+    anchor[axis] = w0 * AnchorAt(k, axis, x, reach) + w1 * AnchorAt(k1, axis, x, reach);
   }
   const Eigen::Vector2d away = pose.offset - anchor;
   out->offset_distance = pose.offset.norm();
@@ -259,7 +267,7 @@ void PlanarContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   Eigen::Vector2d anchor;
   for (int axis = 0; axis < 2; ++axis) {
     const double x = pose.offset[axis];
-    anchor[axis] = (1.0 - t) * AnchorAt(k, axis, x) + t * AnchorAt(k1, axis, x);
+    anchor[axis] = (1.0 - t) * AnchorAt(k, axis, x, 0.0) + t * AnchorAt(k1, axis, x, 0.0);
   }
   const int n =
       static_cast<int>(v_inner_.size() / (static_cast<Eigen::Index>(inner_edges_.size()) - 1));

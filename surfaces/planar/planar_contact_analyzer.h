@@ -73,11 +73,15 @@ class PlanarContactAnalyzer final : public ContactAnalyzer {
   static std::size_t Index(int k, int axis) { return 2 * static_cast<std::size_t>(k) + axis; }
   void SlicesAt(double depth, std::vector<Slice>* slices) const;
   bool Locate(double depth, std::size_t* k, double* t) const noexcept;
-  // Where the spring of eq. 9 pulls coordinate `x` of `axis` at step k.
-  double AnchorAt(std::size_t k, int axis, double x) const noexcept;
+  // Where the spring of eq. 9 pulls coordinate `x` of `axis` at step k, with each face's interval
+  // narrowed by `twist_reach` on both sides (a twisted part's face edges reach that much further).
+  double AnchorAt(std::size_t k, int axis, double x, double twist_reach) const noexcept;
 
   FaceLayout layout_;
   int axes_ = 1;
+  // Half the faces' contact height: a twist theta about the mating axis moves a face's edges
+  // across it by half_height_ * theta (a square's flats, a key's flank in its keyway).
+  double half_height_ = 0.0;
   std::vector<double> inner_edges_, outer_edges_;
   double inner_length_ = 0.0, outer_length_ = 0.0;
   double min_overlap_ = 0.0;  // slices shorter than this are rounding slivers, m

@@ -89,15 +89,34 @@ double PlanarGpsLaw::Normal(const ContactState& contact, Wrench* out) const noex
   return contact.interference ? pressed : lateral + pressed;
 }
 
+void PlanarGpsLaw::AddTwistTorque(const ContactState& contact, double twist,
+                                  Wrench* out) const noexcept {
+  const double push = std::hypot(out->force.x(), out->force.z());
+  if (!(push > 0.0) || !(std::abs(twist) > 0.0) || !std::isfinite(twist)) return;
+  // Twisted by theta, a face's closure varies linearly across its height h, the penetration
+  // being its most at the pressed edge. On a Winkler strip the push then acts at the centroid of
+  // the closure: where only part of the face touches (penetration <= h theta) a third of the
+  // touching width in from the edge; where all of it touches, h^2 theta / (12 c) off the centre
+  // with c the closure at the centre. The two agree at penetration = h theta (h / 6), and the
+  // lever falls to 0 as the twist does.
+  const double h = height_, slope = std::abs(twist), depth = contact.penetration;
+  const double lever = depth <= h * slope ? 0.5 * h - depth / (3.0 * slope)
+                                          : slope * h * h / (12.0 * (depth - 0.5 * h * slope));
+  // Against the twist: the pressed edge is the one the twist swings into the wall.
+  out->torque.y() -= std::copysign(lever * push, twist);
+}
+
 void PlanarGpsLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                               Wrench* out) const noexcept {
   const double normal = Normal(contact, out);
+  AddTwistTorque(contact, motion.angle, out);
   out->force.y() = friction_.Smoothed({motion.velocity.y(), 0.0}, normal).x();
 }
 
 void PlanarGpsLaw::DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
                                        LawState* state, Wrench* out) const noexcept {
   const double normal = Normal(contact, out);
+  AddTwistTorque(contact, motion.angle, out);
   out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
 }
 

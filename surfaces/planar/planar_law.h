@@ -71,6 +71,10 @@ class PlanarGpsLaw final : public ResistanceLaw {
  private:
   // Lateral force into `out`; returns the normal force on the faces.
   double Normal(const ContactState& contact, Wrench* out) const noexcept;
+  // The torque about the mating axis of the lateral push `out` holds, for a part twisted by
+  // `twist` about the axis: the push acts off the face's centre, towards the edge the twist
+  // swings into the wall (PlanarContactAnalyzer narrows the faces' interval by that reach).
+  void AddTwistTorque(const ContactState& contact, double twist, Wrench* out) const noexcept;
   double WallCompliance(double engaged_length) const noexcept;
 
   StickSlipFriction friction_;

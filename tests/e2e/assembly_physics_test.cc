@@ -141,6 +141,24 @@ TEST(KeyedHub, AxialForceIsTheSumOfItsFeaturesRunApart) {
               compared, largest, worst);
 }
 
+// The keyed hub's key flank height (scenarios/keyed-hub.yaml: 2.6 mm), half of it.
+constexpr double kKeyHalfHeight = 1.3e-3;
+
+// The twist at which a key's keyway wall, turning about the joint's axis, reaches the end `hi`
+// of the key's clearance: the root of a_m.x cos(theta) + a_m.z sin(theta) + h/2 theta - a_f.x - hi
+// by Newton's method (its slope is about the key's lever plus half its height).
+double FlankStop(const JointFeature& key, double hi) {
+  const Eigen::Vector2d a_m = key.moving_axis, a_f = key.fixed_axis;
+  double theta = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const double f = a_m.x() * std::cos(theta) + a_m.y() * std::sin(theta) +
+                     kKeyHalfHeight * theta - a_f.x() - hi;
+    const double slope = -a_m.x() * std::sin(theta) + a_m.y() * std::cos(theta) + kKeyHalfHeight;
+    theta -= f / slope;
+  }
+  return theta;
+}
+
 TEST(KeyedHub, TurnsFreelyUntilTheKeyFlankStopsIt) {
   const RobotJoint prepared("keyed-hub.yaml");
   const JointStage* joint = prepared.joint;
@@ -152,11 +170,10 @@ TEST(KeyedHub, TurnsFreelyUntilTheKeyFlankStopsIt) {
   ASSERT_LT(lo, hi) << "seed 1's key has clearance in its keyway";
   // The hub held on the axis (the robot), free to turn under a torque about +y: a point of the
   // hub at +z moves towards +x, so the hub keyway's offset from the key, (x of the hub keyway's
-  // axis turned by theta) - (x of the key's), grows until it reaches the clearance's upper end.
-  // By hand: a_m.x cos(theta) + a_m.z sin(theta) - a_f.x = hi.
-  const Eigen::Vector2d a_m = key.moving_axis, a_f = key.fixed_axis;
-  const double r = std::hypot(a_m.x(), a_m.y());
-  const double contact = std::asin((hi + a_f.x()) / r) - std::atan2(a_m.x(), a_m.y());
+  // axis turned by theta) - (x of the key's), grows, and the keyway's wall turns with it, its
+  // edge farthest from the axis (half the 2.6 mm flank height out) swinging furthest: the wall
+  // meets the key's flank where a_m.x cos(theta) + a_m.z sin(theta) + h/2 theta - a_f.x = hi.
+  const double contact = FlankStop(key, hi);
   for (const double torque : {1e-3, 1.0, 5.0}) {
     Driven hub(*joint);
     double angle = 0.0;
@@ -400,7 +417,8 @@ TEST(Sequence, TheSeatedKeySitsInTheHubStepWhereTheKeyStepLeftIt) {
   seated.run.seed = centred.run.seed = 2;  // the sequence's seed 1, plus the step's index
   const int key = sequence.steps[1].seated[0].feature;
   seated.features[key].placement.seat = Eigen::Vector2d(seat, 0.0);
-  const double lever = seated.features[key].placement.at.norm();
+  // The wall's edge that meets the flank lies half the flank's height beyond the key's axis.
+  const double lever = seated.features[key].placement.at.norm() + kKeyHalfHeight;
   const double shift = (FlankAngle(seated) - FlankAngle(centred)) * lever;
   EXPECT_NEAR(std::abs(shift), std::abs(seat), 0.01 * std::abs(seat) + 1e-9);
   std::printf("key then hub: the key seats %.4g um off its keyway's middle; the hub's flank "
@@ -579,22 +597,23 @@ TEST(KeyedHub, AWristTurnMeetsTheFlankWhereTheClearanceEnds) {
     const double torque = std::abs(out.wrench.torque.y());
     if (torque > 0.05) {
       contact_angle = out.pose.angle;
-      // Where the hub's keyway then is from the key, across its flanks.
+      // How far the hub keyway's wall then reaches towards the key's flank: its axis's offset
+      // from the key's and its edge's swing, half the flank's height out.
       const double c = std::cos(out.pose.angle), s = std::sin(out.pose.angle);
       relative_x = out.pose.offset.x() + c * key.moving_axis.x() + s * key.moving_axis.y() -
-                   key.fixed_axis.x();
+                   key.fixed_axis.x() + kKeyHalfHeight * std::abs(out.pose.angle);
       break;
     }
     quiet = std::max(quiet, torque);
   }
   ASSERT_FALSE(std::isnan(contact_angle)) << "the flank never took the wrist's turn";
   EXPECT_LT(quiet, 0.05);
-  // At the clearance's end: past it by less than the wrist's turn in one tick brings the keyway
-  // (1 urad at the key's 16.3 mm, 16 nm), the flank's stiffness (N/nm) taking the torque within
+  // At the clearance's end: past it by less than the wrist's turn in one tick brings the wall's
+  // edge (1 urad at 16.3 + 1.3 mm, 18 nm), the flank's stiffness (N/nm) taking the torque within
   // it. The hand's soft coupling lets the hub slide across within its bore's clearance as the
   // flank pushes, so the angle is not the held hub's.
   EXPECT_GT(relative_x, hi);
-  EXPECT_LT(relative_x, hi + key.moving_axis.norm() * 1e-6);
+  EXPECT_LT(relative_x, hi + (key.moving_axis.norm() + kKeyHalfHeight) * 1e-6);
   std::printf("keyed hub by the wrist: the flank takes the turn at %.5g mrad, %.4g nm from the "
               "clearance's end\n", contact_angle * 1e3, (relative_x - hi) * 1e9);
 }

@@ -267,3 +267,58 @@ TEST(PlanarLawTest, LateralStiffnessComesFromBothWalls) {
 
 }  // namespace
 }  // namespace fitfeel::planar
+
+namespace fitfeel::planar {
+namespace {
+
+// A square shaft twisted in its square hole (both ideal, 3 um of clearance on every side): its
+// flats' edges, half the flat's height h/2 = 9 mm from their centre lines, swing across the
+// clearance at theta = 3 um / 9 mm; beyond it the flats press at their edges, and the torque
+// opposes the twist with the push at the centroid of the pressed strip (a third of its width in
+// from the edge), h/2 - e / (3 theta) for an edge closure e.
+TEST(PlanarLawTest, ATwistedSquareShaftMeetsItsFlatsAtTheEdgesAndIsTurnedBack) {
+  const double clearance = 3e-6, h = 18e-3;
+  PartSpec shaft = MakePart("shaft", Role::kInner, 20e-3, -21e-6, 0.0, 30e-3, h, 4);
+  PartSpec hole = MakePart("hole", Role::kOuter, 20e-3, 0.0, 21e-6, 30e-3, h, 4);
+  PlanarDiscretizer discretizer;
+  auto uniform = [&](const PartSpec& part, double v) {
+    SkinModelShape sms;
+    sms.grid = discretizer.Discretize(part, Resolution{12, 8});
+    sms.variation = Eigen::VectorXd::Constant(sms.grid.size(), v);
+    return sms;
+  };
+  ModelSettings settings;
+  settings.contact_stiffness = 1e8;  // 100 N/um
+  PlanarContactAnalyzer analyzer;
+  analyzer.Prepare(shaft, uniform(shaft, -clearance), hole, uniform(hole, 0.0), settings);
+  PlanarGpsLaw law;
+  law.Prepare(shaft, hole, settings);
+  MatingPose pose;
+  pose.depth = 30e-3;
+  pose.offset = {1e-6, 0.0};  // resting 1 um towards +x: 2 um of play left on that side
+  const double touch = (clearance - 1e-6) / (h / 2);
+  ContactState contact;
+  Wrench w;
+  MatingMotion motion;
+  // Within the play nothing touches: no push, no torque.
+  pose.angle = motion.angle = 0.9 * touch;
+  analyzer.Evaluate(pose, &contact);
+  law.Evaluate(contact, motion, &w);
+  EXPECT_EQ(contact.penetration, 0.0);
+  EXPECT_EQ(w.torque.y(), 0.0);
+  // Beyond it the +x flat's edge closes by e = h/2 theta - 2 um; the push k e acts a third of the
+  // pressed width in, e / (3 theta), from the edge.
+  for (const double theta : {1.1 * touch, 1.5 * touch, -1.5 * touch}) {
+    pose.angle = motion.angle = theta;
+    analyzer.Evaluate(pose, &contact);
+    law.Evaluate(contact, motion, &w);
+    const double e = h / 2 * std::abs(theta) - 2e-6;
+    EXPECT_NEAR(contact.penetration, e, 1e-15) << theta;
+    EXPECT_NEAR(w.force.x(), -1e8 * e, 1e-6) << theta;
+    const double lever = h / 2 - e / (3.0 * std::abs(theta));
+    EXPECT_NEAR(w.torque.y(), -std::copysign(lever * 1e8 * e, theta), 1e-9) << theta;
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::planar
