@@ -191,6 +191,19 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
     feature.placement = ParsePlacement(f, i == 0, parts.inner.name, parts.outer.name);
     feature.inner = std::move(parts.inner);
     feature.outer = std::move(parts.outer);
+    // A feature that meets only after the datum's parts have passed each other lies outside
+    // them along the axis: nothing of the joint would hold while it engages.
+    if (i > 0) {
+      const MatingFeature& datum = scene->features.front();
+      const double stroke =
+          datum.inner.geometry->mating_length() + datum.outer.geometry->mating_length();
+      if (!(feature.placement.engages_after < stroke)) {
+        const ConfigNode after = f.Child("engages_after");
+        after.Fail("a place within the first feature's stroke (its parts' lengths together, " +
+                       FormatQuantity(stroke, Dimension::kLength) + ")",
+                   after.Describe());
+      }
+    }
     scene->features.push_back(std::move(feature));
   }
 

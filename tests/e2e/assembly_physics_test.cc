@@ -310,6 +310,11 @@ TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
   // A spherical feature turns about a centre: it cannot join an axial joint.
   refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.planar", "    surface: fitfeel.surface.spherical"));
   EXPECT_NE(refusal.find("features.key.surface"), std::string::npos) << refusal;
+  // A feature that would meet only after the datum's shaft and hub have passed each other
+  // (60 + 45 mm): outside them along the axis.
+  refusal = Refusal(Replaced(hub, "engages_after: 5 mm", "engages_after: 110 mm"));
+  EXPECT_NE(refusal.find("features.key.engages_after"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("stroke"), std::string::npos) << refusal;
   // Features each admitted alone but too costly together: refused at `features`.
   refusal = Refusal(Replaced(ShippedText("two-pin-location.yaml"), "  resolution: auto",
                              "  resolution: {rows: 1250, columns: 1000}"));
