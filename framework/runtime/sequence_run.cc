@@ -46,7 +46,12 @@ nlohmann::json StepSummary(const Sequence& sequence, std::size_t k, std::uint64_
   s["step"] = sequence.steps.at(k).scene.name;
   s["seed"] = seed + k;
   s["folder"] = sequence.steps[k].scene.name;
-  s["seated_offset_um"] = {r.final_pose.offset.x() * 1e6, r.final_pose.offset.y() * 1e6};
+  // Where the step left its part for a later step to sit on: nowhere (zero offset) when it
+  // ended in free motion.
+  const bool seated = r.final_stage == StageId::kConstrained;
+  s["seated"] = seated;
+  s["seated_offset_um"] = {seated ? r.final_pose.offset.x() * 1e6 : 0.0,
+                           seated ? r.final_pose.offset.y() * 1e6 : 0.0};
   s["final_depth_mm"] = r.final_pose.depth * 1e3;
   s["axial_resistance_N"] = r.summary.value("axial_resistance_N", nlohmann::json());
   s["radial_resistance_N"] = r.summary.value("radial_resistance_N", nlohmann::json());
@@ -64,14 +69,18 @@ SequenceResult RunSequence(const Sequence& sequence, const RunOptions& options,
     std::vector<Eigen::Vector2d> offsets;
     for (std::size_t k = 0; k < sequence.steps.size(); ++k) {
       const SequenceStep& step = sequence.steps[k];
+      // A part whose step ended before it mated (a duration too short for the device to bring
+      // it in) was never seated: the later step takes that feature's side at its drawn place,
+      // and says so. The run goes on: whether a step seats its part is the run's outcome, not
+      // the scene's, and `validate` cannot refuse it.
+      std::vector<std::string> notes;
       for (const SequenceStep::Seat& seat : step.seated) {
         if (result.steps.at(seat.step).final_stage != StageId::kConstrained) {
-          throw UserError("sequence '" + sequence.name + "': step '" +
-                          sequence.steps[seat.step].scene.name +
-                          "' ended with its part in free motion, not seated, so step '" +
-                          step.scene.name + "' cannot sit its feature '" +
+          notes.push_back("note: step '" + sequence.steps[seat.step].scene.name +
+                          "' ended with its part in free motion, never seated: step '" +
+                          step.scene.name + "' takes its feature '" +
                           step.scene.features.at(seat.feature).name +
-                          "' on it (give that step a longer duration)");
+                          "' at its drawn place (a longer duration seats it)");
         }
       }
       Scene scene = StepScene(sequence, k, seed, offsets);
@@ -80,7 +89,10 @@ SequenceResult RunSequence(const Sequence& sequence, const RunOptions& options,
       if (!options.out_dir.empty()) step_options.out_dir = options.out_dir / scene.name;
       if (watch.starting) step_options.observer = watch.starting(k, scene);
       result.steps.push_back(RunScene(std::move(scene), step_options));
-      offsets.push_back(result.steps.back().final_pose.offset);
+      RunResult& done = result.steps.back();
+      done.notes.insert(done.notes.end(), notes.begin(), notes.end());
+      offsets.push_back(done.final_stage == StageId::kConstrained ? done.final_pose.offset
+                                                                  : Eigen::Vector2d::Zero());
       steps.push_back(StepSummary(sequence, k, seed, result.steps.back()));
       if (watch.finished) watch.finished(k, result.steps.back(), steps.back());
     }

@@ -433,11 +433,13 @@ TEST(Sequence, TheSeatedKeySitsInTheHubStepWhereTheKeyStepLeftIt) {
             RunScene(seated, options).summary["axial_resistance_N"]);
 }
 
-TEST(Sequence, AStepThatCannotSeatLeavesNoOutputs) {
+TEST(Sequence, AStepThatNeverSeatsItsPartLeavesTheNextOnItsDrawnPlace) {
   std::string text = ShippedText("key-then-hub.yaml");
-  // Step 1 stops before the key reaches its keyway: there is nothing for step 2 to sit on.
+  // Step 1 stops before the key reaches its keyway: there is nothing for step 2 to sit on, so
+  // step 2 takes the key at its drawn place and says so; the run goes on (whether a step seats
+  // its part is the run's outcome, which `validate` cannot know).
   text = Replaced(text, "    duration: 0.54 s", "    duration: 0.05 s");
-  const fs::path dir = fs::path(testing::TempDir()) / "sequence-refused";
+  const fs::path dir = fs::path(testing::TempDir()) / "sequence-unseated";
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path file = dir / "short.yaml";
@@ -446,16 +448,18 @@ TEST(Sequence, AStepThatCannotSeatLeavesNoOutputs) {
     out << text;
   }
   const Sequence sequence = LoadSequence(file, Registry());
-  RunOptions options;
-  options.out_dir = dir / "out";
-  try {
-    RunSequence(sequence, options);
-    ADD_FAILURE() << "a seat on a part in free motion ran";
-  } catch (const UserError& e) {
-    EXPECT_NE(std::string(e.what()).find("free motion"), std::string::npos) << e.what();
-  }
-  EXPECT_FALSE(fs::exists(options.out_dir / "key" / "trace.csv"));
-  EXPECT_FALSE(fs::exists(options.out_dir / "summary.json"));
+  const SequenceResult result = RunSequence(sequence, RunOptions{});
+  ASSERT_EQ(result.steps.size(), 2u);
+  EXPECT_NE(result.steps[0].final_stage, StageId::kConstrained);
+  EXPECT_FALSE(result.summary_json["steps"][0]["seated"].get<bool>());
+  EXPECT_EQ(result.summary_json["steps"][0]["seated_offset_um"][0].get<double>(), 0.0);
+  ASSERT_FALSE(result.steps[1].notes.empty());
+  EXPECT_NE(result.steps[1].notes.back().find("never seated"), std::string::npos);
+  // The hub step as run equals the hub step with the key at its drawn place.
+  Scene unseated = sequence.steps[1].scene;
+  unseated.run.seed = 2;
+  EXPECT_EQ(result.steps[1].summary["axial_resistance_N"],
+            RunScene(unseated, RunOptions{}).summary["axial_resistance_N"]);
 }
 
 TEST(Sequence, SeatsAndStepsAreCheckedAtLoad) {
