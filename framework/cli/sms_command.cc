@@ -98,6 +98,31 @@ struct SmsOptions {
   bool allow_large = false;
 };
 
+// The part's characteristics evaluated on its skin model shape against its specification, one
+// line each; whether every one passes (a measured part that misses its drawing is a finding about
+// the part, not a failure of the generator: it passes here).
+bool PrintChecks(const SurfaceType& surface, const PartSpec& p, const SkinModelShape& sms) {
+  std::vector<CharacteristicCheck> checks;
+  try {
+    checks = surface.EvaluateCharacteristics(p, sms);
+  } catch (const UnsupportedError& e) {
+    // A surface type without a metrology binding still has a shape worth writing.
+    std::cout << "  characteristics not evaluated: " << e.what() << "\n";
+    return true;
+  }
+  bool all_pass = true;
+  std::printf("  %-22s %14s %30s  %s\n", "characteristic", "evaluated", "spec", "result");
+  for (const CharacteristicCheck& check : checks) {
+    // Same allowance as the conformance suite: 0.1 nm of evaluation rounding.
+    const bool pass = check.value >= check.lower - 1e-10 && check.value <= check.upper + 1e-10;
+    if (!p.measured) all_pass = all_pass && pass;
+    const std::string spec = "[" + Micrometres(check.lower) + ", " + Micrometres(check.upper) + "]";
+    std::printf("  %-22s %14s %30s  %s\n", check.name.c_str(), Micrometres(check.value).c_str(),
+                spec.c_str(), pass ? "pass" : "FAIL");
+  }
+  return all_pass;
+}
+
 void Run(const SmsOptions& options) {
   // Until the shapes are drawn nothing is written: SIGINT or SIGTERM ends the process at once;
   // then the writes complete.
@@ -172,24 +197,28 @@ void Run(const SmsOptions& options) {
       std::cout << "  measured: " << MeasurementKindName(p.measured->kind) << " "
                 << p.measured->file.string() << "\n";
     }
-    std::vector<CharacteristicCheck> checks;
-    try {
-      checks = scene.surface->EvaluateCharacteristics(p, sms);
-    } catch (const UnsupportedError& e) {
-      // A surface type without a metrology binding still has a shape worth writing.
-      std::cout << "  characteristics not evaluated: " << e.what() << "\n";
-      continue;
-    }
-    std::printf("  %-22s %14s %30s  %s\n", "characteristic", "evaluated", "spec", "result");
-    for (const CharacteristicCheck& check : checks) {
-      // Same allowance as the conformance suite: 0.1 nm of evaluation rounding.
-      const bool pass = check.value >= check.lower - 1e-10 && check.value <= check.upper + 1e-10;
-      // A measured part that misses its drawing is a finding about the part, not a bug.
-      if (!p.measured) all_pass = all_pass && pass;
-      const std::string spec =
-          "[" + Micrometres(check.lower) + ", " + Micrometres(check.upper) + "]";
-      std::printf("  %-22s %14s %30s  %s\n", check.name.c_str(), Micrometres(check.value).c_str(),
-                  spec.c_str(), pass ? "pass" : "FAIL");
+    all_pass = PrintChecks(*scene.surface, p, sms) && all_pass;
+  }
+  // A several-feature scene: every further feature's two parts, drawn after the datum's from the
+  // same generator, in the order `fitfeel run` draws them, so that these are the shapes it feels.
+  // --part, -o and --measurement address the datum feature's parts.
+  if (scene.features.size() > 1 && options.part.empty()) {
+    for (std::size_t i = 1; i < scene.features.size(); ++i) {
+      const MatingFeature& feature = scene.features[i];
+      SkinModelShapes more = GenerateSkinModelShapes(feature, rng);
+      const SkinModelShape* feature_shapes[2] = {&more.inner, &more.outer};
+      const PartSpec* feature_parts[2] = {&feature.inner, &feature.outer};
+      for (int k = 0; k < 2; ++k) {
+        const PartSpec& p = *feature_parts[k];
+        const SkinModelShape& sms = *feature_shapes[k];
+        std::cout << "feature '" << feature.name << "', part '" << p.name << "' ("
+                  << (p.role == Role::kInner ? "inner" : "outer")
+                  << "): " << p.geometry->Describe() << "\n"
+                  << "  grid " << sms.grid.rows << " x " << sms.grid.columns << " = "
+                  << sms.grid.size() << " cells, form regenerations " << sms.regenerations
+                  << ", cells scaled back " << sms.scaled_back_cells << "\n";
+        all_pass = PrintChecks(*feature.surface, p, sms) && all_pass;
+      }
     }
   }
   if (!all_pass) {

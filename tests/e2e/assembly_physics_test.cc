@@ -23,6 +23,7 @@
 #include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/sequence_run.h"
+#include "framework/testing/cli_runner.h"
 #include "framework/scenario/sequence.h"
 #include "framework/scenario/scene.h"
 
@@ -703,6 +704,27 @@ TEST(Sequence, AHandSlidesTheHubOverTheSeatedKey) {
   std::printf("key then hub by hand: the hub reaches %.4g mm, at most %.4g N felt\n",
               by_hand["depth_mm"]["max"].get<double>(),
               by_hand["safety"]["max_delivered_force_N"].get<double>());
+}
+
+}  // namespace
+}  // namespace fitfeel
+
+namespace fitfeel {
+namespace {
+
+// `fitfeel sms` of a several-feature scene draws and checks every feature's two parts, in the
+// order a run draws them, each against its own specification.
+TEST(SeveralFeatures, SmsChecksEveryFeaturesParts) {
+  const test_support::CliResult r = test_support::RunFitfeel(
+      "sms " + test_support::ShellQuote(
+                   (fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "keyed-hub.yaml").string()));
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("part 'shaft' (inner): shaft d=30 mm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("feature 'key', part 'shaft' (inner): pair of flat faces b=8 mm"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("feature 'key', part 'hub' (outer)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("FAIL"), std::string::npos) << r.out;
 }
 
 }  // namespace
