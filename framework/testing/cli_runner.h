@@ -85,6 +85,12 @@ inline std::string ReadText(const std::filesystem::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// Writes `text` to `file` (a scenario a test edits), replacing what was there.
+inline void WriteText(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
 // The lines of a text, without their line breaks.
 inline std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> out;

@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <string>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -23,26 +23,19 @@
 #include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/sequence_run.h"
-#include "framework/testing/cli_runner.h"
-#include "framework/scenario/sequence.h"
 #include "framework/scenario/scene.h"
+#include "framework/scenario/sequence.h"
+#include "framework/testing/build_tree_plugins.h"
+#include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
 
 namespace fitfeel {
 namespace {
 
 namespace fs = std::filesystem;
 
-const PluginRegistry& Registry() {
-  static const PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
-
 Scene Shipped(const char* file) {
-  return LoadScene(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / file, Registry());
+  return LoadScene(test_support::ShippedScenario(file), test_support::BuildTreePlugins());
 }
 
 // A robot: it holds what it holds rigidly (no stiffness limit), so the joint stage settles.
@@ -138,8 +131,9 @@ TEST(KeyedHub, AxialForceIsTheSumOfItsFeaturesRunApart) {
         << "at depth " << depth * 1e3 << " mm";
   }
   EXPECT_GT(compared, 400);
-  std::printf("keyed hub: %d depths, largest axial force %.4g N, worst |sum - joint| / joint %.3g\n",
-              compared, largest, worst);
+  std::printf(
+      "keyed hub: %d depths, largest axial force %.4g N, worst |sum - joint| / joint %.3g\n",
+      compared, largest, worst);
 }
 
 // The keyed hub's key flank height (scenarios/keyed-hub.yaml: 2.6 mm), half of it.
@@ -233,8 +227,8 @@ TEST(TwoPinPlate, JamsExactlyWhereThePitchMismatchExceedsTheClearances) {
     const double e = b.moving_axis.x() - b.fixed_axis.x();
     const double room = std::min(hi_a, hi_b - e) - std::max(lo_a, lo_b - e);
     if (!(lo_a <= hi_a) || !(lo_b <= hi_b)) {
-      std::printf("%4d  %17.3f  %9s  %7.4g  pressed over a pin\n", static_cast<int>(seed),
-                  e * 1e6, "-", axial);
+      std::printf("%4d  %17.3f  %9s  %7.4g  pressed over a pin\n", static_cast<int>(seed), e * 1e6,
+                  "-", axial);
       // The press needs more than the weight's friction (0.28 N) alone.
       EXPECT_GT(std::abs(axial), 1.0) << "seed " << seed;
       ++pressed;
@@ -255,8 +249,9 @@ TEST(TwoPinPlate, JamsExactlyWhereThePitchMismatchExceedsTheClearances) {
                                 << axial << " N";
     (jams ? jammed : free) += 1;
   }
-  std::printf("two-pin plate: %d jam, %d slide on, %d within 1 um of the edge, %d pressed over a pin\n",
-              jammed, free, skipped, pressed);
+  std::printf(
+      "two-pin plate: %d jam, %d slide on, %d within 1 um of the edge, %d pressed over a pin\n",
+      jammed, free, skipped, pressed);
   // The scene is chosen so that both happen: the positions' zones are of the clearances' size.
   EXPECT_EQ(pressed, 0) << "E7 holes clear an m6 pin on their own";
   EXPECT_GT(jammed, 3);
@@ -270,8 +265,7 @@ namespace fitfeel {
 namespace {
 
 std::string ShippedText(const char* file) {
-  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / file);
-  return std::string(std::istreambuf_iterator<char>(in), {});
+  return test_support::ReadText(test_support::ShippedScenario(file));
 }
 
 std::string Replaced(std::string text, const std::string& from, const std::string& to) {
@@ -284,7 +278,7 @@ std::string Replaced(std::string text, const std::string& from, const std::strin
 // The loader's refusal of `text`, or "" when it loads.
 std::string Refusal(const std::string& text) {
   try {
-    LoadSceneFromYaml(text, "edited.yaml", Registry());
+    LoadSceneFromYaml(text, "edited.yaml", test_support::BuildTreePlugins());
   } catch (const ScenarioError& e) {
     return e.what();
   }
@@ -295,13 +289,15 @@ TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
   const std::string hub = ShippedText("keyed-hub.yaml");
   ASSERT_EQ(Refusal(hub), "");
   // The key placed inside the shaft: its cross-section overlaps the bore's shaft.
-  std::string refusal = Refusal(Replaced(hub, "at: {x: 0 mm, z: 16.3 mm}", "at: {x: 0 mm, z: 10 mm}"));
+  std::string refusal =
+      Refusal(Replaced(hub, "at: {x: 0 mm, z: 16.3 mm}", "at: {x: 0 mm, z: 10 mm}"));
   EXPECT_NE(refusal.find("edited.yaml:"), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("features.key.at"), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("overlapping"), std::string::npos) << refusal;
   // The datum feature placed off the joint's axis.
-  refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.cylindrical\n",
-                             "    surface: fitfeel.surface.cylindrical\n    at: {x: 1 mm, z: 0 mm}\n"));
+  refusal =
+      Refusal(Replaced(hub, "    surface: fitfeel.surface.cylindrical\n",
+                       "    surface: fitfeel.surface.cylindrical\n    at: {x: 1 mm, z: 0 mm}\n"));
   EXPECT_NE(refusal.find("features.bore.at"), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("datum"), std::string::npos) << refusal;
   // A feature joining another pair of parts.
@@ -309,7 +305,8 @@ TEST(SeveralFeatures, BadPlacementsAreRefusedAtTheirKey) {
                              "      collar:\n        role: outer\n        size: 8 mm JS9"));
   EXPECT_NE(refusal.find("features.key.parts"), std::string::npos) << refusal;
   // A spherical feature turns about a centre: it cannot join an axial joint.
-  refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.planar", "    surface: fitfeel.surface.spherical"));
+  refusal = Refusal(Replaced(hub, "    surface: fitfeel.surface.planar",
+                             "    surface: fitfeel.surface.spherical"));
   EXPECT_NE(refusal.find("features.key.surface"), std::string::npos) << refusal;
   // A feature that would meet only after the datum's shaft and hub have passed each other
   // (60 + 45 mm): outside them along the axis.
@@ -364,7 +361,8 @@ TEST(KeyedHub, AHandSlidesItOnPassively) {
   const std::string text = ByHand("keyed-hub.yaml", "  radial: held\n", "aim_error: [0.3 mm, 0 mm]",
                                   44.0, 4.0, "duration: 5.2 s", "duration: 4.5 s");
   RunOptions options;
-  const RunResult result = RunScene(LoadSceneFromYaml(text, "hand.yaml", Registry()), options);
+  const RunResult result =
+      RunScene(LoadSceneFromYaml(text, "hand.yaml", test_support::BuildTreePlugins()), options);
   EXPECT_EQ(result.stats.guard_faults, 0u);
   EXPECT_GT(result.summary["depth_mm"]["max"].get<double>(), 40.0);
   EXPECT_EQ(result.summary["safety"]["energy_created_J"].get<double>(), 0.0);
@@ -402,9 +400,8 @@ double FlankAngle(const Scene& scene) {
 }
 
 TEST(Sequence, TheSeatedKeySitsInTheHubStepWhereTheKeyStepLeftIt) {
-  const Sequence sequence =
-      LoadSequence(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "key-then-hub.yaml",
-                   Registry());
+  const Sequence sequence = LoadSequence(test_support::ShippedScenario("key-then-hub.yaml"),
+                                         test_support::BuildTreePlugins());
   ASSERT_EQ(sequence.steps.size(), 2u);
   ASSERT_EQ(sequence.steps[1].seated.size(), 1u);
   RunOptions options;  // no folder: nothing written
@@ -427,8 +424,10 @@ TEST(Sequence, TheSeatedKeySitsInTheHubStepWhereTheKeyStepLeftIt) {
   const double lever = seated.features[key].placement.at.norm() + kKeyHalfHeight;
   const double shift = (FlankAngle(seated) - FlankAngle(centred)) * lever;
   EXPECT_NEAR(std::abs(shift), std::abs(seat), 0.01 * std::abs(seat) + 1e-9);
-  std::printf("key then hub: the key seats %.4g um off its keyway's middle; the hub's flank "
-              "stop moves %.4g um\n", seat * 1e6, shift * 1e6);
+  std::printf(
+      "key then hub: the key seats %.4g um off its keyway's middle; the hub's flank "
+      "stop moves %.4g um\n",
+      seat * 1e6, shift * 1e6);
   // The hub step as the sequence ran it is the seated one, bit for bit.
   EXPECT_EQ(result.steps[1].summary["axial_resistance_N"],
             RunScene(seated, options).summary["axial_resistance_N"]);
@@ -440,15 +439,9 @@ TEST(Sequence, AStepThatNeverSeatsItsPartLeavesTheNextOnItsDrawnPlace) {
   // step 2 takes the key at its drawn place and says so; the run goes on (whether a step seats
   // its part is the run's outcome, which `validate` cannot know).
   text = Replaced(text, "    duration: 0.54 s", "    duration: 0.05 s");
-  const fs::path dir = fs::path(testing::TempDir()) / "sequence-unseated";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const fs::path file = dir / "short.yaml";
-  {
-    std::ofstream out(file);
-    out << text;
-  }
-  const Sequence sequence = LoadSequence(file, Registry());
+  const fs::path file = test_support::EmptyTestFolder("assembly") / "short.yaml";
+  test_support::WriteText(file, text);
+  const Sequence sequence = LoadSequence(file, test_support::BuildTreePlugins());
   const SequenceResult result = RunSequence(sequence, RunOptions{});
   ASSERT_EQ(result.steps.size(), 2u);
   EXPECT_NE(result.steps[0].final_stage, StageId::kConstrained);
@@ -465,16 +458,12 @@ TEST(Sequence, AStepThatNeverSeatsItsPartLeavesTheNextOnItsDrawnPlace) {
 
 TEST(Sequence, SeatsAndStepsAreCheckedAtLoad) {
   const std::string text = ShippedText("key-then-hub.yaml");
-  const fs::path dir = fs::path(testing::TempDir()) / "sequence-load";
-  fs::create_directories(dir);
+  const fs::path dir = test_support::EmptyTestFolder("assembly");
   const auto refusal = [&](const std::string& edited) -> std::string {
     const fs::path file = dir / "edited.yaml";
-    {
-      std::ofstream out(file);
-      out << edited;
-    }
+    test_support::WriteText(file, edited);
     try {
-      LoadSequence(file, Registry());
+      LoadSequence(file, test_support::BuildTreePlugins());
     } catch (const ScenarioError& e) {
       return e.what();
     }
@@ -493,7 +482,7 @@ TEST(Sequence, SeatsAndStepsAreCheckedAtLoad) {
   EXPECT_NE(r.find("steps[1].step"), std::string::npos) << r;
   // The scene loader takes one step's scene, never a sequence.
   try {
-    LoadScene(dir / "edited.yaml", Registry());
+    LoadScene(dir / "edited.yaml", test_support::BuildTreePlugins());
     ADD_FAILURE() << "LoadScene took a sequence";
   } catch (const ScenarioError& e) {
     EXPECT_NE(std::string(e.what()).find("steps"), std::string::npos) << e.what();
@@ -548,7 +537,8 @@ TEST(KeyedHub, FindsItsKeywayOrStopsOnTheKeysEnd) {
   // stands where the key's lead-in begins: the key's depth 0 less its lead-in's capture depth,
   // plus the face's place in the lead-in.
   {
-    const double face = key.engages_after - key.lead_in.capture_depth() + key.lead_in.boundary()[0].x();
+    const double face =
+        key.engages_after - key.lead_in.capture_depth() + key.lead_in.boundary()[0].x();
     Driven hub(*joint);
     const double start = 1.5 * capture / lever;
     double stop_depth = std::numeric_limits<double>::quiet_NaN(), axial = 0.0, across = 0.0,
@@ -569,8 +559,10 @@ TEST(KeyedHub, FindsItsKeywayOrStopsOnTheKeysEnd) {
     EXPECT_NEAR(axial, -key.lead_in_stiffness * (depth - face), 1e-6 * std::abs(axial) + 1.0);
     // Along the axis only: an end on a face turns nothing.
     EXPECT_LT(across, 1.0);
-    std::printf("keyed hub: held %.4g mrad off, the key's end stops the hub at %.4g mm; 50 um "
-                "further takes %.4g N\n", start * 1e3, stop_depth * 1e3, axial);
+    std::printf(
+        "keyed hub: held %.4g mrad off, the key's end stops the hub at %.4g mm; 50 um "
+        "further takes %.4g N\n",
+        start * 1e3, stop_depth * 1e3, axial);
   }
 }
 
@@ -624,8 +616,10 @@ TEST(KeyedHub, AWristTurnMeetsTheFlankWhereTheClearanceEnds) {
   // flank pushes, so the angle is not the held hub's.
   EXPECT_GT(relative_x, hi);
   EXPECT_LT(relative_x, hi + (key.moving_axis.norm() + kKeyHalfHeight) * 1e-6);
-  std::printf("keyed hub by the wrist: the flank takes the turn at %.5g mrad, %.4g nm from the "
-              "clearance's end\n", contact_angle * 1e3, (relative_x - hi) * 1e9);
+  std::printf(
+      "keyed hub by the wrist: the flank takes the turn at %.5g mrad, %.4g nm from the "
+      "clearance's end\n",
+      contact_angle * 1e3, (relative_x - hi) * 1e9);
 }
 
 }  // namespace
@@ -638,13 +632,14 @@ namespace {
 // jams, the plate stays where it jammed and the hand feels its coupling spring, never the pins'
 // kilonewtons, and no energy is created.
 TEST(TwoPinPlate, AHandFeelsTheJamThroughItsSpring) {
-  const std::string text = ByHand("two-pin-location.yaml", "  radial: held\n  rotation: free\n",
-                                  "", 10.0, 1.5, "duration: 1.3 s", "duration: 2 s");
+  const std::string text = ByHand("two-pin-location.yaml", "  radial: held\n  rotation: free\n", "",
+                                  10.0, 1.5, "duration: 1.3 s", "duration: 2 s");
   // Seed 3 jams for the robot (13 um short of room), seed 7 slides on (2.9 um to spare).
   for (const std::uint64_t seed : {3u, 7u}) {
     RunOptions options;
     options.seed = seed;
-    const RunResult result = RunScene(LoadSceneFromYaml(text, "hand.yaml", Registry()), options);
+    const RunResult result =
+        RunScene(LoadSceneFromYaml(text, "hand.yaml", test_support::BuildTreePlugins()), options);
     const double depth = result.summary["depth_mm"]["max"].get<double>();
     const double felt = result.summary["safety"]["max_delivered_force_N"].get<double>();
     EXPECT_EQ(result.stats.guard_faults, 0u);
@@ -687,14 +682,10 @@ TEST(Sequence, AHandSlidesTheHubOverTheSeatedKey) {
          "        - {time: 4 s, position: [0 mm, 44 mm, 0 mm]}\n"
          "    duration: 4.5 s\n";
   text = text.substr(0, hub) + step;
-  const fs::path dir = fs::path(testing::TempDir()) / "sequence-hand";
-  fs::create_directories(dir);
-  const fs::path file = dir / "by-hand.yaml";
-  {
-    std::ofstream out(file);
-    out << text;
-  }
-  const SequenceResult result = RunSequence(LoadSequence(file, Registry()), RunOptions{});
+  const fs::path file = test_support::EmptyTestFolder("assembly") / "by-hand.yaml";
+  test_support::WriteText(file, text);
+  const SequenceResult result =
+      RunSequence(LoadSequence(file, test_support::BuildTreePlugins()), RunOptions{});
   ASSERT_EQ(result.steps.size(), 2u);
   const nlohmann::json& by_hand = result.steps[1].summary;
   EXPECT_GT(by_hand["depth_mm"]["max"].get<double>(), 40.0);
@@ -716,8 +707,7 @@ namespace {
 // order a run draws them, each against its own specification.
 TEST(SeveralFeatures, SmsChecksEveryFeaturesParts) {
   const test_support::CliResult r = test_support::RunFitfeel(
-      "sms " + test_support::ShellQuote(
-                   (fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "keyed-hub.yaml").string()));
+      "sms " + test_support::ShellQuote(test_support::ShippedScenario("keyed-hub.yaml").string()));
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("part 'shaft' (inner): shaft d=30 mm"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("feature 'key', part 'shaft' (inner): pair of flat faces b=8 mm"),

@@ -17,6 +17,7 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/testing/source_tree.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
@@ -69,15 +70,6 @@ struct SharedScene {
   std::unique_ptr<ConstrainedStage> constrained;
   SchedulerSettings settings;
 };
-
-const PluginRegistry& Registry() {
-  static const PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
 
 // The stages as `fitfeel run` builds them (run.cc), once.
 SharedScene PrepareShared(const Scene& scene) {
@@ -134,8 +126,8 @@ class ConcurrentRunsTest : public ::testing::TestWithParam<std::string> {};
 // Every shipped scenario: each surface plugin's analyzer and law, settled and dynamic devices.
 TEST_P(ConcurrentRunsTest, TwoRunsOfOnePreparedSceneMatchTheRunsAlone) {
   // Loaded twice: the same configuration on two device instances (a device is one run's I/O).
-  const Scene scene = LoadScene(ShippedScenario(GetParam()), Registry());
-  const Scene twin = LoadScene(ShippedScenario(GetParam()), Registry());
+  const Scene scene = LoadScene(ShippedScenario(GetParam()), test_support::BuildTreePlugins());
+  const Scene twin = LoadScene(ShippedScenario(GetParam()), test_support::BuildTreePlugins());
   const SharedScene shared = PrepareShared(scene);
   ExpectSameTracesConcurrently(*scene.device, *twin.device, shared, GetParam());
 }
@@ -147,12 +139,14 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ConcurrentRunsTest,
                                            "square-shaft.yaml", "knuckle-bearing.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                            std::string name = param.param.substr(0, param.param.find('.'));
-                           for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           for (char& c : name)
+                             c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return name;
                          });
 
 TEST(ConcurrentRunsTest, FreeMotionCollisionsShareOneCollider) {
-  const Scene scene = LoadScene(ShippedScenario("paper-case1-h7js6.yaml"), Registry());
+  const Scene scene =
+      LoadScene(ShippedScenario("paper-case1-h7js6.yaml"), test_support::BuildTreePlugins());
   const SharedScene shared = PrepareShared(scene);
   ASSERT_TRUE(shared.positioning->collides());
   StrikeThenInsertDevice first, second;

@@ -21,6 +21,7 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
 #include "framework/scenario/scene.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/testing/cli_runner.h"
 #include "framework/testing/hand_scene.h"
 
@@ -44,15 +45,6 @@ struct HandCase {
 
 void PrintTo(const HandCase& c, std::ostream* out) { *out << c.scenario; }
 
-PluginRegistry& Registry() {
-  static PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
-
 // The shipped scenario with the hand as its device (moving the part named `moving`, where not
 // empty, instead of the scenario's own), written beside the test's outputs.
 fs::path WithHand(const std::string& scenario, double aim, const std::string& waypoints,
@@ -71,7 +63,8 @@ RunResult RunHand(const std::string& scenario, double aim, const std::string& wa
   // A folder of its own per role: tests of both roles on one scenario may run at once.
   const fs::path dir =
       test_support::EmptyFolder("hand-insertion", (moving.empty() ? "" : "outer-") + scenario);
-  Scene scene = LoadScene(WithHand(scenario, aim, waypoints, seconds, dir, moving), Registry());
+  Scene scene = LoadScene(WithHand(scenario, aim, waypoints, seconds, dir, moving),
+                          test_support::BuildTreePlugins());
   RunOptions options;
   options.out_dir = out;
   return RunScene(std::move(scene), options);
@@ -177,7 +170,7 @@ TEST(HandInsertionWedged, TheGodObjectsBalancesStartFromTheirOwnLastRoots) {
 // per tick p50 / p99 / max: 2 / 5 / 25 with it, 2 / 6 / 29 without; the pressing phase's ticks
 // 2-3, not 4-5).
 TEST(RobotPressesTheTaperPin, TheSettleStepsOnTheClosedFormStiffness) {
-  PluginRegistry& registry = Registry();
+  const PluginRegistry& registry = test_support::BuildTreePlugins();
   Scene scene =
       LoadScene(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "taper-pin.yaml", registry);
   const RunResult result = RunScene(std::move(scene), RunOptions{});
@@ -236,8 +229,9 @@ TEST_P(HandSlidesTheOuterPart, OnAndOffAgain) {
 // (settled under the load) and through the god object's spring. Without the reflection the
 // bushing met its own drawn bore upside down.
 TEST(OuterPartMoving, TheStageMeetsTheInnerPartInTheOuterPartsFrame) {
-  const Scene scene = LoadScene(
-      fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "paper-case1-h7g6.yaml", Registry());
+  const Scene scene =
+      LoadScene(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / "paper-case1-h7g6.yaml",
+                test_support::BuildTreePlugins());
   const PreparedScene prepared = Prepare(scene);
   const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
   for (const double spring : {std::numeric_limits<double>::infinity(), 2e3}) {

@@ -14,6 +14,7 @@
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
 #include "framework/testing/allocation_counter.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/testing/cli_runner.h"
 #include "framework/testing/hand_scene.h"
 
@@ -24,24 +25,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const PluginRegistry& JointRegistry() {
-  static const PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry({fs::path(FITFEEL_TEST_BUILD_DIR) / "plugins"});
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
-
 // The shipped scenario, or with the hand 1 mm off the axis as its device (written beside the
 // test's outputs).
 Scene JointScene(const std::string& file, bool hand) {
   const fs::path shipped = fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / file;
-  if (!hand) return LoadScene(shipped, JointRegistry());
+  if (!hand) return LoadScene(shipped, test_support::BuildTreePlugins());
   const fs::path written = test_support::EmptyFolder("joint-tick-allocation", file) / file;
   std::ofstream(written) << test_support::WithHand(test_support::ReadText(shipped), 1e-3,
                                                    test_support::kHandPushIn, 3.5);
-  return LoadScene(written, JointRegistry());
+  return LoadScene(written, test_support::BuildTreePlugins());
 }
 
 TEST(JointTickAllocation, TheShippedJointsTickWithoutAllocating) {

@@ -27,8 +27,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "framework/runtime/bench/bench_clock.h"
 #include "framework/plugin/registry.h"
+#include "framework/runtime/bench/bench_support.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/scheduler.h"
@@ -41,26 +41,13 @@ namespace {
 namespace fs = std::filesystem;
 
 using bench::ClockCost;
+using bench::Registry;
 
 double ThreadSeconds() { return bench::ClockSeconds(CLOCK_THREAD_CPUTIME_ID); }
 
-const PluginRegistry& Registry() {
-  static PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry();
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
-
-fs::path Scenario(const std::string& name) {
-  const char* source = std::getenv("FITFEEL_SOURCE_DIR");
-  return (source != nullptr ? fs::path(source) : fs::path(".")) / "scenarios" / (name + ".yaml");
-}
-
 // The scene loaded from its file's text (with the hand in place of its device where asked).
 Scene Load(const std::string& name, bool hand) {
-  const fs::path file = Scenario(name);
+  const fs::path file = bench::ScenarioDir() / (name + ".yaml");
   if (!hand) return LoadScene(file, Registry());
   std::ifstream in(file);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -39,9 +39,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "framework/runtime/bench/bench_clock.h"
 #include "framework/core/error.h"
 #include "framework/plugin/registry.h"
+#include "framework/runtime/bench/bench_support.h"
 #include "framework/runtime/constrained_stage.h"
 #include "framework/runtime/positioning_stage.h"
 #include "framework/runtime/prepare.h"
@@ -59,20 +59,8 @@ namespace fs = std::filesystem;
 
 using bench::ClockCost;
 using bench::ClockSeconds;
-
-fs::path ScenarioDir() {
-  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR")) return fs::path(source) / "scenarios";
-  return fs::path("scenarios");
-}
-
-const PluginRegistry& Registry() {
-  static PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry();
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
+using bench::Registry;
+using bench::ScenarioDir;
 
 // The surface plugin's per-tick scan, prepared on the scene's shapes; null where none exists.
 std::unique_ptr<ContactAnalyzer> ScanAnalyzer(const Scene& scene, const PreparedScene& prepared) {

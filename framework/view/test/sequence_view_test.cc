@@ -10,15 +10,16 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "framework/plugin/registry.h"
 #include "framework/runtime/sequence_run.h"
 #include "framework/scenario/sequence.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/view/frame_codec.h"
 
 namespace fitfeel::view {
@@ -30,20 +31,11 @@ namespace websocket = beast::websocket;
 namespace fs = std::filesystem;
 using tcp = asio::ip::tcp;
 
-const PluginRegistry& SequenceTestRegistry() {
-  static const PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry();
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
-
 // One message of the server, as a client reads it.
 struct StepMessage {
   bool text = false;
   std::string body;
-  nlohmann::json json;  // of a text message
+  nlohmann::json json;     // of a text message
   std::uint16_t kind = 0;  // of a binary frame: FrameKind
 };
 
@@ -111,7 +103,8 @@ std::vector<std::string> TraceWithoutTickTimes(const fs::path& csv) {
 }
 
 TEST(SequenceView, AnnouncesTheStepsInOrderWithTheirScenes) {
-  const Sequence sequence = LoadSequence("scenarios/key-then-hub.yaml", SequenceTestRegistry());
+  const Sequence sequence =
+      LoadSequence("scenarios/key-then-hub.yaml", test_support::BuildTreePlugins());
   ASSERT_EQ(sequence.steps.size(), 2u);
   const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_sequence_view_test";
   fs::remove_all(dir);
@@ -224,13 +217,13 @@ TEST(SequenceView, AnnouncesTheStepsInOrderWithTheirScenes) {
 // A finished sequence (every step with its history, as `fitfeel view --trace` serves it): a client
 // starts on the last step; a scene's server takes no `step` request.
 TEST(SequenceView, AFinishedSequenceOpensOnItsLastStep) {
-  const Sequence sequence = LoadSequence("scenarios/key-then-hub.yaml", SequenceTestRegistry());
+  const Sequence sequence =
+      LoadSequence("scenarios/key-then-hub.yaml", test_support::BuildTreePlugins());
   std::vector<std::shared_ptr<const ViewModel>> models;
   std::vector<ServedStep> steps(2);
   for (std::size_t k = 0; k < 2; ++k) {
     const Scene scene = StepScene(sequence, k, 1, {Eigen::Vector2d(0.25e-6, 0.0)});
-    models.push_back(
-        std::make_shared<const ViewModel>(scene, scene.run.seed, static_cast<int>(k)));
+    models.push_back(std::make_shared<const ViewModel>(scene, scene.run.seed, static_cast<int>(k)));
     steps[k].model = models.back();
     ViewSample row;
     row.time = 0.5 + static_cast<double>(k);

@@ -16,20 +16,12 @@
 #include "framework/runtime/sequence_run.h"
 #include "framework/scenario/scene.h"
 #include "framework/scenario/sequence.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/view/frame_codec.h"
 #include "framework/view/part_placement.h"
 
 namespace fitfeel::view {
 namespace {
-
-const PluginRegistry& ViewTestRegistry() {
-  static const PluginRegistry* registry = [] {
-    auto* r = new PluginRegistry();
-    r->LoadAll();
-    return r;
-  }();
-  return *registry;
-}
 
 // Centroid and extent of a decoded mesh's corners, m.
 struct MeshBox {
@@ -65,7 +57,8 @@ TEST(ViewModelPlacement, PlacesAPointBackTurnedAndOnItsAxis) {
 }
 
 TEST(ViewModelPlacement, OneFeatureSceneSendsItsPartsInTheirOwnFrames) {
-  const Scene scene = LoadScene("scenarios/paper-case1-h7js6.yaml", ViewTestRegistry());
+  const Scene scene =
+      LoadScene("scenarios/paper-case1-h7js6.yaml", test_support::BuildTreePlugins());
   const ViewModel model(scene, 1);
   ASSERT_EQ(model.mesh_count(), 2);
   Rng rng(1);
@@ -83,7 +76,7 @@ TEST(ViewModelPlacement, OneFeatureSceneSendsItsPartsInTheirOwnFrames) {
 // The keyed hub: the hub (every feature's outer part) moves. Its key stands on the shaft at
 // (0, 16.3 mm), 5 mm back from the shaft's end.
 TEST(ViewModelPlacement, KeyedHubDrawsBothFeaturesAtTheirPlaces) {
-  const Scene scene = LoadScene("scenarios/keyed-hub.yaml", ViewTestRegistry());
+  const Scene scene = LoadScene("scenarios/keyed-hub.yaml", test_support::BuildTreePlugins());
   const ViewModel model(scene, 1);
   ASSERT_EQ(model.mesh_count(), 4);
   // The deviations the run draws (same scene, same seed).
@@ -145,7 +138,8 @@ TEST(ViewModelPlacement, KeyedHubDrawsBothFeaturesAtTheirPlaces) {
 // the key (the fixed side of the key feature) drawn moved by the seat, the keyway (on the moving
 // hub) not; the message names the step and the seat. A scene of its own names neither.
 TEST(ViewModelPlacement, ASeatedKeyIsDrawnWhereTheEarlierStepLeftIt) {
-  const Sequence sequence = LoadSequence("scenarios/key-then-hub.yaml", ViewTestRegistry());
+  const Sequence sequence =
+      LoadSequence("scenarios/key-then-hub.yaml", test_support::BuildTreePlugins());
   ASSERT_EQ(sequence.steps.size(), 2u);
   const Eigen::Vector2d left(2e-6, -1e-6);  // the key step's final offset; `carry: x` takes x
   const Scene seated = StepScene(sequence, 1, 1, {left});
@@ -170,13 +164,14 @@ TEST(ViewModelPlacement, ASeatedKeyIsDrawnWhereTheEarlierStepLeftIt) {
   EXPECT_FALSE(j["features"][1]["outer"].contains("seat_um"));
   const nlohmann::json unseated = nlohmann::json::parse(b.scene_message());
   EXPECT_FALSE(unseated["features"][1]["inner"].contains("seat_um"));
-  const ViewModel plain(LoadScene("scenarios/keyed-hub.yaml", ViewTestRegistry()), 1);
+  const ViewModel plain(LoadScene("scenarios/keyed-hub.yaml", test_support::BuildTreePlugins()), 1);
   EXPECT_FALSE(nlohmann::json::parse(plain.scene_message()).contains("step"));
 }
 
 // The two-pin plate: its second hole and pin 60 mm along x, each at its own deviation.
 TEST(ViewModelPlacement, TwoPinPlateDrawsItsSecondHole60MillimetresAlongX) {
-  const Scene scene = LoadScene("scenarios/two-pin-location.yaml", ViewTestRegistry());
+  const Scene scene =
+      LoadScene("scenarios/two-pin-location.yaml", test_support::BuildTreePlugins());
   const ViewModel model(scene, 3);
   ASSERT_EQ(model.mesh_count(), 4);
   const Eigen::Vector2d pin_dev = model.position_deviations()[1][0];
@@ -203,8 +198,10 @@ TEST(ViewModelPlacement, TurnedDatumGivesItsAssemblySpaceInThePagesFrame) {
   ASSERT_NE(at, std::string::npos);
   std::string turned_text = text;
   turned_text.insert(at + bore.size(), "    angle: 90 deg\n");
-  const ViewModel plain(LoadSceneFromYaml(text, "keyed-hub.yaml", ViewTestRegistry()), 1);
-  const ViewModel turned(LoadSceneFromYaml(turned_text, "turned.yaml", ViewTestRegistry()), 1);
+  const ViewModel plain(LoadSceneFromYaml(text, "keyed-hub.yaml", test_support::BuildTreePlugins()),
+                        1);
+  const ViewModel turned(
+      LoadSceneFromYaml(turned_text, "turned.yaml", test_support::BuildTreePlugins()), 1);
   ViewSample sample;
   sample.depth = 20e-3;
   sample.offset_x = 2e-6;
