@@ -13,6 +13,10 @@ namespace fitfeel {
 // so a scenario and seed give the same skin model shapes bit for bit.
 using Rng = std::mt19937_64;
 
+// Uniform in [0, 1) from the top 53 bits of one draw: the same number on every platform, where
+// the standard library's distributions are implementation-defined.
+inline double UniformDraw(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
 // How the surface texture enters the model (paper eq. 6 and its discussion).
 enum class TextureMode {
   kExpected,  // not sampled into V; the analyzer uses the expected interference of its distribution

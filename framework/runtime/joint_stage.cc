@@ -11,8 +11,9 @@
 
 #include "framework/core/error.h"
 #include "framework/core/root_finding.h"
-#include "framework/runtime/joint_lead_in.h"
 #include "framework/runtime/contact_search.h"
+#include "framework/runtime/joint_lead_in.h"
+#include "framework/scenario/joint_frame.h"
 
 namespace fitfeel {
 
@@ -102,13 +103,6 @@ constexpr double kJacobianMiss = 0.1;
 // Regula falsi steps of one line search at most.
 constexpr int kLineSearchSteps = 6;
 
-// The (x, z) rotation by an angle about +y, given its cosine c and sine s: (x, z) -> (x c + z s,
-// -x s + z c). The features' angles are turned into c and s once, by the constructor, and the
-// twist once per evaluation of the balance: taken at every turn they cost a sixth of the tick.
-Eigen::Vector2d Turn(const Eigen::Vector2d& v, double c, double s) {
-  return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
-}
-
 // `jacobian` with the rows and columns of the held coordinates zeroed.
 Eigen::Matrix3d Masked(const Eigen::Matrix3d& jacobian, const std::array<bool, 3>& active) {
   Eigen::Matrix3d masked = jacobian;
@@ -183,8 +177,8 @@ struct Piece {
 JointStage::JointStage(std::vector<JointFeature> features, const Options& options)
     : features_(std::move(features)), options_(options) {
   if (features_.empty() || features_.size() > static_cast<std::size_t>(kMaxJointFeatures)) {
-    throw UserError("joint stage: 1 to " + std::to_string(kMaxJointFeatures) +
-                    " features, not " + std::to_string(features_.size()));
+    throw UserError("joint stage: 1 to " + std::to_string(kMaxJointFeatures) + " features, not " +
+                    std::to_string(features_.size()));
   }
   double lever = 0.0;
   for (const JointFeature& f : features_) {
@@ -219,13 +213,14 @@ bool JointStage::FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, d
   // The feature's pose in its own frame (the joint frame turned by f.angle).
   MatingPose pose;
   pose.depth = depth - f.engages_after;
-  pose.offset = Turn(relative, c, -s);
+  pose.offset = TurnAboutAxis(relative, c, -s);
   pose.angle = twist;
   const bool outer = f.moving == Role::kOuter;
   const Eigen::Vector3d reflect(1.0, 1.0, -1.0);
   if (!contact_known) f.analyzer->Evaluate(AnalyzerPose(pose, f.moving), contact);
   MatingMotion motion;
-  const Eigen::Vector2d v = Turn(Eigen::Vector2d(part.velocity.x(), part.velocity.z()), c, -s);
+  const Eigen::Vector2d v =
+      TurnAboutAxis(Eigen::Vector2d(part.velocity.x(), part.velocity.z()), c, -s);
   motion.velocity = Eigen::Vector3d(v.x(), part.velocity.y(), v.y());
   motion.angular_velocity = part.angular_velocity;
   if (outer) {
@@ -256,8 +251,8 @@ bool JointStage::FeatureWrench(std::size_t i, const Eigen::Vector2d& relative, d
     on_lead_in = push.touching;
   }
   // Back into the joint frame.
-  const Eigen::Vector2d fxz = Turn(Eigen::Vector2d(w.force.x(), w.force.z()), c, s);
-  const Eigen::Vector2d txz = Turn(Eigen::Vector2d(w.torque.x(), w.torque.z()), c, s);
+  const Eigen::Vector2d fxz = TurnAboutAxis(Eigen::Vector2d(w.force.x(), w.force.z()), c, s);
+  const Eigen::Vector2d txz = TurnAboutAxis(Eigen::Vector2d(w.torque.x(), w.torque.z()), c, s);
   wrench->force = Eigen::Vector3d(fxz.x(), w.force.y(), fxz.y());
   wrench->torque = Eigen::Vector3d(txz.x(), w.torque.y(), txz.y());
   return on_lead_in;
@@ -277,7 +272,7 @@ void JointStage::Evaluate(const Eigen::Vector3d& q, double depth, const PartStat
     const JointFeature& f = features_[i];
     // Where the feature's moving axis is, from the body's reference axis and from the feature's
     // fixed axis.
-    const Eigen::Vector2d arm = Turn(f.moving_axis, twist_c, twist_s);
+    const Eigen::Vector2d arm = TurnAboutAxis(f.moving_axis, twist_c, twist_s);
     const Eigen::Vector2d relative = offset + arm - f.fixed_axis;
     ContactState& contact = sum->contact[i];
     Wrench w;
@@ -361,8 +356,8 @@ void JointStage::AddCarried(const Eigen::Matrix<double, 3, 2>& d_u, const Share&
 }
 
 double JointStage::AxialBalance(double device_depth, const Eigen::Vector3d& q,
-                                const PartState& part, RunState* run, int* evaluations) const
-    noexcept {
+                                const PartState& part, RunState* run,
+                                int* evaluations) const noexcept {
   const double k = options_.proxy_stiffness;
   const double from = run->body_depth;
   if (device_depth == from) return from;
@@ -390,8 +385,8 @@ double JointStage::AxialBalance(double device_depth, const Eigen::Vector3d& q,
   // changes little over the lag, the usual tick; the bracket and its search only where not.
   const double at_device = g(device_depth);
   if (std::abs(at_device) <= tolerance) return device_depth;
-  const double lagged = std::clamp(device_depth + at_device / k,
-                                   std::min(from, device_depth), std::max(from, device_depth));
+  const double lagged = std::clamp(device_depth + at_device / k, std::min(from, device_depth),
+                                   std::max(from, device_depth));
   const double at_lagged = g(lagged);
   if (std::abs(at_lagged) <= tolerance) return lagged;
   if ((at_lagged > 0.0) != (at_device > 0.0)) {

@@ -48,9 +48,8 @@ SkinModelShapes GenerateShapes(const SurfaceType& surface, const std::string& su
   // A measured part takes no draw: the other part's draws are those it gets with the same seed
   // when it comes first, not otherwise (docs/measured-parts.md).
   auto shape = [&](const PartSpec& part, const SurfaceGrid& grid) {
-    return part.measured
-               ? MeasuredSkinModelShape(*part.measured, grid, part.size.nominal / 2.0)
-               : generator->Generate(part, grid, model.texture, rng);
+    return part.measured ? MeasuredSkinModelShape(*part.measured, grid, part.size.nominal / 2.0)
+                         : generator->Generate(part, grid, model.texture, rng);
   };
   shapes.inner = shape(inner, inner_grid);
   shapes.outer = shape(outer, outer_grid);
@@ -61,8 +60,8 @@ SkinModelShapes GenerateShapes(const SurfaceType& surface, const std::string& su
 // Uniform over the disc of diameter `zone` (ISO 1101's cylindrical position zone seen along the
 // axis): radius zone/2 sqrt(u), direction 2 pi v.
 Eigen::Vector2d DrawInZone(double zone, Rng& rng) {
-  const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-  const double v = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+  const double u = UniformDraw(rng);
+  const double v = UniformDraw(rng);
   const double r = 0.5 * zone * std::sqrt(u), phi = 2.0 * M_PI * v;
   return {r * std::cos(phi), r * std::sin(phi)};
 }

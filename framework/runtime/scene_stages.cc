@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "framework/runtime/joint_stage.h"
+#include "framework/scenario/joint_frame.h"
 
 namespace fitfeel {
 
@@ -41,14 +42,9 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
     f.law = i == 0 ? prepared.law.get() : prepared.more_features[i - 1].law.get();
     f.moving = feature.moving;
     const std::array<Eigen::Vector2d, 2>& deviation = prepared.position_deviations.at(i);
-    const bool inner_moves = feature.moving == Role::kInner;
-    f.moving_axis = feature.placement.at + deviation[inner_moves ? 0 : 1];
-    // A part an earlier step seated sits where it was left, in the feature's frame turned into
-    // the joint's.
-    const double c = std::cos(feature.placement.angle), s = std::sin(feature.placement.angle);
-    const Eigen::Vector2d seat(c * feature.placement.seat.x() + s * feature.placement.seat.y(),
-                               -s * feature.placement.seat.x() + c * feature.placement.seat.y());
-    f.fixed_axis = feature.placement.at + deviation[inner_moves ? 1 : 0] + seat;
+    const Role fixed = feature.moving == Role::kInner ? Role::kOuter : Role::kInner;
+    f.moving_axis = FeatureAxis(feature, feature.moving, deviation);
+    f.fixed_axis = FeatureAxis(feature, fixed, deviation);
     f.angle = feature.placement.angle;
     f.engages_after = feature.placement.engages_after;
     if (i > 0) {
@@ -58,7 +54,8 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
       // law's own, `auto`).
       const double contact = feature.model.contact_stiffness > 0.0 ? feature.model.contact_stiffness
                                                                    : scene.model.contact_stiffness;
-      f.lead_in_stiffness = std::isfinite(mating.proxy_stiffness) ? mating.proxy_stiffness : contact;
+      f.lead_in_stiffness =
+          std::isfinite(mating.proxy_stiffness) ? mating.proxy_stiffness : contact;
     }
     features.push_back(f);
   }

@@ -11,6 +11,7 @@
 
 #include "framework/collision/coarse_mesh.h"
 #include "framework/core/quantity.h"
+#include "framework/scenario/joint_frame.h"
 #include "framework/scenario/scene_sections.h"
 
 namespace fitfeel::scenario {
@@ -79,9 +80,7 @@ std::vector<Eigen::Vector2d> InnerSection(const MatingFeature& feature) {
   const double c = std::cos(feature.placement.angle), s = std::sin(feature.placement.angle);
   std::vector<Eigen::Vector2d> points;
   for (const Eigen::Vector3d& v : meshes.inner.vertices) {
-    // The feature's frame turned by its angle about y: (x, z) -> (x c + z s, -x s + z c).
-    points.emplace_back(feature.placement.at.x() + c * v.x() + s * v.z(),
-                        feature.placement.at.y() - s * v.x() + c * v.z());
+    points.push_back(feature.placement.at + TurnAboutAxis(Eigen::Vector2d(v.x(), v.z()), c, s));
   }
   return Hull(std::move(points));
 }
@@ -132,7 +131,8 @@ FeaturePlacement ParsePlacement(const ConfigNode& node, bool datum, const std::s
 void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
                    const PluginRegistry& registry, const LoadOptions& options, Scene* scene) {
   const ConfigNode node = root.Child("features");
-  if (!node.is_map()) node.Fail("a map from feature name to its surface and parts", node.Describe());
+  if (!node.is_map())
+    node.Fail("a map from feature name to its surface and parts", node.Describe());
   const std::vector<std::string> names = node.Keys();
   if (names.size() < 2 || names.size() > static_cast<std::size_t>(kMaxJointFeatures)) {
     node.Fail("2 to " + std::to_string(kMaxJointFeatures) +
@@ -151,16 +151,16 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
       f.Fail("a feature name of letters, digits, '_', '-' or '.'", "'" + names[i] + "'");
     }
     if (!f.is_map()) f.Fail("a map with surface, parts and the feature's placement", f.Describe());
-    f.ExpectOnlyKeys(
-        {"surface", "parts", "model", "at", "angle", "engages_after", "position"});
+    f.ExpectOnlyKeys({"surface", "parts", "model", "at", "angle", "engages_after", "position"});
     MatingFeature feature;
     feature.name = names[i];
     const ConfigNode surface = f.Child("surface");
     feature.surface = ResolveSurface(surface, registry, options, &feature.surface_id);
     if (feature.surface->rotational()) {
-      surface.Fail("a surface whose parts slide along the axis (a joint of several features "
-                   "advances along one axis)",
-                   surface.Describe() + ", whose parts turn about a centre");
+      surface.Fail(
+          "a surface whose parts slide along the axis (a joint of several features "
+          "advances along one axis)",
+          surface.Describe() + ", whose parts turn about a centre");
     }
     const ConfigNode parts_node = f.Child("parts");
     // Every feature joins the moving body to the fixed one: refused at the feature's parts, not at
@@ -217,10 +217,10 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
       if (overlap > kOverlapTolerance) {
         const ConfigNode f = node.Child(names[i]);
         const ConfigNode key = f.Has("at") ? f.Child("at") : f;
-        key.Fail("a place where the feature's " + scene->features[i].inner.name +
-                     " side does not overlap feature '" + names[j] + "'",
-                 "their cross-sections overlapping by " +
-                     FormatQuantity(overlap, Dimension::kLength));
+        key.Fail(
+            "a place where the feature's " + scene->features[i].inner.name +
+                " side does not overlap feature '" + names[j] + "'",
+            "their cross-sections overlapping by " + FormatQuantity(overlap, Dimension::kLength));
       }
     }
   }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "framework/scenario/joint_frame.h"
+
 namespace fitfeel::view {
 
 PartPlacement PlacementOf(const MatingFeature& feature, Role part,
@@ -13,21 +15,16 @@ PartPlacement PlacementOf(const MatingFeature& feature, Role part,
   p.setback = inner ? feature.placement.engages_after : 0.0;
   p.half_turn = feature.moving == Role::kOuter;
   p.moving = feature.moving == part;
-  if (!p.moving) {
-    // The seat is in the feature's frame (scene_stages.cc turns it the same way).
-    const double c = std::cos(p.angle), s = std::sin(p.angle);
-    const Eigen::Vector2d& seat = feature.placement.seat;
-    p.seat = Eigen::Vector2d(c * seat.x() + s * seat.y(), -s * seat.x() + c * seat.y());
-  }
-  p.axis = feature.placement.at + p.deviation + p.seat;
+  if (!p.moving) p.seat = SeatInJointFrame(feature.placement);
+  p.axis = FeatureAxis(feature, part, deviation);
   return p;
 }
 
 Eigen::Vector3d PlaceDirection(const PartPlacement& placement, const Eigen::Vector3d& d) {
   Eigen::Vector3d v = d;
   if (placement.half_turn) v = Eigen::Vector3d(-v.x(), -v.y(), v.z());
-  const double c = std::cos(placement.angle), s = std::sin(placement.angle);
-  return {c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z()};
+  const Eigen::Vector2d xz = TurnAboutAxis(Eigen::Vector2d(v.x(), v.z()), placement.angle);
+  return {xz.x(), v.y(), xz.y()};
 }
 
 Eigen::Vector3d PlacePoint(const PartPlacement& placement, const Eigen::Vector3d& point) {

@@ -1,4 +1,5 @@
 #include "framework/view/view_model.h"
+#include "framework/scenario/joint_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,12 +21,6 @@ MatingPose PoseOf(const ViewSample& s) {
   pose.offset = Eigen::Vector2d(s.offset_x, s.offset_z);
   pose.angle = s.angle;
   return pose;
-}
-
-// R(angle) of docs/assemblies.md: (x, z) -> (x cos + z sin, -x sin + z cos).
-Eigen::Vector2d Turn(const Eigen::Vector2d& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x() + s * v.y(), -s * v.x() + c * v.y()};
 }
 
 // The reflection in z that takes (x, z) between the scene frame and the outer part's frame where
@@ -169,7 +164,7 @@ MatingPose ViewModel::DatumPose(const ViewSample& sample) const {
   // feature R(-angle) o of the body's offset o in the joint frame (its axis is the joint's), which
   // its analyzer takes in its outer part's frame.
   const double angle = scene_.features.front().placement.angle;
-  pose.offset = Reflect(Turn(Reflect(pose.offset, scene_.moving), -angle), scene_.moving);
+  pose.offset = Reflect(TurnAboutAxis(Reflect(pose.offset, scene_.moving), -angle), scene_.moving);
   return pose;
 }
 
@@ -185,7 +180,7 @@ StateExtras ViewModel::Extras(const ViewSample& sample) const {
     // Back into the sample's frame, where the page draws the moving axis over it.
     const double angle = scene_.features.front().placement.angle;
     for (Eigen::Vector2d& v : x.assembly_space) {
-      v = Reflect(Turn(Reflect(v, scene_.moving), angle), scene_.moving);
+      v = Reflect(TurnAboutAxis(Reflect(v, scene_.moving), angle), scene_.moving);
     }
   }
   if (pressure_per_interference_ > 0.0) {

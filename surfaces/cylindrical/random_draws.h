@@ -10,8 +10,8 @@ namespace fitfeel::cylindrical {
 // Draws from the scene's generator that give the same numbers on every platform (the standard
 // library's distributions are implementation-defined).
 
-// Uniform in [0, 1) from the top 53 bits of one draw.
-inline double Uniform(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+// Uniform in [0, 1).
+inline double Uniform(Rng& rng) { return UniformDraw(rng); }
 inline double Uniform(Rng& rng, double a, double b) { return a + (b - a) * Uniform(rng); }
 
 // Standard normal (Box-Muller, one value per pair of draws).
