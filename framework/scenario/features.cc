@@ -144,6 +144,8 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
         .Child("radial")
         .Fail("held or quasi_static in a several-feature scene", "dynamic");
   }
+  // Each feature's `model` section (its own, else the scene's): parsed, then admitted below.
+  std::vector<ConfigNode> model_nodes;
   const ConfigNode moving = root.Child("moving");
   for (std::size_t i = 0; i < names.size(); ++i) {
     const ConfigNode f = node.Child(names[i]);
@@ -186,8 +188,8 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
     if (!own_model && !root.Has("model")) {
       f.Fail("a `model` of the feature's own or the scene's", "neither");
     }
-    feature.model = ParseModel(own_model ? *own_model : root.Child("model"), *feature.surface,
-                               feature.surface_id, parts);
+    model_nodes.push_back(own_model ? *own_model : root.Child("model"));
+    feature.model = ParseModel(model_nodes.back(), *feature.surface, feature.surface_id, parts);
     feature.placement = ParsePlacement(f, i == 0, parts.inner.name, parts.outer.name);
     feature.inner = std::move(parts.inner);
     feature.outer = std::move(parts.outer);
@@ -245,11 +247,8 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
 
   for (std::size_t i = 0; i < scene->features.size(); ++i) {
     const MatingFeature& feature = scene->features[i];
-    const ConfigNode f = node.Child(names[i]);
-    const std::optional<ConfigNode> own_model = f.Find("model");
-    const SceneCost cost =
-        CheckPrepare(own_model ? *own_model : root.Child("model"), duration, *feature.surface,
-                     feature.inner, feature.outer, feature.model, scene->run, options);
+    const SceneCost cost = CheckPrepare(model_nodes[i], duration, *feature.surface, feature.inner,
+                                        feature.outer, feature.model, scene->run, options);
     if (i == 0) {
       scene->cost = cost;
       continue;
