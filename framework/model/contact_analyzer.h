@@ -67,6 +67,21 @@ struct ContactState {
   // interference.
   double normal_force = 0.0;
   Eigen::Vector2d tilt{0.0, 0.0};
+  // Contacts whose normal is not across the axis (a thread's flanks): over the interfering
+  // cells, the sums of delta * area * n (m^3) and of delta * area * (p x n) (m^4, about the
+  // fixed part's origin, p the cell's centre, n its unit normal out of the inner part), and the
+  // same with n replaced by the unit direction in which the inner part's cell slides along the
+  // fixed part under the constrained motion (a screw's helix), for friction. A law turns them
+  // into the normal wrench (times its pressure per unit interference) and the friction wrench.
+  // Zero where an analyzer describes its contact by the radial state above alone. Always in the
+  // analyzer's frame (SceneContact leaves them): a stage that reads them maps them itself.
+  Eigen::Vector3d normal_sum{0.0, 0.0, 0.0};
+  Eigen::Vector3d normal_moment{0.0, 0.0, 0.0};
+  Eigen::Vector3d slide_sum{0.0, 0.0, 0.0};
+  Eigen::Vector3d slide_moment{0.0, 0.0, 0.0};
+  // An axial stop of the pair (a nut's bearing face on the clamped part): how far the inner part
+  // is past where the stop meets, m (0 before it meets).
+  double stop_closure = 0.0;
 };
 
 // The analyzer's answer at AnalyzerPose(pose, moving) with its directions across the axis in the

@@ -94,11 +94,16 @@ class FITFEEL_API Geometry {
   double mating_length() const;
   // One line for summaries, e.g. "cylinder d=20 mm l=40 mm".
   std::string Describe() const;
+  // Advance along the axis per turn of a screw (a thread's lead), m (finite, >= 0); 0 for a
+  // surface whose constrained motion is a slide or a rotation alone.
+  double lead() const;
 
  protected:
   virtual double DoNominalArea() const = 0;
   virtual double DoMatingLength() const = 0;
   virtual std::string DoDescribe() const = 0;
+  // Default: 0 (no screw).
+  virtual double DoLead() const;
 };
 
 // Everything the scenario says about one part.

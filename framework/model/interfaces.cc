@@ -53,6 +53,14 @@ double Geometry::mating_length() const {
 
 std::string Geometry::Describe() const { return DoDescribe(); }
 
+double Geometry::lead() const {
+  const double lead = DoLead();
+  FITFEEL_DEMAND(std::isfinite(lead) && lead >= 0.0);
+  return lead;
+}
+
+double Geometry::DoLead() const { return 0.0; }
+
 GridShape Discretizer::Shape(const PartSpec& part, const Resolution& resolution) const {
   if (!part.geometry) throw UserError("part '" + part.name + "' has no geometry to discretize");
   if (resolution.rows < 0 || resolution.columns < 0) {

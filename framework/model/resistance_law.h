@@ -24,6 +24,9 @@ struct MatingMotion {
 // contact). Plain data that the run owns and hands in; a law keeps nothing a tick changes.
 struct LawState {
   FrictionState friction;
+  // A second frictional contact of the same law that slips on its own coordinate (the bearing
+  // face of a tightened nut beside its thread's flanks).
+  FrictionState stop_friction;
 };
 
 // Stress state of the contact against the elastic limit of the parts (DIN 7190), per tick.

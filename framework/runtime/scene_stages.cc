@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "framework/runtime/joint_stage.h"
+#include "framework/runtime/screw_stage.h"
 #include "framework/scenario/joint_frame.h"
 
 namespace fitfeel {
@@ -28,6 +29,17 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
   const bool limited = spec.max_stiffness > 0.0 && std::isfinite(spec.max_stiffness);
   if (limited && free_motion.free_stiffness > 0.0) {
     mating.proxy_stiffness = free_motion.free_stiffness;
+  }
+  if (scene.features.empty() && scene.inner.geometry != nullptr &&
+      scene.inner.geometry->lead() > 0.0) {
+    ScrewStage::Options screw;
+    screw.depth_origin = mating.depth_origin;
+    screw.moving = scene.moving;
+    screw.proxy_stiffness = mating.proxy_stiffness;
+    screw.axial_load = scene.part_motion.axial_load;
+    screw.turn = scene.part_motion.turn;
+    stages.constrained = std::make_unique<ScrewStage>(*prepared.analyzer, *prepared.law, screw);
+    return stages;
   }
   if (scene.features.empty()) {
     stages.constrained =

@@ -19,6 +19,18 @@ enum class StageId : int { kPositioning = 0, kConstrained = 1 };
 
 FITFEEL_API std::string_view ToString(StageId stage);
 
+// What a screw's stage adds to its output (ScrewStage): the joint's state this tick.
+struct ScrewOutput {
+  bool active = false;         // written by a screw stage
+  double preload = 0.0;        // the bearing face's clamp force, N
+  double torque = 0.0;         // the torque turning the part against the contact, N*m
+  double thread_torque = 0.0;  // of it, against the flanks
+  double head_torque = 0.0;    // and against the bearing face
+  bool seated = false;         // the bearing face has met
+  double snug_angle = 0.0;     // the part's angle when it met, rad
+  bool stopped = false;        // the wrench reached its target and holds
+};
+
 // Output of one stage tick.
 struct StageOutput {
   Wrench wrench;                         // on the moving part, scene frame
@@ -45,6 +57,7 @@ struct StageOutput {
   // (scene y, N), in the scene's order; the rest of the output sums them. 0 features otherwise.
   int feature_count = 0;
   std::array<double, kMaxJointFeatures> feature_axial{};
+  ScrewOutput screw;
 };
 
 class Stage;

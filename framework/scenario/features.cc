@@ -162,7 +162,7 @@ void ParseFeatures(const ConfigNode& root, const ConfigNode& duration,
       surface.Fail(
           "a surface whose parts slide along the axis (a joint of several features "
           "advances along one axis)",
-          surface.Describe() + ", whose parts turn about a centre");
+          surface.Describe() + ", whose parts turn about a centre or screw along the axis");
     }
     const ConfigNode parts_node = f.Child("parts");
     // Every feature joins the moving body to the fixed one: refused at the feature's parts, not at

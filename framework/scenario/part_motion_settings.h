@@ -50,6 +50,25 @@ struct TorquePoint {
 // wrench some hundreds).
 inline constexpr double kMaxAppliedTorque = 1e4;
 
+// What stops a scripted wrench turning a screw (ScrewTurn).
+enum class TurnTarget {
+  kNone,     // turns to the end of the run
+  kTorque,   // the torque it applies reaches the value, N*m
+  kAngle,    // the angle turned since the bearing face met reaches the value, rad
+  kPreload,  // the bolt's tension reaches the value, N
+};
+
+// A screw turned by a scripted wrench (a thread scene's `part_motion.turn`): about +y at a
+// constant speed from the start of engagement until the target, then held.
+struct ScrewTurn {
+  double speed = 0.0;  // rad/s; 0: the part keeps the device's twist (a hand turns it)
+  TurnTarget target = TurnTarget::kNone;
+  double value = 0.0;
+};
+
+// The largest turning speed a scene may give a wrench, rad/s (ten turns a second).
+inline constexpr double kMaxTurnSpeed = 20.0 * 3.141592653589793;
+
 struct PartMotionSettings {
   RadialMotion radial = RadialMotion::kQuasiStatic;
   double damping = 0.0;  // viscous damping of the part's radial motion, N*s/m (dynamic)
@@ -59,6 +78,10 @@ struct PartMotionSettings {
   RotationMotion rotation = RotationMotion::kHeld;
   // Applied about +y while the rotation is free (empty: none), times increasing.
   std::vector<TorquePoint> torque;
+  // Screw scenes: the wrench, and the axial load on the moving part along +y (into the joint), N,
+  // that keeps it on its flanks while it runs free.
+  ScrewTurn turn;
+  double axial_load = 0.0;
 };
 
 // The applied torque at `time` (N*m): linear between the points, the last one's after them, the

@@ -240,12 +240,38 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   return model;
 }
 
+ScrewTurn ParseTurn(const ConfigNode& node) {
+  if (!node.is_map()) node.Fail("a map {speed, until}", node.Describe());
+  node.ExpectOnlyKeys({"speed", "until"});
+  ScrewTurn turn;
+  turn.speed = node.Child("speed").AsQuantityIn(Dimension::kAngularVelocity, 0.0, kMaxTurnSpeed,
+                                                /*min_inclusive=*/false);
+  if (std::optional<ConfigNode> until = node.Find("until")) {
+    const char* const expected = "a map with one of torque, angle (past the face) or preload";
+    if (!until->is_map() || until->Keys().size() != 1) until->Fail(expected, until->Describe());
+    until->ExpectOnlyKeys({"torque", "angle", "preload"});
+    if (auto torque = until->Find("torque")) {
+      turn.target = TurnTarget::kTorque;
+      turn.value = torque->AsQuantityIn(Dimension::kTorque, 0.0, kMaxAppliedTorque, false);
+    } else if (auto angle = until->Find("angle")) {
+      turn.target = TurnTarget::kAngle;
+      turn.value = angle->AsQuantityIn(Dimension::kAngle, 0.0, 100.0, false);
+    } else {
+      turn.target = TurnTarget::kPreload;
+      turn.value = until->Child("preload").AsQuantityIn(Dimension::kForce, 0.0, 1e7, false);
+    }
+  }
+  return turn;
+}
+
 PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (!node.is_map()) {
-    node.Fail("a map with the keys radial, damping, radial_load, rotation and torque",
+    node.Fail("a map with the keys radial, damping, radial_load, rotation, torque, turn and "
+              "axial_load",
               node.Describe());
   }
-  node.ExpectOnlyKeys({"radial", "damping", "radial_load", "rotation", "torque"});
+  node.ExpectOnlyKeys(
+      {"radial", "damping", "radial_load", "rotation", "torque", "turn", "axial_load"});
   PartMotionSettings motion;
   if (std::optional<ConfigNode> rotation = node.Find("rotation")) {
     motion.rotation = rotation->AsOneOf({"held", "free"}) == "held" ? RotationMotion::kHeld
@@ -289,6 +315,10 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   }
   if (std::optional<ConfigNode> load = node.Find("radial_load")) {
     motion.radial_load = load->AsQuantityIn(Dimension::kForce, 0.0, kMaxRadialLoad);
+  }
+  if (std::optional<ConfigNode> turn = node.Find("turn")) motion.turn = ParseTurn(*turn);
+  if (std::optional<ConfigNode> load = node.Find("axial_load")) {
+    motion.axial_load = load->AsQuantityIn(Dimension::kForce, -kMaxRadialLoad, kMaxRadialLoad);
   }
   return motion;
 }
@@ -537,6 +567,18 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
     scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);
     scene.inner = std::move(parts.inner);
     scene.outer = std::move(parts.outer);
+  }
+  // A wrench and an axial load act on a screw: elsewhere the device holds the part's twist and
+  // depth.
+  const bool screw = !several && scene.inner.geometry != nullptr && scene.inner.geometry->lead() > 0.0;
+  if (std::optional<ConfigNode> motion = root.Find("part_motion"); motion && !screw) {
+    for (const char* key : {"turn", "axial_load"}) {
+      if (motion->Has(key)) {
+        motion->Child(key).Fail("`" + std::string(key) +
+                                    "` only in a screw scene (a thread's surface)",
+                                "a scene whose parts slide or turn without advancing");
+      }
+    }
   }
 
   const ConfigNode device = root.Child("device");

@@ -33,7 +33,7 @@ enum class ClockMode { kVirtual, kRealTime };
 // scheduler checks at compile time that its records fit these, so the loader's refusal and the
 // scheduler's agree.
 inline constexpr double kStreamBytesPerTick = 32.0;
-inline constexpr double kTraceBytesPerTick = 512.0;
+inline constexpr double kTraceBytesPerTick = 768.0;
 inline constexpr double kRecordingBytesPerTick = 240.0;
 // The buffers of one run: beyond this a scene is refused rather than swapped.
 inline constexpr double kMaxRunBufferBytes = 2.0 * 1024 * 1024 * 1024;

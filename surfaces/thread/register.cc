@@ -4,4 +4,4 @@
 
 FITFEEL_REGISTER_SURFACE(
     fitfeel::thread::ThreadSurface, "fitfeel.surface.thread", "0.1.0",
-    "Threaded (helicoid) mating: geometry and skin model shapes only, no resistance law yet");
+    "Threaded (helicoid) mating: screw motion, flank friction and tightening (VDI 2230)");

@@ -44,6 +44,7 @@ class HelicoidGeometry final : public Geometry {
  protected:
   double DoNominalArea() const override { return 2.0 * flank_area(); }
   double DoMatingLength() const override { return length_; }
+  double DoLead() const override { return pitch_; }
   std::string DoDescribe() const override;
 
  private:

@@ -76,9 +76,12 @@ SurfaceGrid HelicoidDiscretizer::DoDiscretize(const PartSpec& part,
       const double theta = (i + 0.5) * dtheta;
       const double ct = std::cos(theta), st = std::sin(theta);
       const double y = c * theta + s * (0.25 * g.pitch() - k * (r - rp));
-      grid.centre.col(cell) << r * ct, y, r * st;
-      // Gradient of s (y - c theta - s P/4) + k (r - rp): k r_hat + s y_hat - s (c / r) t_hat.
-      const Eigen::Vector3d radial(ct, 0.0, st), tangential(-st, 0.0, ct);
+      // z = -r sin(theta): theta grows with a turn about +y, so the helix advancing along +y is
+      // right-handed (ISO 68-1 threads are right-hand unless marked LH).
+      grid.centre.col(cell) << r * ct, y, -r * st;
+      // Gradient of s (y - c theta - s P/4) + k (r - rp): k r_hat + s y_hat - s (c / r) t_hat,
+      // t_hat = d(r_hat)/d(theta).
+      const Eigen::Vector3d radial(ct, 0.0, -st), tangential(-st, 0.0, -ct);
       const Eigen::Vector3d n =
           k * radial + Eigen::Vector3d(0.0, s, 0.0) - s * (c / r) * tangential;
       grid.normal.col(cell) = n.normalized();

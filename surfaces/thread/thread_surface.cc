@@ -4,7 +4,10 @@
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
+#include "surfaces/thread/thread_contact_analyzer.h"
 #include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_law.h"
+#include "surfaces/thread/thread_options.h"
 #include "surfaces/thread/thread_shape.h"
 
 namespace fitfeel::thread {
@@ -18,11 +21,16 @@ std::unique_ptr<VariationGenerator> ThreadSurface::DoMakeVariationGenerator() co
 }
 
 std::unique_ptr<ContactAnalyzer> ThreadSurface::DoMakeContactAnalyzer() const {
-  throw UnsupportedError(kLimitation);
+  return std::make_unique<ThreadContactAnalyzer>();
 }
 
 std::unique_ptr<ResistanceLaw> ThreadSurface::DoMakeLaw(std::string_view) const {
-  throw UnsupportedError(kLimitation);
+  return std::make_unique<ThreadLaw>();
+}
+
+std::shared_ptr<const SurfaceOptions> ThreadSurface::DoParseOptions(
+    const ConfigNode& options) const {
+  return ParseThreadOptions(options);
 }
 
 std::shared_ptr<const Geometry> ThreadSurface::DoParseGeometry(const PartSpec& part,

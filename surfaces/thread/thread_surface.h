@@ -11,15 +11,11 @@
 
 namespace fitfeel::thread {
 
-// The message every refusal of this surface type carries.
-inline constexpr const char* kLimitation =
-    "threaded (helicoid) mating has no resistance law yet: the stub parses and validates the "
-    "helicoid, discretizes both flanks and generates pitch-diameter, pitch and flank-angle "
-    "deviations, but the contact of a screw advancing by rotation (the constrained motion couples "
-    "turn and advance; the flank load has axial, radial and tangential parts) is not modelled";
-
-// fitfeel.surface.thread: a stub that registers, validates and discretizes, and refuses to
-// render forces (renders_forces() is false; analyzers and laws throw UnsupportedError).
+// fitfeel.surface.thread: ISO 68-1 threads screwed together (docs/threads.md): helicoid flanks
+// with pitch-diameter, pitch and flank-angle deviations, their Winkler contact with friction
+// along the helix, and the bearing face of a tightened joint in series (VDI 2230). Its
+// constrained motion is a screw: a scene of it runs on the screw stage, never beside other
+// features.
 class ThreadSurface final : public SurfaceType {
  protected:
   std::vector<FormCharacteristic> DoFormCharacteristics() const override { return {}; }
@@ -30,21 +26,19 @@ class ThreadSurface final : public SurfaceType {
     return {{"pitch_error", Dimension::kLength, std::numeric_limits<double>::infinity()},
             {"flank_angle_error", Dimension::kAngle, 5.0 * std::numbers::pi / 180.0}};
   }
-  std::vector<std::string> DoLawNames() const override { return {}; }
-  bool DoRendersForces() const override { return false; }
-  std::string DoLimitation() const override { return kLimitation; }
+  std::vector<std::string> DoLawNames() const override { return {"flank"}; }
+  // Turns about its axis (with the advance the lead couples to it): the summary's torque.
   bool DoRotational() const override { return true; }
+  std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const override;
 
   std::unique_ptr<Discretizer> DoMakeDiscretizer() const override;
   std::unique_ptr<VariationGenerator> DoMakeVariationGenerator() const override;
-  // Throws UnsupportedError with kLimitation.
   std::unique_ptr<ContactAnalyzer> DoMakeContactAnalyzer() const override;
 
   std::shared_ptr<const Geometry> DoParseGeometry(const PartSpec& part,
                                                   const ConfigNode& geometry) const override;
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                    const ConfigNode& pair_node) const override;
-  // Throws UnsupportedError with kLimitation.
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
   std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const override;

@@ -58,10 +58,11 @@ TEST(HelicoidGeometryTest, NormalsAreUnitAndNormalToTheHelicoid) {
     const Eigen::Vector3d n = grid.normal.col(cell);
     const Eigen::Vector3d p = grid.centre.col(cell);
     const double s = cell % grid.columns < grid.columns / 2 ? 1.0 : -1.0;
-    const double r = std::hypot(p.x(), p.z()), theta = std::atan2(p.z(), p.x());
-    // Tangents: d/dr = (cos, -s k, sin); d/dtheta = (-r sin, c, r cos) in (x, y, z).
-    const Eigen::Vector3d tr(std::cos(theta), -s * k, std::sin(theta));
-    const Eigen::Vector3d tt(-r * std::sin(theta), c, r * std::cos(theta));
+    // A right-hand helix about +y: (r cos theta, c theta, -r sin theta).
+    const double r = std::hypot(p.x(), p.z()), theta = std::atan2(-p.z(), p.x());
+    // Tangents: d/dr = (cos, -s k, -sin); d/dtheta = (-r sin, c, -r cos) in (x, y, z).
+    const Eigen::Vector3d tr(std::cos(theta), -s * k, -std::sin(theta));
+    const Eigen::Vector3d tt(-r * std::sin(theta), c, -r * std::cos(theta));
     EXPECT_NEAR(n.norm(), 1.0, 1e-12);
     EXPECT_NEAR(n.dot(tr), 0.0, 1e-12);
     EXPECT_NEAR(n.dot(tt) / r, 0.0, 1e-12);

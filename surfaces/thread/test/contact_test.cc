@@ -1,0 +1,97 @@
+// The thread's contact and flank law on prepared skin model shapes: the screw's free play, the
+// lead's share of the torque, and friction along the helix.
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "framework/plugin/registry.h"
+#include "framework/runtime/prepare.h"
+#include "framework/scenario/scene.h"
+#include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_law.h"
+
+namespace fitfeel::thread {
+namespace {
+
+constexpr const char* kScenario = "surfaces/thread/test/conformance.yaml";
+
+struct Prepared {
+  Scene scene;
+  std::unique_ptr<ContactAnalyzer> analyzer;
+  std::unique_ptr<ResistanceLaw> law;
+  double play_phase = 0.0;  // the screw phase at which flank A meets, m
+};
+
+// The conformance scene without form deviations at `seed`, and where its flank A first meets:
+// the normal gap of the drawn pitch diameters over the largest n_y.
+Prepared PrepareThread(std::uint64_t seed, double friction) {
+  static PluginRegistry registry = [] {
+    PluginRegistry r;
+    r.LoadAll();
+    return r;
+  }();
+  Prepared p;
+  p.scene = LoadScene(kScenario, registry);
+  p.scene.inner.form.declared.clear();
+  p.scene.outer.form.declared.clear();
+  p.scene.model.friction = p.scene.model.static_friction = friction;
+  Rng rng(seed);
+  const SkinModelShapes shapes = GenerateSkinModelShapes(p.scene, rng);
+  p.analyzer = p.scene.surface->MakeContactAnalyzer();
+  p.analyzer->Prepare(p.scene.inner, shapes.inner, p.scene.outer, shapes.outer, p.scene.model);
+  p.law = p.scene.surface->MakeLaw("flank");
+  p.law->Prepare(p.scene.inner, p.scene.outer, p.scene.model);
+  const HelicoidGeometry& g = HelicoidGeometryOf(p.scene.inner);
+  const double k = std::tan(g.half_angle()), c = g.pitch() / (2 * std::numbers::pi);
+  const double r = g.outer_radius();
+  const double gap = shapes.outer.variation[0] - shapes.inner.variation[0];
+  p.play_phase = gap * std::sqrt(1 + k * k + c * c / (r * r));
+  return p;
+}
+
+Wrench At(const Prepared& p, double depth, double angle, double spin) {
+  MatingPose pose;
+  pose.depth = depth;
+  pose.angle = angle;
+  ContactState contact;
+  p.analyzer->Evaluate(pose, &contact);
+  MatingMotion motion;
+  motion.angular_velocity.y() = spin;
+  Wrench w;
+  p.law->Evaluate(contact, motion, &w);
+  return w;
+}
+
+TEST(ThreadContact, RunsFreeWithinThePlayOfItsPitchDiameters) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Prepared p = PrepareThread(seed, 0.12);
+    ASSERT_GT(p.play_phase, 0.0);
+    const double lead = 1.5e-3 / (2 * std::numbers::pi);
+    for (const double angle : {0.0, 1.0, 10.0, 30.0}) {
+      const double depth = 7.5e-3 + lead * angle;
+      for (const double u : {0.0, 0.95 * p.play_phase, -0.95 * p.play_phase}) {
+        const Wrench w = At(p, depth + u, angle, 1.0);
+        EXPECT_EQ(w.force.norm() + w.torque.norm(), 0.0) << "seed " << seed << " u " << u;
+      }
+      // Past the play the leading flank pushes the part back along the axis.
+      EXPECT_LT(At(p, depth + 1.2 * p.play_phase, angle, 1.0).force.y(), 0.0);
+      EXPECT_GT(At(p, depth - 1.2 * p.play_phase, angle, 1.0).force.y(), 0.0);
+    }
+  }
+}
+
+TEST(ThreadContact, AFrictionlessScrewTurnsWithTheLeadOnly) {
+  // Work: a torque T over a turn d(angle) moves the axial force F over the lead's advance, so
+  // T / F = P / 2 pi whatever the flank band or the pressure's spread.
+  const Prepared p = PrepareThread(3, 0.0);
+  for (const double push : {1.5, 3.0, 10.0}) {
+    const Wrench w = At(p, 7.5e-3 + push * p.play_phase, 0.0, 1.0);
+    ASSERT_LT(w.force.y(), 0.0);
+    EXPECT_NEAR(w.torque.y() / w.force.y(), 1.5e-3 / (2 * std::numbers::pi), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::thread

@@ -1,0 +1,208 @@
+#include "surfaces/thread/thread_contact_analyzer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "framework/core/error.h"
+#include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_options.h"
+
+namespace fitfeel::thread {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+double Ramp(double x) { return std::clamp(x, 0.0, 1.0); }
+
+// A bolt turned by `angle` about +y: its frame's vectors in the nut's.
+Eigen::Vector3d Turn(const Eigen::Vector3d& v, double c, double s) {
+  return {c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z()};
+}
+
+// The screw phase of a pose (ThreadContactAnalyzer): taken to the nearest turn and folded at a
+// quarter pitch, the whole turns it dropped (rad, for the nut's helix) and the offset in the
+// bolt's turned frame.
+struct ScrewPhase {
+  double folded = 0.0, shift = 0.0, cos = 1.0, sin = 0.0;
+  Eigen::Vector2d local{0.0, 0.0};
+};
+
+ScrewPhase PhaseOf(const MatingPose& pose, double pitch) {
+  ScrewPhase screw;
+  const double phase = pose.depth - pitch / kTwoPi * pose.angle;
+  const double turns = std::round(phase / pitch);
+  screw.folded = phase - turns * pitch;
+  if (std::abs(screw.folded) > 0.25 * pitch) {
+    screw.folded = std::copysign(0.5 * pitch - std::abs(screw.folded), screw.folded);
+  }
+  screw.shift = turns * kTwoPi;
+  screw.cos = std::cos(pose.angle);
+  screw.sin = std::sin(pose.angle);
+  screw.local = Eigen::Vector2d(screw.cos * pose.offset.x() - screw.sin * pose.offset.y(),
+                                screw.sin * pose.offset.x() + screw.cos * pose.offset.y());
+  return screw;
+}
+
+}  // namespace
+
+void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
+                                      const PartSpec& outer, const SkinModelShape& outer_sms,
+                                      const ModelSettings& settings) {
+  const HelicoidGeometry& bolt = HelicoidGeometryOf(inner);
+  const HelicoidGeometry& nut = HelicoidGeometryOf(outer);
+  const SurfaceGrid& grid = inner_sms.grid;
+  if (outer_sms.grid.columns != grid.columns || grid.columns % 2 != 0) {
+    throw UserError("thread contact: the bolt's and the nut's grids must have the same even "
+                    "number of columns (strips per flank), found " +
+                    std::to_string(grid.columns) + " and " +
+                    std::to_string(outer_sms.grid.columns));
+  }
+  pitch_ = bolt.pitch();
+  lead_per_radian_ = pitch_ / kTwoPi;
+  bolt_length_ = bolt.length();
+  nut_length_ = nut.length();
+  columns_ = grid.columns;
+  rows_ = grid.rows;
+  const double c = lead_per_radian_;
+  const double k = std::tan(bolt.half_angle());
+  const double rp = bolt.pitch_radius();
+  const double bolt_turns = kTwoPi * bolt.turns();
+  row_turn_ = bolt_turns / rows_;
+  const int cells = grid.size();
+  cells_.axial.resize(cells);
+  cells_.turn.resize(cells);
+  cells_.area.resize(cells);
+  cells_.variation.resize(cells);
+  cells_.nut_column.resize(cells);
+  cells_.grid_cell.resize(cells);
+  cells_.normal.resize(3, cells);
+  cells_.normal_moment.resize(3, cells);
+  cells_.slide.resize(3, cells);
+  cells_.slide_moment.resize(3, cells);
+  for (int i = 0; i < rows_; ++i) {
+    // The grid's helix runs from the bolt's far end; along the same helicoid it is the bolt with
+    // its leading end at y = 0 and turns theta <= 0.
+    const double theta = (i + 0.5) * row_turn_ - bolt_turns;
+    const double ct = std::cos(theta), st = std::sin(theta);
+    const Eigen::Vector3d radial(ct, 0.0, -st), tangential(-st, 0.0, -ct);
+    for (int j = 0; j < columns_; ++j) {
+      const int cell = grid.index(i, j), at = i * columns_ + j;
+      const double s = j < columns_ / 2 ? 1.0 : -1.0;
+      const double r = std::hypot(grid.centre(0, cell), grid.centre(2, cell));
+      const double y = c * theta + s * (0.25 * pitch_ - k * (r - rp));
+      const Eigen::Vector3d p = r * radial + Eigen::Vector3d(0.0, y, 0.0);
+      const Eigen::Vector3d n =
+          (k * radial + Eigen::Vector3d(0.0, s, 0.0) - s * (c / r) * tangential).normalized();
+      const Eigen::Vector3d h = (r * tangential + Eigen::Vector3d(0.0, c, 0.0)).normalized();
+      cells_.axial[at] = y;
+      cells_.turn[at] = theta;
+      cells_.area[at] = grid.area[cell];
+      cells_.variation[at] = inner_sms.variation[cell];
+      cells_.nut_column[at] = j;
+      cells_.grid_cell[at] = cell;
+      cells_.normal.col(at) = n;
+      cells_.normal_moment.col(at) = p.cross(n);
+      cells_.slide.col(at) = h;
+      cells_.slide_moment.col(at) = p.cross(h);
+    }
+  }
+  const SurfaceGrid& nut_grid = outer_sms.grid;
+  nut_row_turn_ = kTwoPi * nut.turns() / nut_grid.rows;
+  nut_variation_.resize(nut_grid.rows, nut_grid.columns);
+  for (int i = 0; i < nut_grid.rows; ++i) {
+    for (int j = 0; j < nut_grid.columns; ++j) {
+      nut_variation_(i, j) = outer_sms.variation[nut_grid.index(i, j)];
+    }
+  }
+  seat_ = ThreadOptionsOf(settings).joint.seat;
+}
+
+double ThreadContactAnalyzer::NutVariation(int column, double turn) const noexcept {
+  const int rows = static_cast<int>(nut_variation_.rows());
+  if (rows == 1) return nut_variation_(0, column);
+  const double x = turn / nut_row_turn_ - 0.5;
+  const int i = std::clamp(static_cast<int>(std::floor(x)), 0, rows - 2);
+  const double f = std::clamp(x - i, 0.0, 1.0);
+  return (1.0 - f) * nut_variation_(i, column) + f * nut_variation_(i + 1, column);
+}
+
+double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
+  const double y = depth + cells_.axial[i];
+  return Ramp(y / pitch_) * Ramp((nut_length_ - y) / pitch_) * Ramp(-cells_.axial[i] / pitch_);
+}
+
+double ThreadContactAnalyzer::Interference(int i, double phase,
+                                           const Eigen::Vector2d& local_offset, double turn_shift,
+                                           double angle) const noexcept {
+  const Eigen::Vector3d n = cells_.normal.col(i);
+  const double geometric = phase * n.y() + local_offset.x() * n.x() + local_offset.y() * n.z();
+  const double nut_turn = cells_.turn[i] + angle + turn_shift;
+  return geometric + cells_.variation[i] - NutVariation(cells_.nut_column[i], nut_turn);
+}
+
+void ThreadContactAnalyzer::Rows(double depth, int* first, int* last) const noexcept {
+  // A cell's centre lies within 3P/8 of its row's helix point c theta (ISO 68-1 flank band).
+  const double margin = 0.375 * pitch_;
+  const double bolt_turns = rows_ * row_turn_;
+  auto row_of = [&](double y) {
+    return (y / lead_per_radian_ + bolt_turns) / row_turn_ - 0.5;
+  };
+  const double lo = row_of(-depth - margin), hi = row_of(nut_length_ - depth + margin);
+  *first = std::clamp(static_cast<int>(std::floor(lo)), 0, rows_);
+  *last = std::clamp(static_cast<int>(std::ceil(hi)) + 1, 0, rows_);
+}
+
+void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept {
+  *out = ContactState{};
+  const ScrewPhase screw = PhaseOf(pose, pitch_);
+  int first = 0, last = 0;
+  Rows(pose.depth, &first, &last);
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero(), normal_moment = Eigen::Vector3d::Zero();
+  Eigen::Vector3d slide = Eigen::Vector3d::Zero(), slide_moment = Eigen::Vector3d::Zero();
+  double volume = 0.0, largest = 0.0, area = 0.0;
+  for (int i = first * columns_; i < last * columns_; ++i) {
+    const double share = Share(i, pose.depth);
+    if (share <= 0.0) continue;
+    area += share * cells_.area[i];
+    const double delta = Interference(i, screw.folded, screw.local, screw.shift, pose.angle);
+    if (delta <= 0.0) continue;
+    const double a = share * cells_.area[i] * delta;
+    normal += a * cells_.normal.col(i);
+    normal_moment += a * cells_.normal_moment.col(i);
+    slide += a * cells_.slide.col(i);
+    slide_moment += a * cells_.slide_moment.col(i);
+    volume += a;
+    largest = std::max(largest, delta);
+  }
+  const Eigen::Vector3d origin(pose.offset.x(), pose.depth, pose.offset.y());
+  out->normal_sum = Turn(normal, screw.cos, screw.sin);
+  out->normal_moment = Turn(normal_moment, screw.cos, screw.sin) + origin.cross(out->normal_sum);
+  out->slide_sum = Turn(slide, screw.cos, screw.sin);
+  out->slide_moment = Turn(slide_moment, screw.cos, screw.sin) + origin.cross(out->slide_sum);
+  out->engaged_area = area;
+  out->engaged = area > 0.0;
+  out->engaged_length =
+      std::max(0.0, std::min(pose.depth, nut_length_) - std::max(pose.depth - bolt_length_, 0.0));
+  out->interference = volume > 0.0;
+  out->interference_volume = volume;
+  out->max_interference = largest;
+  out->pressure_resultant = Eigen::Vector2d(out->normal_sum.x(), out->normal_sum.z());
+  out->offset_distance = pose.offset.norm();
+  out->offset_angle = std::atan2(pose.offset.y(), pose.offset.x());
+  out->stop_closure = std::isfinite(seat_) ? std::max(0.0, pose.depth - seat_) : 0.0;
+}
+
+void ThreadContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
+                                              Eigen::VectorXd* delta) const {
+  const ScrewPhase screw = PhaseOf(pose, pitch_);
+  delta->setZero(rows_ * columns_);
+  for (int i = 0; i < rows_ * columns_; ++i) {
+    if (Share(i, pose.depth) <= 0.0) continue;
+    (*delta)[cells_.grid_cell[i]] =
+        std::max(0.0, Interference(i, screw.folded, screw.local, screw.shift, pose.angle));
+  }
+}
+
+}  // namespace fitfeel::thread

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framework/model/contact_analyzer.h"
+
+namespace fitfeel::thread {
+
+// Contact of a bolt's flanks with a nut's (docs/threads.md). In the nut's mating frame the bolt
+// enters along +y; its leading end is at y = depth, and a turn by `angle` about +y advances the
+// right-hand helix by P angle / 2 pi, so at depth = P angle / 2 pi (the screw phase u = depth -
+// P angle / 2 pi is zero) both threads' nominal flanks coincide. A bolt cell's normal interference
+// is the displacement of the pose from that screw (u along y, the offset across the axis) along
+// the cell's normal, plus the bolt's variation there, minus the nut's at the same place of its
+// helix (both skin model shapes: pitch diameter, pitch and flank-angle deviations).
+//
+// The phase is taken to the nearest turn and folded at a quarter pitch: a flank pushed further
+// than P/4 into the other part's tooth rides towards its crest, so the interference falls back to
+// zero at half a pitch, where the crests meet, and the force stays continuous. Flanks within one
+// pitch of the bolt's end, of the nut's entrance and of its far face carry a share that rises
+// linearly from zero: the end chamfer and the countersinks (ISO 4753, ISO 4032) cut the first
+// turn's flanks away.
+//
+// Every sum is formed in the bolt's own frame from vectors fixed in prepare and turned into the
+// nut's frame once: no trigonometry per cell. The nut's flank shift between two of its rows is
+// interpolated linearly, so a pitch deviation moves the contact continuously.
+class ThreadContactAnalyzer final : public ContactAnalyzer {
+ protected:
+  void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+                 const SkinModelShape& outer_sms, const ModelSettings& settings) override;
+  void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
+  void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+
+ private:
+  // The bolt's cells, row by row (turn angle), each row's strips flank A then flank B.
+  struct Cells {
+    Eigen::VectorXd axial;      // y of the centre in the bolt's frame (leading end at 0), m
+    Eigen::VectorXd turn;       // helix angle in the bolt's frame (<= 0), rad
+    Eigen::VectorXd area;       // m^2
+    Eigen::VectorXd variation;  // the bolt's skin model shape, m
+    Eigen::VectorXi nut_column; // the nut's grid column of the same flank and strip
+    Eigen::VectorXi grid_cell;  // the cell's index in the bolt's grid
+    Eigen::Matrix3Xd normal, normal_moment, slide, slide_moment;  // bolt frame, about its origin
+  };
+  // Interference of cell i at the screw phase `phase` (folded) and offset `local_offset` in the
+  // bolt's frame, on the nut's turn `shift` (whole turns of the phase, rad); its share (0-1) of
+  // the contact at insertion `depth`.
+  double Interference(int i, double phase, const Eigen::Vector2d& local_offset, double turn_shift,
+                      double angle) const noexcept;
+  double Share(int i, double depth) const noexcept;
+  double NutVariation(int column, double turn) const noexcept;
+  // Row range [first, last) of the bolt whose cells can lie inside the nut at `depth`.
+  void Rows(double depth, int* first, int* last) const noexcept;
+
+  Cells cells_;
+  int columns_ = 0, rows_ = 0;
+  double pitch_ = 0.0, lead_per_radian_ = 0.0;
+  double row_turn_ = 0.0;       // the bolt's turn angle per row, rad
+  double nut_length_ = 0.0, bolt_length_ = 0.0;
+  Eigen::MatrixXd nut_variation_;  // rows x columns of the nut's grid
+  double nut_row_turn_ = 0.0;
+  double seat_ = 0.0;  // depth at which the axial stop meets (infinity: none)
+};
+
+}  // namespace fitfeel::thread
