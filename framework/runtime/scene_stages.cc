@@ -38,6 +38,7 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
     screw.proxy_stiffness = mating.proxy_stiffness;
     screw.axial_load = scene.part_motion.axial_load;
     screw.turn = scene.part_motion.turn;
+    screw.lead = scene.inner.geometry->lead();
     stages.constrained = std::make_unique<ScrewStage>(*prepared.analyzer, *prepared.law, screw);
     return stages;
   }

@@ -1,7 +1,9 @@
 #include "framework/runtime/screw_stage.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
@@ -24,9 +26,10 @@ ScrewStage::ScrewStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law
     : analyzer_(analyzer), law_(law), options_(options) {
   if (!analyzer.prepared()) throw UserError("screw stage needs a prepared contact analyzer");
   if (!std::isfinite(options.depth_origin) || !(options.proxy_stiffness > 0.0) ||
-      !std::isfinite(options.axial_load) || !(options.turn.speed >= 0.0)) {
-    throw UserError("screw stage: the depth origin, axial load and turning speed must be finite "
-                    "and the proxy stiffness > 0");
+      !std::isfinite(options.axial_load) || !(options.turn.speed >= 0.0) ||
+      !(options.lead > 0.0 && std::isfinite(options.lead))) {
+    throw UserError("screw stage: the depth origin, axial load and turning speed must be finite, "
+                    "the lead and the proxy stiffness > 0");
   }
 }
 
@@ -60,61 +63,66 @@ double ScrewStage::SettleDepth(double angle, double device_depth, RunState* run,
     const double load = hand ? k * (device_depth - z) : options_.axial_load;
     return AxialForce(z, angle, run->law, out) + load;
   };
-  double z0 = run->depth, g0 = balance(z0);
-  // Within a thousandth of a newton, or of a millionth of the spring's pull: the settle's error
-  // is below what any device renders.
-  auto settled = [&](double g) { return std::abs(g) <= 1e-3; };
-  if (settled(g0)) return z0;
-  const double slope0 = hand ? -k : 0.0;
-  double slope = run->slope < 0.0 ? run->slope : slope0;
-  // Until a root is bracketed: Newton on the last slope, or a step that doubles where the balance
-  // is flat (the part crossing its flanks' play).
-  double step = slope < 0.0 ? -g0 / slope : std::copysign(1e-6, g0);
-  double lo = 0.0, hi = 0.0, g_lo = 0.0, g_hi = 0.0;
-  bool bracketed = false;
+  // The part follows its flank along the lead as it turns: from there the contact is the last
+  // tick's, and one Newton step on the last slope usually lands.
+  double z = run->depth + options_.lead / (2.0 * std::numbers::pi) * (angle - run->angle);
+  double g = balance(z);
   int evaluations = 1;
-  while (evaluations < kMaxEvaluations) {
-    const double z1 = z0 + step, g1 = balance(z1);
-    ++evaluations;
-    if (settled(g1)) {
-      if (z1 != z0 && g1 != g0) run->slope = (g1 - g0) / (z1 - z0);
-      return z1;
+  // Settled within a thousandth of a newton, or a bracket narrower than 0.1 nm (0.1 N at the
+  // stiffness of a tightened joint): below what any device renders.
+  constexpr double kForce = 1e-3, kWidth = 1e-10;
+  double lo = -std::numeric_limits<double>::infinity(), hi = -lo, g_lo = 0.0, g_hi = 0.0;
+  auto bracket = [&](double at, double value) {
+    if (value > 0.0 && at > lo) {
+      lo = at;
+      g_lo = value;
+    } else if (value < 0.0 && at < hi) {
+      hi = at;
+      g_hi = value;
     }
-    if ((g1 > 0.0) != (g0 > 0.0)) {
-      lo = z0 < z1 ? z0 : z1;
-      hi = z0 < z1 ? z1 : z0;
-      g_lo = z0 < z1 ? g0 : g1;
-      g_hi = z0 < z1 ? g1 : g0;
-      bracketed = true;
-      break;
-    }
-    const double secant = (g1 - g0) / (z1 - z0);
-    z0 = z1;
-    g0 = g1;
-    step = secant < 0.0 ? -g1 / secant : 2.0 * step;
-  }
-  if (!bracketed) return z0;
-  // Illinois regula falsi on [lo, hi], g(lo) > 0 > g(hi).
-  int side = 0;
-  double z = lo;
-  while (evaluations < kMaxEvaluations) {
-    z = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-    const double g = balance(z);
-    ++evaluations;
-    if (settled(g)) break;
-    if (g > 0.0) {
-      lo = z;
-      g_lo = g;
-      if (side == 1) g_hi *= 0.5;
-      side = 1;
+  };
+  bracket(z, g);
+  double slope = run->slope < 0.0 ? run->slope : (hand ? -k : 0.0);
+  double step = 1e-6;
+  // A tick moves the part an eighth of a pitch at most beyond the lead: no load makes a nut jump
+  // its flanks, and a settle that has not met them stops short of the next turn's.
+  const double reach = options_.lead / 8.0, least = z - reach, most = z + reach;
+  int side = 0;  // Illinois: the bracket end that moved last
+  while (std::abs(g) > kForce && evaluations < kMaxEvaluations && !(hi - lo <= kWidth)) {
+    double next = 0.0;
+    const bool closed = std::isfinite(lo) && std::isfinite(hi);
+    if (closed) {
+      // Regula falsi, the end that stays twice in a row halved (Illinois).
+      next = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+    } else if (slope < 0.0) {
+      next = z - g / slope;
     } else {
-      hi = z;
-      g_hi = g;
-      if (side == -1) g_lo *= 0.5;
-      side = -1;
+      // Flat: the part crosses its flanks' play. Doubling steps until it meets a flank.
+      next = z + std::copysign(step, g);
+      step *= 2.0;
     }
+    next = std::clamp(next, least, most);
+    if (next == z) break;  // at the tick's reach, the flanks not met
+    const double g_next = balance(next);
+    ++evaluations;
+    if (g_next != g && next != z) {
+      const double secant = (g_next - g) / (next - z);
+      slope = secant < 0.0 ? secant : 0.0;
+    }
+    if (closed) {
+      if (g_next > 0.0) {
+        if (side == 1) g_hi *= 0.5;
+        side = 1;
+      } else {
+        if (side == -1) g_lo *= 0.5;
+        side = -1;
+      }
+    }
+    bracket(next, g_next);
+    z = next;
+    g = g_next;
   }
-  if (hi > lo && g_lo != g_hi) run->slope = (g_hi - g_lo) / (hi - lo);
+  if (slope < 0.0) run->slope = slope;
   return z;
 }
 
@@ -136,12 +144,16 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   }
   run->time = part.time;
   out->contact_evaluations = 0;
+  const double previous_angle = run->angle;
   if (options_.turn.speed > 0.0) {
     if (!run->screw.stopped) run->angle += options_.turn.speed * dt;
   } else {
     run->angle = device.angle;
   }
-  run->depth = SettleDepth(run->angle, device.depth, run, out);
+  const double angle = run->angle;
+  run->angle = previous_angle;
+  run->depth = SettleDepth(angle, device.depth, run, out);
+  run->angle = angle;
 
   MatingPose pose;
   pose.depth = run->depth;

@@ -3,42 +3,48 @@
 #include <cmath>
 #include <numbers>
 
+#include "surfaces/thread/bolted_joint.h"
+#include "surfaces/thread/fastener_tables.h"
+#include "surfaces/thread/property_class.h"
 #include "surfaces/thread/thread_geometry.h"
 
 namespace fitfeel::thread {
 
 JointModel MakeJointModel(const PartSpec& bolt, const PartSpec& nut, const JointOptions& joint) {
   const HelicoidGeometry& g = HelicoidGeometryOf(bolt);
-  constexpr double kPi = std::numbers::pi;
   const double d = g.diameter(), p = g.pitch();
-  const double d3 = d - 1.226869 * p, d2 = d - 0.649519 * p;
-  const double a_n = kPi / 4 * d * d, a_3 = kPi / 4 * d3 * d3;
-  const double e_s = bolt.material.youngs_modulus, e_m = nut.material.youngs_modulus;
+  // Without a joint only the flank pair's terms are read, which no clamp length enters.
+  ThroughBolt through{d, p, joint.present() ? joint.clamp_length() : d, {},
+                      bolt.material.youngs_modulus, nut.material.youngs_modulus};
+  if (joint.shank > 0.0) through.shank.push_back({joint.shank, d});
+  const BoltResilience resilience = ThroughBoltResilience(through);
   JointModel model;
-  model.engaged_thread_compliance = 0.5 * d / (e_s * a_3) + 0.4 * d / (e_m * a_n);
-  const double ds = 0.5 * (d2 + d3);
-  model.stress_area = kPi / 4 * ds * ds;
-  model.polar_modulus = kPi / 16 * ds * ds * ds;
+  model.engaged_thread_compliance = resilience.thread_pair();
+  const double d0 = 0.5 * (PitchDiameter(d, p) + MinorDiameter(d, p));
+  model.stress_area = StressArea(d, p);
+  model.polar_modulus = std::numbers::pi / 16.0 * d0 * d0 * d0;
   if (!joint.present()) return model;
-  const double lk = joint.clamp_length();
-  const double head = 0.5 * d / (e_s * a_n);
-  const double shank = joint.shank / (e_s * a_n) + (lk - joint.shank) / (e_s * a_3);
-  const double dw = joint.bearing_diameter, dh = joint.hole_diameter;
-  const double ep = joint.plate_modulus > 0.0 ? joint.plate_modulus : e_s;
-  const double tan_phi = 0.362 + 0.032 * std::log(lk / dw / 2.0) + 0.153 * std::log(1e3);
-  const double w = 1.0;
-  model.plate_compliance =
-      2.0 * std::log((dw + dh) * (dw + w * lk * tan_phi - dh) /
-                     ((dw - dh) * (dw + w * lk * tan_phi + dh))) /
-      (w * ep * kPi * dh * tan_phi);
-  model.bolt_compliance = head + shank + model.engaged_thread_compliance;
-  model.clamp_stiffness =
-      joint.stiffness > 0.0 ? joint.stiffness : 1.0 / (head + shank + model.plate_compliance);
-  const double r = 0.5 * dh, rr = 0.5 * dw;
-  model.bearing_radius = 2.0 / 3.0 * (rr * rr * rr - r * r * r) / (rr * rr - r * r);
-  if (joint.property_class == "8.8") model.yield_strength = d <= 16e-3 ? 640e6 : 660e6;
-  if (joint.property_class == "10.9") model.yield_strength = 940e6;
-  if (joint.property_class == "12.9") model.yield_strength = 1100e6;
+  model.bearing_diameter = joint.bearing_diameter > 0.0
+                               ? joint.bearing_diameter
+                               : MetricFastenerOf(d).nut_bearing_diameter;
+  model.hole_diameter = joint.hole_diameter > 0.0
+                            ? joint.hole_diameter
+                            : MetricFastenerOf(d).clearance_hole(ClearanceSeries::kMedium);
+  const ClampedParts plates{model.bearing_diameter, model.hole_diameter, joint.clamp_length(),
+                            joint.plate_outer_diameter,
+                            joint.plate_modulus > 0.0 ? joint.plate_modulus
+                                                      : bolt.material.youngs_modulus};
+  model.plate_compliance = ThroughBoltPlateResilience(plates).resilience;
+  model.bolt_compliance = resilience.total();
+  model.clamp_stiffness = joint.stiffness > 0.0
+                              ? joint.stiffness
+                              : 1.0 / (resilience.series_with_thread_pair() +
+                                       model.plate_compliance);
+  const double r = 0.5 * model.hole_diameter, big = 0.5 * model.bearing_diameter;
+  model.bearing_radius = 2.0 / 3.0 * (big * big * big - r * r * r) / (big * big - r * r);
+  if (!joint.property_class.empty()) {
+    model.yield_strength = BoltPropertyClass::Parse(joint.property_class).min_yield_strength(d);
+  }
   return model;
 }
 

@@ -14,6 +14,8 @@ struct JointModel {
   double clamp_stiffness = 0.0;
   double bolt_compliance = 0.0;   // delta_S, all of the bolt's sections, m/N
   double plate_compliance = 0.0;  // delta_P, m/N
+  double bearing_diameter = 0.0;  // d_W: the scene's, or the ISO 4032 nut's, m
+  double hole_diameter = 0.0;     // d_h: the scene's, or the ISO 273 medium series', m
   double bearing_radius = 0.0;    // friction radius of the bearing annulus, uniform pressure, m
   double stress_area = 0.0;       // A_S, m^2
   double polar_modulus = 0.0;     // W_P of the stress cross-section, m^3

@@ -21,13 +21,20 @@ Eigen::Vector3d Turn(const Eigen::Vector3d& v, double c, double s) {
   return {c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z()};
 }
 
+}  // namespace
+
 // The screw phase of a pose (ThreadContactAnalyzer): taken to the nearest turn and folded at a
 // quarter pitch, the whole turns it dropped (rad, for the nut's helix) and the offset in the
 // bolt's turned frame.
 struct ScrewPhase {
   double folded = 0.0, shift = 0.0, cos = 1.0, sin = 0.0;
+  // The deviations' weight: 1 up to the fold, falling to 0 where the crests meet, so that the
+  // nut's turn changing there (shift) moves nothing.
+  double deviations = 1.0;
   Eigen::Vector2d local{0.0, 0.0};
 };
+
+namespace {
 
 ScrewPhase PhaseOf(const MatingPose& pose, double pitch) {
   ScrewPhase screw;
@@ -36,6 +43,7 @@ ScrewPhase PhaseOf(const MatingPose& pose, double pitch) {
   screw.folded = phase - turns * pitch;
   if (std::abs(screw.folded) > 0.25 * pitch) {
     screw.folded = std::copysign(0.5 * pitch - std::abs(screw.folded), screw.folded);
+    screw.deviations = std::abs(screw.folded) / (0.25 * pitch);
   }
   screw.shift = turns * kTwoPi;
   screw.cos = std::cos(pose.angle);
@@ -46,6 +54,7 @@ ScrewPhase PhaseOf(const MatingPose& pose, double pitch) {
 }
 
 }  // namespace
+
 
 void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                       const PartSpec& outer, const SkinModelShape& outer_sms,
@@ -133,13 +142,14 @@ double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
   return Ramp(y / pitch_) * Ramp((nut_length_ - y) / pitch_) * Ramp(-cells_.axial[i] / pitch_);
 }
 
-double ThreadContactAnalyzer::Interference(int i, double phase,
-                                           const Eigen::Vector2d& local_offset, double turn_shift,
+double ThreadContactAnalyzer::Interference(int i, const ScrewPhase& screw,
                                            double angle) const noexcept {
   const Eigen::Vector3d n = cells_.normal.col(i);
-  const double geometric = phase * n.y() + local_offset.x() * n.x() + local_offset.y() * n.z();
-  const double nut_turn = cells_.turn[i] + angle + turn_shift;
-  return geometric + cells_.variation[i] - NutVariation(cells_.nut_column[i], nut_turn);
+  const double geometric =
+      screw.folded * n.y() + screw.local.x() * n.x() + screw.local.y() * n.z();
+  const double nut_turn = cells_.turn[i] + angle + screw.shift;
+  return geometric + screw.deviations * (cells_.variation[i] -
+                                         NutVariation(cells_.nut_column[i], nut_turn));
 }
 
 void ThreadContactAnalyzer::Rows(double depth, int* first, int* last) const noexcept {
@@ -166,7 +176,7 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
     const double share = Share(i, pose.depth);
     if (share <= 0.0) continue;
     area += share * cells_.area[i];
-    const double delta = Interference(i, screw.folded, screw.local, screw.shift, pose.angle);
+    const double delta = Interference(i, screw, pose.angle);
     if (delta <= 0.0) continue;
     const double a = share * cells_.area[i] * delta;
     normal += a * cells_.normal.col(i);
@@ -201,7 +211,7 @@ void ThreadContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   for (int i = 0; i < rows_ * columns_; ++i) {
     if (Share(i, pose.depth) <= 0.0) continue;
     (*delta)[cells_.grid_cell[i]] =
-        std::max(0.0, Interference(i, screw.folded, screw.local, screw.shift, pose.angle));
+        std::max(0.0, Interference(i, screw, pose.angle));
   }
 }
 

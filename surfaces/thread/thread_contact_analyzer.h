@@ -8,6 +8,8 @@
 
 namespace fitfeel::thread {
 
+struct ScrewPhase;
+
 // Contact of a bolt's flanks with a nut's (docs/threads.md). In the nut's mating frame the bolt
 // enters along +y; its leading end is at y = depth, and a turn by `angle` about +y advances the
 // right-hand helix by P angle / 2 pi, so at depth = P angle / 2 pi (the screw phase u = depth -
@@ -44,11 +46,9 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
     Eigen::VectorXi grid_cell;  // the cell's index in the bolt's grid
     Eigen::Matrix3Xd normal, normal_moment, slide, slide_moment;  // bolt frame, about its origin
   };
-  // Interference of cell i at the screw phase `phase` (folded) and offset `local_offset` in the
-  // bolt's frame, on the nut's turn `shift` (whole turns of the phase, rad); its share (0-1) of
-  // the contact at insertion `depth`.
-  double Interference(int i, double phase, const Eigen::Vector2d& local_offset, double turn_shift,
-                      double angle) const noexcept;
+  // Interference of cell i at the screw phase `screw` with the bolt turned by `angle`; its share
+  // (0-1) of the contact at insertion `depth`.
+  double Interference(int i, const ScrewPhase& screw, double angle) const noexcept;
   double Share(int i, double depth) const noexcept;
   double NutVariation(int column, double turn) const noexcept;
   // Row range [first, last) of the bolt whose cells can lie inside the nut at `depth`.

@@ -34,9 +34,8 @@ JointOptions ParseJoint(const ConfigNode& node) {
   if (auto d = node.Find("hole_diameter")) {
     joint.hole_diameter = d->AsQuantityIn(Dimension::kLength, 0.0, 10.0, false);
   }
-  if (auto d = node.Find("plate_outer_diameter")) {
-    joint.plate_outer_diameter = d->AsQuantityIn(Dimension::kLength, 0.0, 100.0, false);
-  }
+  joint.plate_outer_diameter =
+      node.Child("plate_outer_diameter").AsQuantityIn(Dimension::kLength, 0.0, 100.0, false);
   if (auto e = node.Find("plate_modulus")) {
     joint.plate_modulus = e->AsQuantityIn(Dimension::kPressure, 1e9, 1e12);
   }

@@ -33,9 +33,9 @@ struct JointOptions {
   double hole_diameter = 0.0;     // d_h, the clamped part's hole, m (0: ISO 273 medium)
   double bearing_friction = 0.0;  // mu_K
   std::vector<double> plates;     // thicknesses of the clamped plates, m (their sum is l_K)
-  // Outer diameter of the clamped plates about the bolt, D_A, m (infinity: wide plates, the
-  // deformation cone fully developed).
-  double plate_outer_diameter = std::numeric_limits<double>::infinity();
+  // Outer diameter of the clamped plates about the bolt, D_A, m (VDI 2230's cone angle depends
+  // on it).
+  double plate_outer_diameter = 0.0;
   double plate_modulus = 0.0;     // E_P, Pa (0: the bolt's)
   // Unthreaded shank length within the clamp, m (0: a fully threaded ISO 4017 bolt).
   double shank = 0.0;

@@ -26,16 +26,18 @@ struct Prepared {
 
 // The conformance scene without form deviations at `seed`, and where its flank A first meets:
 // the normal gap of the drawn pitch diameters over the largest n_y.
-Prepared PrepareThread(std::uint64_t seed, double friction) {
-  static PluginRegistry registry = [] {
-    PluginRegistry r;
-    r.LoadAll();
+Prepared PrepareThread(std::uint64_t seed, double friction, bool form = false) {
+  static PluginRegistry* registry = [] {
+    auto* r = new PluginRegistry();
+    r->LoadAll();
     return r;
   }();
   Prepared p;
-  p.scene = LoadScene(kScenario, registry);
-  p.scene.inner.form.declared.clear();
-  p.scene.outer.form.declared.clear();
+  p.scene = LoadScene(kScenario, *registry);
+  if (!form) {
+    p.scene.inner.form.declared.clear();
+    p.scene.outer.form.declared.clear();
+  }
   p.scene.model.friction = p.scene.model.static_friction = friction;
   Rng rng(seed);
   const SkinModelShapes shapes = GenerateSkinModelShapes(p.scene, rng);
@@ -59,6 +61,7 @@ Wrench At(const Prepared& p, double depth, double angle, double spin) {
   p.analyzer->Evaluate(pose, &contact);
   MatingMotion motion;
   motion.angular_velocity.y() = spin;
+  motion.velocity.y() = 0.01;
   Wrench w;
   p.law->Evaluate(contact, motion, &w);
   return w;
@@ -83,13 +86,13 @@ TEST(ThreadContact, RunsFreeWithinThePlayOfItsPitchDiameters) {
 }
 
 TEST(ThreadContact, AFrictionlessScrewTurnsWithTheLeadOnly) {
-  // Work: a torque T over a turn d(angle) moves the axial force F over the lead's advance, so
-  // T / F = P / 2 pi whatever the flank band or the pressure's spread.
+  // A force normal to the flanks does no work along the screw (d(angle), P d(angle) / 2 pi) that
+  // keeps them in contact: T + F P / 2 pi = 0, whatever the flank band or the pressure's spread.
   const Prepared p = PrepareThread(3, 0.0);
   for (const double push : {1.5, 3.0, 10.0}) {
     const Wrench w = At(p, 7.5e-3 + push * p.play_phase, 0.0, 1.0);
     ASSERT_LT(w.force.y(), 0.0);
-    EXPECT_NEAR(w.torque.y() / w.force.y(), 1.5e-3 / (2 * std::numbers::pi), 1e-12);
+    EXPECT_NEAR(w.torque.y() / w.force.y(), -1.5e-3 / (2 * std::numbers::pi), 1e-12);
   }
 }
 

@@ -161,21 +161,12 @@ TEST(HelicoidGeneratorTest, EvaluationRecoversKnownDeviations) {
   EXPECT_FALSE(checks[0].pass());  // +40 um is outside 6g
 }
 
-TEST(ThreadSurfaceTest, RefusesToRenderForcesWithItsLimitation) {
+TEST(ThreadSurfaceTest, OffersTheFlankLawAndAScrewGeometry) {
   const ThreadSurface surface;
-  EXPECT_FALSE(surface.renders_forces());
-  EXPECT_NE(surface.limitation().find("threaded (helicoid) mating has no resistance law yet"),
-            std::string::npos);
-  EXPECT_TRUE(surface.law_names().empty());
-  try {
-    surface.MakeContactAnalyzer();
-    FAIL() << "a contact analyzer was made";
-  } catch (const UnsupportedError& e) {
-    EXPECT_EQ(std::string(e.what()), surface.limitation());
-  }
+  EXPECT_TRUE(surface.renders_forces());
+  EXPECT_EQ(surface.law_names(), std::vector<std::string>{"flank"});
   EXPECT_THROW(surface.MakeLaw("gps"), UserError);
-  EXPECT_NE(surface.MakeDiscretizer(), nullptr);
-  EXPECT_NE(surface.MakeVariationGenerator(), nullptr);
+  EXPECT_DOUBLE_EQ(HelicoidGeometryOf(Bolt()).lead(), 1.5e-3);
 }
 
 }  // namespace
