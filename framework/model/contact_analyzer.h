@@ -14,9 +14,9 @@ namespace fitfeel {
 
 // Pose of the moving part relative to the fixed one, in the fixed part's mating frame.
 struct MatingPose {
-  double depth = 0.0;                 // insertion along the mating axis (y), m; 0 = first contact
-  Eigen::Vector2d offset{0.0, 0.0};   // (x, z) offset of the moving part's axis, m
-  double angle = 0.0;                 // rotation about the mating axis (or the sphere centre), rad
+  double depth = 0.0;                // insertion along the mating axis (y), m; 0 = first contact
+  Eigen::Vector2d offset{0.0, 0.0};  // (x, z) offset of the moving part's axis, m
+  double angle = 0.0;                // rotation about the mating axis (or the sphere centre), rad
 };
 
 // The pose a contact analyzer takes (the inner part's, in the outer part's mating frame) for the
@@ -38,10 +38,10 @@ struct ContactState {
   double engaged_area = 0.0;    // nominal area of the overlapping cells, m^2
   // Radial state (eq. 9): distance of the moving axis from the fixed axis, its direction gamma,
   // and the assembly space's extent S_A(gamma) in that direction.
-  double offset_distance = 0.0;      // delta d, m
-  double offset_angle = 0.0;         // gamma, rad
-  double assembly_extent = 0.0;      // S_A(gamma), m (0 when the assembly space is empty)
-  double penetration = 0.0;          // max(0, delta d - S_A(gamma)), m
+  double offset_distance = 0.0;  // delta d, m
+  double offset_angle = 0.0;     // gamma, rad
+  double assembly_extent = 0.0;  // S_A(gamma), m (0 when the assembly space is empty)
+  double penetration = 0.0;      // max(0, delta d - S_A(gamma)), m
   // Unit vector along which the moving axis has left the positions it may take (the assembly
   // space, or the energy-minimising axis position under interference); the radial spring pushes
   // back along minus it. Zero when penetration is zero. An assembly space that is not centred on
@@ -52,7 +52,7 @@ struct ContactState {
   // texture taken as its expected interference where the settings ask for it; a law multiplies it
   // by its pressure per unit interference.
   double interference_volume = 0.0;
-  double max_interference = 0.0;     // largest delta(P_ij), m
+  double max_interference = 0.0;  // largest delta(P_ij), m
   // Resultant direction of the contact normal force in the cross-section when interfering.
   Eigen::Vector2d pressure_resultant{0.0, 0.0};  // sum of delta * area * u_j, m^3
   // d(pressure_resultant)/d(offset), m^2 (column 0 along x, 1 along z), where the analyzer gives
@@ -115,8 +115,7 @@ class FITFEEL_API ContactAnalyzer {
                          const ModelSettings& settings) = 0;
   virtual void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept = 0;
   virtual void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
-  virtual bool DoAssemblySpace(const MatingPose& pose,
-                               std::vector<Eigen::Vector2d>* polygon) const;
+  virtual bool DoAssemblySpace(const MatingPose& pose, std::vector<Eigen::Vector2d>* polygon) const;
 
  private:
   bool prepared_ = false;

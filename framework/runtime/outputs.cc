@@ -51,18 +51,26 @@ std::string TraceHeader() {
          "device_fault";
 }
 
-std::string TraceHeader(const std::vector<std::string>& features) {
+std::string TraceHeader(const std::vector<std::string>& features, bool screw) {
   std::string header = TraceHeader();
   for (const std::string& name : features) header += ",axial_" + name + "_N";
+  if (screw) header += ",preload_N,torque_Nm,thread_torque_Nm,head_torque_Nm,seated";
   return header;
 }
 
-void AppendTraceRow(std::string* out, const TickRecord& r, int features) {
+void AppendTraceRow(std::string* out, const TickRecord& r, int features, bool screw) {
   AppendTraceRow(out, r);
   for (int i = 0; i < features && i < kMaxJointFeatures; ++i) {
     *out += ',';
     AppendShortestDecimal(out, r.feature_axial[i]);
   }
+  if (!screw) return;
+  for (const double v :
+       {r.screw.preload, r.screw.torque, r.screw.thread_torque, r.screw.head_torque}) {
+    *out += ',';
+    AppendShortestDecimal(out, v);
+  }
+  *out += r.screw.seated ? ",1" : ",0";
 }
 
 std::string TraceRow(const TickRecord& r) {
@@ -133,6 +141,12 @@ void SummaryBuilder::Add(const TickRecord& r) {
     axis_torque_.Add(r.wrench.torque.y());
     twist_.Add(r.pose.angle);
   }
+  if (r.screw.active) {
+    screw_last_ = r.screw;
+    screw_angle_ = r.pose.angle;
+    screw_torque_.Add(r.screw.torque);
+    screw_preload_.Add(r.screw.preload);
+  }
 }
 
 nlohmann::json MakeSummary(const RunInfo& info, const std::vector<TickRecord>& trace,
@@ -190,6 +204,22 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
     j["features"] = features;
     j["axis_torque_Nm"] = axis_torque_.ToJson();
     j["twist_rad"] = twist_.ToJson();
+  }
+  if (info.screw) {
+    // The joint at the end of the run, and how far the part turned once its face met.
+    const ScrewOutput& s = screw_last_;
+    j["thread"] = {
+        {"preload_N", s.preload},
+        {"torque_Nm", s.torque},
+        {"thread_torque_Nm", s.thread_torque},
+        {"head_torque_Nm", s.head_torque},
+        {"seated", s.seated},
+        {"turn_after_snug_deg",
+         s.seated ? (screw_angle_ - s.snug_angle) * 180.0 / 3.141592653589793 : 0.0},
+        {"target_reached", s.stopped},
+        {"torque_Nm_over_run", screw_torque_.ToJson()},
+        {"preload_N_over_run", screw_preload_.ToJson()},
+    };
   }
   j["depth_mm"] = depth.ToJson();
   // Where and by how much the contact's stresses came closest to (or passed) the yield strength.

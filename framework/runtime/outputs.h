@@ -1,11 +1,11 @@
 #pragma once
 
 #include <algorithm>
-#include <cstdint>
-#include <limits>
-#include <filesystem>
-#include <string>
 #include <array>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +22,7 @@ struct RunInfo {
   std::string scenario;
   std::filesystem::path scenario_file;
   std::vector<std::string> features;  // a several-feature scene's, in order
+  bool screw = false;                 // a screw scene: summary.json's `thread`
   std::uint64_t seed = 0;
   std::string surface;
   std::string law;
@@ -63,13 +64,17 @@ struct RecordingOutput {
 FITFEEL_API std::string TraceHeader();
 // The same with a column per feature of a several-feature scene after the others:
 // axial_<feature>_N, each feature's axial force (TickRecord::feature_axial).
-FITFEEL_API std::string TraceHeader(const std::vector<std::string>& features);
+FITFEEL_API std::string TraceHeader(const std::vector<std::string>& features, bool screw = false);
 // One row of trace.csv (no newline). Numbers in their shortest exact decimal form.
 FITFEEL_API std::string TraceRow(const TickRecord& record);
 // The same row appended to `out` (no newline): no allocation once `out` has room.
 FITFEEL_API void AppendTraceRow(std::string* out, const TickRecord& record);
 // The same with `features` per-feature columns (TraceHeader(features)).
-FITFEEL_API void AppendTraceRow(std::string* out, const TickRecord& record, int features);
+// A screw scene (`screw`) appends its joint's columns: preload_N, torque_Nm (turning the part
+// against the contact), thread_torque_Nm and head_torque_Nm (its shares at the flanks and at the
+// bearing face) and seated (1 once the bearing face has met).
+FITFEEL_API void AppendTraceRow(std::string* out, const TickRecord& record, int features,
+                                bool screw = false);
 
 // Running mean, minimum and maximum of a sample.
 struct RunningSummary {
@@ -103,6 +108,10 @@ class FITFEEL_API SummaryBuilder {
   std::array<RunningSummary, kMaxJointFeatures> feature_axial_;
   int features_ = 0;
   RunningSummary axis_torque_, twist_;
+  // A screw: its last constrained tick and its peaks.
+  ScrewOutput screw_last_;
+  double screw_angle_ = 0.0;
+  RunningSummary screw_torque_, screw_preload_;
   std::uint64_t interference_ticks_ = 0;
   std::uint64_t yielding_ticks_ = 0;
   TickRecord worst_;  // the tick with the largest elastic-limit utilisation

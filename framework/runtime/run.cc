@@ -80,6 +80,7 @@ RunInfo MakeRunInfo(const Scene& scene, const PreparedScene& prepared) {
   info.duration = scene.run.duration;
   info.rotational = prepared.rotational;
   for (const MatingFeature& feature : scene.features) info.features.push_back(feature.name);
+  info.screw = IsScrewScene(scene);
   info.friction = scene.model.friction;
   info.contact_stiffness = scene.model.contact_stiffness;
   info.discretize_seconds = prepared.discretize_seconds;
@@ -139,6 +140,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
     outputs.summary = scene.run.write_summary;
     if (scene.run.write_recording) outputs.recording = RecordingInfo{spec.model};
     for (const MatingFeature& feature : scene.features) outputs.features.push_back(feature.name);
+    outputs.screw = IsScrewScene(scene);
     TraceStream stream(outputs, options.observer);
     settings.stream = &stream.ring();
     settings.stop = options.stop;

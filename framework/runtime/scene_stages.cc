@@ -10,6 +10,11 @@
 
 namespace fitfeel {
 
+bool IsScrewScene(const Scene& scene) {
+  return scene.features.empty() && scene.inner.geometry != nullptr &&
+         scene.inner.geometry->lead() > 0.0;
+}
+
 SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
                             const DeviceSpec& spec) {
   PositioningStage::Options free_motion;
@@ -30,8 +35,7 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
   if (limited && free_motion.free_stiffness > 0.0) {
     mating.proxy_stiffness = free_motion.free_stiffness;
   }
-  if (scene.features.empty() && scene.inner.geometry != nullptr &&
-      scene.inner.geometry->lead() > 0.0) {
+  if (IsScrewScene(scene)) {
     ScrewStage::Options screw;
     screw.depth_origin = mating.depth_origin;
     screw.moving = scene.moving;

@@ -27,6 +27,10 @@ struct FITFEEL_API SceneStages {
   // A ConstrainedStage, or for a several-feature scene a JointStage over its features.
   std::unique_ptr<Stage> constrained;
 };
+// A scene of one thread (its geometry has a lead): its constrained stage is a ScrewStage, and its
+// outputs carry the joint's preload and torques.
+FITFEEL_API bool IsScrewScene(const Scene& scene);
+
 FITFEEL_API SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
                                         const DeviceSpec& spec);
 

@@ -262,6 +262,7 @@ bool Scheduler::Tick(double time) noexcept {
   record.elastic = output.elastic;
   record.feature_count = output.feature_count;
   record.feature_axial = output.feature_axial;
+  record.screw = output.screw;
   record.stiffness = output.stiffness;
   record.compute_us = static_cast<double>(end - start) * 1e-3;
   record.stage = stage;

@@ -28,14 +28,13 @@ ScrewStage::ScrewStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law
   if (!std::isfinite(options.depth_origin) || !(options.proxy_stiffness > 0.0) ||
       !std::isfinite(options.axial_load) || !(options.turn.speed >= 0.0) ||
       !(options.lead > 0.0 && std::isfinite(options.lead))) {
-    throw UserError("screw stage: the depth origin, axial load and turning speed must be finite, "
-                    "the lead and the proxy stiffness > 0");
+    throw UserError(
+        "screw stage: the depth origin, axial load and turning speed must be finite, "
+        "the lead and the proxy stiffness > 0");
   }
 }
 
-std::unique_ptr<StageState> ScrewStage::DoMakeState() const {
-  return std::make_unique<RunState>();
-}
+std::unique_ptr<StageState> ScrewStage::DoMakeState() const { return std::make_unique<RunState>(); }
 
 double ScrewStage::AxialForce(double depth, double angle, const LawState& law,
                               StageOutput* out) const noexcept {
@@ -192,7 +191,8 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
       screw.stopped = screw.stopped || screw.torque >= turn.value;
       break;
     case TurnTarget::kAngle:
-      screw.stopped = screw.stopped || (screw.seated && run->angle - screw.snug_angle >= turn.value);
+      screw.stopped =
+          screw.stopped || (screw.seated && run->angle - screw.snug_angle >= turn.value);
       break;
     case TurnTarget::kPreload:
       screw.stopped = screw.stopped || screw.preload >= turn.value;
@@ -210,8 +210,8 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   out->stiffness = 0.0;
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
-  out->next = run->depth < 0.0 && !out->contact.engaged ? StageId::kPositioning
-                                                        : StageId::kConstrained;
+  out->next =
+      run->depth < 0.0 && !out->contact.engaged ? StageId::kPositioning : StageId::kConstrained;
 }
 
 }  // namespace fitfeel

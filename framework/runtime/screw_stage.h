@@ -47,7 +47,8 @@ class FITFEEL_API ScrewStage final : public Stage {
   struct RunState;
   // The axial force on the part (analyzer frame) at `depth` and `angle`, the friction taken from
   // a copy of `law`'s state; counts the evaluation.
-  double AxialForce(double depth, double angle, const LawState& law, StageOutput* out) const noexcept;
+  double AxialForce(double depth, double angle, const LawState& law,
+                    StageOutput* out) const noexcept;
   // Where the axial force and the load (plus the hand's spring towards `device_depth`) balance
   // at `angle`, starting from the last tick's depth carried along the lead from run->angle.
   double SettleDepth(double angle, double device_depth, RunState* run,

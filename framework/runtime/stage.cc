@@ -42,6 +42,7 @@ void Stage::Evaluate(const PartState& part, StageState* state,
   // Only a joint of several features writes its features' forces; every other tick has none.
   out->feature_count = 0;
   out->feature_axial.fill(0.0);
+  out->screw = ScrewOutput{};
   DoEvaluate(part, state, out);
   out->stage = id();
 }

@@ -7,10 +7,10 @@
 
 #include "framework/core/export.h"
 #include "framework/core/wrench.h"
-#include "framework/runtime/part_state.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/joint_features.h"
 #include "framework/model/resistance_law.h"
+#include "framework/runtime/part_state.h"
 
 namespace fitfeel {
 

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "framework/core/wrench.h"
-#include "framework/runtime/stage.h"
 #include "framework/model/contact_analyzer.h"
+#include "framework/runtime/stage.h"
 #include "framework/safety/safety_chain.h"
 
 namespace fitfeel {
@@ -25,8 +25,9 @@ struct TickRecord {
   // A joint of several features: each feature's axial force (StageOutput::feature_axial).
   int feature_count = 0;
   std::array<double, kMaxJointFeatures> feature_axial{};
-  double stiffness = 0.0;     // radial contact stiffness handed to the device, N/m
-  double compute_us = 0.0;    // wall time from device read to device write, us (a measurement)
+  ScrewOutput screw;        // a screw's joint (StageOutput::screw)
+  double stiffness = 0.0;   // radial contact stiffness handed to the device, N/m
+  double compute_us = 0.0;  // wall time from device read to device write, us (a measurement)
   StageId stage = StageId::kPositioning;
   bool guard_fault = false;  // the stage produced a non-finite wrench; zero was sent
   // The device state was not finite or beyond physical bounds: the last sane one was held and

@@ -55,7 +55,7 @@ TraceStream::TraceStream(const StreamOutputs& outputs, TickObserver* observer, s
                           "': " + OsReason(open_error));
         }
         trace_text_.reserve(kBlockBytes + 4096);
-        trace_text_ = TraceHeader(outputs_.features) + "\n";
+        trace_text_ = TraceHeader(outputs_.features, outputs_.screw) + "\n";
       }
       if (outputs_.summary) summary_file_ = pending("summary.json");
       if (outputs_.recording) {
@@ -105,7 +105,8 @@ void TraceStream::Consume(const StreamRow& row) {
   try {
     if (observer_ != nullptr) observer_->OnRecord(row.tick, row.index);
     if (outputs_.trace) {
-      AppendTraceRow(&trace_text_, row.tick, static_cast<int>(outputs_.features.size()));
+      AppendTraceRow(&trace_text_, row.tick, static_cast<int>(outputs_.features.size()),
+                     outputs_.screw);
       trace_text_ += '\n';
       if (trace_text_.size() >= kBlockBytes) FlushTrace();
     }

@@ -28,6 +28,7 @@ struct StreamOutputs {
   std::optional<RecordingInfo> recording;  // set: write recording.csv with this header
   // A several-feature scene's features: a trace column of each one's axial force.
   std::vector<std::string> features;
+  bool screw = false;  // a screw scene: the joint's columns (TraceHeader)
 };
 
 // The run's outputs written while it runs, so that memory stays bounded whatever its duration:

@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "framework/core/error.h"
+#include "framework/core/line_endings.h"
 #include "framework/core/quantity.h"
 #include "framework/model/measured_surface.h"
 #include "framework/plugin/registry.h"
 #include "framework/safety/safety_settings.h"
 #include "framework/scenario/part_parser.h"
 #include "framework/scenario/scene_sections.h"
-#include "framework/core/line_endings.h"
 #include "framework/scenario/yaml_file.h"
 
 namespace fitfeel {
@@ -192,9 +192,9 @@ void ParseFriction(const ConfigNode& node, ModelSettings* model) {
 
 ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
                          const std::string& surface_id, const Parts& parts) {
-  node.ExpectOnlyKeys(
-      {"law", "friction", "static_friction", "lubrication", "breakaway_displacement",
-       "contact_stiffness", "resolution", "texture", "depth_step", "options"});
+  node.ExpectOnlyKeys({"law", "friction", "static_friction", "lubrication",
+                       "breakaway_displacement", "contact_stiffness", "resolution", "texture",
+                       "depth_step", "options"});
   ModelSettings model;
   const std::vector<std::string> laws = surface.law_names();
   // Empty only for a surface type loaded for inspection (LoadOptions::allow_non_rendering).
@@ -209,11 +209,10 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
   ParseFriction(node, &model);
   // `auto`: the law derives it from its own elastic model (0 in ModelSettings).
   const ConfigNode stiffness = node.Child("contact_stiffness");
-  model.contact_stiffness =
-      stiffness.is_scalar() && stiffness.AsString() == "auto"
-          ? 0.0
-          : stiffness.AsQuantityIn(Dimension::kStiffness, 0.0, kUnlimited,
-                                   /*min_inclusive=*/false);
+  model.contact_stiffness = stiffness.is_scalar() && stiffness.AsString() == "auto"
+                                ? 0.0
+                                : stiffness.AsQuantityIn(Dimension::kStiffness, 0.0, kUnlimited,
+                                                         /*min_inclusive=*/false);
   if (std::optional<ConfigNode> resolution = node.Find("resolution")) {
     model.resolution = ParseResolution(*resolution);
   }
@@ -266,9 +265,10 @@ ScrewTurn ParseTurn(const ConfigNode& node) {
 
 PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (!node.is_map()) {
-    node.Fail("a map with the keys radial, damping, radial_load, rotation, torque, turn and "
-              "axial_load",
-              node.Describe());
+    node.Fail(
+        "a map with the keys radial, damping, radial_load, rotation, torque, turn and "
+        "axial_load",
+        node.Describe());
   }
   node.ExpectOnlyKeys(
       {"radial", "damping", "radial_load", "rotation", "torque", "turn", "axial_load"});
@@ -411,8 +411,8 @@ SceneCost GridCost(const GridShape shapes[2], const PartSpec& inner, const PartS
   cost.run_bytes = ticks * kStreamBytesPerTick;
   cost.trace_rows = run.write_trace ? ticks : 0.0;
   cost.recording_rows = run.write_recording ? ticks : 0.0;
-  cost.output_bytes = cost.trace_rows * kTraceFileBytesPerTick +
-                      cost.recording_rows * kRecordingFileBytesPerTick;
+  cost.output_bytes =
+      cost.trace_rows * kTraceFileBytesPerTick + cost.recording_rows * kRecordingFileBytesPerTick;
   return cost;
 }
 
@@ -458,9 +458,7 @@ SceneCost CheckPrepare(const ConfigNode& model_node, const ConfigNode& duration,
       const double cells = static_cast<double>(cost.inner_cells + cost.outer_cells);
       const bool table = step_node && model.depth_step > 0.0 &&
                          vertices * kSecondsPerTableVertex > cells * kSecondsPerCell;
-      const ConfigNode key = refusal->output ? duration
-                             : table         ? *step_node
-                                             : grid_key;
+      const ConfigNode key = refusal->output ? duration : table ? *step_node : grid_key;
       key.Fail(refusal->expected, key.Describe() + ": " + refusal->found);
     }
   }
@@ -554,15 +552,16 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   if (std::optional<ConfigNode> motion = root.Find("part_motion")) {
     scene.part_motion = ParsePartMotion(*motion);
     if (!several && scene.part_motion.rotation == RotationMotion::kFree) {
-      motion->Child("rotation").Fail(
-          "rotation: free only in a several-feature scene (features), whose flanks can stop it",
-          "a one-feature scene");
+      motion->Child("rotation")
+          .Fail(
+              "rotation: free only in a several-feature scene (features), whose flanks can stop it",
+              "a one-feature scene");
     }
   }
   if (!several) {
     scene.surface = ResolveSurface(root.Child("surface"), registry, options, &scene.surface_id);
-    Parts parts = ParseParts(root.Child("parts"), root.Child("moving"), *scene.surface,
-                             scene.surface_id);
+    Parts parts =
+        ParseParts(root.Child("parts"), root.Child("moving"), *scene.surface, scene.surface_id);
     scene.moving = parts.moving;
     scene.model = ParseModel(root.Child("model"), *scene.surface, scene.surface_id, parts);
     scene.inner = std::move(parts.inner);
@@ -570,13 +569,14 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   }
   // A wrench and an axial load act on a screw: elsewhere the device holds the part's twist and
   // depth.
-  const bool screw = !several && scene.inner.geometry != nullptr && scene.inner.geometry->lead() > 0.0;
+  const bool screw =
+      !several && scene.inner.geometry != nullptr && scene.inner.geometry->lead() > 0.0;
   if (std::optional<ConfigNode> motion = root.Find("part_motion"); motion && !screw) {
     for (const char* key : {"turn", "axial_load"}) {
       if (motion->Has(key)) {
-        motion->Child(key).Fail("`" + std::string(key) +
-                                    "` only in a screw scene (a thread's surface)",
-                                "a scene whose parts slide or turn without advancing");
+        motion->Child(key).Fail(
+            "`" + std::string(key) + "` only in a screw scene (a thread's surface)",
+            "a scene whose parts slide or turn without advancing");
       }
     }
   }
@@ -605,8 +605,8 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
     // settings as they are.
     scene.safety = ParseSafetySection(*safety);
   }
-  const ConfigNode duration = step_run != nullptr ? root.Child("duration")
-                                                  : root.Child("run").Child("duration");
+  const ConfigNode duration =
+      step_run != nullptr ? root.Child("duration") : root.Child("run").Child("duration");
   if (step_run != nullptr) {
     scene.run = *step_run;
     scene.run.duration = ParseDuration(duration);
@@ -617,9 +617,8 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   if (several) {
     ParseFeatures(root, duration, registry, options, &scene);
   } else {
-    scene.cost = CheckPrepare(root.Child("model"), duration,
-                              *scene.surface, scene.inner, scene.outer, scene.model, scene.run,
-                              options);
+    scene.cost = CheckPrepare(root.Child("model"), duration, *scene.surface, scene.inner,
+                              scene.outer, scene.model, scene.run, options);
   }
   return scene;
 }
@@ -641,8 +640,8 @@ SceneCost EstimateSceneCost(const Scene& scene) {
   }
   double vertices = 0.0;
   SceneCost cost = GridCost(shapes, scene.inner, scene.outer, scene.model, scene.run, &vertices);
-  cost.law_prepare_seconds = scene.surface->EstimatePrepareSeconds(scene.model, shapes[0],
-                                                                   shapes[1], cost.depth_steps);
+  cost.law_prepare_seconds =
+      scene.surface->EstimatePrepareSeconds(scene.model, shapes[0], shapes[1], cost.depth_steps);
   cost.prepare_seconds += cost.law_prepare_seconds;
   return cost;
 }

@@ -14,8 +14,12 @@ JointModel MakeJointModel(const PartSpec& bolt, const PartSpec& nut, const Joint
   const HelicoidGeometry& g = HelicoidGeometryOf(bolt);
   const double d = g.diameter(), p = g.pitch();
   // Without a joint only the flank pair's terms are read, which no clamp length enters.
-  ThroughBolt through{d, p, joint.present() ? joint.clamp_length() : d, {},
-                      bolt.material.youngs_modulus, nut.material.youngs_modulus};
+  ThroughBolt through{d,
+                      p,
+                      joint.present() ? joint.clamp_length() : d,
+                      {},
+                      bolt.material.youngs_modulus,
+                      nut.material.youngs_modulus};
   if (joint.shank > 0.0) through.shank.push_back({joint.shank, d});
   const BoltResilience resilience = ThroughBoltResilience(through);
   JointModel model;
@@ -24,22 +28,19 @@ JointModel MakeJointModel(const PartSpec& bolt, const PartSpec& nut, const Joint
   model.stress_area = StressArea(d, p);
   model.polar_modulus = std::numbers::pi / 16.0 * d0 * d0 * d0;
   if (!joint.present()) return model;
-  model.bearing_diameter = joint.bearing_diameter > 0.0
-                               ? joint.bearing_diameter
-                               : MetricFastenerOf(d).nut_bearing_diameter;
+  model.bearing_diameter = joint.bearing_diameter > 0.0 ? joint.bearing_diameter
+                                                        : MetricFastenerOf(d).nut_bearing_diameter;
   model.hole_diameter = joint.hole_diameter > 0.0
                             ? joint.hole_diameter
                             : MetricFastenerOf(d).clearance_hole(ClearanceSeries::kMedium);
-  const ClampedParts plates{model.bearing_diameter, model.hole_diameter, joint.clamp_length(),
-                            joint.plate_outer_diameter,
-                            joint.plate_modulus > 0.0 ? joint.plate_modulus
-                                                      : bolt.material.youngs_modulus};
+  const ClampedParts plates{
+      model.bearing_diameter, model.hole_diameter, joint.clamp_length(), joint.plate_outer_diameter,
+      joint.plate_modulus > 0.0 ? joint.plate_modulus : bolt.material.youngs_modulus};
   model.plate_compliance = ThroughBoltPlateResilience(plates).resilience;
   model.bolt_compliance = resilience.total();
-  model.clamp_stiffness = joint.stiffness > 0.0
-                              ? joint.stiffness
-                              : 1.0 / (resilience.series_with_thread_pair() +
-                                       model.plate_compliance);
+  model.clamp_stiffness =
+      joint.stiffness > 0.0 ? joint.stiffness
+                            : 1.0 / (resilience.series_with_thread_pair() + model.plate_compliance);
   const double r = 0.5 * model.hole_diameter, big = 0.5 * model.bearing_diameter;
   model.bearing_radius = 2.0 / 3.0 * (big * big * big - r * r * r) / (big * big - r * r);
   if (!joint.property_class.empty()) {

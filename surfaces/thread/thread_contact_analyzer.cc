@@ -55,7 +55,6 @@ ScrewPhase PhaseOf(const MatingPose& pose, double pitch) {
 
 }  // namespace
 
-
 void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                       const PartSpec& outer, const SkinModelShape& outer_sms,
                                       const ModelSettings& settings) {
@@ -63,10 +62,10 @@ void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
   const HelicoidGeometry& nut = HelicoidGeometryOf(outer);
   const SurfaceGrid& grid = inner_sms.grid;
   if (outer_sms.grid.columns != grid.columns || grid.columns % 2 != 0) {
-    throw UserError("thread contact: the bolt's and the nut's grids must have the same even "
-                    "number of columns (strips per flank), found " +
-                    std::to_string(grid.columns) + " and " +
-                    std::to_string(outer_sms.grid.columns));
+    throw UserError(
+        "thread contact: the bolt's and the nut's grids must have the same even "
+        "number of columns (strips per flank), found " +
+        std::to_string(grid.columns) + " and " + std::to_string(outer_sms.grid.columns));
   }
   pitch_ = bolt.pitch();
   lead_per_radian_ = pitch_ / kTwoPi;
@@ -145,20 +144,17 @@ double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
 double ThreadContactAnalyzer::Interference(int i, const ScrewPhase& screw,
                                            double angle) const noexcept {
   const Eigen::Vector3d n = cells_.normal.col(i);
-  const double geometric =
-      screw.folded * n.y() + screw.local.x() * n.x() + screw.local.y() * n.z();
+  const double geometric = screw.folded * n.y() + screw.local.x() * n.x() + screw.local.y() * n.z();
   const double nut_turn = cells_.turn[i] + angle + screw.shift;
-  return geometric + screw.deviations * (cells_.variation[i] -
-                                         NutVariation(cells_.nut_column[i], nut_turn));
+  return geometric +
+         screw.deviations * (cells_.variation[i] - NutVariation(cells_.nut_column[i], nut_turn));
 }
 
 void ThreadContactAnalyzer::Rows(double depth, int* first, int* last) const noexcept {
   // A cell's centre lies within 3P/8 of its row's helix point c theta (ISO 68-1 flank band).
   const double margin = 0.375 * pitch_;
   const double bolt_turns = rows_ * row_turn_;
-  auto row_of = [&](double y) {
-    return (y / lead_per_radian_ + bolt_turns) / row_turn_ - 0.5;
-  };
+  auto row_of = [&](double y) { return (y / lead_per_radian_ + bolt_turns) / row_turn_ - 0.5; };
   const double lo = row_of(-depth - margin), hi = row_of(nut_length_ - depth + margin);
   *first = std::clamp(static_cast<int>(std::floor(lo)), 0, rows_);
   *last = std::clamp(static_cast<int>(std::ceil(hi)) + 1, 0, rows_);
@@ -210,8 +206,7 @@ void ThreadContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   delta->setZero(rows_ * columns_);
   for (int i = 0; i < rows_ * columns_; ++i) {
     if (Share(i, pose.depth) <= 0.0) continue;
-    (*delta)[cells_.grid_cell[i]] =
-        std::max(0.0, Interference(i, screw, pose.angle));
+    (*delta)[cells_.grid_cell[i]] = std::max(0.0, Interference(i, screw, pose.angle));
   }
 }
 

@@ -38,12 +38,12 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
  private:
   // The bolt's cells, row by row (turn angle), each row's strips flank A then flank B.
   struct Cells {
-    Eigen::VectorXd axial;      // y of the centre in the bolt's frame (leading end at 0), m
-    Eigen::VectorXd turn;       // helix angle in the bolt's frame (<= 0), rad
-    Eigen::VectorXd area;       // m^2
-    Eigen::VectorXd variation;  // the bolt's skin model shape, m
-    Eigen::VectorXi nut_column; // the nut's grid column of the same flank and strip
-    Eigen::VectorXi grid_cell;  // the cell's index in the bolt's grid
+    Eigen::VectorXd axial;       // y of the centre in the bolt's frame (leading end at 0), m
+    Eigen::VectorXd turn;        // helix angle in the bolt's frame (<= 0), rad
+    Eigen::VectorXd area;        // m^2
+    Eigen::VectorXd variation;   // the bolt's skin model shape, m
+    Eigen::VectorXi nut_column;  // the nut's grid column of the same flank and strip
+    Eigen::VectorXi grid_cell;   // the cell's index in the bolt's grid
     Eigen::Matrix3Xd normal, normal_moment, slide, slide_moment;  // bolt frame, about its origin
   };
   // Interference of cell i at the screw phase `screw` with the bolt turned by `angle`; its share
@@ -57,7 +57,7 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
   Cells cells_;
   int columns_ = 0, rows_ = 0;
   double pitch_ = 0.0, lead_per_radian_ = 0.0;
-  double row_turn_ = 0.0;       // the bolt's turn angle per row, rad
+  double row_turn_ = 0.0;  // the bolt's turn angle per row, rad
   double nut_length_ = 0.0, bolt_length_ = 0.0;
   Eigen::MatrixXd nut_variation_;  // rows x columns of the nut's grid
   double nut_row_turn_ = 0.0;

@@ -10,11 +10,7 @@ namespace fitfeel::thread {
 
 HelicoidGeometry::HelicoidGeometry(Role role, double diameter, double pitch, double flank_angle,
                                    double length)
-    : role_(role),
-      diameter_(diameter),
-      pitch_(pitch),
-      flank_angle_(flank_angle),
-      length_(length) {}
+    : role_(role), diameter_(diameter), pitch_(pitch), flank_angle_(flank_angle), length_(length) {}
 
 double HelicoidGeometry::triangle_height() const { return pitch_ / (2.0 * std::tan(half_angle())); }
 double HelicoidGeometry::inner_radius() const {

@@ -113,8 +113,8 @@ ElasticLimitCheck ThreadLaw::DoCheckElasticLimit(const ContactState& contact) co
   // while it is being turned; the friction taken as sliding).
   const double tension =
       pressure_ * std::abs(contact.normal_sum.y() + flank_friction_ * contact.slide_sum.y());
-  const double torsion = pressure_ * std::abs(contact.normal_moment.y() +
-                                              flank_friction_ * contact.slide_moment.y());
+  const double torsion =
+      pressure_ * std::abs(contact.normal_moment.y() + flank_friction_ * contact.slide_moment.y());
   const double sigma = tension / stress_area_, tau = torsion / polar_modulus_;
   check.utilisation = std::sqrt(sigma * sigma + 3.0 * tau * tau) / yield_;
   check.part = 2;

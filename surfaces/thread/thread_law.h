@@ -30,8 +30,8 @@ class ThreadLaw final : public ResistanceLaw {
                  const ModelSettings& settings) override;
   void DoEvaluate(const ContactState& contact, const MatingMotion& motion,
                   Wrench* out) const noexcept override;
-  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion,
-                           LawState* state, Wrench* out) const noexcept override;
+  void DoEvaluateWithState(const ContactState& contact, const MatingMotion& motion, LawState* state,
+                           Wrench* out) const noexcept override;
   double DoPressurePerInterference() const override { return pressure_; }
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
 
@@ -41,13 +41,13 @@ class ThreadLaw final : public ResistanceLaw {
   void Compose(const ContactState& contact, double flank_slip, double face_slip,
                Wrench* out) const noexcept;
 
-  double pressure_ = 0.0;          // K, Pa/m
-  double flank_stiffness_ = 0.0;   // axial stiffness of the fully engaged thread, N/m
-  double flank_friction_ = 0.0;    // mu_G (kinetic)
+  double pressure_ = 0.0;         // K, Pa/m
+  double flank_stiffness_ = 0.0;  // axial stiffness of the fully engaged thread, N/m
+  double flank_friction_ = 0.0;   // mu_G (kinetic)
   StickSlipFriction flank_junctions_, face_junctions_;
   double pitch_radius_ = 0.0, helix_radius_ = 0.0, lead_per_radian_ = 0.0;
-  double clamp_stiffness_ = 0.0;   // N/m; 0 without a joint
-  double face_friction_ = 0.0;     // mu_K
+  double clamp_stiffness_ = 0.0;  // N/m; 0 without a joint
+  double face_friction_ = 0.0;    // mu_K
   double bearing_radius_ = 0.0;
   // Elastic-limit check of the bolt (VDI 2230: von Mises of tension and the thread torque's
   // torsion over the stress cross-section); yield 0: no check.

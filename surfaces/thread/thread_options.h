@@ -36,7 +36,7 @@ struct JointOptions {
   // Outer diameter of the clamped plates about the bolt, D_A, m (VDI 2230's cone angle depends
   // on it).
   double plate_outer_diameter = 0.0;
-  double plate_modulus = 0.0;     // E_P, Pa (0: the bolt's)
+  double plate_modulus = 0.0;  // E_P, Pa (0: the bolt's)
   // Unthreaded shank length within the clamp, m (0: a fully threaded ISO 4017 bolt).
   double shank = 0.0;
   // The bolt's ISO 898-1 property class ("8.8", "10.9", "12.9"): its yield strength bounds the

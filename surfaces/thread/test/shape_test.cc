@@ -82,12 +82,12 @@ TEST(HelicoidGeometryTest, ParsesUnitsAndRefusesWhatNoThreadIs) {
   EXPECT_DOUBLE_EQ(g->flank_angle(), 60 * kDeg);
   const std::string ok_rest = "length: 15 mm}";
   for (const std::string& bad : std::vector<std::string>{
-           "{pitch: 1.5, flank_angle: 60 deg, " + ok_rest,      // no unit
-           "{pitch: 4 mm, flank_angle: 60 deg, " + ok_rest,     // pitch above d/3
-           "{pitch: 1.5 mm, flank_angle: 60, " + ok_rest,       // no unit on the angle
-           "{pitch: 1.5 mm, flank_angle: 150 deg, " + ok_rest,  // no such thread
+           "{pitch: 1.5, flank_angle: 60 deg, " + ok_rest,        // no unit
+           "{pitch: 4 mm, flank_angle: 60 deg, " + ok_rest,       // pitch above d/3
+           "{pitch: 1.5 mm, flank_angle: 60, " + ok_rest,         // no unit on the angle
+           "{pitch: 1.5 mm, flank_angle: 150 deg, " + ok_rest,    // no such thread
            "{pitch: 1.5 mm, flank_angle: 60 deg, length: 1 mm}",  // less than a turn
-           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, lead: 3 mm}",  // unknown key
+           "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, lead: 3 mm}",         // unknown key
            "{pitch: 1.5 mm, flank_angle: 60 deg, length: 15 mm, pitch_error: 5 um}",  // form's
            "{nominal_diameter: 12 mm, pitch: 1.5 mm, flank_angle: 60 deg, " + ok_rest,
            "{pitch: 1.5 mm, flank_angle: 60 deg}",  // no length

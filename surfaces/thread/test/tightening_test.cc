@@ -1,0 +1,138 @@
+// A nut run down and tightened by the screw stage on the shipped bolt scene, against the
+// independent analyses of docs/threads.md: the helicoid flank's and the bearing annulus's torque
+// per unit preload, and VDI 2230's preload per turn.
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/runtime/prepare.h"
+#include "framework/runtime/scene_stages.h"
+#include "framework/runtime/screw_stage.h"
+#include "framework/scenario/scene.h"
+#include "framework/testing/build_tree_plugins.h"
+#include "framework/testing/cli_runner.h"
+#include "framework/testing/source_tree.h"
+#include "surfaces/thread/bolted_joint.h"
+#include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_torque.h"
+
+namespace fitfeel::thread {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// `text` with every `from` replaced by `to` (exactly one occurrence expected).
+std::string Replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string BoltScene() {
+  return test_support::ReadText(test_support::ShippedScenario("bolt-m10.yaml"));
+}
+
+// The bolt scene at friction mu (flanks and face) and pitch `pitch_mm`.
+std::string WithFriction(double mu, const std::string& pitch_mm = "1.5") {
+  std::string text = BoltScene();
+  const std::string m = std::to_string(mu);
+  text = Replaced(text, "friction: 0.12             # mu_G", "friction: " + m);
+  text = Replaced(text, "bearing_friction: 0.12  # mu_K", "bearing_friction: " + m);
+  for (int i = 0; i < 2; ++i) {
+    text = Replaced(text, "pitch: 1.5 mm", "pitch: " + pitch_mm + " mm");
+  }
+  return text;
+}
+
+struct Tick {
+  double angle = 0.0;
+  ScrewOutput screw;
+};
+
+// The screw stage driven by a robot at the scene's turning speed, tick by tick from the bolt's
+// end, until its target or `seconds`.
+std::vector<Tick> Tighten(const std::string& text, std::uint64_t seed, double seconds) {
+  Scene scene = LoadSceneFromYaml(text, "bolt.yaml", test_support::BuildTreePlugins());
+  scene.run.seed = seed;
+  const PreparedScene prepared = Prepare(scene);
+  DeviceSpec robot;
+  robot.max_stiffness = std::numeric_limits<double>::infinity();
+  const SceneStages stages = MakeSceneStages(scene, prepared, robot);
+  EXPECT_NE(dynamic_cast<const ScrewStage*>(stages.constrained.get()), nullptr);
+  const auto state = stages.constrained->MakeState();
+  StageOutput out;
+  out.stage = StageId::kPositioning;  // handed over at the bolt's end
+  std::vector<Tick> ticks;
+  const double period = 1.0 / scene.run.rate;
+  for (int k = 0; k * period < seconds; ++k) {
+    PartState part;
+    part.time = k * period;
+    stages.constrained->Evaluate(part, state.get(), &out);
+    ticks.push_back({out.pose.angle, out.screw});
+    if (out.screw.stopped) break;
+  }
+  return ticks;
+}
+
+TEST(Tightening, AZeroFormPairRunsDownFreely) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const std::vector<Tick> ticks = Tighten(BoltScene(), seed, 8.0);
+    double largest = 0.0;
+    for (const Tick& t : ticks) {
+      if (!t.screw.seated) largest = std::max(largest, std::abs(t.screw.torque));
+    }
+    ASSERT_TRUE(ticks.back().screw.seated) << "seed " << seed;
+    EXPECT_LT(largest, 0.05) << "seed " << seed;
+    EXPECT_TRUE(ticks.back().screw.stopped) << "seed " << seed;
+  }
+}
+
+TEST(Tightening, TorqueSharesMatchTheFlankAndAnnulusAnalyses) {
+  for (const std::string pitch : {"1.5", "1.25"}) {
+    for (const double mu : {0.08, 0.12, 0.16}) {
+      SCOPED_TRACE("P " + pitch + " mm, mu " + std::to_string(mu));
+      const std::string text = WithFriction(mu, pitch);
+      const std::vector<Tick> ticks = Tighten(text, 1, 8.0);
+      const ScrewOutput& end = ticks.back().screw;
+      ASSERT_TRUE(end.stopped);
+      // The analyses: the Winkler pressure over the flank band of the ISO 68-1 profile the
+      // scene's parts have, and uniform pressure over the ISO 4032 nut's bearing annulus on the
+      // ISO 273 medium hole (the joint's defaults).
+      const double p = std::stod(pitch) * 1e-3;
+      const HelicoidGeometry g(Role::kInner, 10e-3, p, 60.0 * kDegree, 35e-3);
+      const TorqueRatio flank = HelicoidTorqueRatio(p, 60.0 * kDegree, g.inner_radius(),
+                                                    g.outer_radius(), mu, FlankPressure::kWinkler);
+      const double annulus = UniformAnnulusTorqueRatio(14.6e-3, 11e-3, mu);
+      EXPECT_NEAR(end.thread_torque / end.preload / flank.total, 1.0, 0.02);
+      EXPECT_NEAR(end.head_torque / end.preload / annulus, 1.0, 0.02);
+    }
+  }
+}
+
+TEST(Tightening, PreloadRisesPerTurnAsTheJointsCompliancesSay) {
+  const std::vector<Tick> ticks = Tighten(BoltScene(), 1, 8.0);
+  const double final_preload = ticks.back().screw.preload;
+  ASSERT_GT(final_preload, 10e3);
+  // The slope between 30 % and 90 % of the final preload, once the flanks' play is taken up.
+  const Tick *a = nullptr, *b = nullptr;
+  for (const Tick& t : ticks) {
+    if (a == nullptr && t.screw.preload >= 0.3 * final_preload) a = &t;
+    if (b == nullptr && t.screw.preload >= 0.9 * final_preload) b = &t;
+  }
+  ASSERT_TRUE(a != nullptr && b != nullptr && b->angle > a->angle);
+  const double per_turn =
+      (b->screw.preload - a->screw.preload) / (b->angle - a->angle) * 2.0 * std::numbers::pi;
+  // VDI 2230: the fully threaded M10 x 35 through 20 mm of plates 40 mm wide, E = 205 GPa.
+  const BoltResilience bolt = ThroughBoltResilience({10e-3, 1.5e-3, 20e-3, {}, 205e9, 205e9});
+  const double plates =
+      ThroughBoltPlateResilience({14.6e-3, 11e-3, 20e-3, 40e-3, 205e9}).resilience;
+  EXPECT_NEAR(per_turn / PreloadPerTurn(1.5e-3, bolt.total(), plates), 1.0, 0.05);
+}
+
+}  // namespace
+}  // namespace fitfeel::thread
