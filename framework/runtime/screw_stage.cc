@@ -154,11 +154,10 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   run->depth = SettleDepth(angle, device.depth, run, out);
   run->angle = angle;
 
+  // The settle's last evaluation was at this pose: its contact stands.
   MatingPose pose;
   pose.depth = run->depth;
   pose.angle = run->angle;
-  analyzer_.Evaluate(pose, &out->contact);
-  ++out->contact_evaluations;
   MatingMotion motion;
   motion.depth = pose.depth;
   motion.angle = pose.angle;

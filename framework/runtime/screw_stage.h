@@ -51,6 +51,7 @@ class FITFEEL_API ScrewStage final : public Stage {
                     StageOutput* out) const noexcept;
   // Where the axial force and the load (plus the hand's spring towards `device_depth`) balance
   // at `angle`, starting from the last tick's depth carried along the lead from run->angle.
+  // out->contact is left at the depth returned.
   double SettleDepth(double angle, double device_depth, RunState* run,
                      StageOutput* out) const noexcept;
 

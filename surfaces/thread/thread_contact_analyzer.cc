@@ -68,6 +68,7 @@ void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
         std::to_string(grid.columns) + " and " + std::to_string(outer_sms.grid.columns));
   }
   pitch_ = bolt.pitch();
+  inverse_pitch_ = 1.0 / pitch_;
   lead_per_radian_ = pitch_ / kTwoPi;
   bolt_length_ = bolt.length();
   nut_length_ = nut.length();
@@ -138,15 +139,19 @@ double ThreadContactAnalyzer::NutVariation(int column, double turn) const noexce
 
 double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
   const double y = depth + cells_.axial[i];
-  return Ramp(y / pitch_) * Ramp((nut_length_ - y) / pitch_) * Ramp(-cells_.axial[i] / pitch_);
+  return Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_) *
+         Ramp(-cells_.axial[i] * inverse_pitch_);
+}
+
+double ThreadContactAnalyzer::Geometric(int i, const ScrewPhase& screw) const noexcept {
+  const Eigen::Vector3d n = cells_.normal.col(i);
+  return screw.folded * n.y() + screw.local.x() * n.x() + screw.local.y() * n.z();
 }
 
 double ThreadContactAnalyzer::Interference(int i, const ScrewPhase& screw,
                                            double angle) const noexcept {
-  const Eigen::Vector3d n = cells_.normal.col(i);
-  const double geometric = screw.folded * n.y() + screw.local.x() * n.x() + screw.local.y() * n.z();
   const double nut_turn = cells_.turn[i] + angle + screw.shift;
-  return geometric +
+  return Geometric(i, screw) +
          screw.deviations * (cells_.variation[i] - NutVariation(cells_.nut_column[i], nut_turn));
 }
 
@@ -168,19 +173,30 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(), normal_moment = Eigen::Vector3d::Zero();
   Eigen::Vector3d slide = Eigen::Vector3d::Zero(), slide_moment = Eigen::Vector3d::Zero();
   double volume = 0.0, largest = 0.0, area = 0.0;
-  for (int i = first * columns_; i < last * columns_; ++i) {
-    const double share = Share(i, pose.depth);
-    if (share <= 0.0) continue;
-    area += share * cells_.area[i];
-    const double delta = Interference(i, screw, pose.angle);
-    if (delta <= 0.0) continue;
-    const double a = share * cells_.area[i] * delta;
-    normal += a * cells_.normal.col(i);
-    normal_moment += a * cells_.normal_moment.col(i);
-    slide += a * cells_.slide.col(i);
-    slide_moment += a * cells_.slide_moment.col(i);
-    volume += a;
-    largest = std::max(largest, delta);
+  const int nut_rows = static_cast<int>(nut_variation_.rows());
+  for (int row = first; row < last; ++row) {
+    // The nut's rows either side of this row's place on its helix, shared by the row's cells.
+    const int begin = row * columns_;
+    const double x = (cells_.turn[begin] + pose.angle + screw.shift) / nut_row_turn_ - 0.5;
+    const int below = nut_rows == 1 ? 0 : std::clamp(static_cast<int>(std::floor(x)), 0, nut_rows - 2);
+    const int above = nut_rows == 1 ? 0 : below + 1;
+    const double f = nut_rows == 1 ? 0.0 : std::clamp(x - below, 0.0, 1.0);
+    for (int j = 0; j < columns_; ++j) {
+      const int i = begin + j;
+      const double share = Share(i, pose.depth);
+      if (share <= 0.0) continue;
+      area += share * cells_.area[i];
+      const double nut = (1.0 - f) * nut_variation_(below, j) + f * nut_variation_(above, j);
+      const double delta = Geometric(i, screw) + screw.deviations * (cells_.variation[i] - nut);
+      if (delta <= 0.0) continue;
+      const double a = share * cells_.area[i] * delta;
+      normal += a * cells_.normal.col(i);
+      normal_moment += a * cells_.normal_moment.col(i);
+      slide += a * cells_.slide.col(i);
+      slide_moment += a * cells_.slide_moment.col(i);
+      volume += a;
+      largest = std::max(largest, delta);
+    }
   }
   const Eigen::Vector3d origin(pose.offset.x(), pose.depth, pose.offset.y());
   out->normal_sum = Turn(normal, screw.cos, screw.sin);

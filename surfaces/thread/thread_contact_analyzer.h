@@ -49,6 +49,8 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
   // Interference of cell i at the screw phase `screw` with the bolt turned by `angle`; its share
   // (0-1) of the contact at insertion `depth`.
   double Interference(int i, const ScrewPhase& screw, double angle) const noexcept;
+  // Its part from the pose alone (the phase and the offset along the cell's normal).
+  double Geometric(int i, const ScrewPhase& screw) const noexcept;
   double Share(int i, double depth) const noexcept;
   double NutVariation(int column, double turn) const noexcept;
   // Row range [first, last) of the bolt whose cells can lie inside the nut at `depth`.
@@ -56,10 +58,11 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
 
   Cells cells_;
   int columns_ = 0, rows_ = 0;
-  double pitch_ = 0.0, lead_per_radian_ = 0.0;
+  double pitch_ = 0.0, inverse_pitch_ = 0.0, lead_per_radian_ = 0.0;
   double row_turn_ = 0.0;  // the bolt's turn angle per row, rad
   double nut_length_ = 0.0, bolt_length_ = 0.0;
-  Eigen::MatrixXd nut_variation_;  // rows x columns of the nut's grid
+  // rows x columns of the nut's grid, a row's columns together (read row by row).
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> nut_variation_;
   double nut_row_turn_ = 0.0;
   double seat_ = 0.0;  // depth at which the axial stop meets (infinity: none)
 };
