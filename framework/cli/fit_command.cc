@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@
 #include "framework/core/error.h"
 #include "framework/iso286/fit.h"
 #include "framework/iso286/iso286.h"
+#include "framework/iso965/fit.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -73,6 +75,10 @@ std::string Um(double metres, bool sign = true) { return Fixed(metres * 1e6, 0, 
 
 std::string Mm(double metres) { return Fixed(metres * 1e3, 3, 5, false) + " mm"; }
 
+// Thread limits to the micrometre, as ISO 965-2 prints them (the basic diameters of ISO 724 are
+// rounded so).
+std::string ThreadMm(double metres) { return Fixed(metres * 1e3, 3, 3, false) + " mm"; }
+
 std::string PadLeft(std::string text, std::size_t width) {
   if (text.size() < width) text.insert(0, width - text.size(), ' ');
   return text;
@@ -90,7 +96,76 @@ void PrintPart(std::ostream& out, const char* role, const iso286::Limits& part) 
       << Um(part.upper_deviation - part.lower_deviation, false) << ")\n";
 }
 
+// One diameter of a thread, in the columns of PrintPart; `upper` false where the standard sets
+// only the lower limit (D), `lower` false where only the upper (d3).
+void PrintDiameter(std::ostream& out, const char* name, bool internal,
+                   const iso965::DiameterLimits& limits, bool lower, bool upper) {
+  const char* lower_name = internal ? "EI" : "ei";
+  const char* upper_name = internal ? "ES" : "es";
+  out << "        " << name << std::string(4 - std::string_view(name).size(), ' ');
+  out << (lower ? std::string(lower_name) + " = " + PadLeft(Um(limits.lower_deviation), 10)
+                : std::string(15, ' '))
+      << "   "
+      << (upper ? std::string(upper_name) + " = " + PadLeft(Um(limits.upper_deviation), 10)
+                : std::string(15, ' '));
+  if (lower && upper) {
+    out << "   limits " << ThreadMm(limits.min()) << " .. " << ThreadMm(limits.max())
+        << "   (tolerance " << Um(limits.upper_deviation - limits.lower_deviation, false) << ")\n";
+  } else {
+    out << "   " << (lower ? "min " + ThreadMm(limits.min()) : "max " + ThreadMm(limits.max()))
+        << "\n";
+  }
+}
+
+void PrintThread(std::ostream& out, const char* role, const iso965::ThreadLimits& part) {
+  const bool internal = part.designation.internal;
+  out << "  " << role << " " << part.designation.tolerance_class << "\n";
+  if (internal) {
+    PrintDiameter(out, "D1", true, part.minor, true, true);
+    PrintDiameter(out, "D2", true, part.pitch_diameter, true, true);
+    PrintDiameter(out, "D", true, part.major, true, false);
+  } else {
+    PrintDiameter(out, "d", false, part.major, true, true);
+    PrintDiameter(out, "d2", false, part.pitch_diameter, true, true);
+    PrintDiameter(out, "d3", false, part.minor, false, true);
+  }
+}
+
+// `fitfeel fit M10x1.5 6H/6g`: ISO 965-1 limits of nut and bolt and what their pitch diameters
+// leave free.
+void RunThreadFit(const std::string& size, const std::string& code) {
+  iso965::ThreadFit fit;
+  try {
+    fit = iso965::LookupFit(size, code);
+  } catch (const UserError& e) {
+    throw UserError(std::string("fit: ") + e.what());
+  }
+  const iso965::ThreadSize& thread = fit.bolt.designation.size;
+  constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+  std::ostream& out = std::cout;
+  out << "ISO 965-1 thread fit " << thread.text << " " << fit.nut.designation.tolerance_class << "/"
+      << fit.bolt.designation.tolerance_class << "  (" << (thread.coarse ? "coarse" : "fine")
+      << " pitch " << Fixed(thread.pitch * 1e3, 0, 3, false) << " mm, d2 range "
+      << Fixed(fit.bolt.range_lower * 1e3, 0, 1, false) << "-"
+      << Fixed(fit.bolt.range_upper * 1e3, 0, 1, false) << " mm)\n";
+  PrintThread(out, "nut ", fit.nut);
+  PrintThread(out, "bolt", fit.bolt);
+  out << "  pitch-diameter clearance (D2 - d2): min " << Um(fit.min_clearance) << ", max "
+      << Um(fit.max_clearance) << "\n";
+  out << "  axial play (clearance x tan 30 deg): min " << Um(fit.min_axial_play, false) << ", max "
+      << Um(fit.max_axial_play, false) << "\n";
+  out << "  angular backlash (2 pi play / P): min "
+      << Fixed(fit.min_angular_backlash * kDegreesPerRadian, 0, 2, false) << " deg, max "
+      << Fixed(fit.max_angular_backlash * kDegreesPerRadian, 0, 2, false) << " deg\n";
+}
+
 void RunFit(const std::vector<std::string>& args) {
+  if (iso965::LooksLikeThread(args[0])) {
+    std::string size = args[0];
+    if (args.size() == 3) size += " " + args[1];
+    RunThreadFit(size, args.back());
+    return;
+  }
   // `fitfeel fit 20 mm H7/g6` arrives as three words; `fitfeel fit "20 mm" H7/g6` as two.
   std::string size_text = args[0];
   if (args.size() == 3) size_text += " " + args[1];
@@ -119,7 +194,8 @@ void AddFitCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "fit",
       "Limits and fit class of an ISO 286 fit, e.g. `fitfeel fit 20 H7/g6` (size in mm "
-      "unless it carries a unit: \"20 mm\", \"0.02 m\")");
+      "unless it carries a unit: \"20 mm\", \"0.02 m\"), or of an ISO 965-1 thread fit, e.g. "
+      "`fitfeel fit M10x1.5 6H/6g`, with its clearance, axial play and backlash");
   auto args = std::make_shared<std::vector<std::string>>();
   cmd->add_option("size_and_fit", *args, "e.g. 20 H7/g6 or \"20 mm\" H7/js6")
       ->option_text("<size> <HOLE/shaft>")

@@ -21,7 +21,14 @@ struct SizeSpec {
   double nominal = 0.0;
   double lower_deviation = 0.0;
   double upper_deviation = 0.0;
-  std::string iso_code;  // "H7", "g6", ... when given as a code; empty for explicit deviations
+  std::string iso_code;  // "H7", "g6", "M10x1.5 6g" when given as a code; empty for deviations
+  // An ISO metric thread (iso_code "M10x1.5 6g"): nominal is d, the deviations above are the
+  // pitch diameter's from the basic d2 (ISO 965-1, what a thread surface draws its size in), and
+  // these are the pitch, m, and the crest diameter's deviations, m: the bolt's major diameter
+  // from d, the nut's minor diameter from the basic D1. pitch == 0 for a plain size.
+  double pitch = 0.0;
+  double crest_lower_deviation = 0.0;
+  double crest_upper_deviation = 0.0;
   // The middle of the size zone (what a typical part of the population measures), m.
   double mid_size() const { return nominal + 0.5 * (lower_deviation + upper_deviation); }
 };
@@ -34,7 +41,7 @@ enum class FormCharacteristic {
   kCylindricity,
   kStraightness,  // line straightness of a flat face
   kFlatness,
-  kParallelism,   // of a pair of flat faces
+  kParallelism,  // of a pair of flat faces
   kSphericity,
 };
 

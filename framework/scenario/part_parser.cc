@@ -11,6 +11,7 @@
 #include "framework/core/quantity.h"
 #include "framework/core/quantity_parse.h"
 #include "framework/iso286/iso286.h"
+#include "framework/iso965/iso965.h"
 #include "framework/model/measured_surface.h"
 #include "framework/scenario/measurement_file.h"
 
@@ -18,8 +19,8 @@ namespace fitfeel::scenario {
 namespace {
 
 const char* const kSizeForms =
-    "a size as '<nominal> <ISO 286 class>' (e.g. '20 mm H7', '20 mm g6') or a map "
-    "{nominal, lower, upper} of deviations";
+    "a size as '<nominal> <ISO 286 class>' (e.g. '20 mm H7', '20 mm g6'), an ISO thread "
+    "designation (e.g. 'M10x1.5 6g', 'M10 6H') or a map {nominal, lower, upper} of deviations";
 
 // Letters then grade digits, as ISO 286 writes a tolerance class: H7, g6, js6, ZC11, IT is not a
 // class. Anything else in that position is not a code, so the message can say so.
@@ -69,6 +70,38 @@ SizeSpec ParseIsoSize(const ConfigNode& node, Role role) {
   size.lower_deviation = found.lower_deviation;
   size.upper_deviation = found.upper_deviation;
   size.iso_code = found.code.empty() ? code : found.code;
+  return size;
+}
+
+// `size: M10x1.5 6g`: nominal d and the pitch diameter's deviations, the crest's beside them.
+SizeSpec ParseThreadSize(const ConfigNode& node, Role role) {
+  const std::string text = node.AsString();
+  iso965::ThreadLimits found;
+  try {
+    found = iso965::Lookup(iso965::ParseDesignation(text));
+  } catch (const UserError& e) {
+    node.Fail(
+        "an ISO metric thread designation of ISO 261 and ISO 965-1 (e.g. 'M10x1.5 6g', "
+        "'M10 6H')",
+        node.Describe() + " (" + e.what() + ")");
+  }
+  const iso965::ThreadDesignation& designation = found.designation;
+  if (designation.internal != (role == Role::kOuter)) {
+    node.Fail(role == Role::kOuter
+                  ? "an internal thread class (position G or H, e.g. 6H) for an outer part"
+                  : "an external thread class (position e, f, g or h, e.g. 6g) for an inner part",
+              node.Describe() + " (" + designation.tolerance_class + " is an " +
+                  (designation.internal ? "internal" : "external") + " thread class)");
+  }
+  const iso965::DiameterLimits& crest = designation.internal ? found.minor : found.major;
+  SizeSpec size;
+  size.nominal = designation.size.nominal;
+  size.lower_deviation = found.pitch_diameter.lower_deviation;
+  size.upper_deviation = found.pitch_diameter.upper_deviation;
+  size.iso_code = designation.text;
+  size.pitch = designation.size.pitch;
+  size.crest_lower_deviation = crest.lower_deviation;
+  size.crest_upper_deviation = crest.upper_deviation;
   return size;
 }
 
@@ -127,8 +160,7 @@ FormSpec ParseForm(const ConfigNode& node, const SurfaceType& surface,
         known = known || ToString(static_cast<FormCharacteristic>(i)) == key;
       }
       // Reported at the key, like every other unknown key.
-      throw ScenarioError(node.KeyLocation(key), node.path() + "." + key,
-                          expected,
+      throw ScenarioError(node.KeyLocation(key), node.path() + "." + key, expected,
                           known ? "'" + key + "', which this surface type does not model"
                                 : "unknown key '" + key + "'");
     }
@@ -188,7 +220,7 @@ ProcessSpec ParseProcess(const ConfigNode& node) {
   ProcessSpec process;
   const auto model_of = [](const ConfigNode& n) {
     return n.AsOneOf({"paper", "statistical"}) == "paper" ? ProcessKind::kPaper
-                                                           : ProcessKind::kStatistical;
+                                                          : ProcessKind::kStatistical;
   };
   if (node.is_scalar()) {
     process.kind = model_of(node);
@@ -243,7 +275,10 @@ std::shared_ptr<const MeasuredSurface> ParseMeasured(const ConfigNode& node,
 }  // namespace
 
 SizeSpec ParseSize(const ConfigNode& node, Role role) {
-  if (node.is_scalar()) return ParseIsoSize(node, role);
+  if (node.is_scalar()) {
+    return iso965::LooksLikeThread(node.AsString()) ? ParseThreadSize(node, role)
+                                                    : ParseIsoSize(node, role);
+  }
   if (node.is_map()) return ParseExplicitSize(node);
   node.Fail(kSizeForms, node.Describe());
 }

@@ -27,7 +27,8 @@ inline constexpr double kMaxYoungsModulus = 1.2e12;
 PartSpec ParsePart(const std::string& name, const ConfigNode& node, const SurfaceType& surface,
                    const std::string& surface_id);
 
-// The part's `size`: "20 mm H7" (ISO 286 code, looked up in the standard's tables) or
+// The part's `size`: "20 mm H7" (ISO 286 code, looked up in the standard's tables), "M10x1.5 6g"
+// (ISO 965-1 thread designation: pitch-diameter deviations, pitch and crest deviations) or
 // {nominal, lower, upper} deviations.
 SizeSpec ParseSize(const ConfigNode& node, Role role);
 

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -153,22 +155,31 @@ fs::path WriteVariant(const std::string& name, const std::string& from, const st
   return file;
 }
 
+// good/<source> with each `from` (occurring once) replaced by its `to`, written to a temporary
+// file <name>.yaml.
+fs::path WriteEdited(const std::string& name, const std::string& source,
+                     const std::vector<std::pair<std::string, std::string>>& edits) {
+  std::string text = ReadFile(kTestDir / "good" / source);
+  for (const auto& [from, to] : edits) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_scene_test";
+  fs::create_directories(dir);
+  const fs::path file = dir / (name + ".yaml");
+  std::ofstream(file) << text;
+  return file;
+}
+
 class VariantTest : public SceneTest, public ::testing::WithParamInterface<Variant> {};
 
 // A run streams its trace and recording to disk: the longest run at the highest rate, with a
 // recording, is within its buffers (it was refused once, when the trace was held in memory).
 TEST_F(SceneTest, AnHourAtTheHighestRateWithARecordingIsAccepted) {
-  std::string text = ReadFile(kTestDir / "good" / "full.yaml");
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"rate: 2 kHz", "rate: 10 kHz"},
-                                 {"duration: 5 s", "duration: 3600 s"}}) {
-    const std::size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  }
-  const fs::path dir = fs::path(::testing::TempDir()) / "fitfeel_scene_test";
-  fs::create_directories(dir);
-  const fs::path file = dir / "hour_at_10kHz.yaml";
-  std::ofstream(file) << text;
+  const fs::path file =
+      WriteEdited("hour_at_10kHz", "full.yaml",
+                  {{"rate: 2 kHz", "rate: 10 kHz"}, {"duration: 5 s", "duration: 3600 s"}});
   LoadOptions large;
   large.allow_large = true;  // its outputs, tens of GiB, are over the large-output threshold
   const Scene scene = LoadScene(file, registry_, large);
@@ -201,6 +212,23 @@ INSTANTIATE_TEST_SUITE_P(
         Variant{{"size_as_list", 8, 11, "parts.shaft.size", "a size as", "a list"},
                 "size: 20 mm g6",
                 "size: [20 mm, g6]"},
+        Variant{{"thread_pitch_not_in_iso261", 8, 11, "parts.shaft.size",
+                 "an ISO metric thread designation of ISO 261 and ISO 965-1",
+                 "'M10x1.3 6g' (ISO thread 'M10x1.3 6g': 1.3 mm is not an ISO 261 pitch of M10 "
+                 "(expected one of 1.5 (coarse), 1.25, 1, 0.75))"},
+                "size: 20 mm g6",
+                "size: M10x1.3 6g"},
+        Variant{{"thread_grade_out_of_range", 8, 11, "parts.shaft.size",
+                 "an ISO metric thread designation",
+                 "ISO 965-1 has no tolerance grade 2 for the pitch diameter d2 of an external "
+                 "thread (grades 3, 4, 5, 6, 7, 8, 9)"},
+                "size: 20 mm g6",
+                "size: M10 2g"},
+        Variant{{"internal_thread_on_shaft", 8, 11, "parts.shaft.size",
+                 "an external thread class (position e, f, g or h, e.g. 6g) for an inner part",
+                 "'M10x1.25-6H' (6H is an internal thread class)"},
+                "size: 20 mm g6",
+                "size: M10x1.25-6H"},
         Variant{{"zero_width_limits", 17, 48, "parts.bushing.size.upper",
                  "an upper deviation greater than the lower deviation (0 m)",
                  "(a tolerance zone of zero width)"},
@@ -285,12 +313,9 @@ INSTANTIATE_TEST_SUITE_P(
         Variant{{"duration_zero", 37, 13, "run.duration", "a time in (0 s, 3600 s]", "'0 s'"},
                 "duration: 5 s",
                 "duration: 0 s"},
-        Variant{{"negative_seed", 38, 9, "run.seed", kSeedRange, "'-1'"},
-                "seed: 42",
-                "seed: -1"},
-        Variant{{"fractional_seed", 38, 9, "run.seed", kSeedRange, "'4.2'"},
-                "seed: 42",
-                "seed: 4.2"},
+        Variant{{"negative_seed", 38, 9, "run.seed", kSeedRange, "'-1'"}, "seed: 42", "seed: -1"},
+        Variant{
+            {"fractional_seed", 38, 9, "run.seed", kSeedRange, "'4.2'"}, "seed: 42", "seed: 4.2"},
         Variant{{"unknown_clock", 39, 10, "run.clock", "one of virtual, realtime", "'wall'"},
                 "clock: realtime",
                 "clock: wall"},
@@ -306,8 +331,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "a static coefficient at least the sliding one (friction: 0.15)", "0.1"},
                 "friction: 0.15\n",
                 "friction: 0.15\n  static_friction: 0.1\n"},
-        Variant{{"unknown_lubrication", 24, 16, "model.lubrication", "dry",
-                 "'oily'"},
+        Variant{{"unknown_lubrication", 24, 16, "model.lubrication", "dry", "'oily'"},
                 "friction: 0.15",
                 "lubrication: oily"},
         Variant{{"yield_above_range", 20, 72, "parts.bushing.material.yield_strength",
@@ -589,10 +613,9 @@ TEST_F(SceneTest, FrictionKeysTakeTheDocumentedDefaults) {
       registry_);
   EXPECT_EQ(both.model.static_friction, 0.2);
   EXPECT_NEAR(both.model.breakaway_displacement, 5e-6, 1e-18);
-  const Scene auto_k = LoadScene(
-      WriteVariant("auto_k", "contact_stiffness: 500 N/mm", "contact_stiffness: auto",
-                   "minimal.yaml"),
-      registry_);
+  const Scene auto_k = LoadScene(WriteVariant("auto_k", "contact_stiffness: 500 N/mm",
+                                              "contact_stiffness: auto", "minimal.yaml"),
+                                 registry_);
   EXPECT_EQ(auto_k.model.contact_stiffness, 0.0);
   const Scene yield = LoadScene(
       WriteVariant("yield", "poisson: 0.34", "poisson: 0.34, yield_strength: 430 MPa"), registry_);
@@ -621,6 +644,44 @@ TEST_F(SceneTest, NonRenderingSurfaceOnlyWhenAllowed) {
                       "a resistance law that test.surface.thread "
                       "offers (none)",
                       "'gps'"},
+                     registry_, options);
+}
+
+// A threaded pair sized by ISO thread designations: the pitch diameter's limits as the size, the
+// crest's beside them (ISO 965-2: M10x1.5 6g d2 -32/-164 um, d -32/-268 um; 6H D2 0/+180 um,
+// D1 0/+300 um).
+TEST_F(SceneTest, ThreadDesignationsSizeAThreadedPair) {
+  const fs::path file = WriteEdited("thread_designations", "minimal.yaml",
+                                    {{"test.surface.cylinder", "test.surface.thread"},
+                                     {"size: 20 mm js6", "size: M10x1.5 6g"},
+                                     {"size: 20 mm H7", "size: M10 6H"}});
+  LoadOptions options;
+  options.allow_non_rendering = true;
+  const Scene scene = LoadScene(file, registry_, options);
+  const SizeSpec& bolt = scene.inner.size;
+  EXPECT_EQ(bolt.iso_code, "M10x1.5 6g");
+  EXPECT_EQ(bolt.nominal, 0.010);
+  EXPECT_NEAR(bolt.pitch, 1.5e-3, 1e-15);
+  EXPECT_NEAR(bolt.upper_deviation, -32e-6, 1e-12);
+  EXPECT_NEAR(bolt.lower_deviation, -164e-6, 1e-12);
+  EXPECT_NEAR(bolt.crest_upper_deviation, -32e-6, 1e-12);
+  EXPECT_NEAR(bolt.crest_lower_deviation, -268e-6, 1e-12);
+  const SizeSpec& nut = scene.outer.size;
+  EXPECT_EQ(nut.iso_code, "M10x1.5 6H");
+  EXPECT_NEAR(nut.lower_deviation, 0.0, 1e-12);
+  EXPECT_NEAR(nut.upper_deviation, 180e-6, 1e-12);
+  EXPECT_NEAR(nut.crest_lower_deviation, 0.0, 1e-12);
+  EXPECT_NEAR(nut.crest_upper_deviation, 300e-6, 1e-12);
+  // A plain size has no pitch.
+  EXPECT_EQ(LoadScene(kTestDir / "good" / "minimal.yaml", registry_).inner.size.pitch, 0.0);
+  // An outer part with an external class is refused at its size.
+  ExpectSceneRefused(WriteEdited("thread_designations", "minimal.yaml",
+                                 {{"test.surface.cylinder", "test.surface.thread"},
+                                  {"size: 20 mm js6", "size: M10x1.5 6g"},
+                                  {"size: 20 mm H7", "size: M10 6g"}}),
+                     {"thread_designations", 12, 11, "parts.hole.size",
+                      "an internal thread class (position G or H, e.g. 6H) for an outer part",
+                      "'M10 6g' (6g is an external thread class)"},
                      registry_, options);
 }
 
