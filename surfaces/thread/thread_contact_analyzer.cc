@@ -178,7 +178,8 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
     // The nut's rows either side of this row's place on its helix, shared by the row's cells.
     const int begin = row * columns_;
     const double x = (cells_.turn[begin] + pose.angle + screw.shift) / nut_row_turn_ - 0.5;
-    const int below = nut_rows == 1 ? 0 : std::clamp(static_cast<int>(std::floor(x)), 0, nut_rows - 2);
+    const int below =
+        nut_rows == 1 ? 0 : std::clamp(static_cast<int>(std::floor(x)), 0, nut_rows - 2);
     const int above = nut_rows == 1 ? 0 : below + 1;
     const double f = nut_rows == 1 ? 0.0 : std::clamp(x - below, 0.0, 1.0);
     for (int j = 0; j < columns_; ++j) {

@@ -42,7 +42,7 @@ std::string HelicoidGeometry::DoDescribe() const {
 std::shared_ptr<const HelicoidGeometry> ParseHelicoidGeometry(const PartSpec& part,
                                                               const ConfigNode& node) {
   if (!node.is_map()) {
-    node.Fail("a map {pitch, flank_angle, length}", node.Describe());
+    node.Fail("a map {length, pitch, flank_angle}", node.Describe());
   }
   node.ExpectOnlyKeys({"nominal_diameter", "pitch", "flank_angle", "length"});
   const double d = part.size.nominal;
@@ -53,22 +53,42 @@ std::shared_ptr<const HelicoidGeometry> ParseHelicoidGeometry(const PartSpec& pa
                     nominal->Describe());
     }
   }
+  // An ISO thread designation (size: M10x1.5 6g) gives the pitch; a pitch beside it must agree.
   // ISO 261 coarse pitches stay below d/4 (M1 x 0.25); a pitch above d/3 leaves no core.
-  const double pitch = node.QuantityIn("pitch", Dimension::kLength, 1e-6, d / 3.0);
+  double pitch = part.size.pitch;
+  if (std::optional<ConfigNode> given = node.Find("pitch")) {
+    pitch = given->AsQuantityIn(Dimension::kLength, 1e-6, d / 3.0);
+    if (part.size.pitch > 0.0 && std::abs(pitch - part.size.pitch) > 1e-12) {
+      given->Fail("the pitch of the part's size " + part.size.iso_code + " (" +
+                      FormatQuantity(part.size.pitch, Dimension::kLength) + ")",
+                  given->Describe());
+    }
+  } else if (!(pitch > 0.0)) {
+    node.Fail("a pitch (or a size given as an ISO thread designation, e.g. 'M10x1.5 6g')",
+              "no `pitch` and a size '" + FormatQuantity(d, Dimension::kLength) + "'");
+  }
   // Symmetric V and trapezoidal threads: 29 deg (ACME) and 30 deg (ISO 2904) up to 60 deg
-  // (ISO 68-1) and beyond; below 20 deg or above 120 deg no standard thread exists.
+  // (ISO 68-1, the default) and beyond; below 20 deg or above 120 deg no standard thread exists.
   constexpr double kDeg = std::numbers::pi / 180.0;
-  const double angle =
-      node.Child("flank_angle").AsQuantityIn(Dimension::kAngle, 20.0 * kDeg, 120.0 * kDeg);
+  double angle = 60.0 * kDeg;
+  if (std::optional<ConfigNode> given = node.Find("flank_angle")) {
+    angle = given->AsQuantityIn(Dimension::kAngle, 20.0 * kDeg, 120.0 * kDeg);
+  }
+  if (part.size.pitch > 0.0 && std::abs(angle - 60.0 * kDeg) > 1e-12) {
+    node.Child("flank_angle")
+        .Fail("60 deg, the ISO 68-1 flank angle of the part's size " + part.size.iso_code,
+              node.Child("flank_angle").Describe());
+  }
   // At least one turn; beyond 100 diameters no thread is engaged at once.
   const double length = node.QuantityIn("length", Dimension::kLength, pitch, 100.0 * d);
   // The deviation limits are the part's `form:` (ThreadSurface::declared_characteristics). A
   // pitch deviation above a tenth of the pitch is a different thread, not a deviation of this one.
   const double pitch_error = part.form.Declared("pitch_error");
   if (pitch_error > 0.1 * pitch) {
-    node.Child("pitch").Fail("a pitch at least 10 times the form's pitch_error (" +
-                                 FormatQuantity(pitch_error, Dimension::kLength) + ")",
-                             node.Child("pitch").Describe());
+    const ConfigNode at = node.Has("pitch") ? node.Child("pitch") : node;
+    at.Fail("a pitch at least 10 times the form's pitch_error (" +
+                FormatQuantity(pitch_error, Dimension::kLength) + ")",
+            FormatQuantity(pitch, Dimension::kLength));
   }
   return std::make_shared<HelicoidGeometry>(part.role, d, pitch, angle, length);
 }

@@ -43,9 +43,8 @@ std::string WithFriction(double mu, const std::string& pitch_mm = "1.5") {
   const std::string m = std::to_string(mu);
   text = Replaced(text, "friction: 0.12             # mu_G", "friction: " + m);
   text = Replaced(text, "bearing_friction: 0.12  # mu_K", "bearing_friction: " + m);
-  for (int i = 0; i < 2; ++i) {
-    text = Replaced(text, "pitch: 1.5 mm", "pitch: " + pitch_mm + " mm");
-  }
+  text = Replaced(text, "M10x1.5 6g", "M10x" + pitch_mm + " 6g");
+  text = Replaced(text, "M10x1.5 6H", "M10x" + pitch_mm + " 6H");
   return text;
 }
 
