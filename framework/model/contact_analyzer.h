@@ -17,6 +17,10 @@ struct MatingPose {
   double depth = 0.0;                // insertion along the mating axis (y), m; 0 = first contact
   Eigen::Vector2d offset{0.0, 0.0};  // (x, z) offset of the moving part's axis, m
   double angle = 0.0;                // rotation about the mating axis (or the sphere centre), rad
+  // The moving part's axis tilted off the mating axis: the (x, z) components of the rotation
+  // vector that turns +y onto it, about the fixed part's entrance centre, rad. Read by analyzers
+  // that model a tilted part (the thread's); the others take the part as aligned.
+  Eigen::Vector2d tilt{0.0, 0.0};
 };
 
 // The pose a contact analyzer takes (the inner part's, in the outer part's mating frame) for the

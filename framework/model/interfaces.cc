@@ -19,14 +19,22 @@ namespace fitfeel {
 
 std::string ToString(FormCharacteristic characteristic) {
   switch (characteristic) {
-    case FormCharacteristic::kAxisStraightness: return "axis_straightness";
-    case FormCharacteristic::kGeneratrixStraightness: return "generatrix_straightness";
-    case FormCharacteristic::kRoundness: return "roundness";
-    case FormCharacteristic::kCylindricity: return "cylindricity";
-    case FormCharacteristic::kStraightness: return "straightness";
-    case FormCharacteristic::kFlatness: return "flatness";
-    case FormCharacteristic::kParallelism: return "parallelism";
-    case FormCharacteristic::kSphericity: return "sphericity";
+    case FormCharacteristic::kAxisStraightness:
+      return "axis_straightness";
+    case FormCharacteristic::kGeneratrixStraightness:
+      return "generatrix_straightness";
+    case FormCharacteristic::kRoundness:
+      return "roundness";
+    case FormCharacteristic::kCylindricity:
+      return "cylindricity";
+    case FormCharacteristic::kStraightness:
+      return "straightness";
+    case FormCharacteristic::kFlatness:
+      return "flatness";
+    case FormCharacteristic::kParallelism:
+      return "parallelism";
+    case FormCharacteristic::kSphericity:
+      return "sphericity";
   }
   return "unknown";
 }
@@ -111,7 +119,10 @@ void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner
 
 MatingPose AnalyzerPose(const MatingPose& scene_pose, Role moving) noexcept {
   MatingPose pose = scene_pose;
-  if (moving == Role::kOuter) pose.offset.y() = -pose.offset.y();
+  if (moving == Role::kOuter) {
+    pose.offset.y() = -pose.offset.y();
+    pose.tilt.y() = -pose.tilt.y();
+  }
   return pose;
 }
 
@@ -301,8 +312,7 @@ std::shared_ptr<const SurfaceOptions> SurfaceType::ParseOptions(const ConfigNode
   return parsed;
 }
 
-std::shared_ptr<const SurfaceOptions> SurfaceType::DoParseOptions(
-    const ConfigNode& options) const {
+std::shared_ptr<const SurfaceOptions> SurfaceType::DoParseOptions(const ConfigNode& options) const {
   options.ExpectOnlyKeys({});
   return std::make_shared<const SurfaceOptions>();
 }
@@ -311,8 +321,9 @@ double SurfaceType::EstimatePrepareSeconds(const ModelSettings& model, const Gri
                                            const GridShape& outer, double depth_steps) const {
   if (inner.rows < 0 || inner.columns < 0 || outer.rows < 0 || outer.columns < 0 ||
       !(depth_steps >= 0.0) || !std::isfinite(depth_steps)) {
-    throw UserError("a prepare estimate needs non-negative grids and a finite, non-negative "
-                    "number of depth steps");
+    throw UserError(
+        "a prepare estimate needs non-negative grids and a finite, non-negative "
+        "number of depth steps");
   }
   const double seconds = DoEstimatePrepareSeconds(model, inner, outer, depth_steps);
   FITFEEL_DEMAND(seconds >= 0.0 && std::isfinite(seconds));
@@ -361,8 +372,8 @@ std::unique_ptr<ResistanceLaw> SurfaceType::MakeLaw(std::string_view name) const
   if (std::find(names.begin(), names.end(), name) == names.end()) {
     std::string offered;
     for (const auto& n : names) offered += (offered.empty() ? "" : ", ") + n;
-    throw UserError("unknown resistance law '" + std::string(name) + "'; this surface offers: " +
-                    (offered.empty() ? "none" : offered));
+    throw UserError("unknown resistance law '" + std::string(name) +
+                    "'; this surface offers: " + (offered.empty() ? "none" : offered));
   }
   auto law = DoMakeLaw(name);
   if (!law) throw UnsupportedError("resistance law '" + std::string(name) + "' is not available");

@@ -63,7 +63,7 @@ class FITFEEL_API SurfaceType {
   std::vector<DeclaredCharacteristic> declared_characteristics() const;
   // Law names this surface offers; the first is the default. None when it renders no forces.
   std::vector<std::string> law_names() const;
-  // False for a surface type that can be discretised but has no resistance law yet (thread stub);
+  // False for a surface type that can be discretised but has no resistance law yet (a test double);
   // `limitation()` then says why (never empty then), and running a scene with it is refused with
   // that message.
   bool renders_forces() const;

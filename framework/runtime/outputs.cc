@@ -146,6 +146,7 @@ void SummaryBuilder::Add(const TickRecord& r) {
     screw_angle_ = r.pose.angle;
     screw_torque_.Add(r.screw.torque);
     screw_preload_.Add(r.screw.preload);
+    if (!r.screw.seated) screw_rundown_torque_ = std::max(screw_rundown_torque_, r.screw.torque);
   }
 }
 
@@ -214,6 +215,10 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
         {"thread_torque_Nm", s.thread_torque},
         {"head_torque_Nm", s.head_torque},
         {"seated", s.seated},
+        // How the run-down went: the face met ("seated"), the wrench's target reached before it
+        // (a cross-threaded or jammed start: "jammed"), or neither by the end ("running").
+        {"start", s.seated ? "seated" : (s.stopped ? "jammed" : "running")},
+        {"rundown_torque_Nm", screw_rundown_torque_},
         {"turn_after_snug_deg",
          s.seated ? (screw_angle_ - s.snug_angle) * 180.0 / 3.141592653589793 : 0.0},
         {"target_reached", s.stopped},

@@ -112,6 +112,7 @@ class FITFEEL_API SummaryBuilder {
   ScrewOutput screw_last_;
   double screw_angle_ = 0.0;
   RunningSummary screw_torque_, screw_preload_;
+  double screw_rundown_torque_ = 0.0;  // the largest before the bearing face met, N*m
   std::uint64_t interference_ticks_ = 0;
   std::uint64_t yielding_ticks_ = 0;
   TickRecord worst_;  // the tick with the largest elastic-limit utilisation

@@ -13,7 +13,7 @@ namespace fitfeel {
 // pose and velocities) and the scene's part motion (where the part floats across the axis and the
 // load it settles under); the safety chain's coupling may put it at its proxy instead.
 struct PartState {
-  double time = 0.0;  // s since the start of the run
+  double time = 0.0;                        // s since the start of the run
   Eigen::Vector3d position{0.0, 0.0, 0.0};  // the leading end
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d velocity{0.0, 0.0, 0.0};
@@ -30,7 +30,7 @@ struct PartState {
 
 // The moving part's pose in the fixed part's mating frame (positioning_stage.h gives the
 // convention): depth = y of the leading end, offset = its (x, z), angle = the twist of the
-// orientation about y.
+// orientation about y, tilt = the rest of it (the swing that turns y onto the part's axis).
 FITFEEL_API MatingPose MatingPoseOf(const PartState& part) noexcept;
 
 }  // namespace fitfeel

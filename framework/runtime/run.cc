@@ -50,8 +50,10 @@ nlohmann::json MeasuredPartsReport(const Scene& scene, const PreparedScene& prep
         // The conformance suite's allowance: 0.1 nm of evaluation rounding.
         const bool pass = c.value >= c.lower - 1e-10 && c.value <= c.upper + 1e-10;
         meets = meets && pass;
-        checks.push_back({{"name", c.name}, {"value_um", c.value * 1e6},
-                          {"lower_um", c.lower * 1e6}, {"upper_um", c.upper * 1e6},
+        checks.push_back({{"name", c.name},
+                          {"value_um", c.value * 1e6},
+                          {"lower_um", c.lower * 1e6},
+                          {"upper_um", c.upper * 1e6},
                           {"pass", pass}});
       }
       entry["meets_drawing"] = meets;

@@ -43,6 +43,7 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
     screw.axial_load = scene.part_motion.axial_load;
     screw.turn = scene.part_motion.turn;
     screw.lead = scene.inner.geometry->lead();
+    screw.tilt = Eigen::Vector2d(scene.part_motion.tilt, 0.0);
     stages.constrained = std::make_unique<ScrewStage>(*prepared.analyzer, *prepared.law, screw);
     return stages;
   }

@@ -13,6 +13,7 @@ namespace fitfeel {
 
 struct ScrewStage::RunState final : StageState {
   bool started = false;
+  Eigen::Vector2d tilt{0.0, 0.0};  // this tick's, in the analyzer's frame
   double time = 0.0;
   double depth = 0.0, angle = 0.0;
   // d(axial force)/d(depth) where the last settle ended (N/m, < 0), for the next tick's first step.
@@ -36,11 +37,12 @@ ScrewStage::ScrewStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law
 
 std::unique_ptr<StageState> ScrewStage::DoMakeState() const { return std::make_unique<RunState>(); }
 
-double ScrewStage::AxialForce(double depth, double angle, const LawState& law,
-                              StageOutput* out) const noexcept {
+double ScrewStage::AxialForce(double depth, double angle, const Eigen::Vector2d& tilt,
+                              const LawState& law, StageOutput* out) const noexcept {
   MatingPose pose;
   pose.depth = depth;
   pose.angle = angle;
+  pose.tilt = tilt;
   analyzer_.Evaluate(pose, &out->contact);
   ++out->contact_evaluations;
   MatingMotion motion;
@@ -60,7 +62,7 @@ double ScrewStage::SettleDepth(double angle, double device_depth, RunState* run,
   // the part advances, and so does the hand's spring.
   auto balance = [&](double z) {
     const double load = hand ? k * (device_depth - z) : options_.axial_load;
-    return AxialForce(z, angle, run->law, out) + load;
+    return AxialForce(z, angle, run->tilt, run->law, out) + load;
   };
   // The part follows its flank along the lead as it turns: from there the contact is the last
   // tick's, and one Newton step on the last slope usually lands.
@@ -149,6 +151,9 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   } else {
     run->angle = device.angle;
   }
+  // The tilt as the analyzer takes it (AnalyzerPose): reflected in z where the outer part moves.
+  run->tilt = device.tilt + options_.tilt;
+  if (options_.moving == Role::kOuter) run->tilt.y() = -run->tilt.y();
   const double angle = run->angle;
   run->angle = previous_angle;
   run->depth = SettleDepth(angle, device.depth, run, out);
@@ -158,6 +163,7 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   MatingPose pose;
   pose.depth = run->depth;
   pose.angle = run->angle;
+  pose.tilt = run->tilt;
   MatingMotion motion;
   motion.depth = pose.depth;
   motion.angle = pose.angle;

@@ -28,6 +28,8 @@ class FITFEEL_API ScrewStage final : public Stage {
     double proxy_stiffness = std::numeric_limits<double>::infinity();
     double axial_load = 0.0;  // N along +y, a robot's
     double lead = 0.0;        // the screw's advance per turn, m (> 0)
+    // A robot's hold of the part tilted (MatingPose::tilt), added to the device's, rad.
+    Eigen::Vector2d tilt{0.0, 0.0};
     ScrewTurn turn;
   };
   static constexpr int kMaxEvaluations = 12;
@@ -47,7 +49,7 @@ class FITFEEL_API ScrewStage final : public Stage {
   struct RunState;
   // The axial force on the part (analyzer frame) at `depth` and `angle`, the friction taken from
   // a copy of `law`'s state; counts the evaluation.
-  double AxialForce(double depth, double angle, const LawState& law,
+  double AxialForce(double depth, double angle, const Eigen::Vector2d& tilt, const LawState& law,
                     StageOutput* out) const noexcept;
   // Where the axial force and the load (plus the hand's spring towards `device_depth`) balance
   // at `angle`, starting from the last tick's depth carried along the lead from run->angle.

@@ -10,8 +10,10 @@ Stage::~Stage() = default;
 
 std::string_view ToString(StageId stage) {
   switch (stage) {
-    case StageId::kPositioning: return "positioning";
-    case StageId::kConstrained: return "constrained";
+    case StageId::kPositioning:
+      return "positioning";
+    case StageId::kConstrained:
+      return "constrained";
   }
   return "unknown";
 }
@@ -34,8 +36,7 @@ std::unique_ptr<StageState> Stage::DoMakeState() const {
   return std::make_unique<EmptyStageState>();
 }
 
-void Stage::Evaluate(const PartState& part, StageState* state,
-                     StageOutput* out) const noexcept {
+void Stage::Evaluate(const PartState& part, StageState* state, StageOutput* out) const noexcept {
   FITFEEL_DEMAND(out != nullptr);
   FITFEEL_DEMAND(state != nullptr && state->owner() == this);
   out->contact_evaluations = 0;

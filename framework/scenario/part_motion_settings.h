@@ -82,6 +82,8 @@ struct PartMotionSettings {
   // that keeps it on its flanks while it runs free.
   ScrewTurn turn;
   double axial_load = 0.0;
+  // The tilt a robot holds the part at, about the scene's x axis, rad (a crooked start).
+  double tilt = 0.0;
 };
 
 // The applied torque at `time` (N*m): linear between the points, the last one's after them, the

@@ -266,12 +266,12 @@ ScrewTurn ParseTurn(const ConfigNode& node) {
 PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (!node.is_map()) {
     node.Fail(
-        "a map with the keys radial, damping, radial_load, rotation, torque, turn and "
-        "axial_load",
+        "a map with the keys radial, damping, radial_load, rotation, torque, turn, axial_load "
+        "and tilt",
         node.Describe());
   }
   node.ExpectOnlyKeys(
-      {"radial", "damping", "radial_load", "rotation", "torque", "turn", "axial_load"});
+      {"radial", "damping", "radial_load", "rotation", "torque", "turn", "axial_load", "tilt"});
   PartMotionSettings motion;
   if (std::optional<ConfigNode> rotation = node.Find("rotation")) {
     motion.rotation = rotation->AsOneOf({"held", "free"}) == "held" ? RotationMotion::kHeld
@@ -319,6 +319,10 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (std::optional<ConfigNode> turn = node.Find("turn")) motion.turn = ParseTurn(*turn);
   if (std::optional<ConfigNode> load = node.Find("axial_load")) {
     motion.axial_load = load->AsQuantityIn(Dimension::kForce, -kMaxRadialLoad, kMaxRadialLoad);
+  }
+  if (std::optional<ConfigNode> tilt = node.Find("tilt")) {
+    // Beyond 10 deg a part is not started on its mate but beside it.
+    motion.tilt = tilt->AsQuantityIn(Dimension::kAngle, -0.175, 0.175);
   }
   return motion;
 }
@@ -572,7 +576,7 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   const bool screw =
       !several && scene.inner.geometry != nullptr && scene.inner.geometry->lead() > 0.0;
   if (std::optional<ConfigNode> motion = root.Find("part_motion"); motion && !screw) {
-    for (const char* key : {"turn", "axial_load"}) {
+    for (const char* key : {"turn", "axial_load", "tilt"}) {
       if (motion->Has(key)) {
         motion->Child(key).Fail(
             "`" + std::string(key) + "` only in a screw scene (a thread's surface)",

@@ -152,7 +152,7 @@ struct Scene {
 };
 
 struct LoadOptions {
-  // Accept a surface type that renders no forces (the thread stub), for inspecting its skin model
+  // Accept a surface type that renders no forces (a test double), for inspecting its skin model
   // shapes and for the conformance suite; `fitfeel run` never sets it.
   bool allow_non_rendering = false;
   // Accept a scene whose estimated cost exceeds kLargeSceneBytes or kLargeSceneSeconds, or whose

@@ -3,5 +3,5 @@
 #include "surfaces/thread/thread_surface.h"
 
 FITFEEL_REGISTER_SURFACE(
-    fitfeel::thread::ThreadSurface, "fitfeel.surface.thread", "0.1.0",
+    fitfeel::thread::ThreadSurface, "fitfeel.surface.thread", "1.0.0",
     "Threaded (helicoid) mating: screw motion, flank friction and tightening (VDI 2230)");

@@ -31,7 +31,10 @@ struct ScrewPhase {
   // The deviations' weight: 1 up to the fold, falling to 0 where the crests meet, so that the
   // nut's turn changing there (shift) moves nothing.
   double deviations = 1.0;
-  Eigen::Vector2d local{0.0, 0.0};
+  // In the bolt's frame: the displacement of its leading end from the screw's place (the folded
+  // phase along y, the offset across) with what a tilt about the nut's entrance adds there, and
+  // the tilt's rotation vector: a cell at p moves by move + spin x p, first order in the tilt.
+  Eigen::Vector3d move{0.0, 0.0, 0.0}, spin{0.0, 0.0, 0.0};
 };
 
 namespace {
@@ -48,8 +51,16 @@ ScrewPhase PhaseOf(const MatingPose& pose, double pitch) {
   screw.shift = turns * kTwoPi;
   screw.cos = std::cos(pose.angle);
   screw.sin = std::sin(pose.angle);
-  screw.local = Eigen::Vector2d(screw.cos * pose.offset.x() - screw.sin * pose.offset.y(),
-                                screw.sin * pose.offset.x() + screw.cos * pose.offset.y());
+  // Into the bolt's frame: the inverse of its turn about y.
+  auto local = [&](const Eigen::Vector3d& v) {
+    return Eigen::Vector3d(screw.cos * v.x() - screw.sin * v.z(), v.y(),
+                           screw.sin * v.x() + screw.cos * v.z());
+  };
+  const Eigen::Vector3d tilt(pose.tilt.x(), 0.0, pose.tilt.y());
+  const Eigen::Vector3d origin(pose.offset.x(), pose.depth, pose.offset.y());
+  screw.spin = local(tilt);
+  screw.move = local(Eigen::Vector3d(pose.offset.x(), 0.0, pose.offset.y()) + tilt.cross(origin));
+  screw.move.y() += screw.folded;
   return screw;
 }
 
@@ -144,8 +155,8 @@ double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
 }
 
 double ThreadContactAnalyzer::Geometric(int i, const ScrewPhase& screw) const noexcept {
-  const Eigen::Vector3d n = cells_.normal.col(i);
-  return screw.folded * n.y() + screw.local.x() * n.x() + screw.local.y() * n.z();
+  // (move + spin x p) . n = move . n + spin . (p x n).
+  return screw.move.dot(cells_.normal.col(i)) + screw.spin.dot(cells_.normal_moment.col(i));
 }
 
 double ThreadContactAnalyzer::Interference(int i, const ScrewPhase& screw,
