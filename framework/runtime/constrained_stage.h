@@ -3,12 +3,12 @@
 #include <limits>
 
 #include "framework/core/export.h"
+#include "framework/runtime/stage.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/resistance_law.h"
 #include "framework/runtime/contact_search.h"
 #include "framework/runtime/god_object.h"
 #include "framework/runtime/quasi_static_settle.h"
-#include "framework/runtime/stage.h"
 
 namespace fitfeel {
 

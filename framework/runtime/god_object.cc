@@ -78,8 +78,8 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
       double s = 0.0;
       const double tolerance =
           std::max({1e-4, 1e-6 * magnitude, kPicometre * memory->across_slope});
-      if (!search_.SolveAlong(held, into, 0.0, tolerance, motion, &work, &s, k,
-                              &memory->across_slope, &memory->across_root)) {
+      if (!search_.SolveAlong(held, into, 0.0, tolerance, motion, &work, &s, k, &memory->across_slope,
+                      &memory->across_root)) {
         return held;
       }
       memory->across_root = s;
@@ -118,7 +118,7 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
       // the line changes little from tick to tick: a Newton step on the last balance's slope
       // lands on it (the last root itself is no start: the edge moves with the device).
       if (!search_.SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k,
-                              &memory->line_slope)) {
+                      &memory->line_slope)) {
         return edge;
       }
       // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
@@ -145,8 +145,7 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
       const double tolerance =
           std::max({1e-4, 1e-3 * pull, bed ? kPicometre * memory->back_slope : 0.0});
       if (search_.SolveAlong(part, wall, pull, tolerance, motion, &work, &t, 0.0,
-                             bed ? &memory->back_slope : nullptr,
-                             bed ? &memory->back_root : nullptr)) {
+                     bed ? &memory->back_slope : nullptr, bed ? &memory->back_root : nullptr)) {
         if (bed) memory->back_root = t;
         if (t < 0.0) part += t * wall;
       }

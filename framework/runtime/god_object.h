@@ -56,8 +56,8 @@ class FITFEEL_API GodObject {
   // entry) until the contact's push balances the spring across the axis, and the law's
   // resistance (with the run's `*law_state`) balances it along the axis; leaves the outputs at
   // the part's pose with the spring's wrench on the device.
-  void FollowDevice(const MatingMotion& device_motion, GodObjectMemory* memory, LawState* law_state,
-                    StageOutput* out) const noexcept;
+  void FollowDevice(const MatingMotion& device_motion, GodObjectMemory* memory,
+                    LawState* law_state, StageOutput* out) const noexcept;
 
  private:
   const ContactSearch& search_;

@@ -12,8 +12,8 @@ namespace fitfeel {
 // the lead-in at depth y (the lead-in's y: the feature's depth plus the lead-in's capture depth)
 // with its offset across the axis (the feature's frame).
 struct LeadInPush {
-  double axial = 0.0;                // N along +y, on the moving part
-  Eigen::Vector2d across{0.0, 0.0};  // N in the (x, z) cross-section, on the moving part
+  double axial = 0.0;                  // N along +y, on the moving part
+  Eigen::Vector2d across{0.0, 0.0};    // N in the (x, z) cross-section, on the moving part
   bool touching = false;
 };
 

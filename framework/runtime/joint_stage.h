@@ -6,11 +6,11 @@
 
 #include <Eigen/Core>
 
-#include "framework/collision/lead_in.h"
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/resistance_law.h"
+#include "framework/collision/lead_in.h"
 #include "framework/runtime/stage.h"
 
 namespace fitfeel {

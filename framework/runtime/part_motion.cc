@@ -35,8 +35,8 @@ void PartMotion::Place(const DeviceState& device, const PartMotionState& state,
   part->orientation = device.orientation;
   part->velocity = device.velocity;
   part->angular_velocity = device.angular_velocity;
-  part->settle_load =
-      settings_.radial == RadialMotion::kQuasiStatic ? LoadAt(device) : Eigen::Vector2d(0.0, 0.0);
+  part->settle_load = settings_.radial == RadialMotion::kQuasiStatic ? LoadAt(device)
+                                                                     : Eigen::Vector2d(0.0, 0.0);
   part->free_rotation = settings_.rotation == RotationMotion::kFree;
   part->applied_torque = part->free_rotation ? TorqueAt(settings_.torque, device.time) : 0.0;
   if (settings_.radial == RadialMotion::kDynamic && state.floating) {

@@ -156,9 +156,9 @@ void PositioningStage::GuideThroughLeadIn(const PartState& held_part, StageState
   const double k = options_.free_stiffness;
   if (part != target) {
     // The spring between the device and the part: along the axis and across it.
-    out->wrench.force =
-        k * Eigen::Vector3d(out->pose.offset.x() - held.offset.x(), part.x() - target.x(),
-                            out->pose.offset.y() - held.offset.y());
+    out->wrench.force = k * Eigen::Vector3d(out->pose.offset.x() - held.offset.x(),
+                                            part.x() - target.x(),
+                                            out->pose.offset.y() - held.offset.y());
     out->stiffness = k;
   }
   // Past the capture depth (an interference fit: at it, where the part wedges and stops), so

@@ -5,8 +5,8 @@
 #include "framework/collision/coarse_mesh.h"
 #include "framework/collision/lead_in.h"
 #include "framework/core/export.h"
-#include "framework/model/gps_spec.h"
 #include "framework/runtime/stage.h"
+#include "framework/model/gps_spec.h"
 
 namespace fitfeel {
 
@@ -92,7 +92,8 @@ class FITFEEL_API PositioningStage final : public Stage {
   PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving);
   // As above, with a lead-in, which takes the place of the meshes when it is not empty (either
   // part moving: see above).
-  PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving, LeadIn lead_in);
+  PositioningStage(const Options& options, const CoarseMeshes& meshes, Role moving,
+                   LeadIn lead_in);
   ~PositioningStage() override;
   PositioningStage(const PositioningStage&) = delete;
   PositioningStage& operator=(const PositioningStage&) = delete;
@@ -114,8 +115,8 @@ class FITFEEL_API PositioningStage final : public Stage {
 
  private:
   // The god object's tick (lead-in).
-  void GuideThroughLeadIn(const PartState& held_part, StageState* state,
-                          StageOutput* out) const noexcept;
+  void GuideThroughLeadIn(const PartState& held_part, StageState* state, StageOutput* out) const
+      noexcept;
 
   Options options_;
   LeadIn lead_in_;

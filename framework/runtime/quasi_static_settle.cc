@@ -66,8 +66,7 @@ bool QuasiStaticSettle::Settle(const Eigen::Vector2d& load, const MatingMotion& 
   }
   if (stiff_start) {
     // The Newton loop below starts here, from this evaluation.
-  } else if (!search_.SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0,
-                                 along)) {
+  } else if (!search_.SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0, along)) {
     // Nothing the model holds carries the load (a key's weight rests on the keyway's bottom,
     // which the planar model leaves out), but the part still floats sideways to where the walls
     // it touches balance, rather than being held off that balance by the device.
@@ -151,18 +150,15 @@ bool QuasiStaticSettle::Settle(const Eigen::Vector2d& load, const MatingMotion& 
       const double tolerance =
           std::max(along_tolerance, across_tolerance * std::abs(axis.dot(across)));
       double t = 0.0;
-      if (search_.SolveAlong(at, axis, load.dot(axis), tolerance, motion, &work, &t))
-        at += t * axis;
+      if (search_.SolveAlong(at, axis, load.dot(axis), tolerance, motion, &work, &t)) at += t * axis;
     }
     residual = force_at(at) + load;
   }
   for (int sweep = 0; sweep < 4 && !balanced(residual); ++sweep) {
     double t = 0.0;
-    if (!search_.SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0)
-      break;
+    if (!search_.SolveAlong(at, across, 0.0, across_tolerance, motion, &work, &t) || t == 0.0) break;
     at += t * across;
-    if (!search_.SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0,
-                            along)) {
+    if (!search_.SolveAlong(at, down, weight, along_search_tolerance, motion, &work, &s, 0.0, along)) {
       break;
     }
     at += s * down;

@@ -10,9 +10,9 @@
 #include "framework/core/spsc_ring.h"
 #include "framework/device/device.h"
 #include "framework/device/recording.h"
+#include "framework/runtime/stage.h"
 #include "framework/runtime/overrun_guard.h"
 #include "framework/runtime/part_motion.h"
-#include "framework/runtime/stage.h"
 #include "framework/runtime/stream_row.h"
 #include "framework/runtime/tick_observer.h"
 #include "framework/runtime/tick_record.h"
@@ -113,9 +113,8 @@ class FITFEEL_API Scheduler {
 
   // One tick at scheduled `time` (s): exposed for devices that own the clock and for benchmarks.
   // Returns false once every planned tick is done, the device is inactive or settings.stop is set.
-  // No allocation, lock or I/O. A device state that is not finite or lies outside physical bounds
-  // (physical_bounds.h) is not used: the last sane state is held, zero force is sent and the tick
-  // flagged.
+  // No allocation, lock or I/O. A device state that is not finite or lies outside physical bounds (physical_bounds.h)
+  // is not used: the last sane state is held, zero force is sent and the tick flagged.
   bool Tick(double time) noexcept;
   // An observer called at the end of every tick with its record (null: none). Borrowed; set it
   // before Run, not while the loop runs.

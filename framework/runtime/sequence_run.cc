@@ -15,7 +15,8 @@ namespace fs = std::filesystem;
 void RemoveOutputs(const RunResult& result) {
   std::error_code ignored;
   fs::path folder;
-  for (const fs::path& path : {result.paths.trace, result.paths.summary, result.paths.recording}) {
+  for (const fs::path& path :
+       {result.paths.trace, result.paths.summary, result.paths.recording}) {
     if (path.empty()) continue;
     folder = path.parent_path();
     fs::remove(path, ignored);

@@ -16,7 +16,7 @@
 namespace fitfeel {
 
 struct SequenceResult {
-  std::vector<RunResult> steps;   // in order
+  std::vector<RunResult> steps;  // in order
   std::filesystem::path summary;  // DIR/summary.json over the steps; empty when not written
   nlohmann::json summary_json;
 };
@@ -28,7 +28,8 @@ struct SequenceWatch {
   // that step's run (null: none). Unset: every step reports to RunOptions::observer.
   std::function<TickObserver*(std::size_t k, const Scene& scene)> starting;
   // After step k ran, with its result and its entry of the sequence's summary (StepSummary).
-  std::function<void(std::size_t k, const RunResult& result, const nlohmann::json& entry)> finished;
+  std::function<void(std::size_t k, const RunResult& result, const nlohmann::json& entry)>
+      finished;
 };
 
 // The scene step k (from 0) of `sequence` runs: the step's own with the seed `seed` plus k and,
@@ -41,8 +42,8 @@ FITFEEL_API Scene StepScene(const Sequence& sequence, std::size_t k, std::uint64
 // Step k's entry of the sequence's summary.json: its name, seed, folder, the offset where its part
 // was left (`seated_offset_um`), its final depth, its axial and radial resistance and, for a
 // several-feature step, its features' shares.
-FITFEEL_API nlohmann::json StepSummary(const Sequence& sequence, std::size_t k, std::uint64_t seed,
-                                       const RunResult& result);
+FITFEEL_API nlohmann::json StepSummary(const Sequence& sequence, std::size_t k,
+                                       std::uint64_t seed, const RunResult& result);
 
 // Runs a sequence's steps in order (docs/assemblies.md), each as RunScene runs a scene, its
 // outputs in DIR/<step>/ and the sequence's summary.json in DIR. Step k runs StepScene: it draws
