@@ -6,8 +6,12 @@
 #include <string>
 
 #include "framework/core/error.h"
+#include "surfaces/thread/bolted_joint.h"
+#include "surfaces/thread/fastener_tables.h"
+#include "surfaces/thread/joint_model.h"
 #include "surfaces/thread/thread_geometry.h"
 #include "surfaces/thread/thread_options.h"
+#include "surfaces/thread/turn_load_distribution.h"
 
 namespace fitfeel::thread {
 namespace {
@@ -136,7 +140,46 @@ void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
       nut_variation_(i, j) = outer_sms.variation[nut_grid.index(i, j)];
     }
   }
-  seat_ = ThreadOptionsOf(settings).joint.seat;
+  const ThreadOptions options = ThreadOptionsOf(settings);
+  seat_ = options.joint.seat;
+  weights_.clear();
+  if (options.distribution == LoadDistribution::kSopwith) {
+    // Sopwith's bars: the bolt's core (A_d3) and the nut's body, the annulus between the thread
+    // and the nut's bearing diameter; the flank pair's stiffness per unit length is the engaged
+    // thread's (the law's K) spread over the nut.
+    const JointModel joint = MakeJointModel(inner, outer, options.joint);
+    const double flank = settings.contact_stiffness > 0.0 ? settings.contact_stiffness
+                                                          : 1.0 / joint.engaged_thread_compliance;
+    const double d = bolt.diameter(), d3 = MinorDiameter(d, pitch_);
+    const double body = MetricFastenerOf(d).nut_bearing_diameter;
+    constexpr double kQuarterPi = 0.25 * std::numbers::pi;
+    const double lambda =
+        SopwithDecayRate(flank / nut_length_, inner.material.youngs_modulus * kQuarterPi * d3 * d3,
+                         outer.material.youngs_modulus * kQuarterPi * (body * body - d * d));
+    const double scale = lambda * nut_length_ / std::sinh(lambda * nut_length_);
+    constexpr int kSamples = 256;
+    weights_.resize(kSamples + 1);
+    double weighted = 0.0, plain = 0.0;
+    for (int n = 0; n <= kSamples; ++n) {
+      const double y = nut_length_ * n / kSamples;
+      weights_[n] = scale * std::cosh(lambda * (nut_length_ - y));
+      // The countersinks' ramps (Share) take part of the first and last turns: the weights are
+      // scaled to a mean of 1 over what the ramps leave, so the law's stiffness (taken for a
+      // uniform load) holds for the whole nut.
+      const double ramps = Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_);
+      weighted += ramps * weights_[n];
+      plain += ramps;
+    }
+    for (double& w : weights_) w *= plain / weighted;
+  }
+}
+
+double ThreadContactAnalyzer::LoadWeight(double y) const noexcept {
+  if (weights_.empty()) return 1.0;
+  const int samples = static_cast<int>(weights_.size()) - 1;
+  const double x = std::clamp(y / nut_length_, 0.0, 1.0) * samples;
+  const int k = std::min(static_cast<int>(x), samples - 1);
+  return weights_[k] + (x - k) * (weights_[k + 1] - weights_[k]);
 }
 
 double ThreadContactAnalyzer::NutVariation(int column, double turn) const noexcept {
@@ -152,6 +195,10 @@ double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
   const double y = depth + cells_.axial[i];
   return Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_) *
          Ramp(-cells_.axial[i] * inverse_pitch_);
+}
+
+double ThreadContactAnalyzer::Weight(int i, double depth) const noexcept {
+  return weights_.empty() ? 1.0 : LoadWeight(depth + cells_.axial[i]);
 }
 
 double ThreadContactAnalyzer::Geometric(int i, const ScrewPhase& screw) const noexcept {
@@ -201,7 +248,7 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
       const double nut = (1.0 - f) * nut_variation_(below, j) + f * nut_variation_(above, j);
       const double delta = Geometric(i, screw) + screw.deviations * (cells_.variation[i] - nut);
       if (delta <= 0.0) continue;
-      const double a = share * cells_.area[i] * delta;
+      const double a = share * Weight(i, pose.depth) * cells_.area[i] * delta;
       normal += a * cells_.normal.col(i);
       normal_moment += a * cells_.normal_moment.col(i);
       slide += a * cells_.slide.col(i);

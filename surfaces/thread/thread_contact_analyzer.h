@@ -29,6 +29,12 @@ struct ScrewPhase;
 // nut's frame once: no trigonometry per cell. The nut's flank shift between two of its rows is
 // interpolated linearly, so a pitch deviation moves the contact continuously.
 class ThreadContactAnalyzer final : public ContactAnalyzer {
+ public:
+  // The flank stiffness's weight at `y` from the nut's bearing face (its entrance), after
+  // Prepare: 1 for the uniform distribution; for model.options.distribution: sopwith, Sopwith's
+  // cosh(lambda (L - y)), scaled to a mean of 1 over the flanks the countersinks leave.
+  double LoadWeight(double y) const noexcept;
+
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
@@ -52,6 +58,8 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
   // Its part from the pose alone (the phase and the offset along the cell's normal).
   double Geometric(int i, const ScrewPhase& screw) const noexcept;
   double Share(int i, double depth) const noexcept;
+  // The load distribution's weight of cell i at insertion `depth` (LoadWeight).
+  double Weight(int i, double depth) const noexcept;
   double NutVariation(int column, double turn) const noexcept;
   // Row range [first, last) of the bolt whose cells can lie inside the nut at `depth`.
   void Rows(double depth, int* first, int* last) const noexcept;
@@ -65,6 +73,8 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> nut_variation_;
   double nut_row_turn_ = 0.0;
   double seat_ = 0.0;  // depth at which the axial stop meets (infinity: none)
+  // LoadWeight sampled evenly over the nut (empty: uniform).
+  std::vector<double> weights_;
 };
 
 }  // namespace fitfeel::thread

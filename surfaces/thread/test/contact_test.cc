@@ -9,8 +9,11 @@
 #include "framework/plugin/registry.h"
 #include "framework/runtime/prepare.h"
 #include "framework/scenario/scene.h"
+#include "surfaces/thread/thread_contact_analyzer.h"
 #include "surfaces/thread/thread_geometry.h"
 #include "surfaces/thread/thread_law.h"
+#include "surfaces/thread/thread_options.h"
+#include "surfaces/thread/turn_load_distribution.h"
 
 namespace fitfeel::thread {
 namespace {
@@ -94,6 +97,33 @@ TEST(ThreadContact, AFrictionlessScrewTurnsWithTheLeadOnly) {
     ASSERT_LT(w.force.y(), 0.0);
     EXPECT_NEAR(w.torque.y() / w.force.y(), -1.5e-3 / (2 * std::numbers::pi), 1e-12);
   }
+}
+
+// Sopwith's distribution: the flank stiffness weighted along the nut so that a uniform
+// interference carries his shares of the load, the turn at the bearing face most.
+TEST(ThreadContact, SopwithsDistributionLoadsTheFirstTurnMost) {
+  Prepared p = PrepareThread(2, 0.12);
+  auto options = std::make_shared<ThreadOptions>();
+  options->distribution = LoadDistribution::kSopwith;
+  p.scene.model.options = options;
+  p.scene.model.contact_stiffness = 0.0;  // auto: VDI 2230's engaged thread
+  Rng rng(2);
+  const SkinModelShapes shapes = GenerateSkinModelShapes(p.scene, rng);
+  ThreadContactAnalyzer analyzer;
+  analyzer.Prepare(p.scene.inner, shapes.inner, p.scene.outer, shapes.outer, p.scene.model);
+  const double length = 15e-3, pitch = 1.5e-3;
+  EXPECT_GT(analyzer.LoadWeight(0.0), 1.5 * analyzer.LoadWeight(0.5 * length));
+  EXPECT_GT(analyzer.LoadWeight(0.5 * length), analyzer.LoadWeight(length));
+  // Turn by turn the weights are in Sopwith's proportions (the shares of the library's closed
+  // form, whatever the common scale).
+  auto turn = [&](int i) {
+    double sum = 0.0;
+    for (int k = 0; k < 100; ++k) sum += analyzer.LoadWeight((i + (k + 0.5) / 100) * pitch);
+    return sum;
+  };
+  const double lambda = std::acosh(analyzer.LoadWeight(0.0) / analyzer.LoadWeight(length));
+  const std::vector<double> shares = TurnLoadShares(length, pitch, lambda / length);
+  EXPECT_NEAR(turn(0) / turn(4), shares[0] / shares[4], 1e-3 * shares[0] / shares[4]);
 }
 
 }  // namespace
