@@ -87,7 +87,8 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     if (const auto aim = hand.Find("aim_error")) {
       const auto xz = aim->is_sequence() ? aim->Items() : std::vector<ConfigNode>{};
       if (xz.size() != 2) aim->Fail("[x, z] with units, e.g. [0.3 mm, 0 mm]", aim->Describe());
-      for (int i = 0; i < 2; ++i) s.aim_error[i] = xz[i].AsQuantityIn(Dimension::kLength, -0.1, 0.1);
+      for (int i = 0; i < 2; ++i)
+        s.aim_error[i] = xz[i].AsQuantityIn(Dimension::kLength, -0.1, 0.1);
     }
     s.hand_mass = hand.Child("mass").AsQuantityIn(Dimension::kMass, 0.0, 1e3, false);
     s.hand_stiffness = hand.Child("stiffness").AsQuantityIn(Dimension::kStiffness, 0.0, 1e8, false);
@@ -110,9 +111,9 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
         position.Fail("[x, y, z] with units, e.g. [0 mm, -5 mm, 0 mm]", position.Describe());
       for (int i = 0; i < 3; ++i)
         w.position[i] = xyz[i].AsQuantityIn(Dimension::kLength, -10.0, 10.0);
-      // A few turns at most: a wrist turns a part by hand, regripping between turns.
+      // Twenty turns at most: fingers running a nut down a bolt, regripping between turns.
       if (std::optional<ConfigNode> angle = item.Find("angle")) {
-        w.angle = angle->AsQuantityIn(Dimension::kAngle, -4.0 * M_PI, 4.0 * M_PI);
+        w.angle = angle->AsQuantityIn(Dimension::kAngle, -kMaxWaypointAngle, kMaxWaypointAngle);
       }
       s.waypoints.push_back(w);
     }

@@ -41,7 +41,8 @@ void Validate(const Settings& s) {
     Require(w.position.allFinite() && w.position.cwiseAbs().maxCoeff() <= 10.0,
             "waypoint positions must be within 10 m of the entrance");
     Require(i == 0 || w.time > s.waypoints[i - 1].time, "waypoint times must increase strictly");
-    Require(InRange(w.angle, -4.0 * M_PI, 4.0 * M_PI), "waypoint angles must be within 2 turns");
+    Require(InRange(w.angle, -kMaxWaypointAngle, kMaxWaypointAngle),
+            "waypoint angles must be within 20 turns");
   }
   Require(InRange(s.hand_mass, 0.0, 1e3) && s.hand_mass > 0.0, "hand mass must be in (0, 1000] kg");
   Require(InRange(s.hand_stiffness, 0.0, 1e8) && s.hand_stiffness > 0.0,
@@ -209,8 +210,8 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
 void SimulatedDevice::DoWrite(const Wrench& wrench) noexcept {
   delivered_ = wrench;
   const double h = period_;
-  if (settings_.mode == Settings::Mode::kConstantSpeed && settings_.stop_force > 0.0 &&
-      !stopped_ && -wrench.force.y() >= settings_.stop_force) {
+  if (settings_.mode == Settings::Mode::kConstantSpeed && settings_.stop_force > 0.0 && !stopped_ &&
+      -wrench.force.y() >= settings_.stop_force) {
     // The press's force monitor: the ram holds where the resistance reached the set force.
     stopped_ = true;
     stop_position_ = position_.y();

@@ -8,6 +8,9 @@
 
 namespace fitfeel::simulated {
 
+// The largest waypoint angle, rad: twenty turns, a nut run down by the fingers.
+inline constexpr double kMaxWaypointAngle = 40.0 * 3.141592653589793;
+
 struct Waypoint {
   double time = 0.0;                        // s since the start of the run
   Eigen::Vector3d position{0.0, 0.0, 0.0};  // leading end, scene frame, m
@@ -21,8 +24,8 @@ struct Settings {
   Mode mode = Mode::kConstantSpeed;
 
   // kConstantSpeed: the paper's case-study robot.
-  double speed = 10e-3;         // insertion speed along +y, m/s (paper: 10 mm/s)
-  double start_offset = 1e-3;   // leading end this far before the entrance at t = 0, m
+  double speed = 10e-3;        // insertion speed along +y, m/s (paper: 10 mm/s)
+  double start_offset = 1e-3;  // leading end this far before the entrance at t = 0, m
   // A force-driven press: the ram stops advancing (and holds its position) at the first tick whose
   // axial resistance reaches this force; 0: it never stops (a position-driven robot).
   double stop_force = 0.0;  // N
@@ -44,8 +47,8 @@ struct Settings {
   // Physiological tremor added to the target across the mating axis: a circle of `tremor_amplitude`
   // in (x, z) at `tremor_frequency` (x = A sin(2 pi f t), z = A cos(2 pi f t) - A, so it starts at
   // the waypoint). 0: none. Defaults of the key: 0.1 mm at 10 Hz (docs in README.md).
-  double tremor_amplitude = 0.0;   // m
-  double tremor_frequency = 0.0;   // Hz
+  double tremor_amplitude = 0.0;  // m
+  double tremor_frequency = 0.0;  // Hz
   // A constant aiming error added to every waypoint across the axis: where a person's hand puts
   // the part's axis when aiming at the bore, (x, z).
   Eigen::Vector2d aim_error{0.0, 0.0};  // m

@@ -44,6 +44,11 @@ SceneStages MakeSceneStages(const Scene& scene, const PreparedScene& prepared,
     screw.turn = scene.part_motion.turn;
     screw.lead = scene.inner.geometry->lead();
     screw.tilt = Eigen::Vector2d(scene.part_motion.tilt, 0.0);
+    // A hand holds the part at the scene's grip.
+    const double lever = scene.part_motion.grip_lever;
+    if (std::isfinite(mating.proxy_stiffness) && lever > 0.0) {
+      screw.twist_stiffness = mating.proxy_stiffness * lever * lever;
+    }
     stages.constrained = std::make_unique<ScrewStage>(*prepared.analyzer, *prepared.law, screw);
     return stages;
   }

@@ -20,6 +20,10 @@ struct ScrewStage::RunState final : StageState {
   double slope = 0.0;
   LawState law;
   ScrewOutput screw;
+  // The device's twist unwrapped across turns (MatingPoseOf gives it within half a turn), and
+  // the part's resisting torque with its rise per radian, for a hand's torsional coupling.
+  double device_raw = 0.0, device_twist = 0.0;
+  double resisting = 0.0, resisting_slope = 0.0;
 };
 
 ScrewStage::ScrewStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law,
@@ -28,7 +32,7 @@ ScrewStage::ScrewStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law
   if (!analyzer.prepared()) throw UserError("screw stage needs a prepared contact analyzer");
   if (!std::isfinite(options.depth_origin) || !(options.proxy_stiffness > 0.0) ||
       !std::isfinite(options.axial_load) || !(options.turn.speed >= 0.0) ||
-      !(options.lead > 0.0 && std::isfinite(options.lead))) {
+      !(options.lead > 0.0 && std::isfinite(options.lead)) || !(options.twist_stiffness > 0.0)) {
     throw UserError(
         "screw stage: the depth origin, axial load and turning speed must be finite, "
         "the lead and the proxy stiffness > 0");
@@ -142,14 +146,26 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
     run->law = LawState{};
     run->screw = ScrewOutput{};
     run->screw.active = true;
+    run->device_raw = run->device_twist = device.angle;
+    run->resisting = run->resisting_slope = 0.0;
   }
   run->time = part.time;
   out->contact_evaluations = 0;
   const double previous_angle = run->angle;
+  double twist_step = device.angle - run->device_raw;
+  twist_step -= 2.0 * std::numbers::pi * std::round(twist_step / (2.0 * std::numbers::pi));
+  run->device_raw = device.angle;
+  run->device_twist += twist_step;
+  const double k_twist = options_.twist_stiffness;
   if (options_.turn.speed > 0.0) {
     if (!run->screw.stopped) run->angle += options_.turn.speed * dt;
+  } else if (!std::isfinite(k_twist)) {
+    run->angle = run->device_twist;
   } else {
-    run->angle = device.angle;
+    // One Newton step a tick on the spring's pull against the contact's resisting torque, on the
+    // torque's last rise per radian: the part turns as far as the hand's twist can make it.
+    run->angle += (k_twist * (run->device_twist - run->angle) - run->resisting) /
+                  (k_twist + run->resisting_slope);
   }
   // The tilt as the analyzer takes it (AnalyzerPose): reflected in z where the outer part moves.
   run->tilt = device.tilt + options_.tilt;
@@ -181,6 +197,15 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
 
   ScrewOutput& screw = run->screw;
   screw.torque = -out->wrench.torque.y();
+  if (run->angle != previous_angle) {
+    run->resisting_slope =
+        std::max(0.0, (screw.torque - run->resisting) / (run->angle - previous_angle));
+  }
+  run->resisting = screw.torque;
+  // A hand feels its torsional spring, which at rest pulls as hard as the contact resists.
+  if (options_.turn.speed == 0.0 && std::isfinite(k_twist)) {
+    out->wrench.torque.y() = -k_twist * (run->device_twist - run->angle);
+  }
   screw.thread_torque = -thread.torque.y();
   screw.head_torque = screw.torque - screw.thread_torque;
   screw.preload = thread.force.y() - out->wrench.force.y();

@@ -30,6 +30,9 @@ class FITFEEL_API ScrewStage final : public Stage {
     double lead = 0.0;        // the screw's advance per turn, m (> 0)
     // A robot's hold of the part tilted (MatingPose::tilt), added to the device's, rad.
     Eigen::Vector2d tilt{0.0, 0.0};
+    // Without a wrench: the torsional spring between the device's twist and the part's (a hand
+    // holding a nut at a lever arm, N*m/rad); infinite: the part takes the device's twist.
+    double twist_stiffness = std::numeric_limits<double>::infinity();
     ScrewTurn turn;
   };
   static constexpr int kMaxEvaluations = 12;

@@ -172,9 +172,16 @@ Wrench SafetyChain::Apply(const Wrench& physical, const PartState& device, doubl
     observer_.Hold(Eigen::Vector3d::Zero());
     return out;
   }
-  report_.max_physical_force = std::max(report_.max_physical_force, physical.force.norm());
+  Eigen::Vector3d physical_force = physical.force;
+  Eigen::Vector3d physical_torque = physical.torque;
+  if (settings_.torque_lever > 0.0) {
+    // The torque about the axis as the handle's tangential force (SafetySettings::torque_lever).
+    physical_force.x() += physical_torque.y() / settings_.torque_lever;
+    physical_torque.y() = 0.0;
+  }
+  report_.max_physical_force = std::max(report_.max_physical_force, physical_force.norm());
   const double scale = report_.force_scale;
-  Eigen::Vector3d force = scale * physical.force;
+  Eigen::Vector3d force = scale * physical_force;
   if (settings_.coupling == CouplingMode::kSpringDamper) {
     force = coupling_.Step(force, device.position, device.velocity, stiffness_hint_, dt);
     if (!coupling_.proxy_position().allFinite() || !coupling_.proxy_velocity().allFinite()) {
@@ -192,7 +199,7 @@ Wrench SafetyChain::Apply(const Wrench& physical, const PartState& device, doubl
   out.force = force;
   // The listed devices render no torque and their specs carry no torque limit: torque is scaled
   // and passed on (a 3-DOF device ignores it).
-  out.torque = scale * physical.torque;
+  out.torque = scale * physical_torque;
   if (!out.AllFinite()) {
     ++report_.non_finite_faults;
     out.SetZero();

@@ -13,11 +13,16 @@ SafetySettings ParseSafetySettings(const ConfigNode& node) {
   }
   node.ExpectOnlyKeys({"force_scale", "physical_full_scale", "continuous_window", "coupling",
                        "coupling_stiffness", "coupling_damping", "proxy_mass",
-                       "credit_device_damping", "passivity_controller", "passivity_max_damping"});
+                       "credit_device_damping", "passivity_controller", "passivity_max_damping",
+                       "torque_lever"});
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (node.Has("force_scale") && node.Has("physical_full_scale")) {
     node.Child("physical_full_scale")
         .Fail("either force_scale or physical_full_scale, not both", "both");
+  }
+  if (auto n = node.Find("torque_lever")) {
+    // From a finger on a nut's flats (a few mm) to a long wrench (1 m).
+    settings.torque_lever = n->AsQuantityIn(Dimension::kLength, 1e-3, 1.0);
   }
   if (auto n = node.Find("force_scale")) {
     settings.force_scale = n->AsQuantityIn(Dimension::kDimensionless, 0.0, kInf, false);

@@ -39,6 +39,12 @@ struct SafetySettings {
   // Mass of the proxy in device units, kg; 0 makes the proxy quasi-static (no inertia of its own).
   double proxy_mass = 0.0;
 
+  // A device that renders no torque (3-DOF): the torque about the mating axis given as the force
+  // a hand holding the part at this lever arm (the handle along +z from the axis) would feel,
+  // T_y / lever along x, through the chain's limits like any force (docs/threads.md). 0: torque
+  // passed on as torque.
+  double torque_lever = 0.0;  // m
+
   // Passivity observer (always on) and controller (optional).
   bool credit_device_damping = true;  // count the device's physical damping as dissipation
   bool passivity_controller = false;

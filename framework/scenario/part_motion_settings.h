@@ -84,6 +84,10 @@ struct PartMotionSettings {
   double axial_load = 0.0;
   // The tilt a robot holds the part at, about the scene's x axis, rad (a crooked start).
   double tilt = 0.0;
+  // Where a hand holds a screw, m from the axis (fingers on a nut's flats, a wrench's handle): the
+  // hand's twist turns the part through a torsional spring of its coupling's stiffness times
+  // this squared. 0: the part takes the device's twist rigidly.
+  double grip_lever = 0.0;
 };
 
 // The applied torque at `time` (N*m): linear between the points, the last one's after them, the

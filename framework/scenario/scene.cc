@@ -266,12 +266,12 @@ ScrewTurn ParseTurn(const ConfigNode& node) {
 PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (!node.is_map()) {
     node.Fail(
-        "a map with the keys radial, damping, radial_load, rotation, torque, turn, axial_load "
-        "and tilt",
+        "a map with the keys radial, damping, radial_load, rotation, torque, turn, axial_load, "
+        "tilt and grip_lever",
         node.Describe());
   }
-  node.ExpectOnlyKeys(
-      {"radial", "damping", "radial_load", "rotation", "torque", "turn", "axial_load", "tilt"});
+  node.ExpectOnlyKeys({"radial", "damping", "radial_load", "rotation", "torque", "turn",
+                       "axial_load", "tilt", "grip_lever"});
   PartMotionSettings motion;
   if (std::optional<ConfigNode> rotation = node.Find("rotation")) {
     motion.rotation = rotation->AsOneOf({"held", "free"}) == "held" ? RotationMotion::kHeld
@@ -319,6 +319,9 @@ PartMotionSettings ParsePartMotion(const ConfigNode& node) {
   if (std::optional<ConfigNode> turn = node.Find("turn")) motion.turn = ParseTurn(*turn);
   if (std::optional<ConfigNode> load = node.Find("axial_load")) {
     motion.axial_load = load->AsQuantityIn(Dimension::kForce, -kMaxRadialLoad, kMaxRadialLoad);
+  }
+  if (std::optional<ConfigNode> lever = node.Find("grip_lever")) {
+    motion.grip_lever = lever->AsQuantityIn(Dimension::kLength, 1e-3, 1.0);
   }
   if (std::optional<ConfigNode> tilt = node.Find("tilt")) {
     // Beyond 10 deg a part is not started on its mate but beside it.
@@ -576,7 +579,7 @@ Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
   const bool screw =
       !several && scene.inner.geometry != nullptr && scene.inner.geometry->lead() > 0.0;
   if (std::optional<ConfigNode> motion = root.Find("part_motion"); motion && !screw) {
-    for (const char* key : {"turn", "axial_load", "tilt"}) {
+    for (const char* key : {"turn", "axial_load", "tilt", "grip_lever"}) {
       if (motion->Has(key)) {
         motion->Child(key).Fail(
             "`" + std::string(key) + "` only in a screw scene (a thread's surface)",

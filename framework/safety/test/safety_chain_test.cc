@@ -42,6 +42,22 @@ TEST(SafetyChain, ScalesPhysicalToDeviceNewtonsAndReportsTheScale) {
   EXPECT_EQ(chain.report().peak_limited_ticks, 0u);
 }
 
+// A 3-DOF device at a stated lever arm: the torque about the axis becomes the handle's
+// tangential force, scaled and limited like any force; torques about the other axes pass.
+TEST(SafetyChain, TorqueAboutTheAxisIsFeltAtTheLeverArm) {
+  SafetySettings s = Direct(0.5);
+  s.torque_lever = 0.008;
+  SafetyChain chain;
+  chain.Configure(s, LookupDeviceSpec("PHANTOM Desktop"), 1e-3);
+  Wrench w = Force(0.5, -1.0, 0.0);
+  w.torque = Eigen::Vector3d(0.001, -0.004, 0.0);
+  const Wrench out = chain.Apply(w, PartState{}, 1e-3);
+  EXPECT_DOUBLE_EQ(out.force.x(), 0.5 * (0.5 - 0.004 / 0.008));
+  EXPECT_DOUBLE_EQ(out.force.y(), -0.5);
+  EXPECT_DOUBLE_EQ(out.torque.y(), 0.0);
+  EXPECT_DOUBLE_EQ(out.torque.x(), 0.0005);
+}
+
 TEST(SafetyChain, PhysicalFullScaleMapsToTheContinuousRating) {
   SafetySettings s = Direct(1.0);
   s.physical_full_scale = 350.0;

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/screw_stage.h"
 #include "framework/scenario/scene.h"
@@ -160,6 +161,21 @@ TEST(Tightening, ACrossThreadedStartJamsBeforeTheFace) {
     if (!t.screw.seated) rundown = std::max(rundown, t.screw.torque);
   }
   EXPECT_LT(rundown, 0.05);
+}
+
+// Fingers run the nut down to the face (the scripted hand, its wrist turning the nut through the
+// grip's torsional spring): free running, seated, finger-tight, and passive.
+TEST(Tightening, AHandRunsTheNutDownToTheFace) {
+  const RunResult run = RunScene(LoadScene(test_support::ShippedScenario("nut-by-hand.yaml"),
+                                           test_support::BuildTreePlugins()),
+                                 RunOptions{});
+  const nlohmann::json& thread = run.summary["thread"];
+  EXPECT_EQ(thread["start"], "seated");
+  EXPECT_LT(thread["rundown_torque_Nm"].get<double>(), 0.05);
+  // Finger-tight: a few newton metres at most, a kilonewton or two of preload.
+  EXPECT_LT(thread["torque_Nm"].get<double>(), 5.0);
+  EXPECT_GT(thread["preload_N"].get<double>(), 0.0);
+  EXPECT_EQ(run.summary["safety"]["energy_created_J"].get<double>(), 0.0);
 }
 
 }  // namespace
