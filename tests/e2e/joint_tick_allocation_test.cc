@@ -12,6 +12,7 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/scheduler.h"
+#include "framework/runtime/screw_stage.h"
 #include "framework/scenario/scene.h"
 #include "framework/testing/allocation_counter.h"
 #include "framework/testing/build_tree_plugins.h"
@@ -69,6 +70,37 @@ TEST(JointTickAllocation, TheShippedJointsTickWithoutAllocating) {
       EXPECT_GT(constrained, static_cast<int>(scheduler.trace().size()) / 2);
       EXPECT_GE(scheduler.StatsSoFar().contact_evaluations.max, 40.0);
     }
+  }
+}
+
+// The screw stage's tick (framework/runtime/screw_stage.h) neither: the shipped thread scenes, the
+// wrench's run-down and tightening, the crooked start that jams and the hand's run-down.
+TEST(ScrewTickAllocation, TheShippedThreadsTickWithoutAllocating) {
+  for (const char* file : {"bolt-m10.yaml", "cross-thread.yaml", "nut-by-hand.yaml"}) {
+    SCOPED_TRACE(file);
+    Scene scene = JointScene(file, false);
+    const PreparedScene prepared = Prepare(scene);
+    SchedulerSettings settings = SceneSchedulerSettings(scene);
+    settings.clock = ClockMode::kVirtual;
+    settings.record = true;
+    scene.device->Start(1.0 / settings.rate);
+    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
+    ASSERT_NE(dynamic_cast<const ScrewStage*>(stages.constrained.get()), nullptr);
+    settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
+    Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
+    FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
+    test_support::ScopedAllocationCounter allocations;
+    std::uint64_t ticks = 0;
+    while (ticks < scheduler.planned_ticks() &&
+           scheduler.Tick(static_cast<double>(ticks) / settings.rate)) {
+      ++ticks;
+    }
+    allocations.Stop();
+    scene.device->Stop();
+    EXPECT_EQ(allocations.count(), 0);
+    // The screw did its work: the nut met the face or jammed.
+    const ScrewOutput& last = scheduler.trace().back().screw;
+    EXPECT_TRUE(last.seated || last.stopped);
   }
 }
 
