@@ -7,6 +7,7 @@
 #include <string>
 
 #include "framework/core/quantity.h"
+#include "framework/iso965/iso965.h"
 
 namespace fitfeel {
 namespace {
@@ -28,11 +29,20 @@ std::string DescribePart(const PartSpec& part, bool moving) {
   std::string out = "  " + std::string(part.role == Role::kInner ? "inner " : "outer ") + "     " +
                     part.name + (moving ? " (moving)" : "") + "\n";
   const SizeSpec& size = part.size;
-  out += indent + "size " + Length(size.nominal) +
-         (size.iso_code.empty() ? "" : " " + size.iso_code) + ": deviations " +
-         Micrometres(size.lower_deviation) + " .. " + Micrometres(size.upper_deviation) +
-         " um (limits " + Number((size.nominal + size.lower_deviation) * 1e3, "%.4f") + " .. " +
-         Number((size.nominal + size.upper_deviation) * 1e3, "%.4f") + " mm)\n";
+  if (size.pitch > 0.0) {
+    // A thread's deviations are its pitch diameter's (ISO 965-1).
+    const double d2 = iso965::BasicPitchDiameter(size.nominal, size.pitch);
+    out += indent + "size " + size.iso_code + ": pitch diameter deviations " +
+           Micrometres(size.lower_deviation) + " .. " + Micrometres(size.upper_deviation) +
+           " um (d2 " + Number((d2 + size.lower_deviation) * 1e3, "%.4f") + " .. " +
+           Number((d2 + size.upper_deviation) * 1e3, "%.4f") + " mm)\n";
+  } else {
+    out += indent + "size " + Length(size.nominal) +
+           (size.iso_code.empty() ? "" : " " + size.iso_code) + ": deviations " +
+           Micrometres(size.lower_deviation) + " .. " + Micrometres(size.upper_deviation) +
+           " um (limits " + Number((size.nominal + size.lower_deviation) * 1e3, "%.4f") + " .. " +
+           Number((size.nominal + size.upper_deviation) * 1e3, "%.4f") + " mm)\n";
+  }
   if (part.geometry) out += indent + "geometry " + part.geometry->Describe() + "\n";
   std::string form;
   for (const auto& [characteristic, tolerance] : part.form.tolerance) {
