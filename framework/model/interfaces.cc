@@ -304,6 +304,14 @@ void SurfaceType::CheckPair(const PartSpec& inner, const PartSpec& outer,
 
 void SurfaceType::DoCheckPair(const PartSpec&, const PartSpec&, const ConfigNode&) const {}
 
+void SurfaceType::CheckModel(const PartSpec& inner, const PartSpec& outer,
+                             const ModelSettings& model, const ConfigNode& model_node) const {
+  DoCheckModel(inner, outer, model, model_node);
+}
+
+void SurfaceType::DoCheckModel(const PartSpec&, const PartSpec&, const ModelSettings&,
+                               const ConfigNode&) const {}
+
 std::shared_ptr<const SurfaceOptions> SurfaceType::ParseOptions(const ConfigNode& options) const {
   if (!options.is_map()) options.Fail("a map of surface-specific options", options.Describe());
   options.Keys();  // no repeated keys

@@ -44,6 +44,10 @@ class FITFEEL_API SurfaceType {
   // Checks the pair as a whole once both parts are parsed (e.g. the nominal sizes agree);
   // throws ScenarioError at `pair_node`.
   void CheckPair(const PartSpec& inner, const PartSpec& outer, const ConfigNode& pair_node) const;
+  // Checks the parsed model against the parts once both are known (a thread's joint against the
+  // bolt's size and length); throws ScenarioError at the offending key under `model_node`.
+  void CheckModel(const PartSpec& inner, const PartSpec& outer, const ModelSettings& model,
+                  const ConfigNode& model_node) const;
   // Parses and checks the scenario's `model.options` map (surface-specific model switches) once,
   // when the scene loads; throws ScenarioError at the offending key. The result, never null, is
   // the scene's ModelSettings::options, which the surface's objects read (OptionsAs).
@@ -123,6 +127,9 @@ class FITFEEL_API SurfaceType {
   // Default: no check of the pair.
   virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                            const ConfigNode& pair_node) const;
+  // Default: no check of the model against the parts.
+  virtual void DoCheckModel(const PartSpec& inner, const PartSpec& outer,
+                            const ModelSettings& model, const ConfigNode& model_node) const;
   // Default: the surface takes no options, so any key is unknown (a plain SurfaceOptions).
   virtual std::shared_ptr<const SurfaceOptions> DoParseOptions(const ConfigNode& options) const;
   virtual std::vector<FormCharacteristic> DoFormCharacteristics() const = 0;

@@ -236,6 +236,7 @@ ModelSettings ParseModel(const ConfigNode& node, const SurfaceType& surface,
     model.options = Located(*options, "options the surface type accepts",
                             [&] { return surface.ParseOptions(*options); });
   }
+  surface.CheckModel(parts.inner, parts.outer, model, node);
   return model;
 }
 

@@ -4,6 +4,7 @@
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
+#include "surfaces/thread/joint_model.h"
 #include "surfaces/thread/thread_contact_analyzer.h"
 #include "surfaces/thread/thread_geometry.h"
 #include "surfaces/thread/thread_law.h"
@@ -49,6 +50,27 @@ void ThreadSurface::DoCheckPair(const PartSpec& inner, const PartSpec& outer,
     pair_node.Fail("the same nominal diameter, pitch and flank angle on '" + inner.name +
                        "' and '" + outer.name + "'",
                    a.Describe() + " and " + b.Describe());
+  }
+}
+
+void ThreadSurface::DoCheckModel(const PartSpec& inner, const PartSpec& outer,
+                                 const ModelSettings& model, const ConfigNode& model_node) const {
+  const JointOptions joint = ThreadOptionsOf(model).joint;
+  if (!joint.present()) return;
+  const ConfigNode node = model_node.Child("options").Child("joint");
+  const HelicoidGeometry& bolt = HelicoidGeometryOf(inner);
+  if (joint.seat + joint.clamp_length() > bolt.length() + 1e-12) {
+    node.Child("seat").Fail(
+        "a run-down that leaves the plates on the bolt: seat + plates at most the bolt's length " +
+            FormatQuantity(bolt.length(), Dimension::kLength),
+        node.Child("seat").Describe() + " + " +
+            FormatQuantity(joint.clamp_length(), Dimension::kLength) + " of plates");
+  }
+  try {
+    MakeJointModel(inner, outer, joint);
+  } catch (const UserError& e) {
+    node.Fail("a joint VDI 2230 can model (bearing diameter, hole and plate width in order)",
+              e.what());
   }
 }
 

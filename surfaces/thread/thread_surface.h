@@ -39,6 +39,10 @@ class ThreadSurface final : public SurfaceType {
                                                   const ConfigNode& geometry) const override;
   void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                    const ConfigNode& pair_node) const override;
+  // The joint against the bolt: the nut meets the plates within the bolt's length, and VDI
+  // 2230's bodies exist (hole below the bearing diameter and the plates' width).
+  void DoCheckModel(const PartSpec& inner, const PartSpec& outer, const ModelSettings& model,
+                    const ConfigNode& model_node) const override;
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
   std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const override;
