@@ -2,8 +2,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +45,7 @@ void AddTrace(CLI::App& plot) {
     std::vector<std::string> dirs;
     std::string output;
     bool log_scale = false;
+    bool torque = false;
   };
   auto options = std::make_shared<Options>();
   auto* cmd = plot.add_subcommand(
@@ -55,13 +56,18 @@ void AddTrace(CLI::App& plot) {
   cmd->add_option("-o,--output", options->output,
                   "image file: .png, .svg, or no extension for both")
       ->required();
-  cmd->add_flag("--log", options->log_scale,
-                "logarithmic force axes (runs that differ by orders of magnitude)");
+  auto* log = cmd->add_flag("--log", options->log_scale,
+                            "logarithmic force axes (runs that differ by orders of magnitude)");
+  cmd->add_flag("--torque", options->torque,
+                "a screw's run (a thread scene): its torque and preload against its turn angle")
+      ->excludes(log);
   cmd->callback([options] {
     const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
     std::vector<plot::RunRecord> runs;
     for (const auto& dir : options->dirs) runs.push_back(plot::LoadRun(dir));
-    plot::Render(plot::MakeTraceChart(runs, options->log_scale), outputs);
+    plot::Render(options->torque ? plot::MakeTorqueChart(runs)
+                                 : plot::MakeTraceChart(runs, options->log_scale),
+                 outputs);
     PrintWritten(outputs);
   });
 }
@@ -239,7 +245,8 @@ void AddStudy(CLI::App& plot) {
       const RunResult result = RunScene(std::move(scene), run);
       const auto& axial = result.summary.at("axial_resistance_N");
       if (axial.is_null()) {
-        throw UserError("--reference " + options->reference + ": the run never reached the "
+        throw UserError("--reference " + options->reference +
+                        ": the run never reached the "
                         "constrained stage, so it has no axial resistance to draw");
       }
       reference = plot::ReferenceLine{name + " (mean)", axial.at("mean").get<double>()};

@@ -131,7 +131,8 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   errno = 0;
   std::ifstream in(file);
   const int open_error = errno;
-  if (!in) throw UserError("cannot read the trace '" + file.string() + "': " + OsReason(open_error));
+  if (!in)
+    throw UserError("cannot read the trace '" + file.string() + "': " + OsReason(open_error));
   std::string header_line;
   if (!std::getline(in, header_line)) throw UserError(file.string() + ": empty file, no header");
   std::map<std::string, std::size_t, std::less<>> index;
@@ -162,6 +163,9 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   const std::size_t tx = has_torque ? index.at("tx_Nm") : 0;
   const std::size_t ty = has_torque ? index.at("ty_Nm") : 0;
   const std::size_t tz = has_torque ? index.at("tz_Nm") : 0;
+  const bool has_screw = index.count("torque_Nm") && index.count("preload_N");
+  const std::size_t screw_torque = has_screw ? index.at("torque_Nm") : 0;
+  const std::size_t preload = has_screw ? index.at("preload_N") : 0;
 
   ConstrainedTrace trace;
   std::string line;
@@ -205,6 +209,10 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
       trace.tx_Nm.push_back(number(tx));
       trace.ty_Nm.push_back(number(ty));
       trace.tz_Nm.push_back(number(tz));
+    }
+    if (has_screw) {
+      trace.torque_Nm.push_back(number(screw_torque));
+      trace.preload_N.push_back(number(preload));
     }
   }
   if (trace.t_s.empty()) {

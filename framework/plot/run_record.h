@@ -54,6 +54,10 @@ struct ConstrainedTrace {
   std::vector<double> tx_Nm;
   std::vector<double> ty_Nm;
   std::vector<double> tz_Nm;
+  // A screw's (a thread scene's) tightening torque on the turning part and the joint's preload,
+  // when the trace has the columns torque_Nm and preload_N; empty otherwise.
+  std::vector<double> torque_Nm;
+  std::vector<double> preload_N;
 };
 
 struct RunRecord {

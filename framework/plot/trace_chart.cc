@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "framework/core/error.h"
 
@@ -95,6 +96,39 @@ LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool log_scale) {
     radial.series.push_back({name + ": " + StatsText(run.summary.radial), depth_radial, fr});
   }
   chart.panels = {std::move(axial), std::move(radial)};
+  return chart;
+}
+
+LineChart MakeTorqueChart(const std::vector<RunRecord>& runs) {
+  if (runs.empty()) throw UserError("no run folder to plot");
+  LineChart chart;
+  chart.title = "Tightening: torque and preload along the turn (constrained stage)";
+  const std::string x_label = "turn angle (deg)";
+  LinePanel torque{"Torque", x_label, "torque on the turning part (N·m)", true, false, {}};
+  LinePanel preload{"Preload", x_label, "preload (N)", true, false, {}};
+  for (const auto& run : runs) {
+    const auto& trace = run.trace;
+    if (trace.torque_Nm.empty() || trace.angle_rad.empty()) {
+      throw UserError("the trace in " + run.dir.string() +
+                      " has no torque_Nm, preload_N or angle_rad column: --torque plots a "
+                      "screw's run (a thread scene)");
+    }
+    std::vector<double> angle(trace.angle_rad.size());
+    for (std::size_t k = 0; k < angle.size(); ++k)
+      angle[k] = trace.angle_rad[k] * 180.0 / std::numbers::pi;
+    std::vector<double> torque_y = trace.torque_Nm, preload_y = trace.preload_N;
+    const std::string name = RunName(run.summary);
+    char last[96];
+    std::snprintf(last, sizeof last, ": %.3g N·m at the end", torque_y.back());
+    const std::string torque_label = name + last;
+    const std::string preload_label = name + ": " + FormatNewtons(preload_y.back()) + " at the end";
+    std::vector<double> angle_preload = angle;
+    DecimateKeepingPeaks(&angle, &torque_y, kMaxCurvePoints);
+    DecimateKeepingPeaks(&angle_preload, &preload_y, kMaxCurvePoints);
+    torque.series.push_back({torque_label, angle, torque_y});
+    preload.series.push_back({preload_label, angle_preload, preload_y});
+  }
+  chart.panels = {std::move(torque), std::move(preload)};
   return chart;
 }
 

@@ -11,6 +11,7 @@
 
 #include "framework/core/error.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/scene_stages.h"
 
 namespace fitfeel::view {
 namespace {
@@ -128,6 +129,8 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step) : scene_(
       {"law", scene.model.law},
       {"seed", seed},
       {"rotational", surface.rotational()},
+      // A screw's page turns the moving part by the pose's angle and moves it by the depth.
+      {"screw", IsScrewScene(scene)},
       {"moving", scene.moving == Role::kInner ? scene.inner.name : scene.outer.name},
       {"inner", PartJson(scene.inner, *inner_, inner_mesh.empty())},
       {"outer", PartJson(scene.outer, *outer_, outer_mesh.empty())},

@@ -91,6 +91,51 @@ SurfaceGrid HelicoidDiscretizer::DoDiscretize(const PartSpec& part,
   return grid;
 }
 
+RenderMesh HelicoidRenderMesh(const PartSpec& part, const SurfaceGrid& grid) {
+  const HelicoidGeometry& g = HelicoidGeometryOf(part);
+  if (grid.rows < 1 || grid.columns < 2 || grid.columns % 2 != 0) {
+    throw UserError("part '" + part.name + "': render mesh of a helicoid needs a two-flank grid, " +
+                    "found " + std::to_string(grid.rows) + " x " + std::to_string(grid.columns));
+  }
+  const int strips = grid.columns / 2;
+  const double total = 2.0 * kPi * g.turns();
+  const double dtheta = total / grid.rows;
+  // The bolt's grid slid back along its helix by its whole length, as the analyzer takes it.
+  const double start = part.role == Role::kInner ? -total : 0.0;
+  const double r1 = g.inner_radius(), rp = g.pitch_radius();
+  const double dr = (g.outer_radius() - r1) / strips;
+  const double k = std::tan(g.half_angle());
+  const double c = g.pitch() / (2.0 * kPi);
+  const auto cells = static_cast<std::size_t>(grid.size());
+  RenderMesh mesh;
+  mesh.corners.resize(4 * cells);
+  mesh.directions.resize(cells);
+  for (int i = 0; i < grid.rows; ++i) {
+    const double lo_theta = start + i * dtheta;
+    for (int j = 0; j < grid.columns; ++j) {
+      const double s = FlankSign(j, grid.columns);
+      const double lo_r = r1 + (j % strips) * dr;
+      auto point = [&](double theta, double r) {
+        return Eigen::Vector3d(r * std::cos(theta),
+                               c * theta + s * (0.25 * g.pitch() - k * (r - rp)),
+                               -r * std::sin(theta));
+      };
+      const auto cell = static_cast<std::size_t>(grid.index(i, j));
+      const double hi_theta = lo_theta + dtheta, hi_r = lo_r + dr;
+      mesh.corners[4 * cell] = point(lo_theta, lo_r);
+      mesh.corners[4 * cell + 1] = point(lo_theta, hi_r);
+      mesh.corners[4 * cell + 2] = point(hi_theta, hi_r);
+      mesh.corners[4 * cell + 3] = point(hi_theta, lo_r);
+      // The grid's normal turned with the slide along the helix (a turn by `start` about +y).
+      const Eigen::Vector3d n = grid.normal.col(grid.index(i, j));
+      const double cs = std::cos(start), sn = std::sin(start);
+      mesh.directions[cell] =
+          Eigen::Vector3d(cs * n.x() + sn * n.z(), n.y(), -sn * n.x() + cs * n.z());
+    }
+  }
+  return mesh;
+}
+
 SkinModelShape HelicoidVariationGenerator::DoGenerate(const PartSpec& part, const SurfaceGrid& grid,
                                                       TextureMode, Rng& rng) const {
   const HelicoidGeometry& g = HelicoidGeometryOf(part);

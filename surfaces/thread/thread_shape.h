@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "framework/model/discretizer.h"
+#include "framework/model/render_mesh.h"
 #include "framework/model/surface_type.h"
 #include "framework/model/variation_generator.h"
 
@@ -27,6 +28,16 @@ class HelicoidDiscretizer final : public Discretizer {
   GridShape DoShape(const PartSpec& part, const Resolution& resolution) const override;
   SurfaceGrid DoDiscretize(const PartSpec& part, const Resolution& resolution) const override;
 };
+
+// The render mesh of a helicoid grid (HelicoidDiscretizer): each cell the piece of its flank's
+// helicoid between its row's turn angles theta +- dtheta / 2 and its strip's radii r +- dr / 2,
+// corners in the order (theta-, r-), (theta-, r+), (theta+, r+), (theta+, r-), and the cell's
+// normal as its direction. In the frames RenderMesh describes: a nut's (outer part) is its grid's,
+// its entrance at y = 0; a bolt's (inner part) is its grid slid along its own helix by all its
+// turns, so that its leading end lies at y = 0 and its turn angles are <= 0, the frame
+// ThreadContactAnalyzer places at the pose (turned by the angle about +y, moved by the depth).
+// Throws UserError for a grid that is not of two flanks.
+RenderMesh HelicoidRenderMesh(const PartSpec& part, const SurfaceGrid& grid);
 
 // What the stub can generate properly (README.md): the pitch-diameter size deviation (one draw
 // per part, in the size limits, taken as the deviation of d2), the pitch deviation (one draw per

@@ -79,4 +79,8 @@ std::vector<CharacteristicCheck> ThreadSurface::DoEvaluateCharacteristics(
   return EvaluateHelicoidCharacteristics(part, sms);
 }
 
+RenderMesh ThreadSurface::DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const {
+  return HelicoidRenderMesh(part, grid);
+}
+
 }  // namespace fitfeel::thread

@@ -46,6 +46,7 @@ class ThreadSurface final : public SurfaceType {
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
   std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const override;
+  RenderMesh DoMakeRenderMesh(const PartSpec& part, const SurfaceGrid& grid) const override;
 };
 
 }  // namespace fitfeel::thread

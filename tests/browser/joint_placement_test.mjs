@@ -2,7 +2,8 @@
 // the page's own three.js: the moving body's parts follow its offset and its twist about the
 // joint's axis, R(twist) (at + deviation) + offset (docs/assemblies.md, JointStage), the fixed
 // body's parts stay, and a part's position deviation (and a seated part's seat) is drawn
-// exaggerated as the page asks.
+// exaggerated as the page asks. And a one-feature scene's moving part: a screw's by its turn and
+// its advance.
 //
 // node joint_placement_test.mjs THREE_MODULE_JS   (exit 0 when every check holds)
 import assert from 'node:assert/strict';
@@ -77,4 +78,22 @@ const keyAxis = [0 + 0.75e-3, -5, 16.3 - 1.0e-3];  // at + deviation + seat, mm
 near(world(key, keyAxis), [keyAxis[0] + 99 * 0.75e-3, -5, keyAxis[2] + 99 * -1.0e-3],
   'seated key', 1e-9);
 near(J.deviationShift(seated, 1), [0, 0, 0], 'factor 1 draws the seat once');
+
+// A one-feature screw (a thread scene): the bolt turns by the pose's angle, R(angle), and advances
+// by the depth, as its contact analyzer places it. At depth = P angle / 2 pi (screw phase zero) a
+// point of its helix, (r cos theta, c theta, -r sin theta) with c = P / 2 pi, lands on the same
+// helix at theta + angle: the nut's, whose flanks the bolt's then meet.
+const screwScene = { rotational: true, screw: true };
+const lead = 1.5, c1 = lead / (2 * Math.PI), r = 4.5, theta = -2.3, turn = 7.9;
+const bolt = new THREE.Group();
+J.placeBody(bolt, J.scenePose({ depth: c1 * turn / 1000, offsetX: 0, offsetZ: 0, angle: turn },
+  screwScene, 100));
+near(world(bolt, [r * Math.cos(theta), c1 * theta, -r * Math.sin(theta)]),
+  [r * Math.cos(theta + turn), c1 * (theta + turn), -r * Math.sin(theta + turn)], 'screw', 1e-9);
+// A pair that mates by rotation alone stays at its centre whatever its depth.
+const turned = { depth: 0.002, offsetX: 1e-6, offsetZ: 0, angle: 0.5 };
+const ball = J.scenePose(turned, { rotational: true }, 1);
+near([ball.y, ball.twist, 0], [0, -0.5, 0], 'knuckle bearing');
+const fit = J.scenePose(turned, {}, 10);
+near([fit.x, fit.y, 0], [0.01, 2, 0], 'a fit advances by its depth');
 console.log('joint placement: every check holds');

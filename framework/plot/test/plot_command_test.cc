@@ -125,5 +125,23 @@ TEST(PlotCommand, TraceWritesPngAndSvg) {
   EXPECT_THAT(r.out, HasSubstr("wrote trace.png"));
 }
 
+TEST(PlotCommand, TraceTorqueDrawsAScrewsRunAndRefusesAFits) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  testing::WriteScrewRun(dir.path() / "bolt");
+  const CliResult r = Fitfeel({"trace", "bolt", "--torque", "-o", "torque"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(testing::IsPng(dir.path() / "torque.png"));
+  EXPECT_TRUE(testing::IsSvg(dir.path() / "torque.svg"));
+  testing::WriteRun(dir.path() / "fit", "paper-case1-h7js6", "gps", 12.0);
+  const CliResult fit = Fitfeel({"trace", "fit", "--torque", "-o", "fit.png"}, dir.path());
+  EXPECT_EQ(fit.exit_code, 2);
+  EXPECT_THAT(fit.err, HasSubstr("has no torque_Nm"));
+  EXPECT_FALSE(fs::exists(dir.path() / "fit.png"));
+  // The torque's axes are linear: --log belongs to the resistance chart.
+  EXPECT_EQ(Fitfeel({"trace", "bolt", "--torque", "--log", "-o", "t.png"}, dir.path()).exit_code,
+            2);
+}
+
 }  // namespace
 }  // namespace fitfeel::plot

@@ -87,6 +87,40 @@ TEST(MakeTraceChart, RunsAtOneDepthAreDrawnAgainstTime) {
 
 TEST(MakeTraceChart, NoRunIsRefused) { EXPECT_THROW(MakeTraceChart({}), UserError); }
 
+// A screw's run: torque and preload against the turn angle in degrees, labelled with where the
+// run ended.
+TEST(MakeTorqueChart, TorqueAndPreloadAgainstTheTurnAngle) {
+  ScratchDir dir;
+  testing::WriteScrewRun(dir.path() / "bolt");
+  const LineChart chart = MakeTorqueChart({LoadRun(dir.path() / "bolt")});
+  ASSERT_EQ(chart.panels.size(), 2u);
+  const Series& torque = chart.panels[0].series.at(0);
+  const Series& preload = chart.panels[1].series.at(0);
+  EXPECT_EQ(chart.panels[0].x_label, "turn angle (deg)");
+  EXPECT_THAT(chart.panels[0].y_label, HasSubstr("(N·m)"));
+  EXPECT_THAT(chart.panels[1].y_label, HasSubstr("(N)"));
+  ASSERT_EQ(torque.x.size(), 180u);
+  // The last constrained tick (199): turned 17.9 rad, 0.01 + 0.4 * 99 N*m, 1 kN per N*m.
+  EXPECT_NEAR(torque.x.back(), 17.9 * 180.0 / M_PI, 1e-3);
+  EXPECT_NEAR(torque.y.back(), 39.61, 1e-9);
+  EXPECT_NEAR(preload.y.back(), 39610.0, 1e-6);
+  EXPECT_EQ(preload.x, torque.x);
+  EXPECT_THAT(torque.label, HasSubstr("bolt-m10 · law flank: 39.6 N·m at the end"));
+  EXPECT_THAT(preload.label, HasSubstr("39610 N at the end"));
+}
+
+TEST(MakeTorqueChart, RefusesARunThatIsNoScrews) {
+  ScratchDir dir;
+  testing::WriteRun(dir.path() / "fit", "paper-case1-h7js6", "gps", 12.0);
+  try {
+    MakeTorqueChart({LoadRun(dir.path() / "fit")});
+    FAIL() << "a fit's run drawn as a screw's";
+  } catch (const UserError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("has no torque_Nm"));
+  }
+  EXPECT_THROW(MakeTorqueChart({}), UserError);
+}
+
 TEST(MakeTraceChart, RendersThreeRunsToPngAndSvg) {
   FITFEEL_REQUIRE_GNUPLOT();
   ScratchDir dir;

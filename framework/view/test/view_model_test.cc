@@ -1,6 +1,6 @@
 // What the viewer draws of a scene (ViewModel): a one-feature scene's two parts in their own
-// frames; a several-feature scene's every part, drawn as the run draws it and placed in the joint
-// frame (PartPlacement).
+// frames (a screw's bolt meeting its nut's flanks where the page places it); a several-feature
+// scene's every part, drawn as the run draws it and placed in the joint frame (PartPlacement).
 #include "framework/view/view_model.h"
 
 #include <cmath>
@@ -13,6 +13,7 @@
 
 #include "framework/plugin/registry.h"
 #include "framework/runtime/prepare.h"
+#include "framework/runtime/run.h"
 #include "framework/runtime/sequence_run.h"
 #include "framework/scenario/scene.h"
 #include "framework/scenario/sequence.h"
@@ -217,6 +218,72 @@ TEST(ViewModelPlacement, TurnedDatumGivesItsAssemblySpaceInThePagesFrame) {
     EXPECT_TRUE(t.assembly_space[v].isApprox(Eigen::Vector2d(-q.y(), q.x()), 1e-9))
         << v << ": " << t.assembly_space[v].transpose() << " against " << q.transpose();
   }
+}
+
+// bolt-m10: both threads drawn as helicoids, in frames where the page's placement of the bolt
+// (turned by the pose's angle, R(angle), moved by the depth) puts its flanks on the nut's at screw
+// phase zero; once the run has tightened the nut, the bolt's loaded flank under pressure.
+TEST(ViewModelScrew, BoltM10DrawsBothThreadsAndTheLoadedFlankOnceTightened) {
+  const Scene scene = LoadScene("scenarios/bolt-m10.yaml", test_support::BuildTreePlugins());
+  const ViewModel model(scene, 1);
+  const nlohmann::json message = nlohmann::json::parse(model.scene_message());
+  EXPECT_TRUE(message.at("screw").get<bool>());
+  EXPECT_TRUE(message.at("pressure").get<bool>());
+  EXPECT_EQ(message.at("placeholder_note"), "");
+  ASSERT_EQ(model.mesh_count(), 2);
+  const DecodedMesh bolt = DecodeMeshFrame(model.mesh_frame(0));
+  const DecodedMesh nut = DecodeMeshFrame(model.mesh_frame(1));
+  ASSERT_FALSE(bolt.placeholder);
+  ASSERT_FALSE(nut.placeholder);
+  const int columns = message.at("inner").at("columns");
+  ASSERT_EQ(nut.mesh.directions.size() % columns, 0u);
+  ASSERT_EQ(bolt.mesh.directions.size(),
+            static_cast<std::size_t>(message.at("inner").at("rows").get<int>() * columns));
+
+  // A corner's place on the helicoids of lead P: y - P theta / 2 pi, modulo P. Flank by flank and
+  // strip by strip the two threads' corners share their radii, so at screw phase zero they share
+  // this too.
+  const double pitch = scene.inner.geometry->lead();
+  const auto helix = [&](const Eigen::Vector3d& p) {
+    return std::remainder(p.y() - pitch / (2 * M_PI) * std::atan2(-p.z(), p.x()), pitch);
+  };
+  const double angle = 7.9, depth = pitch * angle / (2 * M_PI);
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (std::size_t cell = 0; cell < bolt.mesh.directions.size(); ++cell) {
+    for (std::size_t q = 0; q < 4; ++q) {
+      const Eigen::Vector3d p = bolt.mesh.corners[4 * cell + q];
+      const Eigen::Vector3d placed(c * p.x() + s * p.z(), p.y() + depth, -s * p.x() + c * p.z());
+      const Eigen::Vector3d on_nut = nut.mesh.corners[4 * (cell % columns) + q];
+      ASSERT_NEAR(std::remainder(helix(placed) - helix(on_nut), pitch), 0.0, 1e-8)
+          << "cell " << cell << " corner " << q;
+    }
+  }
+
+  RunOptions options;
+  options.clock = ClockMode::kVirtual;
+  const RunResult run = RunScene(scene, options);
+  ASSERT_TRUE(run.summary.at("thread").at("seated").get<bool>());
+  ViewSample tightened;
+  tightened.depth = run.final_pose.depth;
+  tightened.angle = run.final_pose.angle;
+  const StateExtras extras = model.Extras(tightened);
+  EXPECT_GT(extras.pressure_max, 0.0);
+  ASSERT_EQ(extras.pressure.size(), bolt.mesh.directions.size());
+  // A preloaded thread bears on one flank of the bolt, within the nut (8.4 mm long).
+  int pressed[2] = {0, 0};
+  for (std::size_t cell = 0; cell < extras.pressure.size(); ++cell) {
+    if (extras.pressure[cell] == 0) continue;
+    ++pressed[cell % columns < static_cast<std::size_t>(columns) / 2 ? 0 : 1];
+    const double y = bolt.mesh.corners[4 * cell].y() + tightened.depth;
+    EXPECT_GT(y, -pitch) << cell;
+    EXPECT_LT(y, 8.4e-3 + pitch) << cell;
+  }
+  EXPECT_GT(pressed[0] + pressed[1], 0);
+  EXPECT_EQ(std::min(pressed[0], pressed[1]), 0) << pressed[0] << " and " << pressed[1];
+  // Before the bolt reaches the nut nothing is pressed.
+  ViewSample outside;
+  outside.depth = -2e-3;
+  EXPECT_EQ(model.Extras(outside).pressure_max, 0.0);
 }
 
 }  // namespace

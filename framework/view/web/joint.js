@@ -34,6 +34,23 @@ export function onMovingBody(pose, p) {
   return [c * p[0] + s * p[2] + pose.x, p[1] + pose.y, -s * p[0] + c * p[2] + pose.z];
 }
 
+// A one-feature scene's moving part (the inner one: the page draws the outer part fixed) on the
+// page, from a state frame: its offset across the axis drawn `factor` times its size, its depth
+// true except for a pair that mates by rotation alone (the knuckle bearing, drawn at its centre).
+// A screw (the scene message's `screw`, a thread) advances along the axis as it turns and is
+// turned by the pose's angle as its contact analyzer turns the bolt, R(angle); the other pairs
+// by R(-angle).
+export function scenePose(state, scene, factor) {
+  const screw = Boolean(scene && scene.screw);
+  const rotational = Boolean(scene && scene.rotational);
+  return {
+    x: MM * factor * state.offsetX,
+    y: rotational && !screw ? 0 : MM * state.depth,
+    z: MM * factor * state.offsetZ,
+    twist: screw ? state.angle : -state.angle,
+  };
+}
+
 // Puts a three.js object (the moving body's group) at the pose: three.js turns by rotation.y
 // before it translates, and its rotation about y by a is R(a).
 export function placeBody(object, pose) {

@@ -313,13 +313,8 @@ function place(state) {
     drawArrows(moving.position.clone(), J.bodyForce(state, view.scene));
     return;
   }
-  const s = view.factor;
-  const rotational = view.scene && view.scene.rotational;
-  moving.position.set(MM * s * state.offsetX, rotational ? 0 : MM * state.depth,
-    MM * s * state.offsetZ);
-  moving.rotation.set(0, -state.angle, 0);
-  const tip = new THREE.Vector3(moving.position.x, moving.position.y, moving.position.z);
-  drawArrows(tip, state.force);
+  J.placeBody(moving, J.scenePose(state, view.scene, view.factor));
+  drawArrows(moving.position.clone(), state.force);
 }
 
 function drawArrows(tip, force) {
