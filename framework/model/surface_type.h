@@ -11,9 +11,9 @@
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/discretizer.h"
-#include "framework/model/render_mesh.h"
 #include "framework/model/gps_spec.h"
 #include "framework/model/model_settings.h"
+#include "framework/model/render_mesh.h"
 #include "framework/model/resistance_law.h"
 #include "framework/model/variation_generator.h"
 
@@ -21,9 +21,9 @@ namespace fitfeel {
 
 // One evaluated characteristic of a skin model shape against the tolerance it came from.
 struct CharacteristicCheck {
-  std::string name;        // "two_point_size_max", "roundness", "axis_straightness", ...
-  double value = 0.0;      // evaluated, m
-  double lower = 0.0;      // allowed range, m (a form tolerance is [0, t])
+  std::string name;    // "two_point_size_max", "roundness", "axis_straightness", ...
+  double value = 0.0;  // evaluated, m
+  double lower = 0.0;  // allowed range, m (a form tolerance is [0, t])
   double upper = 0.0;
   bool pass() const { return value >= lower && value <= upper; }
 };

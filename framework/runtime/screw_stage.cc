@@ -24,6 +24,9 @@ struct ScrewStage::RunState final : StageState {
   // the part's resisting torque with its rise per radian, for a hand's torsional coupling.
   double device_raw = 0.0, device_twist = 0.0;
   double resisting = 0.0, resisting_slope = 0.0;
+  // The advance per radian of turn over the last tick, m/rad (the lead's c while the part runs
+  // on a flank).
+  double advance = 0.0;
 };
 
 ScrewStage::ScrewStage(const ContactAnalyzer& analyzer, const ResistanceLaw& law,
@@ -68,9 +71,10 @@ double ScrewStage::SettleDepth(double angle, double device_depth, RunState* run,
     const double load = hand ? k * (device_depth - z) : options_.axial_load;
     return AxialForce(z, angle, run->tilt, run->law, out) + load;
   };
-  // The part follows its flank along the lead as it turns: from there the contact is the last
-  // tick's, and one Newton step on the last slope usually lands.
-  double z = run->depth + options_.lead / (2.0 * std::numbers::pi) * (angle - run->angle);
+  // The part advances with its turn as it did the last tick (along the lead while it runs on a
+  // flank, less once the face holds it): from there the contact is nearly the last tick's, and
+  // one step on the last slope usually lands.
+  double z = run->depth + run->advance * (angle - run->angle);
   double g = balance(z);
   int evaluations = 1;
   // Settled within a thousandth of a newton, or a bracket narrower than 0.1 nm (0.1 N at the
@@ -148,6 +152,7 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
     run->screw.active = true;
     run->device_raw = run->device_twist = device.angle;
     run->resisting = run->resisting_slope = 0.0;
+    run->advance = options_.lead / (2.0 * std::numbers::pi);
   }
   run->time = part.time;
   out->contact_evaluations = 0;
@@ -171,9 +176,15 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   run->tilt = device.tilt + options_.tilt;
   if (options_.moving == Role::kOuter) run->tilt.y() = -run->tilt.y();
   const double angle = run->angle;
+  const double previous_depth = run->depth;
   run->angle = previous_angle;
   run->depth = SettleDepth(angle, device.depth, run, out);
   run->angle = angle;
+  if (angle != previous_angle) {
+    // Bounded by the lead: a tick that jumped its flanks' play says nothing of the next.
+    run->advance = std::clamp((run->depth - previous_depth) / (angle - previous_angle), 0.0,
+                              options_.lead / (2.0 * std::numbers::pi));
+  }
 
   // The settle's last evaluation was at this pose: its contact stands.
   MatingPose pose;

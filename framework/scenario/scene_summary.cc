@@ -71,8 +71,8 @@ std::string DescribePart(const PartSpec& part, bool moving) {
 }
 
 std::string DescribeModel(const ModelSettings& model) {
-  return "law " + model.law + ", friction " + Number(model.friction) +
-         " (static " + Number(model.static_friction) + ", breakaway " +
+  return "law " + model.law + ", friction " + Number(model.friction) + " (static " +
+         Number(model.static_friction) + ", breakaway " +
          FormatQuantity(model.breakaway_displacement, Dimension::kLength) + ")" +
          ", contact stiffness " +
          (model.contact_stiffness > 0.0
@@ -82,8 +82,8 @@ std::string DescribeModel(const ModelSettings& model) {
          (model.resolution.is_auto() ? std::string("auto")
                                      : std::to_string(model.resolution.rows) + " x " +
                                            std::to_string(model.resolution.columns)) +
-         ", texture " + TextureModeName(model.texture) +
-         ", depth step " + (model.depth_step > 0.0 ? Length(model.depth_step) : "auto");
+         ", texture " + TextureModeName(model.texture) + ", depth step " +
+         (model.depth_step > 0.0 ? Length(model.depth_step) : "auto");
 }
 
 // Where a feature of a several-feature scene lies, as the loader understood it.
@@ -163,15 +163,15 @@ std::string DescribeScene(const Scene& scene) {
          ", " + Number(cost.run_bytes / (1 << 20), "%.3g") + " MiB for the run\n";
   // What the run writes (docs/scenario-format.md, "Output size"), estimated before it runs.
   const double gib = 1024.0 * 1024.0 * 1024.0;
-  out += "output       " +
-         (cost.output_bytes > 0.0
-              ? "about " +
-                    (cost.output_bytes < gib
-                         ? Number(cost.output_bytes / (1 << 20), "%.3g") + " MiB"
-                         : Number(cost.output_bytes / gib, "%.3g") + " GiB") +
-                    " (" + DescribeOutputs(cost) + ")"
-              : DescribeOutputs(cost)) +
-         "\n";
+  out +=
+      "output       " +
+      (cost.output_bytes > 0.0
+           ? "about " +
+                 (cost.output_bytes < gib ? Number(cost.output_bytes / (1 << 20), "%.3g") + " MiB"
+                                          : Number(cost.output_bytes / gib, "%.3g") + " GiB") +
+                 " (" + DescribeOutputs(cost) + ")"
+           : DescribeOutputs(cost)) +
+      "\n";
   return out;
 }
 

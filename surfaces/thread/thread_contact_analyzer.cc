@@ -240,9 +240,15 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
         nut_rows == 1 ? 0 : std::clamp(static_cast<int>(std::floor(x)), 0, nut_rows - 2);
     const int above = nut_rows == 1 ? 0 : below + 1;
     const double f = nut_rows == 1 ? 0.0 : std::clamp(x - below, 0.0, 1.0);
+    // A row a pitch clear of the nut's faces and of the bolt's end has every cell whole (its
+    // cells lie within 3P/8 of the row's helix point): no ramps to weigh.
+    const double centre = lead_per_radian_ * cells_.turn[begin];
+    const double y = pose.depth + centre;
+    const bool whole = y - 0.375 * pitch_ >= pitch_ && y + 0.375 * pitch_ <= nut_length_ - pitch_ &&
+                       centre + 0.375 * pitch_ <= -pitch_;
     for (int j = 0; j < columns_; ++j) {
       const int i = begin + j;
-      const double share = Share(i, pose.depth);
+      const double share = whole ? 1.0 : Share(i, pose.depth);
       if (share <= 0.0) continue;
       area += share * cells_.area[i];
       const double nut = (1.0 - f) * nut_variation_(below, j) + f * nut_variation_(above, j);

@@ -48,6 +48,7 @@
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
+#include "framework/scenario/sequence.h"
 #include "framework/testing/hand_scene.h"
 #include "surfaces/conical/conical_scan_analyzer.h"
 #include "surfaces/spherical/spherical_scan_analyzer.h"
@@ -224,7 +225,10 @@ static int RunScenes(int argc, char** argv) {
   const fs::path folder = ScenarioDir();
   std::error_code error;
   for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
-    if (it->path().extension() == ".yaml") files.push_back(it->path());
+    // A sequence's steps are scenes of their own, timed where they run (fitfeel run's statistics).
+    if (it->path().extension() == ".yaml" && !IsSequenceFile(it->path())) {
+      files.push_back(it->path());
+    }
   }
   if (error || files.empty()) {
     std::fprintf(stderr,
