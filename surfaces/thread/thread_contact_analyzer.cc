@@ -6,6 +6,7 @@
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/model/convex_polygon.h"
 #include "surfaces/thread/bolted_joint.h"
 #include "surfaces/thread/fastener_tables.h"
 #include "surfaces/thread/joint_model.h"
@@ -75,6 +76,7 @@ void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
                                       const ModelSettings& settings) {
   const HelicoidGeometry& bolt = HelicoidGeometryOf(inner);
   const HelicoidGeometry& nut = HelicoidGeometryOf(outer);
+  bolt_radius_ = bolt.outer_radius();
   const SurfaceGrid& grid = inner_sms.grid;
   if (outer_sms.grid.columns != grid.columns || grid.columns % 2 != 0) {
     throw UserError(
@@ -231,6 +233,9 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(), normal_moment = Eigen::Vector3d::Zero();
   Eigen::Vector3d slide = Eigen::Vector3d::Zero(), slide_moment = Eigen::Vector3d::Zero();
   double volume = 0.0, largest = 0.0, area = 0.0;
+  // d(normal_sum's x, z)/d(offset) in the bolt's frame: each touching cell's weighted area times
+  // its normal's cross-section part with itself (an offset moves its interference by that part).
+  double jxx = 0.0, jxz = 0.0, jzz = 0.0;
   const int nut_rows = static_cast<int>(nut_variation_.rows());
   for (int row = first; row < last; ++row) {
     // The nut's rows either side of this row's place on its helix, shared by the row's cells.
@@ -254,7 +259,12 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
       const double nut = (1.0 - f) * nut_variation_(below, j) + f * nut_variation_(above, j);
       const double delta = Geometric(i, screw) + screw.deviations * (cells_.variation[i] - nut);
       if (delta <= 0.0) continue;
-      const double a = share * Weight(i, pose.depth) * cells_.area[i] * delta;
+      const double weighted = share * Weight(i, pose.depth) * cells_.area[i];
+      const double a = weighted * delta;
+      const double nx = cells_.normal(0, i), nz = cells_.normal(2, i);
+      jxx += weighted * nx * nx;
+      jxz += weighted * nx * nz;
+      jzz += weighted * nz * nz;
       normal += a * cells_.normal.col(i);
       normal_moment += a * cells_.normal_moment.col(i);
       slide += a * cells_.slide.col(i);
@@ -276,9 +286,43 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   out->interference_volume = volume;
   out->max_interference = largest;
   out->pressure_resultant = Eigen::Vector2d(out->normal_sum.x(), out->normal_sum.z());
+  // Into the nut's frame (Turn's rotation of x, z), exact for an untilted part.
+  Eigen::Matrix2d turn;
+  turn << screw.cos, screw.sin, -screw.sin, screw.cos;
+  Eigen::Matrix2d local;
+  local << jxx, jxz, jxz, jzz;
+  out->resultant_jacobian = turn * local * turn.transpose();
   out->offset_distance = pose.offset.norm();
   out->offset_angle = std::atan2(pose.offset.y(), pose.offset.x());
   out->stop_closure = std::isfinite(seat_) ? std::max(0.0, pose.depth - seat_) : 0.0;
+}
+
+bool ThreadContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
+                                            std::vector<Eigen::Vector2d>* polygon) const {
+  // Every engaged cell's interference is linear in the offset (untilted: exactly): delta_0 +
+  // n . offset <= 0 is a half-plane, and the offsets that touch nothing their intersection.
+  polygon->clear();
+  MatingPose centred = pose;
+  centred.offset.setZero();
+  const ScrewPhase screw = PhaseOf(centred, pitch_);
+  std::vector<double> angle, h;
+  bool engaged = false;
+  for (int i = 0; i < rows_ * columns_; ++i) {
+    if (Share(i, pose.depth) <= 0.0) continue;
+    engaged = true;
+    const Eigen::Vector3d n = Turn(cells_.normal.col(i), screw.cos, screw.sin);
+    const double across = std::hypot(n.x(), n.z());
+    const double delta = Interference(i, screw, pose.angle);
+    if (across < 1e-12) {
+      if (delta > 0.0) return true;  // touching wherever the axis goes
+      continue;
+    }
+    angle.push_back(std::atan2(n.z(), n.x()));
+    h.push_back(-delta / across);
+  }
+  if (!engaged) return true;
+  if (!IntersectHalfPlanes(angle, h, bolt_radius_, polygon)) polygon->clear();
+  return true;
 }
 
 void ThreadContactAnalyzer::DoInterferenceMap(const MatingPose& pose,

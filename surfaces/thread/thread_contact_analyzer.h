@@ -40,6 +40,8 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  bool DoAssemblySpace(const MatingPose& pose,
+                       std::vector<Eigen::Vector2d>* polygon) const override;
 
  private:
   // The bolt's cells, row by row (turn angle), each row's strips flank A then flank B.
@@ -65,6 +67,7 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
   void Rows(double depth, int* first, int* last) const noexcept;
 
   Cells cells_;
+  double bolt_radius_ = 0.0;  // d/2, bounding the assembly space
   int columns_ = 0, rows_ = 0;
   double pitch_ = 0.0, inverse_pitch_ = 0.0, lead_per_radian_ = 0.0;
   double row_turn_ = 0.0;  // the bolt's turn angle per row, rad

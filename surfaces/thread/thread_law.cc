@@ -106,6 +106,13 @@ void ThreadLaw::DoEvaluateWithState(const ContactState& contact, const MatingMot
   Compose(contact, flank_slip, face_slip, out);
 }
 
+bool ThreadLaw::DoRadialJacobian(const ContactState& contact,
+                                 Eigen::Matrix2d* jacobian) const noexcept {
+  if (!contact.interference || !contact.resultant_jacobian.allFinite()) return false;
+  *jacobian = -pressure_ * contact.resultant_jacobian;
+  return true;
+}
+
 ElasticLimitCheck ThreadLaw::DoCheckElasticLimit(const ContactState& contact) const noexcept {
   ElasticLimitCheck check;
   if (!(yield_ > 0.0) || !contact.interference) return check;

@@ -34,6 +34,11 @@ class ThreadLaw final : public ResistanceLaw {
                            Wrench* out) const noexcept override;
   double DoPressurePerInterference() const override { return pressure_; }
   ElasticLimitCheck DoCheckElasticLimit(const ContactState& contact) const noexcept override;
+  // The normal pressure's radial stiffness, -K times the resultant's Jacobian: the radial force
+  // of a part at rest. Friction along the helix has a radial share that depends on the motion,
+  // which this leaves out.
+  bool DoRadialJacobian(const ContactState& contact,
+                        Eigen::Matrix2d* jacobian) const noexcept override;
 
  private:
   // The wrench with the flanks' and the face's friction given as fractions of their sliding

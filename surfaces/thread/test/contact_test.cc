@@ -99,6 +99,34 @@ TEST(ThreadContact, AFrictionlessScrewTurnsWithTheLeadOnly) {
   }
 }
 
+// The assembly space: the offsets of the bolt's axis that touch nothing at a pose. Inside it (its
+// vertices pulled halfway to their centre) no cell interferes; the conformance suite checks that
+// beyond it every vertex touches.
+TEST(ThreadContact, InsideItsAssemblySpaceTheBoltTouchesNothing) {
+  // Without pitch and flank-angle deviations (which, accumulated over the turns, can leave no
+  // offset free at the screw's nominal phase) the pitch diameters' play is free all round.
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Prepared p = PrepareThread(seed, 0.12);
+    const double lead = 1.5e-3 / (2 * std::numbers::pi);
+    for (const double angle : {0.0, 2.0, 17.0}) {
+      MatingPose pose;
+      pose.depth = 7.5e-3 + lead * angle;
+      pose.angle = angle;
+      std::vector<Eigen::Vector2d> polygon;
+      ASSERT_TRUE(p.analyzer->AssemblySpace(pose, &polygon));
+      ASSERT_FALSE(polygon.empty()) << "seed " << seed;
+      Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+      for (const auto& v : polygon) centre += v / static_cast<double>(polygon.size());
+      for (const auto& v : polygon) {
+        pose.offset = centre + 0.5 * (v - centre);
+        ContactState contact;
+        p.analyzer->Evaluate(pose, &contact);
+        EXPECT_EQ(contact.interference_volume, 0.0) << "seed " << seed;
+      }
+    }
+  }
+}
+
 // Sopwith's distribution: the flank stiffness weighted along the nut so that a uniform
 // interference carries his shares of the load, the turn at the bearing face most.
 TEST(ThreadContact, SopwithsDistributionLoadsTheFirstTurnMost) {
