@@ -1,6 +1,6 @@
 // The plugin's only exported symbol.
-#include "framework/plugin/plugin_entry.h"
 #include "devices/simulated/simulated_device.h"
+#include "framework/plugin/plugin_entry.h"
 
 FITFEEL_REGISTER_DEVICE(
     fitfeel::simulated::SimulatedDevice, "fitfeel.device.simulated", "1.0.0",

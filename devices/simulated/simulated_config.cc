@@ -6,6 +6,7 @@
 
 #include "devices/simulated/simulated_device.h"
 #include "framework/core/config_node.h"
+#include "framework/device/device_specs.h"
 
 namespace fitfeel::simulated {
 namespace {
@@ -47,8 +48,16 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
   const std::string name =
       mode ? mode->AsOneOf({"constant_speed", "constant_rotation", "scripted"}) : "constant_speed";
   RefuseMovedKeys(node);
+  // Any mode may render as a named haptic device would: its force limits and stiffness budget.
+  if (std::optional<ConfigNode> model = node.Find("model")) {
+    const std::string given = model->AsString();
+    const std::optional<DeviceSpec> spec = FindDeviceSpec(given);
+    if (!spec)
+      model->Fail("a haptic device model (" + KnownDeviceModels() + ")", model->Describe());
+    s.device_model = spec->model;
+  }
   if (name == "constant_speed") {
-    node.ExpectOnlyKeys({"plugin", "mode", "speed", "start_offset", "stop_force"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "speed", "start_offset", "stop_force"});
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
     // robot holds; 1 m of approach is the size of a workcell.
@@ -57,7 +66,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     // A press's force monitoring: 1 MN is beyond any bench press.
     s.stop_force = Optional(node, "stop_force", Dimension::kForce, 0.0, 1e6, 0.0);
   } else if (name == "constant_rotation") {
-    node.ExpectOnlyKeys({"plugin", "mode", "angular_speed", "swing"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "angular_speed", "swing"});
     s.mode = Settings::Mode::kConstantRotation;
     // 100 rad/s is far beyond a plain bearing's oscillation; a swing beyond half a turn each way
     // is a rotation (0 or no key: continuous).
@@ -65,7 +74,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
         node.Child("angular_speed").AsQuantityIn(Dimension::kAngularVelocity, 0.0, 100.0, false);
     s.swing = Optional(node, "swing", Dimension::kAngle, 0.0, M_PI + 1e-9, 0.0);
   } else {
-    node.ExpectOnlyKeys({"plugin", "mode", "hand", "waypoints"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;
     const ConfigNode hand = node.Child("hand");
     hand.ExpectOnlyKeys({"mass", "stiffness", "damping", "tremor", "aim_error"});

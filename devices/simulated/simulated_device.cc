@@ -6,6 +6,7 @@
 #include <string>
 
 #include "framework/core/error.h"
+#include "framework/device/device_specs.h"
 
 namespace fitfeel::simulated {
 namespace {
@@ -82,6 +83,13 @@ DeviceSpec SimulatedDevice::DoSpec() const {
     spec.max_stiffness = 2.0 * settings_.hand_damping / period_;
   }
   spec.workspace = Eigen::Vector3d::Constant(20.0);
+  if (!settings_.device_model.empty()) {
+    // The trajectory stays this device's; what it renders is the named device's.
+    DeviceSpec named = LookupDeviceSpec(settings_.device_model);
+    named.model = spec.model + " as " + named.model;
+    named.native_rate = spec.native_rate;
+    return named;
+  }
   return spec;
 }
 

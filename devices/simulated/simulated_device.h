@@ -44,6 +44,9 @@ struct Settings {
   double hand_mass = 0.0;           // kg
   double hand_stiffness = 0.0;      // N/m
   double hand_damping = 0.0;        // N*s/m
+  // Any mode: a known haptic device's model (framework/device/device_specs.h) whose limits the
+  // run renders with (its spec's forces, stiffness budget, damping and workspace); empty: none.
+  std::string device_model;
   // Physiological tremor added to the target across the mating axis: a circle of `tremor_amplitude`
   // in (x, z) at `tremor_frequency` (x = A sin(2 pi f t), z = A cos(2 pi f t) - A, so it starts at
   // the waypoint). 0: none. Defaults of the key: 0.1 mm at 10 Hz (docs in README.md).

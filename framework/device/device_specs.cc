@@ -55,7 +55,11 @@ constexpr Alias kAliases[] = {
     {"3dsystemstouch", "Touch"},
 };
 
-std::string KnownNames() {
+bool PositiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
+
+}  // namespace
+
+std::string KnownDeviceModels() {
   std::string out;
   for (const DeviceSpec& spec : KnownDeviceSpecs()) {
     if (!out.empty()) out += ", ";
@@ -63,10 +67,6 @@ std::string KnownNames() {
   }
   return out;
 }
-
-bool PositiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
-
-}  // namespace
 
 const std::vector<DeviceSpec>& KnownDeviceSpecs() {
   static const std::vector<DeviceSpec> specs = {
@@ -94,7 +94,7 @@ DeviceSpec LookupDeviceSpec(std::string_view model) {
   std::optional<DeviceSpec> spec = FindDeviceSpec(model);
   if (!spec) {
     throw UserError("unknown haptic device model '" + std::string(model) +
-                    "'; known models: " + KnownNames() +
+                    "'; known models: " + KnownDeviceModels() +
                     " (or give max_force, max_continuous_force, max_stiffness, damping, workspace "
                     "in the device's spec section)");
   }

@@ -14,6 +14,8 @@ namespace fitfeel {
 // The built-in table of device specs (PHANTOM Desktop, PHANTOM Omni, Touch). Limits the safety
 // chain relies on are data, not code: a scenario overrides any field (see ParseDeviceSpec).
 FITFEEL_API const std::vector<DeviceSpec>& KnownDeviceSpecs();
+// Their names, quoted and listed for a message: "'PHANTOM Desktop', 'PHANTOM Omni', ...".
+FITFEEL_API std::string KnownDeviceModels();
 
 // Case-, space-, hyphen- and underscore-insensitive lookup by model name or alias
 // ("PHANTOM Desktop", "phantom-desktop", "desktop", "Omni", "Geomagic Touch", "touch").

@@ -128,6 +128,7 @@ void SummaryBuilder::Add(const TickRecord& r) {
     has_worst_ = true;
   }
   axial_.Add(std::abs(r.wrench.force.y()));
+  delivered_.Add(r.device_wrench.force.norm());
   fy_.Add(r.wrench.force.y());
   radial_.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
   torque_.Add(r.wrench.torque.norm());
@@ -195,6 +196,8 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   j["axial_resistance_N"] = axial.ToJson();
   j["fy_N"] = fy.ToJson();
   j["radial_resistance_N"] = radial.ToJson();
+  // In device newtons: the scene's forces after the safety chain's scale, mapping and limits.
+  j["delivered_force_N"] = delivered_.ToJson();
   if (info.rotational) j["torque_Nm"] = torque.ToJson();
   if (!info.features.empty()) {
     // Each feature's share of the axial resistance (|fy| of its own wrench), by name.

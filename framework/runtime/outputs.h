@@ -103,6 +103,8 @@ class FITFEEL_API SummaryBuilder {
 
  private:
   RunningSummary axial_, fy_, radial_, torque_, depth_;
+  // What the safety chain delivered to the device (its force's magnitude), constrained ticks.
+  RunningSummary delivered_;
   // A several-feature scene: each feature's axial force, and the torque about the axis and the
   // twist (every constrained tick).
   std::array<RunningSummary, kMaxJointFeatures> feature_axial_;

@@ -135,6 +135,25 @@ TEST(HandInsertionClearance, TheHandFeelsItsOwnPullNotTheWall) {
   }
 }
 
+// The robot's press fit rendered as a Touch would render it (device `model: touch`): the safety
+// chain's coupling and limits hold every delivered force at the Touch's 3.3 N peak, with no energy
+// created, and summary.json says what was delivered beside the scene's forces.
+TEST(DeviceModel, APressFitRenderedAsATouchStaysWithinItsPeak) {
+  std::string text = test_support::ReadText(test_support::ShippedScenario("fits-20mm-h7k6.yaml"));
+  const std::string robot = "  speed: 10 mm/s           # paper 4.1\n";
+  ASSERT_NE(text.find(robot), std::string::npos);
+  text.replace(text.find(robot), robot.size(), robot + "  model: touch\n");
+  const RunResult result = RunScene(
+      LoadSceneFromYaml(text, "touch.yaml", test_support::BuildTreePlugins()), RunOptions{});
+  const nlohmann::json& delivered = result.summary["delivered_force_N"];
+  EXPECT_LE(delivered["max"].get<double>(), 3.3 + 1e-9);
+  EXPECT_GT(delivered["mean"].get<double>(), 1.0);  // the press fit is felt, saturated
+  EXPECT_GT(result.summary["safety"]["peak_limited_ticks"].get<int>(), 0);
+  EXPECT_EQ(result.summary["safety"]["energy_created_J"].get<double>(), 0.0);
+  EXPECT_NE(result.summary["safety"]["device_model"].get<std::string>().find("as Touch"),
+            std::string::npos);
+}
+
 // In and out again: released to free motion past the entrance, no energy created on the way.
 TEST(HandInsertionRelease, PulledOutTheConstrainedStageLetsGo) {
   const fs::path out = test_support::EmptyFolder("hand-insertion", "release") / "run";

@@ -1,19 +1,17 @@
 #include <cmath>
 #include <string>
 
-
 #include "devices/simulated/simulated_device.h"
 #include "framework/core/config_node.h"
 #include "framework/core/error.h"
+#include "framework/device/device.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
 
 namespace fitfeel::simulated {
 namespace {
 
-ConfigNode Node(const std::string& yaml) {
-  return ConfigNode::Parse(yaml, "scene.yaml", "device");
-}
+ConfigNode Node(const std::string& yaml) { return ConfigNode::Parse(yaml, "scene.yaml", "device"); }
 
 std::string ErrorOf(const std::string& yaml) {
   SimulatedDevice device;
@@ -27,12 +25,32 @@ std::string ErrorOf(const std::string& yaml) {
 
 TEST(SimulatedConfigTest, ReadsTheRobotWithUnits) {
   SimulatedDevice device;
-  device.Configure(
-      Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nstart_offset: 5 mm\n"));
+  device.Configure(Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nstart_offset: 5 mm\n"));
   const Settings& s = device.settings();
   EXPECT_EQ(s.mode, Settings::Mode::kConstantSpeed);
   EXPECT_DOUBLE_EQ(s.speed, 0.01);
   EXPECT_DOUBLE_EQ(s.start_offset, 5e-3);
+}
+
+// Any mode renders as a named device would: the table's limits, the simulated trajectory.
+TEST(SimulatedConfigTest, RendersAsANamedDevice) {
+  SimulatedDevice device;
+  device.Configure(
+      Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nmodel: Geomagic Touch\n"));
+  device.Start(1e-3);
+  const DeviceSpec spec = device.spec();
+  EXPECT_DOUBLE_EQ(spec.max_force, 3.3);
+  EXPECT_DOUBLE_EQ(spec.max_continuous_force, 0.88);
+  EXPECT_DOUBLE_EQ(spec.max_stiffness, 400.0);
+  EXPECT_DOUBLE_EQ(spec.damping, 4.0);
+  EXPECT_EQ(spec.model, "simulated robot (constant speed, constant radial load) as Touch");
+  device.Stop();
+  const std::string error =
+      ErrorOf("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nmodel: falcon\n");
+  EXPECT_NE(error.find("scene.yaml:3:8: device.model: expected a haptic device model ('PHANTOM "
+                       "Desktop', 'PHANTOM Omni', 'Touch')"),
+            std::string::npos)
+      << error;
 }
 
 TEST(SimulatedConfigTest, ReadsAScriptedHand) {
@@ -77,8 +95,7 @@ waypoints: [{time: 0 s, position: [0 mm, -10 mm, 0 mm]}]
 
 TEST(SimulatedConfigTest, ReadsARotaryDriveInDegrees) {
   SimulatedDevice device;
-  device.Configure(
-      Node("mode: constant_rotation\nangular_speed: 15 deg/s\nswing: 15 deg\n"));
+  device.Configure(Node("mode: constant_rotation\nangular_speed: 15 deg/s\nswing: 15 deg\n"));
   const Settings& s = device.settings();
   EXPECT_EQ(s.mode, Settings::Mode::kConstantRotation);
   EXPECT_NEAR(s.angular_speed, 15.0 * M_PI / 180.0, 1e-15);
