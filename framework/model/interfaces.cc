@@ -309,6 +309,16 @@ void SurfaceType::CheckModel(const PartSpec& inner, const PartSpec& outer,
   DoCheckModel(inner, outer, model, model_node);
 }
 
+std::vector<std::string> SurfaceType::DescribeModel(const PartSpec& inner, const PartSpec& outer,
+                                                    const ModelSettings& model) const {
+  return DoDescribeModel(inner, outer, model);
+}
+
+std::vector<std::string> SurfaceType::DoDescribeModel(const PartSpec&, const PartSpec&,
+                                                      const ModelSettings&) const {
+  return {};
+}
+
 void SurfaceType::DoCheckModel(const PartSpec&, const PartSpec&, const ModelSettings&,
                                const ConfigNode&) const {}
 

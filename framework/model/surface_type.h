@@ -48,6 +48,11 @@ class FITFEEL_API SurfaceType {
   // bolt's size and length); throws ScenarioError at the offending key under `model_node`.
   void CheckModel(const PartSpec& inner, const PartSpec& outer, const ModelSettings& model,
                   const ConfigNode& model_node) const;
+  // What the model makes of the parts, for `fitfeel validate`: lines a person reads before a run
+  // (a thread's joint: its compliances, VDI 2230's preload for a torque). Empty by default. Not
+  // for the tick; throws UserError as the model's own prepare would.
+  std::vector<std::string> DescribeModel(const PartSpec& inner, const PartSpec& outer,
+                                         const ModelSettings& model) const;
   // Parses and checks the scenario's `model.options` map (surface-specific model switches) once,
   // when the scene loads; throws ScenarioError at the offending key. The result, never null, is
   // the scene's ModelSettings::options, which the surface's objects read (OptionsAs).
@@ -127,6 +132,9 @@ class FITFEEL_API SurfaceType {
   // Default: no check of the pair.
   virtual void DoCheckPair(const PartSpec& inner, const PartSpec& outer,
                            const ConfigNode& pair_node) const;
+  // Default: nothing to say.
+  virtual std::vector<std::string> DoDescribeModel(const PartSpec& inner, const PartSpec& outer,
+                                                   const ModelSettings& model) const;
   // Default: no check of the model against the parts.
   virtual void DoCheckModel(const PartSpec& inner, const PartSpec& outer,
                             const ModelSettings& model, const ConfigNode& model_node) const;

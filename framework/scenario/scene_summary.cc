@@ -113,6 +113,12 @@ std::string DescribeScene(const Scene& scene) {
     out += DescribePart(scene.inner, scene.moving == Role::kInner);
     out += DescribePart(scene.outer, scene.moving == Role::kOuter);
     out += "model        " + DescribeModel(scene.model) + "\n";
+    if (scene.surface) {
+      for (const std::string& line :
+           scene.surface->DescribeModel(scene.inner, scene.outer, scene.model)) {
+        out += "             " + line + "\n";
+      }
+    }
   } else {
     out += "bodies       " + scene.fixed_body + " (fixed), " + scene.moving_body + " (moving)\n";
     for (std::size_t i = 0; i < scene.features.size(); ++i) {

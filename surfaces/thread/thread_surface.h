@@ -43,6 +43,10 @@ class ThreadSurface final : public SurfaceType {
   // 2230's bodies exist (hole below the bearing diameter and the plates' width).
   void DoCheckModel(const PartSpec& inner, const PartSpec& outer, const ModelSettings& model,
                     const ConfigNode& model_node) const override;
+  // The engaged thread's stiffness, the axial play, and with a joint its compliances, preload per
+  // turn, VDI 2230's tightening torque per preload and permissible assembly preload.
+  std::vector<std::string> DoDescribeModel(const PartSpec& inner, const PartSpec& outer,
+                                           const ModelSettings& model) const override;
   std::unique_ptr<ResistanceLaw> DoMakeLaw(std::string_view name) const override;
   std::vector<CharacteristicCheck> DoEvaluateCharacteristics(
       const PartSpec& part, const SkinModelShape& sms) const override;

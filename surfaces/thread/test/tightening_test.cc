@@ -142,6 +142,20 @@ TEST(Tightening, PreloadRisesPerTurnAsTheJointsCompliancesSay) {
   }
 }
 
+// What `fitfeel validate` says of the joint before a run: VDI 2230's numbers for this bolt.
+TEST(Tightening, ValidateDescribesTheJointInVdiTerms) {
+  const Scene scene = LoadSceneFromYaml(BoltScene(), "bolt.yaml", test_support::BuildTreePlugins());
+  std::string text;
+  for (const std::string& line :
+       scene.surface->DescribeModel(scene.inner, scene.outer, scene.model)) {
+    text += line + "\n";
+  }
+  EXPECT_NE(text.find("axial play 18.5 .. 198.6 um"), std::string::npos) << text;
+  EXPECT_NE(text.find("preload 434.4 kN per turn past snug"), std::string::npos) << text;
+  EXPECT_NE(text.find("1.64 N*m per kN"), std::string::npos) << text;
+  EXPECT_NE(text.find("F_M,zul 29.6 kN"), std::string::npos) << text;
+}
+
 // Held crooked by the wrench: within the flanks' play (0.05 deg over the 10 mm thread moves its
 // far side 4 um) the nut runs down as an aligned one does; at 3 deg (0.26 mm, a sixth of a
 // pitch) its first turns meet the bolt's on the wrong flanks and the torque reaches the wrench's
