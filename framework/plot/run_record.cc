@@ -166,6 +166,8 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
   const bool has_screw = index.count("torque_Nm") && index.count("preload_N");
   const std::size_t screw_torque = has_screw ? index.at("torque_Nm") : 0;
   const std::size_t preload = has_screw ? index.at("preload_N") : 0;
+  const bool has_seated = has_screw && index.count("seated");
+  const std::size_t seated = has_seated ? index.at("seated") : 0;
 
   ConstrainedTrace trace;
   std::string line;
@@ -213,6 +215,9 @@ ConstrainedTrace LoadConstrainedTrace(const fs::path& file) {
     if (has_screw) {
       trace.torque_Nm.push_back(number(screw_torque));
       trace.preload_N.push_back(number(preload));
+    }
+    if (has_seated) {
+      trace.seated.push_back(number(seated));
     }
   }
   if (trace.t_s.empty()) {

@@ -58,6 +58,8 @@ struct ConstrainedTrace {
   // when the trace has the columns torque_Nm and preload_N; empty otherwise.
   std::vector<double> torque_Nm;
   std::vector<double> preload_N;
+  // 1 from the tick the bearing face met (the column seated), when the trace has it.
+  std::vector<double> seated;
 };
 
 struct RunRecord {

@@ -103,7 +103,15 @@ LineChart MakeTorqueChart(const std::vector<RunRecord>& runs) {
   if (runs.empty()) throw UserError("no run folder to plot");
   LineChart chart;
   chart.title = "Tightening: torque and preload along the turn (constrained stage)";
-  const std::string x_label = "turn angle (deg)";
+  // Where every run's nut met the face, the angle counts from there and the chart starts a
+  // quarter turn before it: the tightening spans tens of degrees at the end of many turns.
+  bool seated = true;
+  for (const auto& run : runs) {
+    const auto& s = run.trace.seated;
+    seated = seated && !s.empty() && s.size() == run.trace.angle_rad.size() && s.back() > 0.5;
+  }
+  const std::string x_label =
+      seated ? "turn past the bearing face's meeting (deg)" : "turn angle (deg)";
   LinePanel torque{"Torque", x_label, "torque on the turning part (N·m)", true, false, {}};
   LinePanel preload{"Preload", x_label, "preload (N)", true, false, {}};
   for (const auto& run : runs) {
@@ -113,10 +121,20 @@ LineChart MakeTorqueChart(const std::vector<RunRecord>& runs) {
                       " has no torque_Nm, preload_N or angle_rad column: --torque plots a "
                       "screw's run (a thread scene)");
     }
-    std::vector<double> angle(trace.angle_rad.size());
-    for (std::size_t k = 0; k < angle.size(); ++k)
-      angle[k] = trace.angle_rad[k] * 180.0 / std::numbers::pi;
-    std::vector<double> torque_y = trace.torque_Nm, preload_y = trace.preload_N;
+    std::vector<double> angle, torque_y, preload_y;
+    double origin = 0.0;  // the angle at which the face met, deg
+    if (seated) {
+      std::size_t k = 0;
+      while (trace.seated[k] < 0.5) ++k;
+      origin = trace.angle_rad[k] * 180.0 / std::numbers::pi;
+    }
+    for (std::size_t k = 0; k < trace.angle_rad.size(); ++k) {
+      const double x = trace.angle_rad[k] * 180.0 / std::numbers::pi - origin;
+      if (seated && x < -90.0) continue;
+      angle.push_back(x);
+      torque_y.push_back(trace.torque_Nm[k]);
+      preload_y.push_back(trace.preload_N[k]);
+    }
     const std::string name = RunName(run.summary);
     char last[96];
     std::snprintf(last, sizeof last, ": %.3g N·m at the end", torque_y.back());

@@ -33,7 +33,9 @@ FITFEEL_API LineChart MakeTraceChart(const std::vector<RunRecord>& runs, bool lo
 
 // The tightening chart of `fitfeel plot trace --torque`: a screw's torque on the turning part
 // (top) and the joint's preload (bottom) against the part's turn angle in degrees, one curve per
-// run, labelled with the scenario and the torque and preload where the run ended. Throws UserError
+// run, labelled with the scenario and the torque and preload where the run ended. Where every run
+// seated its nut, the angle counts from the bearing face's meeting and starts a quarter turn before
+// it. Throws UserError
 // for no runs, or for a run whose trace has no torque_Nm, preload_N or angle_rad column (not a
 // screw's run).
 FITFEEL_API LineChart MakeTorqueChart(const std::vector<RunRecord>& runs);

@@ -99,10 +99,12 @@ inline void WriteRun(const std::filesystem::path& dir, const std::string& scenar
 // A screw's run folder (a thread scene's): WriteRun's summary and a trace with the pose's columns
 // and the screw's torque_Nm and preload_N. Its part turns 0.1 rad a tick; the torque is 0.01 N*m
 // while it runs down (tick 100 on) and then rises 0.4 N*m a tick, the preload 1 kN per N*m.
-inline void WriteScrewRun(const std::filesystem::path& dir, int rows = 200) {
+// With `seated`, the trace's seated column (1 from row 100, where the preload starts).
+inline void WriteScrewRun(const std::filesystem::path& dir, int rows = 200, bool seated = false) {
   WriteRun(dir, "bolt-m10", "flank", 5.0, rows);
   std::string csv =
-      "t_s,stage,depth_mm,fx_N,fy_N,fz_N,x_mm,y_mm,z_mm,angle_rad,preload_N,torque_Nm\n";
+      "t_s,stage,depth_mm,fx_N,fy_N,fz_N,x_mm,y_mm,z_mm,angle_rad,preload_N,torque_Nm" +
+      std::string(seated ? ",seated\n" : "\n");
   for (int k = 0; k < rows; ++k) {
     const bool constrained = k >= 20;
     const double angle = constrained ? 0.1 * (k - 20) : 0.0;
@@ -110,7 +112,7 @@ inline void WriteScrewRun(const std::filesystem::path& dir, int rows = 200) {
     csv += std::to_string(0.001 * k) + "," + (constrained ? "constrained" : "positioning") + "," +
            std::to_string(1.5 * angle / (2 * M_PI)) + ",0,-5,0,0,0,0," + std::to_string(angle) +
            "," + std::to_string(k < 100 ? 0.0 : 1000.0 * torque) + "," + std::to_string(torque) +
-           "\n";
+           (seated ? (k < 100 ? ",0" : ",1") : "") + "\n";
   }
   WriteFile(dir / "trace.csv", csv);
 }

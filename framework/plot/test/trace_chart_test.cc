@@ -109,6 +109,19 @@ TEST(MakeTorqueChart, TorqueAndPreloadAgainstTheTurnAngle) {
   EXPECT_THAT(preload.label, HasSubstr("39610 N at the end"));
 }
 
+// A run whose nut met the face: the angle counts from the meeting (row 100, 8.0 rad) and the chart
+// starts a quarter turn before it.
+TEST(MakeTorqueChart, CountsTheAngleFromTheFacesMeeting) {
+  ScratchDir dir;
+  testing::WriteScrewRun(dir.path() / "bolt", 200, true);
+  const LineChart chart = MakeTorqueChart({LoadRun(dir.path() / "bolt")});
+  const Series& torque = chart.panels[0].series.at(0);
+  EXPECT_EQ(chart.panels[0].x_label, "turn past the bearing face's meeting (deg)");
+  EXPECT_GE(torque.x.front(), -90.0);
+  EXPECT_LT(torque.x.front(), -90.0 + 0.1 * 180.0 / M_PI);
+  EXPECT_NEAR(torque.x.back(), (17.9 - 8.0) * 180.0 / M_PI, 1e-3);
+}
+
 TEST(MakeTorqueChart, RefusesARunThatIsNoScrews) {
   ScratchDir dir;
   testing::WriteRun(dir.path() / "fit", "paper-case1-h7js6", "gps", 12.0);
