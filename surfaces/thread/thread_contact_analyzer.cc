@@ -142,6 +142,13 @@ void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
       nut_variation_(i, j) = outer_sms.variation[nut_grid.index(i, j)];
     }
   }
+  // Bounds for skipping a flank that cannot touch (DoEvaluate): the largest bolt-minus-nut
+  // deviation, the smallest |n_y| and the largest |p x n| of any cell.
+  deviation_bound_ = cells_.variation.maxCoeff() - nut_variation_.minCoeff();
+  row_area_.resize(rows_);
+  for (int i = 0; i < rows_; ++i) row_area_[i] = cells_.area.segment(i * columns_, columns_).sum();
+  axial_normal_min_ = cells_.normal.row(1).cwiseAbs().minCoeff();
+  moment_arm_max_ = cells_.normal_moment.colwise().norm().maxCoeff();
   const ThreadOptions options = ThreadOptionsOf(settings);
   seat_ = options.joint.seat;
   weights_.clear();
@@ -237,6 +244,16 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   // its normal's cross-section part with itself (an offset moves its interference by that part).
   double jxx = 0.0, jxz = 0.0, jzz = 0.0;
   const int nut_rows = static_cast<int>(nut_variation_.rows());
+  // A flank whose every cell's interference is negative however its deviations, offset and tilt
+  // fall is skipped: delta <= move_y n_y + |move_xz| + |spin| max|p x n| + deviations, and n_y has
+  // the flank's sign (+ on A, - on B) and at least axial_normal_min_ in size. Under a load one
+  // flank carries it and the other stands off by the play.
+  const double reach = std::hypot(screw.move.x(), screw.move.z()) +
+                       screw.spin.norm() * moment_arm_max_ +
+                       screw.deviations * std::max(0.0, deviation_bound_);
+  const int half = columns_ / 2;
+  const int column_begin = screw.move.y() * axial_normal_min_ + reach <= 0.0 ? half : 0;
+  const int column_end = -screw.move.y() * axial_normal_min_ + reach <= 0.0 ? half : columns_;
   for (int row = first; row < last; ++row) {
     // The nut's rows either side of this row's place on its helix, shared by the row's cells.
     const int begin = row * columns_;
@@ -251,11 +268,20 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
     const double y = pose.depth + centre;
     const bool whole = y - 0.375 * pitch_ >= pitch_ && y + 0.375 * pitch_ <= nut_length_ - pitch_ &&
                        centre + 0.375 * pitch_ <= -pitch_;
-    for (int j = 0; j < columns_; ++j) {
+    // The engaged area by the row's helix point's share (its cells' differ within the flank band).
+    area += row_area_[row] *
+            (whole ? 1.0
+                   : Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_) *
+                         Ramp(-centre * inverse_pitch_));
+    for (int j = column_begin; j < column_end; ++j) {
       const int i = begin + j;
-      const double share = whole ? 1.0 : Share(i, pose.depth);
-      if (share <= 0.0) continue;
-      area += share * cells_.area[i];
+      double share = 1.0;
+      if (!whole) {
+        const double cell_y = pose.depth + cells_.axial[i];
+        share = Ramp(cell_y * inverse_pitch_) * Ramp((nut_length_ - cell_y) * inverse_pitch_) *
+                Ramp(-cells_.axial[i] * inverse_pitch_);
+        if (share <= 0.0) continue;
+      }
       const double nut = (1.0 - f) * nut_variation_(below, j) + f * nut_variation_(above, j);
       const double delta = Geometric(i, screw) + screw.deviations * (cells_.variation[i] - nut);
       if (delta <= 0.0) continue;

@@ -76,6 +76,8 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> nut_variation_;
   double nut_row_turn_ = 0.0;
   double seat_ = 0.0;  // depth at which the axial stop meets (infinity: none)
+  double deviation_bound_ = 0.0, axial_normal_min_ = 0.0, moment_arm_max_ = 0.0;
+  Eigen::VectorXd row_area_;  // each bolt row's cells' area summed
   // LoadWeight sampled evenly over the nut (empty: uniform).
   std::vector<double> weights_;
 };
