@@ -169,8 +169,10 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   } else {
     // One Newton step a tick on the spring's pull against the contact's resisting torque, on the
     // torque's last rise per radian: the part turns as far as the hand's twist can make it.
-    run->angle += (k_twist * (run->device_twist - run->angle) - run->resisting) /
-                  (k_twist + run->resisting_slope);
+    // An eighth of a turn a tick at most, as the advance: no hand spins a nut faster.
+    const double step = (k_twist * (run->device_twist - run->angle) - run->resisting) /
+                        (k_twist + run->resisting_slope);
+    run->angle += std::clamp(step, -0.25 * std::numbers::pi, 0.25 * std::numbers::pi);
   }
   // The tilt as the analyzer takes it (AnalyzerPose): reflected in z where the outer part moves.
   run->tilt = device.tilt + options_.tilt;
@@ -213,13 +215,20 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
         std::max(0.0, (screw.torque - run->resisting) / (run->angle - previous_angle));
   }
   run->resisting = screw.torque;
+  screw.thread_torque = -thread.torque.y();
+  screw.head_torque = screw.torque - screw.thread_torque;
+  screw.preload = thread.force.y() - out->wrench.force.y();
   // A hand feels its torsional spring, which at rest pulls as hard as the contact resists.
   if (options_.turn.speed == 0.0 && std::isfinite(k_twist)) {
     out->wrench.torque.y() = -k_twist * (run->device_twist - run->angle);
   }
-  screw.thread_torque = -thread.torque.y();
-  screw.head_torque = screw.torque - screw.thread_torque;
-  screw.preload = thread.force.y() - out->wrench.force.y();
+  // And along the axis its coupling spring (the god object's): bounded by the spring's reach,
+  // equal to the contact's force where the part settled, and stiff as the spring to the device
+  // while the flanks or the face hold the part.
+  const double k = options_.proxy_stiffness;
+  const bool hand = std::isfinite(k);
+  if (hand) out->wrench.force.y() = k * (run->depth - device.depth);
+  out->stiffness = hand && out->contact.interference ? k : 0.0;
   if (!screw.seated && out->contact.stop_closure > 0.0) {
     screw.seated = true;
     screw.snug_angle = run->angle;
@@ -248,7 +257,6 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
     out->wrench.torque = out->wrench.torque.cwiseProduct(reflect);
     SceneContact(&out->contact, options_.moving);
   }
-  out->stiffness = 0.0;
   out->gap = std::numeric_limits<double>::infinity();
   out->gap_direction.setZero();
   out->next =

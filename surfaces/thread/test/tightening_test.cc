@@ -142,6 +142,28 @@ TEST(Tightening, PreloadRisesPerTurnAsTheJointsCompliancesSay) {
   }
 }
 
+// Three turns on and off again by hand, the hand pulling back faster than the thread lets the nut
+// go: the hand feels its coupling spring, never the flanks' stiffness, creates no energy, and the
+// nut leaves the bolt.
+TEST(Tightening, AHandUnscrewsTheNutPassively) {
+  std::string text = test_support::ReadText(test_support::ShippedScenario("nut-by-hand.yaml"));
+  const std::size_t from = text.find("  waypoints:\n"), to = text.find("run:");
+  ASSERT_NE(from, std::string::npos);
+  text.replace(from, to - from,
+               "  waypoints:\n"
+               "    - {time: 0 s, position: [0 mm, -1 mm, 0 mm], angle: 0 deg}\n"
+               "    - {time: 0.5 s, position: [0 mm, 0.2 mm, 0 mm], angle: 0 deg}\n"
+               "    - {time: 2.5 s, position: [0 mm, 4.7 mm, 0 mm], angle: 1080 deg}\n"
+               "    - {time: 5 s, position: [0 mm, -3 mm, 0 mm], angle: -360 deg}\n");
+  text = Replaced(text, "duration: 7.5 s", "duration: 5.5 s");
+  const RunResult run = RunScene(
+      LoadSceneFromYaml(text, "unscrew.yaml", test_support::BuildTreePlugins()), RunOptions{});
+  EXPECT_EQ(run.summary["safety"]["energy_created_J"].get<double>(), 0.0);
+  // The coupling's spring: a few newtons over the millimetre the hand leads or lags.
+  EXPECT_LT(run.summary["axial_resistance_N"]["max"].get<double>(), 10.0);
+  EXPECT_EQ(run.final_stage, StageId::kPositioning);
+}
+
 // What `fitfeel validate` says of the joint before a run: VDI 2230's numbers for this bolt.
 TEST(Tightening, ValidateDescribesTheJointInVdiTerms) {
   const Scene scene = LoadSceneFromYaml(BoltScene(), "bolt.yaml", test_support::BuildTreePlugins());
