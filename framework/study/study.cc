@@ -14,6 +14,7 @@
 #include "framework/core/number_text.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
+#include "framework/runtime/scene_stages.h"
 #include "framework/scenario/scene.h"
 #include "framework/study/pair_geometry.h"
 
@@ -92,8 +93,8 @@ PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int ind
 }
 
 nlohmann::json DistributionJson(const Distribution& d) {
-  return {{"p5", d.p5}, {"p25", d.p25}, {"p50", d.p50}, {"p75", d.p75}, {"p95", d.p95},
-          {"mean", d.mean}};
+  return {{"p5", d.p5},   {"p25", d.p25}, {"p50", d.p50},
+          {"p75", d.p75}, {"p95", d.p95}, {"mean", d.mean}};
 }
 
 }  // namespace
@@ -132,18 +133,24 @@ Distribution Describe(std::vector<double> values) {
 StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
                      const StudySettings& settings) {
   if (settings.pairs < 1 || settings.pairs > 10'000'000) {
-    throw UserError("study: --pairs must be in 1..10000000, got " +
-                    std::to_string(settings.pairs));
+    throw UserError("study: --pairs must be in 1..10000000, got " + std::to_string(settings.pairs));
   }
   if (settings.threads < 1 || settings.threads > 1024) {
-    throw UserError("study: --threads must be in 1..1024, got " +
-                    std::to_string(settings.threads));
+    throw UserError("study: --threads must be in 1..1024, got " + std::to_string(settings.threads));
   }
   // Every refusal of the scene comes now, before any pair runs (and from this thread).
   const Scene checked = LoadScene(file, registry, StudyLoad(settings.allow_large));
   if (!checked.device) {
     throw UserError("study: scene '" + checked.name + "' has no device '" + checked.device_id +
                     "'");
+  }
+  // A pair's columns are a cylinder's (sizes, clearance, axial resistance): for a nut on a bolt
+  // they would read the pitch diameters as a shaft and a hole and the run-down push as the fit.
+  if (IsScrewScene(checked)) {
+    throw UserError("study: scene '" + checked.name +
+                    "' is a screw joint (a thread), which a fit study does not take: its pairs' "
+                    "preload and torque are no study columns yet; run it seed by seed with "
+                    "`fitfeel run FILE --seed S` (summary.json's `thread`)");
   }
 
   StudyResult result;
@@ -166,8 +173,8 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
       const int i = next.fetch_add(1);
       if (i >= settings.pairs) return;
       try {
-        slots[static_cast<std::size_t>(i)] = RunPair(file, registry, i, settings.seed,
-                                                       StudyLoad(settings.allow_large));
+        slots[static_cast<std::size_t>(i)] =
+            RunPair(file, registry, i, settings.seed, StudyLoad(settings.allow_large));
       } catch (...) {
         std::lock_guard<std::mutex> lock(report_mutex);
         if (!failure) failure = std::current_exception();

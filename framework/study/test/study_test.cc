@@ -14,8 +14,8 @@
 
 #include "framework/core/error.h"
 #include "framework/core/quantity.h"
-#include "framework/plugin/registry.h"
 #include "framework/plot/study_chart.h"
+#include "framework/plugin/registry.h"
 #include "framework/study/pair_geometry.h"
 #include "framework/study/study_record.h"
 
@@ -84,8 +84,10 @@ SkinModelShape Cylinder(double radius, int rows, int columns, F v, double size) 
 }
 
 TEST(MeasurePair, UniformSizesGiveTheSizeClearance) {
-  const auto shaft = Cylinder(0.01, 5, 36, [](int, double) { return 2e-6; }, 4e-6);
-  const auto bore = Cylinder(0.01, 5, 36, [](int, double) { return 5e-6; }, 10e-6);
+  const auto shaft = Cylinder(
+      0.01, 5, 36, [](int, double) { return 2e-6; }, 4e-6);
+  const auto bore = Cylinder(
+      0.01, 5, 36, [](int, double) { return 5e-6; }, 10e-6);
   const PairGeometry g = MeasurePair(shaft, bore);
   EXPECT_NEAR(g.inner_size, 4e-6, 1e-18);
   EXPECT_NEAR(g.outer_size, 10e-6, 1e-18);
@@ -96,9 +98,10 @@ TEST(MeasurePair, UniformSizesGiveTheSizeClearance) {
 TEST(MeasurePair, OvalBoreClosesAcrossItsMinorAxis) {
   // Bore 5 + 3 cos 2a um, shaft 2 um: room(a) = 3 + 3 cos 2a, across = 6 + 6 cos 2a, least 0 at
   // a = pi/2 (a column of the 36-column grid).
-  const auto shaft = Cylinder(0.01, 4, 36, [](int, double) { return 2e-6; }, 4e-6);
-  const auto bore =
-      Cylinder(0.01, 4, 36, [](int, double a) { return 5e-6 + 3e-6 * std::cos(2 * a); }, 10e-6);
+  const auto shaft = Cylinder(
+      0.01, 4, 36, [](int, double) { return 2e-6; }, 4e-6);
+  const auto bore = Cylinder(
+      0.01, 4, 36, [](int, double a) { return 5e-6 + 3e-6 * std::cos(2 * a); }, 10e-6);
   ASSERT_TRUE(MeasurePair(shaft, bore).min_clearance.has_value());
   EXPECT_NEAR(*MeasurePair(shaft, bore).min_clearance, 0.0, 1e-15);
 }
@@ -118,7 +121,8 @@ TEST(MeasurePair, EveryRowOfTheShaftPassesEveryRowOfTheBore) {
 }
 
 TEST(MeasurePair, NoClearanceForOtherSurfaces) {
-  auto flat = Cylinder(0.01, 3, 8, [](int, double) { return 0.0; }, 0.0);
+  auto flat = Cylinder(
+      0.01, 3, 8, [](int, double) { return 0.0; }, 0.0);
   flat.grid.centre.row(0).setLinSpaced(0.0, 1.0);  // not on one radius
   EXPECT_FALSE(MeasurePair(flat, flat).min_clearance.has_value());
 }
@@ -129,6 +133,20 @@ class PaperStudy : public ::testing::Test {
   const fs::path scene_ = fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/paper-case1-h7js6.yaml";
   PluginRegistry registry_;
 };
+
+// A nut on a bolt is no fit: its pitch diameters would read as a shaft and a hole. Refused, saying
+// what to run instead.
+TEST_F(PaperStudy, RefusesAScrewJoint) {
+  StudySettings settings;
+  settings.pairs = 2;
+  try {
+    RunStudy(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/bolt-m10.yaml", registry_, settings);
+    FAIL() << "a thread scene was studied";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a screw joint"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fitfeel run FILE --seed S"), std::string::npos);
+  }
+}
 
 TEST_F(PaperStudy, SamePairsWhateverTheThreadCount) {
   StudySettings one;
