@@ -16,6 +16,7 @@
 #include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
 #include "framework/scenario/scene.h"
+#include "framework/scenario/yaml_file.h"
 #include "framework/study/pair_geometry.h"
 
 namespace fitfeel::study {
@@ -147,10 +148,11 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
   // A pair's columns are a cylinder's (sizes, clearance, axial resistance): for a nut on a bolt
   // they would read the pitch diameters as a shaft and a hole and the run-down push as the fit.
   if (IsScrewScene(checked)) {
-    throw UserError("study: scene '" + checked.name +
-                    "' is a screw joint (a thread), which a fit study does not take: its pairs' "
-                    "preload and torque are no study columns yet; run it seed by seed with "
-                    "`fitfeel run FILE --seed S` (summary.json's `thread`)");
+    scenario::LoadYamlFile(file).Child("surface").Fail(
+        "a surface whose pairs a fit study compares (a screw joint's preload and torque are no "
+        "study columns yet: run it seed by seed with `fitfeel run FILE --seed S`, summary.json's "
+        "`thread`)",
+        checked.surface_id + ", a screw joint");
   }
 
   StudyResult result;

@@ -142,8 +142,12 @@ TEST_F(PaperStudy, RefusesAScrewJoint) {
   try {
     RunStudy(fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/bolt-m10.yaml", registry_, settings);
     FAIL() << "a thread scene was studied";
-  } catch (const UserError& e) {
-    EXPECT_NE(std::string(e.what()).find("is a screw joint"), std::string::npos) << e.what();
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.key_path(), "surface");
+    EXPECT_NE(std::string(e.what()).find("bolt-m10.yaml:7:10: surface: expected a surface whose "
+                                         "pairs a fit study compares"),
+              std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find("fitfeel run FILE --seed S"), std::string::npos);
   }
 }
