@@ -49,6 +49,12 @@ double StressArea(double nominal_diameter, double pitch) {
   return CircleArea(d0);
 }
 
+double StressSectionModulus(double nominal_diameter, double pitch) {
+  const double d0 =
+      0.5 * (PitchDiameter(nominal_diameter, pitch) + MinorDiameter(nominal_diameter, pitch));
+  return std::numbers::pi * d0 * d0 * d0 / 16.0;
+}
+
 BoltResilience ThroughBoltResilience(const ThroughBolt& bolt) {
   constexpr const char* kFunction = "ThroughBoltResilience";
   CheckThread(kFunction, bolt.nominal_diameter, bolt.pitch);
@@ -150,12 +156,10 @@ AssemblyStress TighteningStress(double nominal_diameter, double pitch, double pr
   RequireNonNegative(kFunction, "preload", preload, Dimension::kForce);
   RequireNonNegative(kFunction, "thread_torque", thread_torque, Dimension::kTorque);
   RequirePositive(kFunction, "yield_strength", yield_strength, Dimension::kPressure);
-  const double d0 =
-      0.5 * (PitchDiameter(nominal_diameter, pitch) + MinorDiameter(nominal_diameter, pitch));
   AssemblyStress s{};
-  s.tensile = preload / CircleArea(d0);
-  s.torsional = thread_torque / (std::numbers::pi * d0 * d0 * d0 / 16.0);
-  s.equivalent = std::sqrt(s.tensile * s.tensile + 3.0 * s.torsional * s.torsional);
+  s.tensile = preload / StressArea(nominal_diameter, pitch);
+  s.torsional = thread_torque / StressSectionModulus(nominal_diameter, pitch);
+  s.equivalent = EquivalentStress(s.tensile, s.torsional);
   s.utilisation = s.equivalent / yield_strength;
   return s;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cmath>
+
 #include <vector>
 
 namespace fitfeel::thread {
@@ -17,6 +19,8 @@ double PitchDiameter(double nominal_diameter, double pitch);
 double MinorDiameter(double nominal_diameter, double pitch);
 // ISO 898-1 / VDI 2230 stress cross-section A_S = pi/4 ((d2 + d3)/2)^2.
 double StressArea(double nominal_diameter, double pitch);
+// Its polar section modulus W_P = pi d_0^3 / 16, d_0 = (d2 + d3)/2 (the torsion of tightening).
+double StressSectionModulus(double nominal_diameter, double pitch);
 
 // An unthreaded cylindrical part of the bolt inside the clamp length (a shank, a reduced shank).
 struct CylindricalSection {
@@ -116,6 +120,10 @@ struct AssemblyStress {
 };
 AssemblyStress TighteningStress(double nominal_diameter, double pitch, double preload,
                                 double thread_torque, double yield_strength);
+// sigma_red = sqrt(sigma^2 + 3 tau^2) (von Mises, k_tau = 1), for the tick: no check, no throw.
+inline double EquivalentStress(double tensile, double torsional) noexcept {
+  return std::sqrt(tensile * tensile + 3.0 * torsional * torsional);
+}
 
 // VDI 2230's permissible assembly preload at a utilisation nu of the minimum yield strength:
 //   F_M,zul = A_0 nu R_p0.2 / sqrt(1 + 3 [ (3/2)(d2/d_0)(P/(pi d2) + 1.155 mu_G) ]^2),

@@ -1,12 +1,10 @@
 #include "surfaces/thread/joint_model.h"
 
-#include <cmath>
-#include <numbers>
-
 #include "surfaces/thread/bolted_joint.h"
 #include "surfaces/thread/fastener_tables.h"
 #include "surfaces/thread/property_class.h"
 #include "surfaces/thread/thread_geometry.h"
+#include "surfaces/thread/thread_torque.h"
 
 namespace fitfeel::thread {
 
@@ -24,9 +22,8 @@ JointModel MakeJointModel(const PartSpec& bolt, const PartSpec& nut, const Joint
   const BoltResilience resilience = ThroughBoltResilience(through);
   JointModel model;
   model.engaged_thread_compliance = resilience.thread_pair();
-  const double d0 = 0.5 * (PitchDiameter(d, p) + MinorDiameter(d, p));
   model.stress_area = StressArea(d, p);
-  model.polar_modulus = std::numbers::pi / 16.0 * d0 * d0 * d0;
+  model.polar_modulus = StressSectionModulus(d, p);
   if (!joint.present()) return model;
   model.bearing_diameter = joint.bearing_diameter > 0.0 ? joint.bearing_diameter
                                                         : MetricFastenerOf(d).nut_bearing_diameter;
@@ -41,8 +38,9 @@ JointModel MakeJointModel(const PartSpec& bolt, const PartSpec& nut, const Joint
   model.clamp_stiffness =
       joint.stiffness > 0.0 ? joint.stiffness
                             : 1.0 / (resilience.series_with_thread_pair() + model.plate_compliance);
-  const double r = 0.5 * model.hole_diameter, big = 0.5 * model.bearing_diameter;
-  model.bearing_radius = 2.0 / 3.0 * (big * big * big - r * r * r) / (big * big - r * r);
+  // The uniform-pressure annulus's torque per unit force and friction is its friction radius.
+  model.bearing_radius =
+      UniformAnnulusTorqueRatio(model.bearing_diameter, model.hole_diameter, 1.0);
   if (!joint.property_class.empty()) {
     model.yield_strength = BoltPropertyClass::Parse(joint.property_class).min_yield_strength(d);
   }

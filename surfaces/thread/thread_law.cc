@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "framework/core/error.h"
+#include "surfaces/thread/bolted_joint.h"
 #include "surfaces/thread/joint_model.h"
 #include "surfaces/thread/thread_geometry.h"
 
@@ -122,8 +123,7 @@ ElasticLimitCheck ThreadLaw::DoCheckElasticLimit(const ContactState& contact) co
       pressure_ * std::abs(contact.normal_sum.y() + flank_friction_ * contact.slide_sum.y());
   const double torsion =
       pressure_ * std::abs(contact.normal_moment.y() + flank_friction_ * contact.slide_moment.y());
-  const double sigma = tension / stress_area_, tau = torsion / polar_modulus_;
-  check.utilisation = std::sqrt(sigma * sigma + 3.0 * tau * tau) / yield_;
+  check.utilisation = EquivalentStress(tension / stress_area_, torsion / polar_modulus_) / yield_;
   check.part = 2;
   return check;
 }
