@@ -19,8 +19,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-double Ramp(double x) { return std::clamp(x, 0.0, 1.0); }
-
 // A bolt turned by `angle` about +y: its frame's vectors in the nut's.
 Eigen::Vector3d Turn(const Eigen::Vector3d& v, double c, double s) {
   return {c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z()};
@@ -175,7 +173,7 @@ void ThreadContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShap
       // The countersinks' ramps (Share) take part of the first and last turns: the weights are
       // scaled to a mean of 1 over what the ramps leave, so the law's stiffness (taken for a
       // uniform load) holds for the whole nut.
-      const double ramps = Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_);
+      const double ramps = NutRamps(y);
       weighted += ramps * weights_[n];
       plain += ramps;
     }
@@ -191,19 +189,19 @@ double ThreadContactAnalyzer::LoadWeight(double y) const noexcept {
   return weights_[k] + (x - k) * (weights_[k + 1] - weights_[k]);
 }
 
-double ThreadContactAnalyzer::NutVariation(int column, double turn) const noexcept {
+ThreadContactAnalyzer::NutPlace ThreadContactAnalyzer::NutPlaceAt(double turn) const noexcept {
   const int rows = static_cast<int>(nut_variation_.rows());
-  if (rows == 1) return nut_variation_(0, column);
+  if (rows == 1) return {};
   const double x = turn / nut_row_turn_ - 0.5;
-  const int i = std::clamp(static_cast<int>(std::floor(x)), 0, rows - 2);
-  const double f = std::clamp(x - i, 0.0, 1.0);
-  return (1.0 - f) * nut_variation_(i, column) + f * nut_variation_(i + 1, column);
+  NutPlace at;
+  at.below = std::clamp(static_cast<int>(std::floor(x)), 0, rows - 2);
+  at.above = at.below + 1;
+  at.f = std::clamp(x - at.below, 0.0, 1.0);
+  return at;
 }
 
-double ThreadContactAnalyzer::Share(int i, double depth) const noexcept {
-  const double y = depth + cells_.axial[i];
-  return Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_) *
-         Ramp(-cells_.axial[i] * inverse_pitch_);
+double ThreadContactAnalyzer::NutVariation(int column, const NutPlace& at) const noexcept {
+  return (1.0 - at.f) * nut_variation_(at.below, column) + at.f * nut_variation_(at.above, column);
 }
 
 double ThreadContactAnalyzer::Weight(int i, double depth) const noexcept {
@@ -216,10 +214,14 @@ double ThreadContactAnalyzer::Geometric(int i, const ScrewPhase& screw) const no
 }
 
 double ThreadContactAnalyzer::Interference(int i, const ScrewPhase& screw,
-                                           double angle) const noexcept {
-  const double nut_turn = cells_.turn[i] + angle + screw.shift;
-  return Geometric(i, screw) +
-         screw.deviations * (cells_.variation[i] - NutVariation(cells_.nut_column[i], nut_turn));
+                                           double nut) const noexcept {
+  return Geometric(i, screw) + screw.deviations * (cells_.variation[i] - nut);
+}
+
+double ThreadContactAnalyzer::InterferenceAt(int i, const ScrewPhase& screw,
+                                             double angle) const noexcept {
+  const NutPlace at = NutPlaceAt(cells_.turn[i] + angle + screw.shift);
+  return Interference(i, screw, NutVariation(cells_.nut_column[i], at));
 }
 
 void ThreadContactAnalyzer::Rows(double depth, int* first, int* last) const noexcept {
@@ -243,7 +245,6 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   // d(normal_sum's x, z)/d(offset) in the bolt's frame: each touching cell's weighted area times
   // its normal's cross-section part with itself (an offset moves its interference by that part).
   double jxx = 0.0, jxz = 0.0, jzz = 0.0;
-  const int nut_rows = static_cast<int>(nut_variation_.rows());
   // A flank whose every cell's interference is negative however its deviations, offset and tilt
   // fall is skipped: delta <= move_y n_y + |move_xz| + |spin| max|p x n| + deviations, and n_y has
   // the flank's sign (+ on A, - on B) and at least axial_normal_min_ in size. Under a load one
@@ -257,11 +258,7 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
   for (int row = first; row < last; ++row) {
     // The nut's rows either side of this row's place on its helix, shared by the row's cells.
     const int begin = row * columns_;
-    const double x = (cells_.turn[begin] + pose.angle + screw.shift) / nut_row_turn_ - 0.5;
-    const int below =
-        nut_rows == 1 ? 0 : std::clamp(static_cast<int>(std::floor(x)), 0, nut_rows - 2);
-    const int above = nut_rows == 1 ? 0 : below + 1;
-    const double f = nut_rows == 1 ? 0.0 : std::clamp(x - below, 0.0, 1.0);
+    const NutPlace at = NutPlaceAt(cells_.turn[begin] + pose.angle + screw.shift);
     // A row a pitch clear of the nut's faces and of the bolt's end has every cell whole (its
     // cells lie within 3P/8 of the row's helix point): no ramps to weigh.
     const double centre = lead_per_radian_ * cells_.turn[begin];
@@ -269,21 +266,12 @@ void ThreadContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* out
     const bool whole = y - 0.375 * pitch_ >= pitch_ && y + 0.375 * pitch_ <= nut_length_ - pitch_ &&
                        centre + 0.375 * pitch_ <= -pitch_;
     // The engaged area by the row's helix point's share (its cells' differ within the flank band).
-    area += row_area_[row] *
-            (whole ? 1.0
-                   : Ramp(y * inverse_pitch_) * Ramp((nut_length_ - y) * inverse_pitch_) *
-                         Ramp(-centre * inverse_pitch_));
+    area += row_area_[row] * (whole ? 1.0 : ShareAt(pose.depth, centre));
     for (int j = column_begin; j < column_end; ++j) {
       const int i = begin + j;
-      double share = 1.0;
-      if (!whole) {
-        const double cell_y = pose.depth + cells_.axial[i];
-        share = Ramp(cell_y * inverse_pitch_) * Ramp((nut_length_ - cell_y) * inverse_pitch_) *
-                Ramp(-cells_.axial[i] * inverse_pitch_);
-        if (share <= 0.0) continue;
-      }
-      const double nut = (1.0 - f) * nut_variation_(below, j) + f * nut_variation_(above, j);
-      const double delta = Geometric(i, screw) + screw.deviations * (cells_.variation[i] - nut);
+      const double share = whole ? 1.0 : Share(i, pose.depth);
+      if (share <= 0.0) continue;
+      const double delta = Interference(i, screw, NutVariation(j, at));
       if (delta <= 0.0) continue;
       const double weighted = share * Weight(i, pose.depth) * cells_.area[i];
       const double a = weighted * delta;
@@ -338,7 +326,7 @@ bool ThreadContactAnalyzer::DoAssemblySpace(const MatingPose& pose,
     engaged = true;
     const Eigen::Vector3d n = Turn(cells_.normal.col(i), screw.cos, screw.sin);
     const double across = std::hypot(n.x(), n.z());
-    const double delta = Interference(i, screw, pose.angle);
+    const double delta = InterferenceAt(i, screw, pose.angle);
     if (across < 1e-12) {
       if (delta > 0.0) return true;  // touching wherever the axis goes
       continue;
@@ -357,7 +345,7 @@ void ThreadContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
   delta->setZero(rows_ * columns_);
   for (int i = 0; i < rows_ * columns_; ++i) {
     if (Share(i, pose.depth) <= 0.0) continue;
-    (*delta)[cells_.grid_cell[i]] = std::max(0.0, Interference(i, screw, pose.angle));
+    (*delta)[cells_.grid_cell[i]] = std::max(0.0, InterferenceAt(i, screw, pose.angle));
   }
 }
 

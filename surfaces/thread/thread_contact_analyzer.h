@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,15 +55,34 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
     Eigen::VectorXi grid_cell;   // the cell's index in the bolt's grid
     Eigen::Matrix3Xd normal, normal_moment, slide, slide_moment;  // bolt frame, about its origin
   };
-  // Interference of cell i at the screw phase `screw` with the bolt turned by `angle`; its share
-  // (0-1) of the contact at insertion `depth`.
-  double Interference(int i, const ScrewPhase& screw, double angle) const noexcept;
+  // Where a turn angle of the nut's helix falls between its grid's rows (linear interpolation).
+  struct NutPlace {
+    int below = 0, above = 0;
+    double f = 0.0;
+  };
+  NutPlace NutPlaceAt(double turn) const noexcept;
+  double NutVariation(int column, const NutPlace& at) const noexcept;
+  // Interference of cell i at the screw phase `screw`, the nut's variation there being `nut`;
+  // InterferenceAt finds that with the bolt turned by `angle` (a cell's own lookup; the tick's
+  // loop looks up each row once).
+  double Interference(int i, const ScrewPhase& screw, double nut) const noexcept;
+  double InterferenceAt(int i, const ScrewPhase& screw, double angle) const noexcept;
   // Its part from the pose alone (the phase and the offset along the cell's normal).
   double Geometric(int i, const ScrewPhase& screw) const noexcept;
-  double Share(int i, double depth) const noexcept;
+  // The share (0-1) of a flank point at `axial` in the bolt's frame at insertion `depth`: the
+  // countersinks' ramps at both nut faces times the bolt's end chamfer's. Inline: the tick's
+  // loop takes it for every cell of a row near a face.
+  double ShareAt(double depth, double axial) const noexcept {
+    return NutRamps(depth + axial) * std::clamp(-axial * inverse_pitch_, 0.0, 1.0);
+  }
+  // The nut's countersinks alone, at `y` from its entrance.
+  double NutRamps(double y) const noexcept {
+    return std::clamp(y * inverse_pitch_, 0.0, 1.0) *
+           std::clamp((nut_length_ - y) * inverse_pitch_, 0.0, 1.0);
+  }
+  double Share(int i, double depth) const noexcept { return ShareAt(depth, cells_.axial[i]); }
   // The load distribution's weight of cell i at insertion `depth` (LoadWeight).
   double Weight(int i, double depth) const noexcept;
-  double NutVariation(int column, double turn) const noexcept;
   // Row range [first, last) of the bolt whose cells can lie inside the nut at `depth`.
   void Rows(double depth, int* first, int* last) const noexcept;
 
