@@ -61,10 +61,11 @@ double ScrewStage::AxialForce(double depth, double angle, const Eigen::Vector2d&
   return wrench.force.y();
 }
 
-double ScrewStage::SettleDepth(double angle, double device_depth, RunState* run,
+double ScrewStage::SettleDepth(double previous_angle, double device_depth, RunState* run,
                                StageOutput* out) const noexcept {
   const double k = options_.proxy_stiffness;
   const bool hand = std::isfinite(k);
+  const double angle = run->angle;
   // The balance g(z) = contact + load falls with z: the contact pushes back harder the further
   // the part advances, and so does the hand's spring.
   auto balance = [&](double z) {
@@ -74,7 +75,7 @@ double ScrewStage::SettleDepth(double angle, double device_depth, RunState* run,
   // The part advances with its turn as it did the last tick (along the lead while it runs on a
   // flank, less once the face holds it): from there the contact is nearly the last tick's, and
   // one step on the last slope usually lands.
-  double z = run->depth + run->advance * (angle - run->angle);
+  double z = run->depth + run->advance * (angle - previous_angle);
   double g = balance(z);
   int evaluations = 1;
   // Settled within a thousandth of a newton, or a bracket narrower than 0.1 nm (0.1 N at the
@@ -179,9 +180,7 @@ void ScrewStage::DoEvaluate(const PartState& part, StageState* state,
   if (options_.moving == Role::kOuter) run->tilt.y() = -run->tilt.y();
   const double angle = run->angle;
   const double previous_depth = run->depth;
-  run->angle = previous_angle;
-  run->depth = SettleDepth(angle, device.depth, run, out);
-  run->angle = angle;
+  run->depth = SettleDepth(previous_angle, device.depth, run, out);
   if (angle != previous_angle) {
     // Bounded by the lead: a tick that jumped its flanks' play says nothing of the next.
     run->advance = std::clamp((run->depth - previous_depth) / (angle - previous_angle), 0.0,

@@ -55,9 +55,9 @@ class FITFEEL_API ScrewStage final : public Stage {
   double AxialForce(double depth, double angle, const Eigen::Vector2d& tilt, const LawState& law,
                     StageOutput* out) const noexcept;
   // Where the axial force and the load (plus the hand's spring towards `device_depth`) balance
-  // at `angle`, starting from the last tick's depth carried along the lead from run->angle.
-  // out->contact is left at the depth returned.
-  double SettleDepth(double angle, double device_depth, RunState* run,
+  // at run->angle, starting from the last tick's depth carried by its last advance per turn over
+  // the turn from `previous_angle`. out->contact is left at the depth returned.
+  double SettleDepth(double previous_angle, double device_depth, RunState* run,
                      StageOutput* out) const noexcept;
 
   const ContactAnalyzer& analyzer_;
