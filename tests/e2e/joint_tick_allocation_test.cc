@@ -3,6 +3,7 @@
 // scheduler with its safety chain and record while every operator new is counted.
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -37,38 +38,47 @@ Scene JointScene(const std::string& file, bool hand) {
   return LoadScene(written, test_support::BuildTreePlugins());
 }
 
+// The scene ticked through the scheduler (safety chain and record included) for its planned
+// ticks while every operator new is counted, its constrained stage a `StageType`; `check` then
+// reads what the run did.
+template <class StageType>
+void TickCountingAllocations(Scene scene, const std::function<void(const Scheduler&)>& check) {
+  const PreparedScene prepared = Prepare(scene);
+  SchedulerSettings settings = SceneSchedulerSettings(scene);
+  settings.clock = ClockMode::kVirtual;
+  settings.record = true;
+  scene.device->Start(1.0 / settings.rate);
+  const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
+  ASSERT_NE(dynamic_cast<const StageType*>(stages.constrained.get()), nullptr);
+  settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
+  Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
+  FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
+  test_support::ScopedAllocationCounter allocations;
+  std::uint64_t ticks = 0;
+  while (ticks < scheduler.planned_ticks() &&
+         scheduler.Tick(static_cast<double>(ticks) / settings.rate)) {
+    ++ticks;
+  }
+  allocations.Stop();
+  scene.device->Stop();
+  EXPECT_EQ(allocations.count(), 0);
+  check(scheduler);
+}
+
 TEST(JointTickAllocation, TheShippedJointsTickWithoutAllocating) {
   for (const char* file : {"keyed-hub.yaml", "two-pin-location.yaml"}) {
     for (const bool hand : {false, true}) {
       SCOPED_TRACE(std::string(file) + (hand ? ", the hand" : ", the robot"));
-      Scene scene = JointScene(file, hand);
-      const PreparedScene prepared = Prepare(scene);
-      SchedulerSettings settings = SceneSchedulerSettings(scene);
-      settings.clock = ClockMode::kVirtual;
-      settings.record = true;
-      scene.device->Start(1.0 / settings.rate);
-      const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
-      ASSERT_NE(dynamic_cast<const JointStage*>(stages.constrained.get()), nullptr);
-      settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
-      Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
-      FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
-      test_support::ScopedAllocationCounter allocations;
-      std::uint64_t ticks = 0;
-      while (ticks < scheduler.planned_ticks() &&
-             scheduler.Tick(static_cast<double>(ticks) / settings.rate)) {
-        ++ticks;
-      }
-      allocations.Stop();
-      scene.device->Stop();
-      EXPECT_EQ(allocations.count(), 0);
-      // The joint did its work: most of the run in contact, and ticks that differenced its
-      // features, searched along kinks and reached the iteration limit.
-      int constrained = 0;
-      for (const TickRecord& record : scheduler.trace()) {
-        constrained += record.stage == StageId::kConstrained ? 1 : 0;
-      }
-      EXPECT_GT(constrained, static_cast<int>(scheduler.trace().size()) / 2);
-      EXPECT_GE(scheduler.StatsSoFar().contact_evaluations.max, 40.0);
+      TickCountingAllocations<JointStage>(JointScene(file, hand), [](const Scheduler& scheduler) {
+        // The joint did its work: most of the run in contact, and ticks that differenced its
+        // features, searched along kinks and reached the iteration limit.
+        int constrained = 0;
+        for (const TickRecord& record : scheduler.trace()) {
+          constrained += record.stage == StageId::kConstrained ? 1 : 0;
+        }
+        EXPECT_GT(constrained, static_cast<int>(scheduler.trace().size()) / 2);
+        EXPECT_GE(scheduler.StatsSoFar().contact_evaluations.max, 40.0);
+      });
     }
   }
 }
@@ -78,29 +88,11 @@ TEST(JointTickAllocation, TheShippedJointsTickWithoutAllocating) {
 TEST(ScrewTickAllocation, TheShippedThreadsTickWithoutAllocating) {
   for (const char* file : {"bolt-m10.yaml", "cross-thread.yaml", "nut-by-hand.yaml"}) {
     SCOPED_TRACE(file);
-    Scene scene = JointScene(file, false);
-    const PreparedScene prepared = Prepare(scene);
-    SchedulerSettings settings = SceneSchedulerSettings(scene);
-    settings.clock = ClockMode::kVirtual;
-    settings.record = true;
-    scene.device->Start(1.0 / settings.rate);
-    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
-    ASSERT_NE(dynamic_cast<const ScrewStage*>(stages.constrained.get()), nullptr);
-    settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
-    Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
-    FITFEEL_SKIP_UNLESS_COUNTING_ALLOCATIONS();
-    test_support::ScopedAllocationCounter allocations;
-    std::uint64_t ticks = 0;
-    while (ticks < scheduler.planned_ticks() &&
-           scheduler.Tick(static_cast<double>(ticks) / settings.rate)) {
-      ++ticks;
-    }
-    allocations.Stop();
-    scene.device->Stop();
-    EXPECT_EQ(allocations.count(), 0);
-    // The screw did its work: the nut met the face or jammed.
-    const ScrewOutput& last = scheduler.trace().back().screw;
-    EXPECT_TRUE(last.seated || last.stopped);
+    TickCountingAllocations<ScrewStage>(JointScene(file, false), [](const Scheduler& scheduler) {
+      // The screw did its work: the nut met the face or jammed.
+      const ScrewOutput& last = scheduler.trace().back().screw;
+      EXPECT_TRUE(last.seated || last.stopped);
+    });
   }
 }
 
