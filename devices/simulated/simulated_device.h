@@ -1,5 +1,6 @@
 #pragma once
 
+#include <numbers>
 #include <vector>
 
 #include <Eigen/Core>
@@ -9,7 +10,7 @@
 namespace fitfeel::simulated {
 
 // The largest waypoint angle, rad: twenty turns, a nut run down by the fingers.
-inline constexpr double kMaxWaypointAngle = 40.0 * 3.141592653589793;
+inline constexpr double kMaxWaypointAngle = 40.0 * std::numbers::pi;
 
 struct Waypoint {
   double time = 0.0;                        // s since the start of the run

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <numbers>
 #include <system_error>
 #include <utility>
 #include <variant>
@@ -223,7 +224,7 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
         {"start", s.seated ? "seated" : (s.stopped ? "jammed" : "running")},
         {"rundown_torque_Nm", screw_rundown_torque_},
         {"turn_after_snug_deg",
-         s.seated ? (screw_angle_ - s.snug_angle) * 180.0 / 3.141592653589793 : 0.0},
+         s.seated ? (screw_angle_ - s.snug_angle) * 180.0 / std::numbers::pi : 0.0},
         {"target_reached", s.stopped},
         {"torque_Nm_over_run", screw_torque_.ToJson()},
         {"preload_N_over_run", screw_preload_.ToJson()},

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <numbers>
 #include <vector>
 
 namespace fitfeel {
@@ -67,7 +68,7 @@ struct ScrewTurn {
 };
 
 // The largest turning speed a scene may give a wrench, rad/s (ten turns a second).
-inline constexpr double kMaxTurnSpeed = 20.0 * 3.141592653589793;
+inline constexpr double kMaxTurnSpeed = 20.0 * std::numbers::pi;
 
 struct PartMotionSettings {
   RadialMotion radial = RadialMotion::kQuasiStatic;
