@@ -40,6 +40,23 @@ void RefuseMovedKeys(const ConfigNode& node) {
   }
 }
 
+// `tilt: [about x, about z]`, angles within 1 degree of the axis (kMaxTilt).
+Eigen::Vector2d ParseTilt(const ConfigNode& node) {
+  const auto xz = node.is_sequence() ? node.Items() : std::vector<ConfigNode>{};
+  if (xz.size() != 2) {
+    node.Fail("[angle about x, angle about z] with units, e.g. [0.5 deg, 0 deg]", node.Describe());
+  }
+  Eigen::Vector2d tilt;
+  for (int i = 0; i < 2; ++i) tilt[i] = xz[i].AsQuantityIn(Dimension::kAngle, -kMaxTilt, kMaxTilt);
+  if (tilt.norm() > kMaxTilt) {
+    node.Fail(
+        "a tilt within 1 deg of the mating axis (the positioning stage hands over no "
+        "part tilted more)",
+        node.Describe());
+  }
+  return tilt;
+}
+
 }  // namespace
 
 void SimulatedDevice::DoConfigure(const ConfigNode& node) {
@@ -57,7 +74,8 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     s.device_model = spec->model;
   }
   if (name == "constant_speed") {
-    node.ExpectOnlyKeys({"plugin", "mode", "model", "speed", "start_offset", "stop_force"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "speed", "start_offset", "stop_force", "tilt"});
+    if (std::optional<ConfigNode> tilt = node.Find("tilt")) s.tilt = ParseTilt(*tilt);
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
     // robot holds; 1 m of approach is the size of a workcell.
@@ -107,7 +125,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
       list.Fail("a list of waypoints {time, position}", list.Describe());
     }
     for (const ConfigNode& item : list.Items()) {
-      item.ExpectOnlyKeys({"time", "position", "angle"});
+      item.ExpectOnlyKeys({"time", "position", "angle", "tilt"});
       Waypoint w;
       w.time = item.Child("time").AsQuantityIn(Dimension::kTime, 0.0, 1e5);
       if (!s.waypoints.empty() && !(w.time > s.waypoints.back().time)) {
@@ -124,6 +142,17 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
       if (std::optional<ConfigNode> angle = item.Find("angle")) {
         w.angle = angle->AsQuantityIn(Dimension::kAngle, -kMaxWaypointAngle, kMaxWaypointAngle);
       }
+      // One tilt for the whole run: the contact is prepared for it (Device::held_tilt).
+      const Eigen::Vector2d tilt =
+          item.Find("tilt") ? ParseTilt(item.Child("tilt")) : Eigen::Vector2d::Zero();
+      if (!s.waypoints.empty() && tilt != s.tilt) {
+        const ConfigNode where = item.Find("tilt") ? item.Child("tilt") : item;
+        where.Fail(
+            "the same tilt as the first waypoint's (the part is held at one tilt for the "
+            "whole run; a hand that turns the part is not modelled)",
+            where.Describe());
+      }
+      s.tilt = tilt;
       s.waypoints.push_back(w);
     }
   }

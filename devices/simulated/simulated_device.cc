@@ -20,6 +20,9 @@ bool InRange(double v, double lo, double hi) { return std::isfinite(v) && v >= l
 }  // namespace
 
 void Validate(const Settings& s) {
+  Require(s.tilt.allFinite() && s.tilt.norm() <= kMaxTilt, "tilt must be within 1 deg");
+  Require(s.mode != Settings::Mode::kConstantRotation || s.tilt.isZero(),
+          "a rotary drive holds the part aligned (no tilt)");
   if (s.mode == Settings::Mode::kConstantSpeed) {
     Require(InRange(s.speed, 0.0, 1.0) && s.speed > 0.0, "speed must be in (0, 1] m/s");
     Require(InRange(s.start_offset, 0.0, 1.0), "start_offset must be in [0, 1] m");
@@ -187,9 +190,21 @@ void SimulatedDevice::Twist(double time, double* angle, double* rate) const noex
   }
 }
 
+std::optional<Eigen::Vector2d> SimulatedDevice::DoHeldTilt() const {
+  if (settings_.tilt.isZero()) return std::nullopt;
+  return settings_.tilt;
+}
+
 void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   time_ = time;
-  out->orientation = Eigen::Quaterniond::Identity();
+  // The held tilt, a swing about an axis across y; the twist about y comes after it, so that
+  // MatingPoseOf's swing-twist decomposition reads both back.
+  const double tilt = settings_.tilt.norm();
+  const Eigen::Quaterniond swing =
+      tilt > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(
+                       tilt, Eigen::Vector3d(settings_.tilt.x(), 0.0, settings_.tilt.y()) / tilt))
+                 : Eigen::Quaterniond::Identity();
+  out->orientation = swing;
   out->angular_velocity.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     // Computed from the time, never accumulated: the axial position is exact at every tick.
@@ -205,7 +220,8 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
     // Reduced to (-pi, pi] before the half angle: the quaternion stays in one hemisphere and the
     // twist MatingPoseOf reads back is the angle itself, to rounding.
     angle = std::remainder(angle, 2.0 * M_PI);
-    out->orientation = Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, std::sin(0.5 * angle), 0.0);
+    out->orientation =
+        swing * Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, std::sin(0.5 * angle), 0.0);
     out->angular_velocity.y() = rate;
   }
   out->time = time;

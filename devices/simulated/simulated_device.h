@@ -56,7 +56,16 @@ struct Settings {
   // A constant aiming error added to every waypoint across the axis: where a person's hand puts
   // the part's axis when aiming at the bore, (x, z).
   Eigen::Vector2d aim_error{0.0, 0.0};  // m
+  // kConstantSpeed and kScripted: the tilt the part is held at for the whole run, the (x, z)
+  // components of the rotation vector that turns +y onto the part's axis (MatingPose::tilt),
+  // rad, at most kMaxTilt: a robot's crooked hold, or a hand that starts the part crooked and
+  // keeps it so (the hand's wrist is stiff in tilt: it does not turn the part into line).
+  Eigen::Vector2d tilt{0.0, 0.0};
 };
+
+// The largest held tilt: the positioning stage hands a part to the constrained stage only within
+// its alignment tolerance (1 degree, positioning_stage.h).
+inline constexpr double kMaxTilt = 0.017453292519943295;
 
 // The simulated device of the paper's case study and a scripted hand (plugin
 // fitfeel.device.simulated). The frame is the run's (positioning_stage.h): y the mating axis, the
@@ -89,6 +98,7 @@ class SimulatedDevice final : public Device {
   const Settings& settings() const { return settings_; }
 
   DeviceSpec DoSpec() const override;
+  std::optional<Eigen::Vector2d> DoHeldTilt() const override;
 
  protected:
   void DoConfigure(const ConfigNode& node) override;  // simulated_config.cc

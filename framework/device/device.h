@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
@@ -17,10 +18,10 @@ namespace fitfeel {
 // Limits and native properties of a haptic device (data, overridable by the scenario).
 struct DeviceSpec {
   std::string model;
-  double max_force = 0.0;                    // N, peak
-  double max_continuous_force = 0.0;         // N
-  double max_stiffness = 0.0;                // N/m, largest stable rendered stiffness
-  double damping = 0.0;                      // N*s/m, physical damping usable for passivity
+  double max_force = 0.0;             // N, peak
+  double max_continuous_force = 0.0;  // N
+  double max_stiffness = 0.0;         // N/m, largest stable rendered stiffness
+  double damping = 0.0;               // N*s/m, physical damping usable for passivity
   // Whether the passivity observer may count `damping` as dissipation: false for hardware whose
   // damping is a bound inferred from its stiffness limit rather than a measurement.
   bool credit_damping = true;
@@ -75,6 +76,11 @@ class FITFEEL_API Device {
   }
   // The device's limits. A device that measures them (hardware) knows them only after Start.
   DeviceSpec spec() const { return DoSpec(); }
+  // The tilt the device holds the moving part at for the whole run, known once configured: the
+  // (x, z) components of the rotation vector that turns the scene's +y onto the part's axis, rad
+  // (MatingPose::tilt). A contact analyzer that tabulates its contact prepares it for this tilt
+  // (ModelSettings::held_tilt). Empty for a device whose tilt is sensed or varies (hardware).
+  std::optional<Eigen::Vector2d> held_tilt() const { return DoHeldTilt(); }
   ClockOwner clock_owner() const { return DoClockOwner(); }
   // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
   // rate until it returns false or `duration` seconds pass. Throws UserError for a duration that
@@ -88,6 +94,7 @@ class FITFEEL_API Device {
 
  protected:
   virtual DeviceSpec DoSpec() const = 0;
+  virtual std::optional<Eigen::Vector2d> DoHeldTilt() const { return std::nullopt; }
   virtual ClockOwner DoClockOwner() const { return ClockOwner::kFramework; }
   // Default: the device does not own a clock (throws UnsupportedError).
   virtual void DoRunServoLoop(double duration, const std::function<bool(double)>& tick);

@@ -104,6 +104,10 @@ class FITFEEL_API ContactAnalyzer {
   // Per tick: no allocation, no locks, no exceptions, no I/O.
   void Evaluate(const MatingPose& pose, ContactState* out) const noexcept;
   bool prepared() const { return prepared_; }
+  // Whether the analyzer models a part held tilted (ModelSettings::held_tilt, or MatingPose::tilt
+  // per tick); false (the default): it takes the part as aligned, and a scene that tilts it is
+  // refused.
+  bool takes_held_tilt() const { return DoTakesHeldTilt(); }
   // Not for the tick (may allocate): the interference delta(P_ij) >= 0 of every cell of the inner
   // part's grid at `pose` (zero where there is clearance), for pressure maps and pictures.
   void InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
@@ -120,6 +124,7 @@ class FITFEEL_API ContactAnalyzer {
   virtual void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept = 0;
   virtual void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
   virtual bool DoAssemblySpace(const MatingPose& pose, std::vector<Eigen::Vector2d>* polygon) const;
+  virtual bool DoTakesHeldTilt() const { return false; }
 
  private:
   bool prepared_ = false;

@@ -3,6 +3,8 @@
 #include <memory>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "framework/model/discretizer.h"
 #include "framework/model/friction.h"
 #include "framework/model/surface_options.h"
@@ -19,17 +21,22 @@ inline constexpr double kMaxDepthTableVertices = 1e8;
 
 // The scenario's `model` section, in SI.
 struct ModelSettings {
-  std::string law;                     // law name offered by the surface type ("gps", "ve1", ...)
-  double friction = 0.0;               // Coulomb (kinetic, sliding) coefficient mu_k
-  double static_friction = 0.0;        // breakaway coefficient mu_s >= mu_k
+  std::string law;               // law name offered by the surface type ("gps", "ve1", ...)
+  double friction = 0.0;         // Coulomb (kinetic, sliding) coefficient mu_k
+  double static_friction = 0.0;  // breakaway coefficient mu_s >= mu_k
   double breakaway_displacement = kSteelBreakawayDisplacement;  // m (friction.h)
-  double contact_stiffness = 0.0;      // k_p, N/m (eq. 9)
-  Resolution resolution;               // m x n, or auto
+  double contact_stiffness = 0.0;                               // k_p, N/m (eq. 9)
+  Resolution resolution;                                        // m x n, or auto
   TextureMode texture = TextureMode::kExpected;
-  double depth_step = 0.0;             // tabulation step along the mating axis, m (0 = auto)
+  double depth_step = 0.0;  // tabulation step along the mating axis, m (0 = auto)
   // The surface type's `model.options`, parsed at load (SurfaceType::ParseOptions); null: the
   // scene gave none, and the surface's objects take their defaults (OptionsAs).
   std::shared_ptr<const SurfaceOptions> options;
+  // The tilt the device holds the moving part at for the whole run (Device::held_tilt): the (x, z)
+  // components of the rotation vector that turns the mating axis onto the part's, rad. Zero: the
+  // part is aligned. An analyzer that tabulates its contact by depth prepares it for this tilt
+  // (ContactAnalyzer::takes_held_tilt); the runtime refuses a tilt for one that does not.
+  Eigen::Vector2d held_tilt{0.0, 0.0};
 };
 
 // The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in

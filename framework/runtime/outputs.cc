@@ -134,7 +134,10 @@ void SummaryBuilder::Add(const TickRecord& r) {
   radial_.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
   torque_.Add(r.wrench.torque.norm());
   depth_.Add(r.pose.depth * 1e3);
-  if (r.contact.interference) ++interference_ticks_;
+  if (r.contact.interference) {
+    ++interference_ticks_;
+    if (std::isnan(first_interference_depth_)) first_interference_depth_ = r.pose.depth;
+  }
   if (r.feature_count > 0) {
     features_ = r.feature_count;
     for (int i = 0; i < r.feature_count && i < kMaxJointFeatures; ++i) {
@@ -181,6 +184,14 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   j["planned_ticks"] = stats.planned_ticks;
   j["constrained_ticks"] = axial.count;
   j["interference_ticks"] = interference_ticks;
+  // A part held tilted in a bore stops fitting where it touches at two points, the entrance's
+  // edge on one side and its own leading edge on the other (Whitney 1982): there its assembly
+  // space empties. Reported as the leading edge's depth past the entrance.
+  j["held_tilt_deg"] = info.held_tilt * 180.0 / std::numbers::pi;
+  j["two_point_contact_depth_mm"] =
+      info.held_tilt > 0.0 && std::isfinite(first_interference_depth_)
+          ? nlohmann::json((first_interference_depth_ + info.leading_edge_lead) * 1e3)
+          : nlohmann::json(nullptr);
   j["deadline_misses"] = stats.deadline_misses;
   j["overruns"] = stats.overruns;
   j["guard_faults"] = stats.guard_faults;

@@ -39,6 +39,10 @@ struct RunInfo {
   double analyze_seconds = 0.0;
   double prepare_seconds = 0.0;
   int inner_rows = 0, inner_columns = 0, outer_rows = 0, outer_columns = 0;
+  // The tilt the device holds the part at (Device::held_tilt), rad, 0: aligned; and how far the
+  // tilted part's leading edge reaches past its leading end's centre, r sin(tilt), m.
+  double held_tilt = 0.0;
+  double leading_edge_lead = 0.0;
   // What the device reported after the run (Device::report); empty: nothing.
   DeviceReport device_report;
   // Measured parts: file, kind, whether each meets its drawing; null: none measured.
@@ -116,6 +120,8 @@ class FITFEEL_API SummaryBuilder {
   RunningSummary screw_torque_, screw_preload_;
   double screw_rundown_torque_ = 0.0;  // the largest before the bearing face met, N*m
   std::uint64_t interference_ticks_ = 0;
+  // The mating depth of the first constrained tick whose assembly space was empty, m; NaN: none.
+  double first_interference_depth_ = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t yielding_ticks_ = 0;
   TickRecord worst_;  // the tick with the largest elastic-limit utilisation
   bool has_worst_ = false;

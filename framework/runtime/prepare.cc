@@ -125,8 +125,23 @@ PreparedScene Prepare(const Scene& scene) {
   if (!prepared.analyzer) {
     throw UnsupportedError("surface type '" + scene.surface_id + "' provides no contact analyzer");
   }
+  ModelSettings model = scene.model;
+  if (const std::optional<Eigen::Vector2d> tilt =
+          scene.device ? scene.device->held_tilt() : std::nullopt) {
+    model.held_tilt = *tilt;
+    // A tilt the analyzer would ignore renders an aligned part while the summary says tilted.
+    if (!prepared.analyzer->takes_held_tilt()) {
+      throw UnsupportedError("scene '" + scene.name + "': the device holds the part tilted, and " +
+                             "surface type '" + scene.surface_id +
+                             "' models an aligned part only; remove the device's tilt");
+    }
+    if (scene.moving != Role::kInner || scene.features.size() > 1) {
+      throw UnsupportedError("scene '" + scene.name + "': a held tilt is modelled for a moving " +
+                             "inner part of a one-feature scene; remove the device's tilt");
+    }
+  }
   prepared.analyzer->Prepare(scene.inner, *prepared.inner_sms, scene.outer, *prepared.outer_sms,
-                             scene.model);
+                             model);
   prepared.law = scene.surface->MakeLaw(scene.model.law);
   prepared.law->Prepare(scene.inner, scene.outer, scene.model);
   prepared.analyze_seconds = SecondsSince(t);

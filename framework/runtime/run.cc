@@ -94,6 +94,11 @@ RunInfo MakeRunInfo(const Scene& scene, const PreparedScene& prepared) {
   info.outer_rows = prepared.outer_sms->grid.rows;
   info.outer_columns = prepared.outer_sms->grid.columns;
   info.measured_parts = MeasuredPartsReport(scene, prepared);
+  if (const std::optional<Eigen::Vector2d> tilt =
+          scene.device ? scene.device->held_tilt() : std::nullopt) {
+    info.held_tilt = tilt->norm();
+    info.leading_edge_lead = 0.5 * scene.inner.size.nominal * std::sin(info.held_tilt);
+  }
   return info;
 }
 

@@ -299,6 +299,26 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     frame_ = frame;
   }
 
+  kappa_.clear();
+  if (!settings.held_tilt.isZero()) {
+    if (!settings.held_tilt.allFinite() || settings.held_tilt.norm() >= 0.5 * std::numbers::pi) {
+      throw UserError("a held tilt must be finite and below a right angle");
+    }
+    if (elastic_) {
+      throw UserError(
+          "law 'elastic' solves the part's own tilt under interference and takes no held tilt; "
+          "remove the device's tilt or use law 'gps'");
+    }
+    const Eigen::Vector3d rotation(settings.held_tilt.x(), 0.0, settings.held_tilt.y());
+    const Eigen::Vector3d axis =
+        Eigen::AngleAxisd(rotation.norm(), rotation.normalized()) * Eigen::Vector3d::UnitY();
+    const Eigen::Vector2d slope(axis.x() / axis.y(), axis.z() / axis.y());
+    kappa_.resize(static_cast<std::size_t>(n_));
+    for (std::size_t j = 0; j < kappa_.size(); ++j) {
+      kappa_[j] = slope.x() * cos_[j] + slope.y() * sin_[j];
+    }
+  }
+
   texture_ = settings.texture == TextureMode::kExpected
                  ? ExpectedInterferenceTable(EquivalentTexture(inner.texture, outer.texture))
                  : ExpectedInterferenceTable();
@@ -399,8 +419,37 @@ double CylinderContactAnalyzer::Energy(const Eigen::Vector2d& p, StepScratch* s)
   return e;
 }
 
+void CylinderContactAnalyzer::TiltedChunkMinima(std::size_t first, std::size_t end,
+                                                StepScratch* s) const {
+  const std::size_t n = static_cast<std::size_t>(n_);
+  const std::size_t steps = end - first;
+  s->chunk_slices.resize(std::max(s->chunk_slices.size(), steps));
+  s->chunk_h.assign(steps * n, std::numeric_limits<double>::infinity());
+  for (std::size_t t = 0; t < steps; ++t) {
+    const double depth = static_cast<double>(first + t) * step_;
+    SlicesAt(depth, &s->chunk_slices[t]);
+    double* h = s->chunk_h.data() + t * n;
+    double pos = std::max(depth - shaft_length_, 0.0);
+    for (const Slice& sl : s->chunk_slices[t]) {
+      const double* vs = v_shaft_.data() + static_cast<Eigen::Index>(sl.shaft_row) * n_;
+      const double* vb = v_bushing_.data() + static_cast<Eigen::Index>(sl.bushing_row) * n_;
+      // Behind the leading end (<= 0): the slice's two ends.
+      const double near = pos + sl.length - depth, far = pos - depth;
+      for (std::size_t j = 0; j < n; ++j) {
+        const double widening = -std::max(near * kappa_[j], far * kappa_[j]);
+        h[j] = std::min(h[j], vb[j] - vs[j] + smoothing_ + widening);
+      }
+      pos += sl.length;
+    }
+  }
+}
+
 void CylinderContactAnalyzer::ChunkMinima(std::size_t first, std::size_t end,
                                           StepScratch* s) const {
+  if (!kappa_.empty()) {
+    TiltedChunkMinima(first, end, s);
+    return;
+  }
   const std::size_t n = static_cast<std::size_t>(n_);
   const std::size_t steps = end - first;
   s->chunk_slices.resize(std::max(s->chunk_slices.size(), steps));
@@ -473,14 +522,19 @@ void CylinderContactAnalyzer::PrepareStep(std::size_t k, std::size_t t, StepScra
   auto fill_cells = [&] {
     s->st.resize(slices.size() * n);
     s->w.resize(slices.size() * n);
+    double pos = std::max(depth - shaft_length_, 0.0);  // the slice's start along the bore
     for (std::size_t sl = 0; sl < slices.size(); ++sl) {
+      // A held tilt widens a slice's gaps by its middle's distance behind the leading end.
+      const double behind = depth - (pos + 0.5 * slices[sl].length);
+      pos += slices[sl].length;
       const auto i = static_cast<std::size_t>(slices[sl].shaft_row);
       const double share = slices[sl].length / (shaft_edges_[i + 1] - shaft_edges_[i]);
       const double* vs = v_shaft_.data() + static_cast<Eigen::Index>(slices[sl].shaft_row) * n_;
       const double* vb = v_bushing_.data() + static_cast<Eigen::Index>(slices[sl].bushing_row) * n_;
       const double* a = shaft_area_.data() + static_cast<Eigen::Index>(slices[sl].shaft_row) * n_;
       for (std::size_t j = 0; j < n; ++j) {
-        s->st[sl * n + j] = vb[j] - vs[j] + smoothing_;
+        s->st[sl * n + j] =
+            vb[j] - vs[j] + smoothing_ + (kappa_.empty() ? 0.0 : behind * kappa_[j]);
         s->w[sl * n + j] = a[j] * share;
       }
     }
@@ -731,7 +785,8 @@ void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,
     b = std::clamp(b, 0, bushing_rows_ - 1);
     for (int j = 0; j < n_; ++j) {
       const auto jj = static_cast<std::size_t>(j);
-      const double gap = v_bushing_[b * n_ + j] - v_shaft_[i * n_ + j] + smoothing_ -
+      const double widening = kappa_.empty() ? 0.0 : (pose.depth - pos) * kappa_[jj];
+      const double gap = v_bushing_[b * n_ + j] - v_shaft_[i * n_ + j] + smoothing_ + widening -
                          (anchor.x() * cos_[jj] + anchor.y() * sin_[jj]);
       (*delta)[i * n_ + j] = texture_(gap);
     }
@@ -1093,8 +1148,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     // evaluations 492 instead of 649, an H7/n6's 927 instead of 1051).
     Eigen::Vector4d next = r.next;
     if (pose_out.size() > 0) {
-      next.head(dofs) +=
-          system.pose_in() * Eigen::Map<const Eigen::VectorXd>(c.step.data(), n_all);
+      next.head(dofs) += system.pose_in() * Eigen::Map<const Eigen::VectorXd>(c.step.data(), n_all);
     }
     warm_from_last_solve();
     r = solver->Solve(sections, freedom_, next, c.section_shift, kHandoff);

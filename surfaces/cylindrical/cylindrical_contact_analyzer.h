@@ -8,12 +8,12 @@
 
 #include <Eigen/Core>
 
-#include "surfaces/cylindrical/elastic/axial_coupling.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/convex_polygon.h"
-#include "surfaces/cylindrical/elastic/section_contact.h"
 #include "framework/model/texture_contact.h"
 #include "surfaces/cylindrical/coupling_newton.h"
+#include "surfaces/cylindrical/elastic/axial_coupling.h"
+#include "surfaces/cylindrical/elastic/section_contact.h"
 
 namespace fitfeel::cylindrical {
 
@@ -90,6 +90,8 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
   bool DoAssemblySpace(const MatingPose& pose,
                        std::vector<Eigen::Vector2d>* polygon) const override;
+  // Prepared for ModelSettings::held_tilt; MatingPose::tilt is not read.
+  bool DoTakesHeldTilt() const override { return true; }
 
  private:
   struct Slice {
@@ -180,6 +182,9 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<Eigen::Vector2d> vertices;
     std::vector<double> centre_angles, origin_angles;
   };
+  // ChunkMinima for a part held tilted: each slice's gaps widened by its distance behind the
+  // leading end (kappa_), at the slice's end where that is least.
+  void TiltedChunkMinima(std::size_t first, std::size_t end, StepScratch* scratch) const;
   // The slices and per-column smallest gaps of steps [first, end) into the scratch.
   void ChunkMinima(std::size_t first, std::size_t end, StepScratch* scratch) const;
   // Fills every table entry of depth step k, step t of the scratch's chunk (distinct entries per
@@ -225,6 +230,12 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   bool elastic_ = false;
   int block_ = 1;           // grid columns averaged into one column of the elastic solve
   double smoothing_ = 0.0;  // m, added to every gap
+  // A part held tilted (ModelSettings::held_tilt): per column, how far the axis moves towards
+  // that column per metre of depth (the axis's lateral slope dotted with the column's
+  // direction). A shaft point s behind the leading end sits s * kappa_[j] less towards column j
+  // than the leading end, so its gap there grows by that much: the tables hold the leading end's
+  // room (pose.offset is the leading end's). Empty: aligned.
+  std::vector<double> kappa_;
   PressFitSection section_;
   // The hub's and the shaft's deformation along their axes: with the axial coupling, the bodies
   // and, once a depth step needed them, their elements (empty: not needed yet, or plane sections).

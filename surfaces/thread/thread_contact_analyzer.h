@@ -41,6 +41,8 @@ class ThreadContactAnalyzer final : public ContactAnalyzer {
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
+  // Per tick, from MatingPose::tilt.
+  bool DoTakesHeldTilt() const override { return true; }
   bool DoAssemblySpace(const MatingPose& pose,
                        std::vector<Eigen::Vector2d>* polygon) const override;
 

@@ -93,6 +93,38 @@ waypoints: [{time: 0 s, position: [0 mm, -10 mm, 0 mm]}]
                ScenarioError);
 }
 
+// A held tilt: the orientation the device reports carries it (MatingPoseOf reads it back), the
+// prepare learns it from held_tilt; beyond the hand-over's 1 degree, or changing between a hand's
+// waypoints, it is refused at its key.
+TEST(SimulatedConfigTest, HoldsThePartTilted) {
+  SimulatedDevice robot;
+  robot.Configure(Node("speed: 10 mm/s\ntilt: [0.5 deg, -0.2 deg]\n"));
+  ASSERT_TRUE(robot.held_tilt().has_value());
+  EXPECT_NEAR(robot.held_tilt()->x(), 0.5 * M_PI / 180.0, 1e-15);
+  EXPECT_NEAR(robot.held_tilt()->y(), -0.2 * M_PI / 180.0, 1e-15);
+  robot.Start(1e-3);
+  DeviceState state;
+  robot.Read(0.0, &state);
+  // The part's axis, +y turned by the rotation vector (0.5 deg, 0, -0.2 deg).
+  const Eigen::Vector3d axis = state.orientation * Eigen::Vector3d::UnitY();
+  EXPECT_NEAR(axis.z(), std::sin(0.5 * M_PI / 180.0), 1e-6);
+  EXPECT_NEAR(axis.x(), std::sin(0.2 * M_PI / 180.0), 1e-6);
+  SimulatedDevice straight;
+  straight.Configure(Node("speed: 10 mm/s\n"));
+  EXPECT_FALSE(straight.held_tilt().has_value());
+  const std::string steep = ErrorOf("speed: 10 mm/s\ntilt: [2 deg, 0 deg]\n");
+  EXPECT_NE(steep.find("device.tilt"), std::string::npos) << steep;
+  const std::string turning = ErrorOf(R"(mode: scripted
+hand: {mass: 500 g, stiffness: 2 N/mm}
+waypoints:
+  - {time: 0 s, position: [0 mm, -10 mm, 0 mm], tilt: [0.5 deg, 0 deg]}
+  - {time: 1 s, position: [0 mm, 10 mm, 0 mm], tilt: [0.2 deg, 0 deg]}
+)");
+  EXPECT_NE(turning.find("the same tilt as the first waypoint's"), std::string::npos) << turning;
+  EXPECT_NE(ErrorOf("mode: constant_rotation\nangular_speed: 1 rad/s\ntilt: [1 deg, 0 deg]\n"),
+            "no error");
+}
+
 TEST(SimulatedConfigTest, ReadsARotaryDriveInDegrees) {
   SimulatedDevice device;
   device.Configure(Node("mode: constant_rotation\nangular_speed: 15 deg/s\nswing: 15 deg\n"));
