@@ -14,18 +14,26 @@
 
 namespace fitfeel {
 
+// How the safety chain turns a scene's force into the device's (framework/safety/force_mapping.h).
+enum class ForceMappingKind {
+  kLinear,      // one factor for every force (SafetySettings::force_scale)
+  kPerceptual,  // identity up to a knee, then a power law that compresses the scene's decades
+};
+
 // Limits and native properties of a haptic device (data, overridable by the scenario).
 struct DeviceSpec {
   std::string model;
-  double max_force = 0.0;                    // N, peak
-  double max_continuous_force = 0.0;         // N
-  double max_stiffness = 0.0;                // N/m, largest stable rendered stiffness
-  double damping = 0.0;                      // N*s/m, physical damping usable for passivity
+  double max_force = 0.0;             // N, peak
+  double max_continuous_force = 0.0;  // N
+  double max_stiffness = 0.0;         // N/m, largest stable rendered stiffness
+  double damping = 0.0;               // N*s/m, physical damping usable for passivity
   // Whether the passivity observer may count `damping` as dissipation: false for hardware whose
   // damping is a bound inferred from its stiffness limit rather than a measurement.
   bool credit_damping = true;
   Eigen::Vector3d workspace{0.0, 0.0, 0.0};  // extent of the reachable box, m
   double native_rate = 1000.0;               // Hz
+  // The force mapping this device renders with unless the scenario's `safety` section names one.
+  ForceMappingKind force_mapping = ForceMappingKind::kLinear;
 };
 
 // One sample of the device (or hand) state, in the scene frame: y is the mating axis.
