@@ -73,8 +73,16 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
       model->Fail("a haptic device model (" + KnownDeviceModels() + ")", model->Describe());
     s.device_model = spec->model;
   }
+  // The force mapping the run renders with, reported in the device's spec as a hardware device's
+  // spec would (framework/safety/force_mapping.h); the scenario's `safety` section may override it.
+  if (std::optional<ConfigNode> mapping = node.Find("force_mapping")) {
+    s.force_mapping = mapping->AsOneOf({"linear", "perceptual"}) == "perceptual"
+                          ? ForceMappingKind::kPerceptual
+                          : ForceMappingKind::kLinear;
+  }
   if (name == "constant_speed") {
-    node.ExpectOnlyKeys({"plugin", "mode", "model", "speed", "start_offset", "stop_force", "tilt"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "force_mapping", "speed", "start_offset",
+                         "stop_force", "tilt"});
     if (std::optional<ConfigNode> tilt = node.Find("tilt")) s.tilt = ParseTilt(*tilt);
     s.mode = Settings::Mode::kConstantSpeed;
     // Upper bounds: faster than 1 m/s is no assembly; more than 10 kN no part a hand or a small
@@ -84,7 +92,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     // A press's force monitoring: 1 MN is beyond any bench press.
     s.stop_force = Optional(node, "stop_force", Dimension::kForce, 0.0, 1e6, 0.0);
   } else if (name == "constant_rotation") {
-    node.ExpectOnlyKeys({"plugin", "mode", "model", "angular_speed", "swing"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "force_mapping", "angular_speed", "swing"});
     s.mode = Settings::Mode::kConstantRotation;
     // 100 rad/s is far beyond a plain bearing's oscillation; a swing beyond half a turn each way
     // is a rotation (0 or no key: continuous).
@@ -92,7 +100,7 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
         node.Child("angular_speed").AsQuantityIn(Dimension::kAngularVelocity, 0.0, 100.0, false);
     s.swing = Optional(node, "swing", Dimension::kAngle, 0.0, M_PI + 1e-9, 0.0);
   } else {
-    node.ExpectOnlyKeys({"plugin", "mode", "model", "hand", "waypoints"});
+    node.ExpectOnlyKeys({"plugin", "mode", "model", "force_mapping", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;
     const ConfigNode hand = node.Child("hand");
     hand.ExpectOnlyKeys({"mass", "stiffness", "damping", "tremor", "aim_error"});

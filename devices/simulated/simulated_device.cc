@@ -86,11 +86,13 @@ DeviceSpec SimulatedDevice::DoSpec() const {
     spec.max_stiffness = 2.0 * settings_.hand_damping / period_;
   }
   spec.workspace = Eigen::Vector3d::Constant(20.0);
+  spec.force_mapping = settings_.force_mapping;
   if (!settings_.device_model.empty()) {
     // The trajectory stays this device's; what it renders is the named device's.
     DeviceSpec named = LookupDeviceSpec(settings_.device_model);
     named.model = spec.model + " as " + named.model;
     named.native_rate = spec.native_rate;
+    named.force_mapping = settings_.force_mapping;
     return named;
   }
   return spec;

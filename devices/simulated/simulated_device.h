@@ -48,6 +48,9 @@ struct Settings {
   // Any mode: a known haptic device's model (framework/device/device_specs.h) whose limits the
   // run renders with (its spec's forces, stiffness budget, damping and workspace); empty: none.
   std::string device_model;
+  // How the run maps the scene's force onto the device's (`force_mapping`), handed over in the
+  // spec.
+  ForceMappingKind force_mapping = ForceMappingKind::kLinear;
   // Physiological tremor added to the target across the mating axis: a circle of `tremor_amplitude`
   // in (x, z) at `tremor_frequency` (x = A sin(2 pi f t), z = A cos(2 pi f t) - A, so it starts at
   // the waypoint). 0: none. Defaults of the key: 0.1 mm at 10 Hz (docs in README.md).

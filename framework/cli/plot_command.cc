@@ -13,6 +13,7 @@
 #include "framework/core/error.h"
 #include "framework/core/path_check.h"
 #include "framework/plot/gnuplot.h"
+#include "framework/plot/mapping_chart.h"
 #include "framework/plot/pressure_chart.h"
 #include "framework/plot/render.h"
 #include "framework/plot/run_record.h"
@@ -68,6 +69,32 @@ void AddTrace(CLI::App& plot) {
     plot::Render(options->torque ? plot::MakeTorqueChart(runs)
                                  : plot::MakeTraceChart(runs, options->log_scale),
                  outputs);
+    PrintWritten(outputs);
+  });
+}
+
+void AddMapping(CLI::App& plot) {
+  struct Options {
+    std::vector<std::string> dirs;
+    std::string output;
+  };
+  auto options = std::make_shared<Options>();
+  auto* cmd = plot.add_subcommand(
+      "mapping",
+      "The safety chain's force mapping (scene force -> device force) and where each run landed");
+  cmd->add_option("DIR", options->dirs,
+                  "run folders holding summary.json; the first one's mapping is drawn")
+      ->required()
+      ->expected(1, -1);
+  cmd->add_option("-o,--output", options->output,
+                  "image file: .png, .svg, or no extension for both")
+      ->required();
+  cmd->callback([options] {
+    const auto outputs = plot::ResolveOutputs(CheckedOutput(options->output));
+    const std::vector<fs::path> dirs(options->dirs.begin(), options->dirs.end());
+    const plot::MappingChartData data = plot::LoadMappingRuns(dirs);
+    for (const std::string& note : data.notes) std::cerr << "fitfeel: note: " << note << "\n";
+    plot::RenderMappingChart(data, outputs);
     PrintWritten(outputs);
   });
 }
@@ -265,6 +292,7 @@ void AddPlotCommand(CLI::App& app) {
   AddSms(*cmd);
   AddPressure(*cmd);
   AddStudy(*cmd);
+  AddMapping(*cmd);
 }
 
 }  // namespace fitfeel::cli

@@ -24,8 +24,8 @@
 #include "framework/plugin/registry.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/sequence_run.h"
-#include "framework/scenario/sequence.h"
 #include "framework/scenario/scene.h"
+#include "framework/scenario/sequence.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -119,10 +119,19 @@ void PrintSummary(const RunResult& r) {
   }
   const SafetyReport& safety = s.safety;
   const bool coupled = safety.coupling == CouplingMode::kSpringDamper;
+  const ForceMapping& map = safety.mapping;
+  char mapping[160];
+  if (map.kind() == ForceMappingKind::kPerceptual) {
+    std::snprintf(mapping, sizeof mapping,
+                  "perceptual map (knee %g N, exponent %.4g, %g N -> %g N)", map.knee(),
+                  map.exponent(), map.scene_top(), map.device_top());
+  } else {
+    std::snprintf(mapping, sizeof mapping, "scale %g device N/N", safety.force_scale);
+  }
   std::printf(
-      "  safety  scale %g device N/N, %s, faults %llu, saturated ticks %llu, energy "
+      "  safety  %s, %s, faults %llu, saturated ticks %llu, energy "
       "created %.3g J\n",
-      safety.force_scale, coupled ? "virtual coupling" : "direct",
+      mapping, coupled ? "virtual coupling" : "direct",
       static_cast<unsigned long long>(safety.non_finite_faults),
       static_cast<unsigned long long>(safety.peak_limited_ticks + safety.continuous_limited_ticks),
       safety.energy_created);

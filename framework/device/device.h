@@ -15,6 +15,12 @@
 
 namespace fitfeel {
 
+// How the safety chain turns a scene's force into the device's (framework/safety/force_mapping.h).
+enum class ForceMappingKind {
+  kLinear,      // one factor for every force (SafetySettings::force_scale)
+  kPerceptual,  // identity up to a knee, then a power law that compresses the scene's decades
+};
+
 // Limits and native properties of a haptic device (data, overridable by the scenario).
 struct DeviceSpec {
   std::string model;
@@ -27,6 +33,8 @@ struct DeviceSpec {
   bool credit_damping = true;
   Eigen::Vector3d workspace{0.0, 0.0, 0.0};  // extent of the reachable box, m
   double native_rate = 1000.0;               // Hz
+  // The force mapping this device renders with unless the scenario's `safety` section names one.
+  ForceMappingKind force_mapping = ForceMappingKind::kLinear;
 };
 
 // One sample of the device (or hand) state, in the scene frame: y is the mating axis.

@@ -9,7 +9,7 @@ namespace fitfeel {
 DeviceSpec ParseDeviceSpec(const ConfigNode& node, const DeviceSpec& base) {
   if (!node.is_map()) node.Fail("a map of device spec fields", node.Describe());
   node.ExpectOnlyKeys({"model", "max_force", "max_continuous_force", "max_stiffness", "damping",
-                       "workspace", "native_rate"});
+                       "workspace", "native_rate", "force_mapping"});
   constexpr double kInf = std::numeric_limits<double>::infinity();
   DeviceSpec spec = base;
   if (std::optional<ConfigNode> model = node.Find("model")) {
@@ -38,6 +38,11 @@ DeviceSpec ParseDeviceSpec(const ConfigNode& node, const DeviceSpec& base) {
   }
   positive("damping", Dimension::kDamping, &spec.damping);
   positive("native_rate", Dimension::kFrequency, &spec.native_rate);
+  if (std::optional<ConfigNode> mapping = node.Find("force_mapping")) {
+    spec.force_mapping = mapping->AsOneOf({"linear", "perceptual"}) == "perceptual"
+                             ? ForceMappingKind::kPerceptual
+                             : ForceMappingKind::kLinear;
+  }
   if (std::optional<ConfigNode> workspace = node.Find("workspace")) {
     if (!workspace->is_sequence() || workspace->Items().size() != 3) {
       workspace->Fail("a sequence of three lengths [x, y, z]", workspace->Describe());

@@ -30,6 +30,20 @@ DeviceSpec MakeSpec(std::string model, double max_force, double max_continuous_f
   return spec;
 }
 
+// The PHANTOM Premium models: peak force, continuous force, stiffness and workspace from
+// SensAble's data sheets as recalled, not checked against a copy here. The sheets give no
+// damping; the one a sampled wall of the sheet's stiffness K needs to be passive at the 1 kHz servo
+// rate, b = K T / 2 (Colgate & Schenkel 1997), stands in for it. Being inferred rather than
+// measured, the passivity observer does not count it as dissipation (credit_damping = false).
+DeviceSpec MakePremiumSpec(std::string model, double max_force, double max_continuous_force,
+                           double max_stiffness, Eigen::Vector3d workspace) {
+  constexpr double kServoPeriod = 1e-3;  // s
+  DeviceSpec spec = MakeSpec(std::move(model), max_force, max_continuous_force, max_stiffness,
+                             max_stiffness * kServoPeriod / 2.0, workspace);
+  spec.credit_damping = false;
+  return spec;
+}
+
 std::string Normalize(std::string_view name) {
   std::string out;
   for (char c : name) {
@@ -53,6 +67,12 @@ constexpr Alias kAliases[] = {
     {"touch", "Touch"},
     {"geomagictouch", "Touch"},
     {"3dsystemstouch", "Touch"},
+    {"premium1.0", "PHANTOM Premium 1.0"},
+    {"premium1.5", "PHANTOM Premium 1.5"},
+    {"premium1.5hf", "PHANTOM Premium 1.5 High Force"},
+    {"phantompremium1.5hf", "PHANTOM Premium 1.5 High Force"},
+    {"premium1.5highforce", "PHANTOM Premium 1.5 High Force"},
+    {"premium3.0", "PHANTOM Premium 3.0"},
 };
 
 bool PositiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
@@ -73,6 +93,10 @@ const std::vector<DeviceSpec>& KnownDeviceSpecs() {
       MakeSpec("PHANTOM Desktop", 7.9, 1.75, 1000.0, 5.0, {0.160, 0.120, 0.120}),
       MakeSpec("PHANTOM Omni", 3.3, 0.88, 700.0, 5.0, {0.160, 0.120, 0.070}),
       MakeSpec("Touch", 3.3, 0.88, 400.0, 4.0, {0.160, 0.120, 0.070}),
+      MakePremiumSpec("PHANTOM Premium 1.0", 8.5, 1.4, 3500.0, {0.254, 0.178, 0.127}),
+      MakePremiumSpec("PHANTOM Premium 1.5", 8.5, 1.4, 3500.0, {0.381, 0.267, 0.191}),
+      MakePremiumSpec("PHANTOM Premium 1.5 High Force", 37.5, 6.2, 3500.0, {0.381, 0.267, 0.191}),
+      MakePremiumSpec("PHANTOM Premium 3.0", 22.0, 3.0, 1000.0, {0.838, 0.584, 0.406}),
   };
   return specs;
 }

@@ -265,8 +265,20 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   }
   // JSON has no infinity: an unlimited device's limits are null.
   auto limit = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  const ForceMapping& map = safety.mapping;
+  nlohmann::json mapping = {
+      {"kind", map.kind() == ForceMappingKind::kPerceptual ? "perceptual" : "linear"}};
+  if (map.kind() == ForceMappingKind::kPerceptual) {
+    mapping["knee_N"] = map.knee();
+    mapping["exponent"] = map.exponent();
+    mapping["scene_top_N"] = map.scene_top();
+    mapping["device_top_N"] = map.device_top();
+  } else {
+    mapping["scale"] = map.scale();
+  }
   j["safety"] = {{"device_model", safety.device_model},
                  {"force_scale", safety.force_scale},
+                 {"force_mapping", mapping},
                  {"coupling", coupling},
                  {"peak_force_limit_N", limit(safety.peak_force_limit)},
                  {"continuous_force_limit_N", limit(safety.continuous_force_limit)},

@@ -68,9 +68,9 @@ std::string SetUpRealTimeThread() {
 }
 
 // The stiffness the device handle meets, device N/m: with the coupling, the coupling spring in
-// series with the (scaled) environment behind the quasi-static proxy; directly, the environment.
+// series with the (mapped) environment behind the quasi-static proxy; directly, the environment.
 double DeviceStiffness(const SafetyChain& chain, double physical_stiffness) noexcept {
-  const double k_e = physical_stiffness > 0.0 ? physical_stiffness * chain.force_scale() : 0.0;
+  const double k_e = physical_stiffness > 0.0 ? physical_stiffness * chain.stiffness_scale() : 0.0;
   if (chain.settings().coupling != CouplingMode::kSpringDamper) return k_e;
   const double k_c = chain.report().coupling_gains.stiffness;
   return k_e > 0.0 && k_c > 0.0 ? k_c * k_e / (k_c + k_e) : 0.0;

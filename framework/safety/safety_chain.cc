@@ -38,7 +38,13 @@ std::string FormatSafetyReport(const SafetyReport& r) {
   std::ostringstream out;
   out.precision(6);
   out << "device: " << r.device_model << "\n";
-  out << "force scale: " << r.force_scale << " device N per physical N\n";
+  const ForceMapping& m = r.mapping;
+  if (m.kind() == ForceMappingKind::kPerceptual) {
+    out << "force mapping: perceptual, knee " << m.knee() << " N, exponent " << m.exponent()
+        << ", scene top " << m.scene_top() << " N -> device top " << m.device_top() << " N\n";
+  } else {
+    out << "force scale: " << r.force_scale << " device N per physical N\n";
+  }
   if (r.coupling == CouplingMode::kSpringDamper) {
     out << "coupling: spring-damper, K_c " << r.coupling_gains.stiffness << " N/m, B_c "
         << r.coupling_gains.damping << " N*s/m\n";
@@ -83,6 +89,7 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
                       "rating; give force_scale instead");
     }
   }
+  report.mapping = MakeForceMapping(settings, spec, report.force_scale);
   report.coupling = settings.coupling;
   if (settings.coupling == CouplingMode::kSpringDamper) {
     if (!(spec.damping > 0.0)) {
@@ -120,7 +127,8 @@ void SafetyChain::Configure(const SafetySettings& settings, const DeviceSpec& sp
   report_ = report;
   configured_ = true;
   started_ = false;
-  stiffness_hint_ = 0.0;
+  physical_stiffness_ = 0.0;
+  stiffness_scale_ = report_.mapping.Slope(0.0);
 }
 
 void SafetyChain::Reset(const PartState& device) noexcept {
@@ -147,9 +155,8 @@ void SafetyChain::SimulatedState(const PartState& device, PartState* out) const 
 }
 
 void SafetyChain::SetEnvironmentStiffness(double physical_stiffness) noexcept {
-  stiffness_hint_ = (std::isfinite(physical_stiffness) && physical_stiffness > 0.0)
-                        ? physical_stiffness * report_.force_scale
-                        : 0.0;
+  physical_stiffness_ =
+      (std::isfinite(physical_stiffness) && physical_stiffness > 0.0) ? physical_stiffness : 0.0;
 }
 
 Wrench SafetyChain::Apply(const Wrench& physical, const PartState& device, double dt) noexcept {
@@ -180,10 +187,14 @@ Wrench SafetyChain::Apply(const Wrench& physical, const PartState& device, doubl
     physical_torque.y() = 0.0;
   }
   report_.max_physical_force = std::max(report_.max_physical_force, physical_force.norm());
-  const double scale = report_.force_scale;
+  // The mapping acts on the force's magnitude; the direction, and the torque's share, are kept.
+  const double magnitude = physical_force.norm();
+  const double scale = report_.mapping.Ratio(magnitude);
+  stiffness_scale_ = report_.mapping.Slope(magnitude);
   Eigen::Vector3d force = scale * physical_force;
   if (settings_.coupling == CouplingMode::kSpringDamper) {
-    force = coupling_.Step(force, device.position, device.velocity, stiffness_hint_, dt);
+    force = coupling_.Step(force, device.position, device.velocity,
+                           physical_stiffness_ * stiffness_scale_, dt);
     if (!coupling_.proxy_position().allFinite() || !coupling_.proxy_velocity().allFinite()) {
       coupling_.Reset(device.position, device.velocity);
       force.setZero();
@@ -198,7 +209,7 @@ Wrench SafetyChain::Apply(const Wrench& physical, const PartState& device, doubl
   if (flags.continuous) ++report_.continuous_limited_ticks;
   out.force = force;
   // The listed devices render no torque and their specs carry no torque limit: torque is scaled
-  // and passed on (a 3-DOF device ignores it).
+  // as the force is and passed on (a 3-DOF device ignores it).
   out.torque = scale * physical_torque;
   if (!out.AllFinite()) {
     ++report_.non_finite_faults;

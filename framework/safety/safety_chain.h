@@ -8,6 +8,7 @@
 #include "framework/device/device.h"
 #include "framework/runtime/part_state.h"
 #include "framework/safety/force_limiter.h"
+#include "framework/safety/force_mapping.h"
 #include "framework/safety/passivity_observer.h"
 #include "framework/safety/safety_settings.h"
 #include "framework/safety/virtual_coupling.h"
@@ -18,7 +19,8 @@ namespace fitfeel {
 // named physical.
 struct SafetyReport {
   std::string device_model;
-  double force_scale = 1.0;  // device N per physical N
+  double force_scale = 1.0;  // device N per physical N (the linear mapping's)
+  ForceMapping mapping;      // scene force -> device force (default: linear, 1)
   CouplingMode coupling = CouplingMode::kSpringDamper;
   CouplingGains coupling_gains;  // zero for direct rendering
   double peak_force_limit = 0.0;
@@ -64,7 +66,8 @@ class FITFEEL_API SafetyChain {
   // Per tick: the state the law sees (the device's, with the proxy's position and velocity when
   // coupled).
   void SimulatedState(const PartState& device, PartState* out) const noexcept;
-  // Per tick, optional: the environment's current stiffness, physical N/m (0 when free).
+  // Per tick, optional: the environment's current stiffness, physical N/m (0 when free). Apply
+  // hands the coupling this stiffness times the mapping's slope at the tick's force.
   void SetEnvironmentStiffness(double physical_stiffness) noexcept;
   // Per tick: the law's wrench on the simulated part (physical N, N*m) -> the device's wrench.
   // Never returns a non-finite wrench or a force above the device's peak rating.
@@ -74,6 +77,10 @@ class FITFEEL_API SafetyChain {
   const SafetySettings& settings() const { return settings_; }
   const DeviceSpec& spec() const { return spec_; }
   double force_scale() const { return report_.force_scale; }
+  const ForceMapping& mapping() const { return report_.mapping; }
+  // Device N per physical N of a small change of the last tick's force (the mapping's slope at
+  // it): what turns a physical stiffness into the device's.
+  double stiffness_scale() const { return stiffness_scale_; }
   const VirtualCoupling& coupling() const { return coupling_; }
   const PassivityObserver& observer() const { return observer_; }
 
@@ -83,7 +90,8 @@ class FITFEEL_API SafetyChain {
   double period_ = 1e-3;
   bool configured_ = false;
   bool started_ = false;
-  double stiffness_hint_ = 0.0;  // device units, N/m
+  double physical_stiffness_ = 0.0;  // N/m, SetEnvironmentStiffness's
+  double stiffness_scale_ = 1.0;     // the mapping's slope at the last tick's force
   VirtualCoupling coupling_;
   PassivityObserver observer_;
   ForceLimiter limiter_;

@@ -14,11 +14,44 @@ SafetySettings ParseSafetySettings(const ConfigNode& node) {
   node.ExpectOnlyKeys({"force_scale", "physical_full_scale", "continuous_window", "coupling",
                        "coupling_stiffness", "coupling_damping", "proxy_mass",
                        "credit_device_damping", "passivity_controller", "passivity_max_damping",
-                       "torque_lever"});
+                       "torque_lever", "force_mapping", "mapping_knee", "mapping_top"});
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (node.Has("force_scale") && node.Has("physical_full_scale")) {
     node.Child("physical_full_scale")
         .Fail("either force_scale or physical_full_scale, not both", "both");
+  }
+  if (auto n = node.Find("force_mapping")) {
+    const bool perceptual = n->AsOneOf({"linear", "perceptual"}) == "perceptual";
+    settings.force_mapping = perceptual ? ForceMappingKind::kPerceptual : ForceMappingKind::kLinear;
+    // One factor for every force and a map that compresses them cannot both hold.
+    for (const char* key : {"force_scale", "physical_full_scale"}) {
+      if (perceptual && node.Has(key)) {
+        node.Child(key).Fail(std::string("no ") + key +
+                                 " with force_mapping: perceptual (the map "
+                                 "sets the device's force itself)",
+                             std::string(key) + " and force_mapping: perceptual");
+      }
+    }
+  } else if (node.Has("force_scale") || node.Has("physical_full_scale")) {
+    settings.force_mapping = ForceMappingKind::kLinear;
+  }
+  // Up to a meganewton: beyond any bench press.
+  if (auto n = node.Find("mapping_knee")) {
+    settings.mapping_knee = n->AsQuantityIn(Dimension::kForce, 0.0, 1e6, false);
+  }
+  if (auto n = node.Find("mapping_top")) {
+    settings.mapping_top = n->AsQuantityIn(Dimension::kForce, 0.0, 1e6, false);
+  }
+  if (!(settings.mapping_knee < settings.mapping_top)) {
+    if (auto knee = node.Find("mapping_knee")) {
+      knee->Fail("a mapping_knee below mapping_top (" +
+                     FormatQuantity(settings.mapping_top, Dimension::kForce) + ")",
+                 knee->Describe());
+    }
+    const ConfigNode top = node.Child("mapping_top");
+    top.Fail("a mapping_top above mapping_knee (" +
+                 FormatQuantity(settings.mapping_knee, Dimension::kForce) + ")",
+             top.Describe());
   }
   if (auto n = node.Find("torque_lever")) {
     // From a finger on a nut's flats (a few mm) to a long wrench (1 m).

@@ -4,6 +4,7 @@
 
 #include "framework/core/config_node.h"
 #include "framework/core/export.h"
+#include "framework/device/device.h"
 
 namespace fitfeel {
 
@@ -27,6 +28,13 @@ struct SafetySettings {
   // When set, force_scale = spec.max_continuous_force / physical_full_scale, i.e. this physical
   // force is felt at the device's continuous rating.
   std::optional<double> physical_full_scale;
+  // The force mapping (framework/safety/force_mapping.h); absent: the device spec's. A scenario
+  // that gives force_scale or physical_full_scale chooses kLinear with it.
+  std::optional<ForceMappingKind> force_mapping;
+  // Perceptual mapping: the knee (scene forces below it are rendered as they are) and the scene
+  // force rendered at the device's top, N (kDefaultMappingKnee, kDefaultMappingTop).
+  double mapping_knee = 0.1;
+  double mapping_top = 20e3;
   // Time constant of the first-order thermal model enforcing the continuous force rating, s.
   // Motor windings of desktop devices have thermal time constants of tens of seconds; 10 s is the
   // conservative end (a shorter constant limits sooner).
@@ -53,6 +61,8 @@ struct SafetySettings {
 
 // Parses the `safety` section:
 //   force_scale: 0.01 | physical_full_scale: 300 N    (not both)
+//   force_mapping: linear | perceptual                (perceptual: neither of the two above)
+//   mapping_knee: 0.1 N       mapping_top: 20 kN      (0 < knee < top)
 //   continuous_window: 10 s
 //   coupling: spring_damper | direct
 //   coupling_stiffness: 800 N/m       coupling_damping: 2 N*s/m       proxy_mass: 0 kg

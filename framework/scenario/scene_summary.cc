@@ -8,6 +8,7 @@
 
 #include "framework/core/quantity.h"
 #include "framework/iso965/iso965.h"
+#include "framework/safety/force_mapping.h"
 
 namespace fitfeel {
 namespace {
@@ -23,6 +24,28 @@ std::string Length(double metres) { return FormatQuantity(metres, Dimension::kLe
 // Deviations in um, as ISO 286 tables print them.
 // Adding 0.0 turns a table's -0 (an H hole's EI) into +0.
 std::string Micrometres(double metres) { return Number(metres * 1e6 + 0.0, "%+.4g"); }
+
+// The perceptual force mapping the scene's device renders with, with a few scene forces (from a
+// clearance fit's friction to a press fit's) and what the device gives for them; empty for a
+// linear one.
+std::string DescribeMapping(const Scene& scene, const DeviceSpec& spec) {
+  const SafetySettings settings = scene.safety ? scene.safety->settings : SafetySettings{};
+  if (settings.force_mapping.value_or(spec.force_mapping) != ForceMappingKind::kPerceptual) {
+    return "";
+  }
+  const ForceMapping map = MakeForceMapping(settings, spec, settings.force_scale);
+  // Scene forces as given; device forces to the 0.1 % a hand's 7 % Weber fraction leaves unseen.
+  auto scene_force = [](double newtons) { return Number(newtons, "%.6g") + " N"; };
+  auto device_force = [](double newtons) { return Number(newtons, "%.4g") + " N"; };
+  std::string out = "mapping      perceptual: knee " + scene_force(map.knee()) + ", exponent " +
+                    Number(map.exponent(), "%.4g") + ", scene top " + scene_force(map.scene_top()) +
+                    " -> device top " + device_force(map.device_top()) + "\n";
+  out += "             ";
+  for (double f : {0.3, 10.0, 1e3, 10e3}) {
+    out += std::string(f == 0.3 ? "" : ", ") + scene_force(f) + " -> " + device_force(map.Map(f));
+  }
+  return out + "\n";
+}
 
 std::string DescribePart(const PartSpec& part, bool moving) {
   const std::string indent = "             ";
@@ -142,10 +165,12 @@ std::string DescribeScene(const Scene& scene) {
   }
   out += "device       " + scene.device_id;
   if (scene.device) {
-    const std::string model_name = scene.device->spec().model;
-    if (!model_name.empty()) out += " (" + model_name + ")";
+    const DeviceSpec spec = scene.device->spec();
+    if (!spec.model.empty()) out += " (" + spec.model + ")";
+    out += "\n" + DescribeMapping(scene, spec);
+  } else {
+    out += "\n";
   }
-  out += "\n";
   const RunSettings& run = scene.run;
   const double ticks = std::floor(run.duration * run.rate + 0.5);
   std::string outputs;

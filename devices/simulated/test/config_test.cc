@@ -48,8 +48,40 @@ TEST(SimulatedConfigTest, RendersAsANamedDevice) {
   const std::string error =
       ErrorOf("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nmodel: falcon\n");
   EXPECT_NE(error.find("scene.yaml:3:8: device.model: expected a haptic device model ('PHANTOM "
-                       "Desktop', 'PHANTOM Omni', 'Touch')"),
+                       "Desktop', 'PHANTOM Omni', 'Touch', 'PHANTOM Premium 1.0', 'PHANTOM "
+                       "Premium 1.5', 'PHANTOM Premium 1.5 High Force', 'PHANTOM Premium 3.0')"),
             std::string::npos)
+      << error;
+}
+
+// Any mode hands the force mapping it names over in its spec, as a hardware device's spec would.
+TEST(SimulatedConfigTest, HandsTheForceMappingOverInItsSpec) {
+  for (const char* mode :
+       {"speed: 10 mm/s\n", "mode: constant_rotation\nangular_speed: 1 rad/s\n",
+        "mode: scripted\nhand: {mass: 500 g, stiffness: 0.5 N/mm, damping: 30 N*s/m}\n"
+        "waypoints:\n  - {time: 0 s, position: [0 mm, 0 mm, 0 mm]}\n"}) {
+    SimulatedDevice device;
+    device.Configure(Node(std::string("plugin: fitfeel.device.simulated\nforce_mapping: "
+                                      "perceptual\n") +
+                          mode));
+    device.Start(1e-3);
+    EXPECT_EQ(device.spec().force_mapping, ForceMappingKind::kPerceptual) << mode;
+    device.Stop();
+  }
+  SimulatedDevice touch;
+  touch.Configure(
+      Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nmodel: premium-1.5\nforce_mapping: "
+           "perceptual\n"));
+  touch.Start(1e-3);
+  EXPECT_EQ(touch.spec().force_mapping, ForceMappingKind::kPerceptual);
+  EXPECT_DOUBLE_EQ(touch.spec().max_force, 8.5);
+  touch.Stop();
+  SimulatedDevice plain;
+  plain.Configure(Node("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\n"));
+  EXPECT_EQ(plain.spec().force_mapping, ForceMappingKind::kLinear);
+  const std::string error =
+      ErrorOf("plugin: fitfeel.device.simulated\nspeed: 10 mm/s\nforce_mapping: log\n");
+  EXPECT_NE(error.find("scene.yaml:3:16: device.force_mapping: expected one of"), std::string::npos)
       << error;
 }
 

@@ -51,8 +51,9 @@ const std::vector<BadLine> kBadLines = {
                     "tradeoff, study, view), found 'bogus'"},
     {{"--bogus"}, "", "expected a command (run, validate, plugins, fit, sms, plot, stability, "
                       "tradeoff, study, view), found '--bogus'"},
-    {{"plot"}, "plot", "expected a command (trace, sms, pressure, study), found none"},
-    {{"plot", "bogus"}, "plot", "expected a command (trace, sms, pressure, study), found 'bogus'"},
+    {{"plot"}, "plot", "expected a command (trace, sms, pressure, study, mapping), found none"},
+    {{"plot", "bogus"}, "plot",
+     "expected a command (trace, sms, pressure, study, mapping), found 'bogus'"},
     // An argument or a required option missing.
     {{"validate"}, "validate", "missing <file> (scenario file (YAML))"},
     {{"fit"}, "fit", "missing <size> <HOLE/shaft> (e.g. 20 H7/g6 or \"20 mm\" H7/js6)"},
@@ -137,7 +138,8 @@ TEST(CommandLineErrorsTest, UsageLinesFollowTheCommandsDefinitions) {
        "usage: fitfeel plot trace <DIR>... --output <output> [options] (more: fitfeel plot trace "
        "--help)"},
       {{"plot"},
-       "usage: fitfeel plot trace|sms|pressure|study ... [options] (more: fitfeel plot --help)"},
+       "usage: fitfeel plot trace|sms|pressure|study|mapping ... [options] (more: fitfeel plot "
+       "--help)"},
   };
   for (const auto& [words, usage] : usages) {
     const test_support::CliResult r =

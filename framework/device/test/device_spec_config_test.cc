@@ -25,6 +25,22 @@ TEST(DeviceSpecConfig, OverridesAnyField) {
   EXPECT_DOUBLE_EQ(spec.native_rate, 2000.0);
 }
 
+TEST(DeviceSpecConfig, SelectsTheForceMapping) {
+  const DeviceSpec base = LookupDeviceSpec("Touch");
+  EXPECT_EQ(ParseDeviceSpec(SpecNode("{force_mapping: perceptual}"), base).force_mapping,
+            ForceMappingKind::kPerceptual);
+  EXPECT_EQ(
+      ParseDeviceSpec(SpecNode("{model: premium-3.0, force_mapping: linear}"), base).force_mapping,
+      ForceMappingKind::kLinear);
+  try {
+    ParseDeviceSpec(SpecNode("{force_mapping: cubic}"), base);
+    FAIL() << "no throw";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("device.spec.force_mapping"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(DeviceSpecConfig, KeepsTheBaseForFieldsNotGiven) {
   const DeviceSpec spec =
       ParseDeviceSpec(SpecNode("{max_force: 5 N}"), LookupDeviceSpec("Desktop"));

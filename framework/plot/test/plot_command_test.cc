@@ -143,5 +143,49 @@ TEST(PlotCommand, TraceTorqueDrawsAScrewsRunAndRefusesAFits) {
             2);
 }
 
+// A run folder whose summary records the perceptual mapping of a Touch and the run's means.
+void WriteMappedRun(const fs::path& dir, const std::string& scenario, double scene_N,
+                    double device_N) {
+  fs::create_directories(dir);
+  testing::WriteFile(
+      dir / "summary.json",
+      "{\"scenario\": \"" + scenario +
+          "\", \"axial_resistance_N\": {\"mean\": " + std::to_string(scene_N) +
+          "}, \"delivered_force_N\": {\"mean\": " + std::to_string(device_N) +
+          "}, \"safety\": {\"device_model\": \"Touch\", \"force_mapping\": {\"kind\": "
+          "\"perceptual\", \"knee_N\": 0.1, \"exponent\": 0.197, \"scene_top_N\": 20000, "
+          "\"device_top_N\": 1.1068}}}\n");
+}
+
+TEST(PlotCommand, MappingDrawsTheCurveAndTheRuns) {
+  FITFEEL_REQUIRE_GNUPLOT();
+  ScratchDir dir;
+  // Two runs at one place share a label.
+  WriteMappedRun(dir.path() / "g6", "fits-20mm-h7g6", 0.2998, 0.1808);
+  WriteMappedRun(dir.path() / "h6", "fits-20mm-h7h6", 0.2998, 0.1808);
+  WriteMappedRun(dir.path() / "s6", "fits-20mm-h7s6", 12614.0, 0.991);
+  const CliResult r = Fitfeel({"mapping", "g6", "h6", "s6", "-o", "mapping"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(testing::IsPng(dir.path() / "mapping.png"));
+  EXPECT_TRUE(testing::IsSvg(dir.path() / "mapping.svg"));
+  const std::string svg = testing::ReadFile(dir.path() / "mapping.svg");
+  EXPECT_THAT(svg, HasSubstr("fits-20mm-h7g6, fits-20mm-h7h6"));
+  EXPECT_THAT(svg, HasSubstr("fits-20mm-h7s6"));
+  EXPECT_THAT(r.out, HasSubstr("wrote mapping.png"));
+}
+
+TEST(PlotCommand, MappingRefusesARunWithoutOneExitsTwo) {
+  ScratchDir dir;
+  testing::WriteRun(dir.path() / "old", "s", "gps", 1.0);  // a summary with no safety section
+  const CliResult r = Fitfeel({"mapping", "old", "-o", "m.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(r.err, HasSubstr("old/summary.json: safety.force_mapping: the run's summary records "
+                               "no force mapping"));
+  EXPECT_TRUE(NoImages(dir.path()));
+  const CliResult absent = Fitfeel({"mapping", "nowhere", "-o", "m.png"}, dir.path());
+  EXPECT_EQ(absent.exit_code, 2);
+  EXPECT_THAT(absent.err, HasSubstr("run folder 'nowhere' does not exist"));
+}
+
 }  // namespace
 }  // namespace fitfeel::plot
