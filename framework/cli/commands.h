@@ -18,11 +18,15 @@ void AddStabilityCommand(CLI::App& app);
 void AddTradeoffCommand(CLI::App& app);
 void AddStudyCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
+void AddNewCommand(CLI::App& app);
 
 // The scenario `run` and `view` take when given none.
 inline constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";
-// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR; throws
-// UserError naming both places when it is in neither.
+// A file the project ships (a scenario, "scenarios/NAME.yaml"): as given (relative to the current
+// folder), then under FITFEEL_SOURCE_DIR, then under ShippedDataDir() (an install's
+// share/fitfeel, the build's source tree); empty when it is in none of them.
+std::filesystem::path FindShippedFile(const std::filesystem::path& relative);
+// FindShippedFile(kDefaultScenario); throws UserError naming the places when it is in none.
 std::filesystem::path FindDefaultScenario();
 
 }  // namespace fitfeel::cli

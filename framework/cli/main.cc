@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddTradeoffCommand(app);
   fitfeel::cli::AddStudyCommand(app);
   fitfeel::cli::AddViewCommand(app);
+  fitfeel::cli::AddNewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

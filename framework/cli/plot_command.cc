@@ -100,25 +100,16 @@ void AddMapping(CLI::App& plot) {
 }
 
 // A run's summary names its scenario file as the run was given it: relative to the folder the run
-// started in, which for the bundled scenarios is the source tree. Looked up like `fitfeel run`
-// does: as given, then under $FITFEEL_SOURCE_DIR.
+// started in. Looked up like `fitfeel run`'s default (FindShippedFile): as given, then under
+// $FITFEEL_SOURCE_DIR, then among the shipped files.
 fs::path FindRunScenario(const std::string& file) {
-  std::string why = WhyNotReadableFile(file);
+  const std::string why = WhyNotReadableFile(file);
   if (why.empty()) return file;
-  std::string searched = "'" + file + "' (" + why + ")";
-  const fs::path given(file);
-  if (given.is_relative()) {
-    if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source != nullptr && *source) {
-      const fs::path there = fs::path(source) / given;
-      why = WhyNotReadableFile(there);
-      if (why.empty()) return there;
-      searched += " and '" + there.string() + "' (" + why + ")";
-    } else {
-      searched += " (FITFEEL_SOURCE_DIR is not set)";
-    }
-  }
-  throw UserError("the run's scenario file was not found at " + searched +
-                  "; give --scenario FILE");
+  const fs::path found = FindShippedFile(file);
+  if (!found.empty() && WhyNotReadableFile(found).empty()) return found;
+  throw UserError("the run's scenario file '" + file + "' was not found (" + why +
+                  "), nor under FITFEEL_SOURCE_DIR or among the shipped scenarios; give "
+                  "--scenario FILE");
 }
 
 // Loads the plugins the way `run` and `validate` do, saying which libraries were refused.

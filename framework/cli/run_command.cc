@@ -18,6 +18,7 @@
 #include "framework/cli/commands.h"
 #include "framework/cli/interrupts.h"
 #include "framework/cli/strict_options.h"
+#include "framework/core/build_info.h"
 #include "framework/core/error.h"
 #include "framework/core/interrupt.h"
 #include "framework/core/path_check.h"
@@ -214,21 +215,30 @@ void Run(const RunArgs& args) {
 
 }  // namespace
 
-// The default scenario, relative to the current folder, then to FITFEEL_SOURCE_DIR.
-std::filesystem::path FindDefaultScenario() {
+std::filesystem::path FindShippedFile(const std::filesystem::path& relative) {
   // Whatever is there is taken (LoadScene says why it cannot be read, in the OS's words).
-  const fs::path here = kDefaultScenario;
-  if (WhyNotReadableFile(here) != kDoesNotExist) return here;
-  std::string searched = "'" + fs::absolute(here).string() + "'";
-  if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
-    const fs::path there = fs::path(source) / kDefaultScenario;
-    if (WhyNotReadableFile(there) != kDoesNotExist) return there;
-    searched += " and '" + there.string() + "'";
-  } else {
-    searched += " (FITFEEL_SOURCE_DIR is not set)";
+  if (WhyNotReadableFile(relative) != kDoesNotExist) return relative;
+  if (relative.is_relative()) {
+    if (const char* source = std::getenv("FITFEEL_SOURCE_DIR"); source && *source) {
+      const fs::path there = fs::path(source) / relative;
+      if (WhyNotReadableFile(there) != kDoesNotExist) return there;
+    }
+    if (!ShippedDataDir().empty()) {
+      const fs::path shipped = fs::path(ShippedDataDir()) / relative;
+      if (WhyNotReadableFile(shipped) != kDoesNotExist) return shipped;
+    }
   }
+  return fs::path();
+}
+
+std::filesystem::path FindDefaultScenario() {
+  const fs::path found = FindShippedFile(kDefaultScenario);
+  if (!found.empty()) return found;
   throw UserError("no scenario file given and the default '" + std::string(kDefaultScenario) +
-                  "' was not found: looked in " + searched);
+                  "' was not found in the current folder, under FITFEEL_SOURCE_DIR" +
+                  (ShippedDataDir().empty() ? std::string(" (this install ships no scenarios)")
+                                            : " or in '" + ShippedDataDir() + "'") +
+                  "; give a scenario file");
 }
 
 void AddRunCommand(CLI::App& app) {
@@ -239,7 +249,8 @@ void AddRunCommand(CLI::App& app) {
       "write DIR/trace.csv and DIR/summary.json (and DIR/recording.csv when run.outputs asks)");
   cmd->add_option("file", args->file,
                   std::string("scenario file (default: ") + kDefaultScenario +
-                      ", looked up in the current folder, then in FITFEEL_SOURCE_DIR)");
+                      ", looked up in the current folder, then in FITFEEL_SOURCE_DIR, then "
+                      "among the shipped scenarios)");
   cmd->add_option("--out", args->out, "output folder (default: out/<scenario name>)");
   AddSeedOption(
       cmd, "--seed", [args](std::uint64_t seed) { args->seed = seed; },

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include "framework/core/export.h"
 
 namespace fitfeel {
@@ -19,5 +21,12 @@ FITFEEL_API const char* InstallPluginDir();
 FITFEEL_API bool RunningFromInstall();
 // CMAKE_INSTALL_PREFIX/lib/fitfeel/plugins as configured (generated).
 const char* ConfiguredInstallPluginDir();
+// The source tree this build was configured from (generated).
+const char* BuildSourceDir();
+// Where the shipped scenarios (scenarios/) and chart scripts live: an installed library's
+// share/fitfeel beside its lib/ (found from where the library was loaded, like its plugins; empty
+// when the install has none), the build's source tree otherwise. An install never reads a source
+// tree.
+FITFEEL_API const std::string& ShippedDataDir();
 
 }  // namespace fitfeel

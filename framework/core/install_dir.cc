@@ -10,19 +10,21 @@ namespace fitfeel {
 
 namespace {
 
+// `relative` from the folder of the loaded framework library, or empty when it is no folder.
+std::string BesideLibrary(const std::filesystem::path& relative) {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&BesideLibrary), &info) != 0 && info.dli_fname != nullptr) {
+    const std::filesystem::path beside =
+        std::filesystem::path(info.dli_fname).parent_path() / relative;
+    std::error_code ec;
+    if (std::filesystem::is_directory(beside, ec)) return beside.lexically_normal().string();
+  }
+  return std::string();
+}
+
 // lib/fitfeel/plugins beside the loaded framework library, or empty when there is none.
 const std::string& PluginsBesideLibrary() {
-  static const std::string dir = [] {
-    Dl_info info{};
-    if (dladdr(reinterpret_cast<void*>(&PluginsBesideLibrary), &info) != 0 &&
-        info.dli_fname != nullptr) {
-      const std::filesystem::path beside =
-          std::filesystem::path(info.dli_fname).parent_path() / "fitfeel" / "plugins";
-      std::error_code ec;
-      if (std::filesystem::is_directory(beside, ec)) return beside.lexically_normal().string();
-    }
-    return std::string();
-  }();
+  static const std::string dir = BesideLibrary(std::filesystem::path("fitfeel") / "plugins");
   return dir;
 }
 
@@ -33,5 +35,12 @@ const char* InstallPluginDir() {
 }
 
 bool RunningFromInstall() { return !PluginsBesideLibrary().empty(); }
+
+const std::string& ShippedDataDir() {
+  static const std::string dir =
+      RunningFromInstall() ? BesideLibrary(std::filesystem::path("..") / "share" / "fitfeel")
+                           : std::string(BuildSourceDir());
+  return dir;
+}
 
 }  // namespace fitfeel

@@ -74,7 +74,7 @@ TEST(PlotCommand, PressureNeedsTheRunsScenarioFile) {
   testing::WriteRun(dir.path() / "run", "s", "gps", 1.0);  // names scenarios/s.yaml
   const CliResult r = Fitfeel({"pressure", "run", "--depth", "5", "-o", "p.png"}, dir.path());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_THAT(r.err, HasSubstr("scenario file was not found at 'scenarios/s.yaml'"));
+  EXPECT_THAT(r.err, HasSubstr("scenario file 'scenarios/s.yaml' was not found"));
 }
 
 TEST(PlotCommand, SmsOfAMissingScenarioExitsTwo) {
