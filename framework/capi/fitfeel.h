@@ -35,7 +35,9 @@ enum {
 
 typedef struct fitfeel_scene fitfeel_scene;
 
-/* The device's state at a tick, in the scene's frame, SI units (m, m/s, rad/s, N). */
+/* The device's state at a tick, in the scene's frame (right-handed, y along the mating axis, 0 at
+ * the fixed part's entrance), SI units (s, m, m/s, rad/s). Only the device's: the radial load on
+ * the part is the scene's part_motion.radial_load, applied by the same code as in `fitfeel run`. */
 typedef struct {
   double time;               /* s since the start of the run */
   double position[3];        /* the moving part's leading end */

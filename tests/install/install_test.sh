@@ -57,6 +57,24 @@ test -s "$work/out/trace.csv" && test -s "$work/out/summary.json" ||
 c_out=$("$work/examples/fitfeel_example_c_host" "$source/scenarios/paper-case1-h7js6.yaml" 500)
 echo "$c_out"
 grep -q "^500 ticks at 1 kHz" <<<"$c_out" || { echo "the C host did not run 500 ticks"; exit 1; }
+# A C-only consumer: find_package(fitfeel COMPONENTS c) from a C project, with the C++ headers'
+# dependencies made unfindable. The same configure asking for the C++ component as well must
+# fail, else the check hides nothing.
+hidden=(-DCMAKE_DISABLE_FIND_PACKAGE_Eigen3=TRUE -DCMAKE_DISABLE_FIND_PACKAGE_Boost=TRUE
+        -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=TRUE)
+cmake -S "$source/tests/install/c_consumer" -B "$work/c_consumer" -G Ninja -DCMAKE_BUILD_TYPE= \
+  -DCMAKE_PREFIX_PATH="$prefix" "${hidden[@]}" >/dev/null
+cmake --build "$work/c_consumer" >/dev/null
+c_out=$("$work/c_consumer/fitfeel_c_consumer" "$source/scenarios/paper-case1-h7js6.yaml" 100)
+grep -q "^100 ticks at 1 kHz" <<<"$c_out" || { echo "the C-only consumer did not run"; exit 1; }
+mkdir -p "$work/cxx_hidden"
+printf 'cmake_minimum_required(VERSION 3.25)\nproject(x LANGUAGES C)\nfind_package(fitfeel REQUIRED COMPONENTS c cxx)\n' \
+  >"$work/cxx_hidden/CMakeLists.txt"
+if cmake -S "$work/cxx_hidden" -B "$work/cxx_hidden/build" -DCMAKE_PREFIX_PATH="$prefix" \
+     "${hidden[@]}" >/dev/null 2>&1; then
+  echo "the C++ component is found with its dependencies hidden: the check hides nothing"; exit 1
+fi
+echo "C-only consumer: configured and built without Eigen3, Boost or nlohmann_json"
 # Python: the installed package, imported from the prefix only (not the build tree).
 if [ -d "$prefix/lib/python3/dist-packages/fitfeel" ]; then
   py_out=$(PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c \
