@@ -103,7 +103,12 @@ void SimulatedDevice::DoConfigure(const ConfigNode& node) {
     node.ExpectOnlyKeys({"plugin", "mode", "model", "force_mapping", "hand", "waypoints"});
     s.mode = Settings::Mode::kScripted;
     const ConfigNode hand = node.Child("hand");
-    hand.ExpectOnlyKeys({"mass", "stiffness", "damping", "tremor", "aim_error"});
+    hand.ExpectOnlyKeys({"mass", "stiffness", "damping", "tremor", "aim_error", "tilt_stiffness"});
+    // Fingers and wrist about the grip: a relaxed human wrist measures about 1 N*m/rad, a
+    // co-contracted one several times that; 1e4 N*m/rad is a fixture, not a hand.
+    if (const auto stiffness = hand.Find("tilt_stiffness")) {
+      s.tilt_stiffness = stiffness->AsQuantityIn(Dimension::kAngularStiffness, 0.0, 1e4, false);
+    }
     if (const auto tremor = hand.Find("tremor")) {
       // Physiological tremor of the outstretched hand: 8-12 Hz, displacement amplitudes of the
       // order of 0.1 mm (Elble & Koller, Tremor, 1990); `tremor: true` takes 0.1 mm at 10 Hz.

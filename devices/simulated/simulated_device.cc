@@ -21,6 +21,9 @@ bool InRange(double v, double lo, double hi) { return std::isfinite(v) && v >= l
 
 void Validate(const Settings& s) {
   Require(s.tilt.allFinite() && s.tilt.norm() <= kMaxTilt, "tilt must be within 1 deg");
+  Require(s.tilt_stiffness > 0.0, "the hand's tilt_stiffness must be positive");
+  Require(std::isinf(s.tilt_stiffness) || s.mode == Settings::Mode::kScripted,
+          "only a hand holds the part compliantly (tilt_stiffness)");
   Require(s.mode != Settings::Mode::kConstantRotation || s.tilt.isZero(),
           "a rotary drive holds the part aligned (no tilt)");
   if (s.mode == Settings::Mode::kConstantSpeed) {

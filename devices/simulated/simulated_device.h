@@ -64,6 +64,9 @@ struct Settings {
   // rad, at most kMaxTilt: a robot's crooked hold, or a hand that starts the part crooked and
   // keeps it so (the hand's wrist is stiff in tilt: it does not turn the part into line).
   Eigen::Vector2d tilt{0.0, 0.0};
+  // kScripted with a tilt: how stiffly the fingers and wrist keep it, N*m/rad (Device::
+  // held_tilt_stiffness); infinite: held rigidly, as the robot does.
+  double tilt_stiffness = std::numeric_limits<double>::infinity();
 };
 
 // The largest held tilt: the positioning stage hands a part to the constrained stage only within
@@ -102,6 +105,7 @@ class SimulatedDevice final : public Device {
 
   DeviceSpec DoSpec() const override;
   std::optional<Eigen::Vector2d> DoHeldTilt() const override;
+  double DoHeldTiltStiffness() const override { return settings_.tilt_stiffness; }
 
  protected:
   void DoConfigure(const ConfigNode& node) override;  // simulated_config.cc

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -89,6 +90,10 @@ class FITFEEL_API Device {
   // (MatingPose::tilt). A contact analyzer that tabulates its contact prepares it for this tilt
   // (ModelSettings::held_tilt). Empty for a device whose tilt is sensed or varies (hardware).
   std::optional<Eigen::Vector2d> held_tilt() const { return DoHeldTilt(); }
+  // How stiffly the holder keeps that tilt about the point it holds the part at, N*m/rad:
+  // infinite (the default) for a rigid holder (a robot); finite for a hand's fingers and wrist,
+  // which let the contact turn the part towards the mating axis (ModelSettings).
+  double held_tilt_stiffness() const { return DoHeldTiltStiffness(); }
   ClockOwner clock_owner() const { return DoClockOwner(); }
   // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
   // rate until it returns false or `duration` seconds pass. Throws UserError for a duration that
@@ -103,6 +108,7 @@ class FITFEEL_API Device {
  protected:
   virtual DeviceSpec DoSpec() const = 0;
   virtual std::optional<Eigen::Vector2d> DoHeldTilt() const { return std::nullopt; }
+  virtual double DoHeldTiltStiffness() const { return std::numeric_limits<double>::infinity(); }
   virtual ClockOwner DoClockOwner() const { return ClockOwner::kFramework; }
   // Default: the device does not own a clock (throws UnsupportedError).
   virtual void DoRunServoLoop(double duration, const std::function<bool(double)>& tick);

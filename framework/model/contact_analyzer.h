@@ -86,6 +86,12 @@ struct ContactState {
   // An axial stop of the pair (a nut's bearing face on the clamped part): how far the inner part
   // is past where the stop meets, m (0 before it meets).
   double stop_closure = 0.0;
+  // A part held tilted by a compliant holder and forced towards the axis by two-point contact
+  // (docs/tilted-parts.md): the sum of the two contacts' normal forces, N, which a law adds to
+  // the normal force its friction acts on, and their couple on the part, N*m (x, z components,
+  // turning it towards the axis). Zero otherwise.
+  double couple_normal = 0.0;
+  Eigen::Vector2d couple_moment{0.0, 0.0};
 };
 
 // The analyzer's answer at AnalyzerPose(pose, moving) with its directions across the axis in the
@@ -108,6 +114,9 @@ class FITFEEL_API ContactAnalyzer {
   // per tick); false (the default): it takes the part as aligned, and a scene that tilts it is
   // refused.
   bool takes_held_tilt() const { return DoTakesHeldTilt(); }
+  // Whether it models a compliant holder's tilt (a finite ModelSettings::held_tilt_stiffness);
+  // false (the default): a scene that gives one is refused.
+  bool takes_compliant_tilt() const { return DoTakesCompliantTilt(); }
   // Not for the tick (may allocate): the interference delta(P_ij) >= 0 of every cell of the inner
   // part's grid at `pose` (zero where there is clearance), for pressure maps and pictures.
   void InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
@@ -125,6 +134,7 @@ class FITFEEL_API ContactAnalyzer {
   virtual void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const;
   virtual bool DoAssemblySpace(const MatingPose& pose, std::vector<Eigen::Vector2d>* polygon) const;
   virtual bool DoTakesHeldTilt() const { return false; }
+  virtual bool DoTakesCompliantTilt() const { return false; }
 
  private:
   bool prepared_ = false;

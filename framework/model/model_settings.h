@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -37,6 +38,10 @@ struct ModelSettings {
   // part is aligned. An analyzer that tabulates its contact by depth prepares it for this tilt
   // (ContactAnalyzer::takes_held_tilt); the runtime refuses a tilt for one that does not.
   Eigen::Vector2d held_tilt{0.0, 0.0};
+  // How stiffly the holder keeps that tilt (Device::held_tilt_stiffness), N*m/rad: infinite for a
+  // rigid holder, whose part stays at the tilt; finite for a compliant one, whose part the contact
+  // turns towards the axis once it touches at two points (ContactAnalyzer::takes_compliant_tilt).
+  double held_tilt_stiffness = std::numeric_limits<double>::infinity();
 };
 
 // The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in

@@ -78,8 +78,8 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
       double s = 0.0;
       const double tolerance =
           std::max({1e-4, 1e-6 * magnitude, kPicometre * memory->across_slope});
-      if (!search_.SolveAlong(held, into, 0.0, tolerance, motion, &work, &s, k, &memory->across_slope,
-                      &memory->across_root)) {
+      if (!search_.SolveAlong(held, into, 0.0, tolerance, motion, &work, &s, k,
+                              &memory->across_slope, &memory->across_root)) {
         return held;
       }
       memory->across_root = s;
@@ -118,7 +118,7 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
       // the line changes little from tick to tick: a Newton step on the last balance's slope
       // lands on it (the last root itself is no start: the edge moves with the device).
       if (!search_.SolveAlong(edge, into, k * reach, tolerance, motion, &work, &s, k,
-                      &memory->line_slope)) {
+                              &memory->line_slope)) {
         return edge;
       }
       // s < 0 where the edge found is still inside the wall: the anchor converges slowly where
@@ -145,7 +145,8 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
       const double tolerance =
           std::max({1e-4, 1e-3 * pull, bed ? kPicometre * memory->back_slope : 0.0});
       if (search_.SolveAlong(part, wall, pull, tolerance, motion, &work, &t, 0.0,
-                     bed ? &memory->back_slope : nullptr, bed ? &memory->back_root : nullptr)) {
+                             bed ? &memory->back_slope : nullptr,
+                             bed ? &memory->back_root : nullptr)) {
         if (bed) memory->back_root = t;
         if (t < 0.0) part += t * wall;
       }
@@ -181,10 +182,31 @@ void GodObject::FollowDevice(const MatingMotion& device_motion, GodObjectMemory*
   double depth = held_depth;
   bool lags = false;
   const double at_device = axial(held_depth);
+  const bool couple = work.contact.couple_normal > 0.0;
   constexpr double kAxialTolerance = 1e-4;  // N, as across
   if (std::abs(at_device) > kAxialTolerance) {
     double lo = god->part_depth, hi = held_depth;
     double g_lo = axial(lo), g_hi = at_device;
+    // A compliant holder's part forced into line meets a resistance that rises with depth (the
+    // couple grows as it goes in), which may balance the spring more than once on the way: the
+    // part stops at the first balance, so the bracket is narrowed to the first of eight parts of
+    // it that changes sign. Elsewhere the resistance falls with depth and the root is unique.
+    const double spring_lo = k * (held_depth - lo);
+    if (couple && g_lo * g_hi < 0.0 && -g_hi > spring_lo - g_lo) {
+      constexpr int kParts = 8;
+      const double width = (hi - lo) / kParts;
+      for (int i = 1; i < kParts; ++i) {
+        const double mid = lo + width;
+        const double g_mid = axial(mid);
+        if (g_lo * g_mid <= 0.0) {
+          hi = mid;
+          g_hi = g_mid;
+          break;
+        }
+        lo = mid;
+        g_lo = g_mid;
+      }
+    }
     if (g_lo * g_hi < 0.0) {
       depth = IllinoisRoot(axial, lo, hi, g_lo, g_hi, kAxialTolerance, 40);
     } else {

@@ -134,9 +134,11 @@ void SummaryBuilder::Add(const TickRecord& r) {
   radial_.Add(std::hypot(r.wrench.force.x(), r.wrench.force.z()));
   torque_.Add(r.wrench.torque.norm());
   depth_.Add(r.pose.depth * 1e3);
-  if (r.contact.interference) {
-    ++interference_ticks_;
-    if (std::isnan(first_interference_depth_)) first_interference_depth_ = r.pose.depth;
+  if (r.contact.interference) ++interference_ticks_;
+  // A compliant holder's part meets two points where their couple first acts.
+  if ((r.contact.interference || r.contact.couple_normal > 0.0) &&
+      std::isnan(first_interference_depth_)) {
+    first_interference_depth_ = r.pose.depth;
   }
   if (r.feature_count > 0) {
     features_ = r.feature_count;

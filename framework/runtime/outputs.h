@@ -120,7 +120,8 @@ class FITFEEL_API SummaryBuilder {
   RunningSummary screw_torque_, screw_preload_;
   double screw_rundown_torque_ = 0.0;  // the largest before the bearing face met, N*m
   std::uint64_t interference_ticks_ = 0;
-  // The mating depth of the first constrained tick whose assembly space was empty, m; NaN: none.
+  // The mating depth of the first constrained tick whose assembly space was empty or that a
+  // compliant holder's two-point couple acted on, m; NaN: none.
   double first_interference_depth_ = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t yielding_ticks_ = 0;
   TickRecord worst_;  // the tick with the largest elastic-limit utilisation

@@ -129,6 +129,12 @@ PreparedScene Prepare(const Scene& scene) {
   if (const std::optional<Eigen::Vector2d> tilt =
           scene.device ? scene.device->held_tilt() : std::nullopt) {
     model.held_tilt = *tilt;
+    model.held_tilt_stiffness = scene.device->held_tilt_stiffness();
+    if (std::isfinite(model.held_tilt_stiffness) && !prepared.analyzer->takes_compliant_tilt()) {
+      throw UnsupportedError("scene '" + scene.name + "': surface type '" + scene.surface_id +
+                             "' models a part held rigidly at its tilt, not a compliant hold; "
+                             "remove the hand's tilt_stiffness");
+    }
     // A tilt the analyzer would ignore renders an aligned part while the summary says tilted.
     if (!prepared.analyzer->takes_held_tilt()) {
       throw UnsupportedError("scene '" + scene.name + "': the device holds the part tilted, and " +

@@ -300,23 +300,24 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   }
 
   kappa_.clear();
+  curve_tilt_.clear();
+  curve_depth_.clear();
+  const bool compliant = std::isfinite(settings.held_tilt_stiffness);
   if (!settings.held_tilt.isZero()) {
     if (!settings.held_tilt.allFinite() || settings.held_tilt.norm() >= 0.5 * std::numbers::pi) {
       throw UserError("a held tilt must be finite and below a right angle");
     }
-    if (elastic_) {
+    if (compliant && !(settings.held_tilt_stiffness > 0.0)) {
+      throw UserError("a compliant hold's tilt stiffness must be positive");
+    }
+    if (elastic_ && !compliant) {
       throw UserError(
-          "law 'elastic' solves the part's own tilt under interference and takes no held tilt; "
-          "remove the device's tilt or use law 'gps'");
+          "law 'elastic' solves the part's own tilt under interference and takes no rigidly held "
+          "tilt; remove the device's tilt or use law 'gps'");
     }
-    const Eigen::Vector3d rotation(settings.held_tilt.x(), 0.0, settings.held_tilt.y());
-    const Eigen::Vector3d axis =
-        Eigen::AngleAxisd(rotation.norm(), rotation.normalized()) * Eigen::Vector3d::UnitY();
-    const Eigen::Vector2d slope(axis.x() / axis.y(), axis.z() / axis.y());
-    kappa_.resize(static_cast<std::size_t>(n_));
-    for (std::size_t j = 0; j < kappa_.size(); ++j) {
-      kappa_[j] = slope.x() * cos_[j] + slope.y() * sin_[j];
-    }
+    // A compliant holder's part is aligned by the contact wherever it is forced (the curve
+    // below); a rigid holder's keeps its tilt, and the tables are its.
+    if (!compliant) kappa_ = ColumnSlopes(settings.held_tilt);
   }
 
   texture_ = settings.texture == TextureMode::kExpected
@@ -386,6 +387,72 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
     origin_angles_.insert(origin_angles_.end(), p.origin_angles.begin(), p.origin_angles.end());
   }
   for (int c : chunk_newton) newton_iterations_ += c;
+
+  if (compliant && !settings.held_tilt.isZero()) {
+    // 32 tilts between none and the holder's: the curve's chord error stays below a few per cent
+    // of the tilt where the depth changes fastest (as 1 / tilt).
+    constexpr int kCurveTilts = 32;
+    const double tilt = settings.held_tilt.norm();
+    hold_axis_ = settings.held_tilt / tilt;
+    hold_stiffness_ = settings.held_tilt_stiffness;
+    for (int i = 1; i <= kCurveTilts; ++i) {
+      const double level = tilt * i / kCurveTilts;
+      curve_tilt_.push_back(level);
+      curve_depth_.push_back(TwoPointDepth(ColumnSlopes(level * hold_axis_)));
+    }
+  }
+}
+
+std::vector<double> CylinderContactAnalyzer::ColumnSlopes(const Eigen::Vector2d& rotation) const {
+  const Eigen::Vector3d vector(rotation.x(), 0.0, rotation.y());
+  const Eigen::Vector3d axis =
+      Eigen::AngleAxisd(vector.norm(), vector.normalized()) * Eigen::Vector3d::UnitY();
+  const Eigen::Vector2d slope(axis.x() / axis.y(), axis.z() / axis.y());
+  std::vector<double> kappa(static_cast<std::size_t>(n_));
+  for (std::size_t j = 0; j < kappa.size(); ++j) {
+    kappa[j] = slope.x() * cos_[j] + slope.y() * sin_[j];
+  }
+  return kappa;
+}
+
+bool CylinderContactAnalyzer::TiltedSpaceEmpty(double depth,
+                                               const std::vector<double>& kappa) const {
+  std::vector<Slice> slices;
+  SlicesAt(depth, &slices);
+  if (slices.empty()) return false;
+  std::vector<double> h(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
+  double pos = std::max(depth - shaft_length_, 0.0);
+  for (const Slice& sl : slices) {
+    const double* vs = v_shaft_.data() + static_cast<Eigen::Index>(sl.shaft_row) * n_;
+    const double* vb = v_bushing_.data() + static_cast<Eigen::Index>(sl.bushing_row) * n_;
+    const double near = pos + sl.length - depth, far = pos - depth;
+    for (std::size_t j = 0; j < h.size(); ++j) {
+      const double widening = -std::max(near * kappa[j], far * kappa[j]);
+      h[j] = std::min(h[j], vb[j] - vs[j] + smoothing_ + widening);
+    }
+    pos += sl.length;
+  }
+  std::vector<Eigen::Vector2d> polygon;
+  return !half_planes_.Intersect(h, &polygon);
+}
+
+double CylinderContactAnalyzer::TwoPointDepth(const std::vector<double>& kappa) const {
+  // The first tabulated step past which the part no longer fits, then bisection within it.
+  double lo = 0.0;
+  for (std::size_t k = 1; k < depth_.size(); ++k) {
+    const double hi = static_cast<double>(k) * step_;
+    if (!TiltedSpaceEmpty(hi, kappa)) {
+      lo = hi;
+      continue;
+    }
+    double a = lo, b = hi;
+    while (b - a > 1e-6) {
+      const double m = 0.5 * (a + b);
+      (TiltedSpaceEmpty(m, kappa) ? b : a) = m;
+    }
+    return b;
+  }
+  return max_depth_;
 }
 
 void CylinderContactAnalyzer::StepScratch::Restart(std::size_t columns, std::size_t bore_rows) {
@@ -758,6 +825,24 @@ void CylinderContactAnalyzer::DoEvaluate(const MatingPose& pose, ContactState* o
   out->pressure_resultant = s * resultant_[k] + t * resultant_[k + 1];
   out->normal_force = s * normal_[k] + t * normal_[k + 1];
   out->tilt = s * tilt_[k] + t * tilt_[k + 1];
+  if (!curve_depth_.empty() && pose.depth > curve_depth_.back()) {
+    // Past two-point contact at the holder's tilt: the part turns to the largest tilt that still
+    // fits at this depth, the holder's spring resisting it; the two contacts, at the entrance's
+    // edge and at the leading edge (or the bore's far end), carry its moment as a couple.
+    double fits = 0.0;
+    if (pose.depth >= curve_depth_.front()) {
+      fits = curve_tilt_.front() * curve_depth_.front() / pose.depth;  // two-point depth ~ 1/tilt
+    } else {
+      std::size_t i = curve_depth_.size() - 1;
+      while (i > 0 && curve_depth_[i - 1] <= pose.depth) --i;
+      const double a = curve_depth_[i - 1], b = curve_depth_[i];  // a > depth >= b
+      fits = curve_tilt_[i] + (curve_tilt_[i - 1] - curve_tilt_[i]) * (pose.depth - b) / (a - b);
+    }
+    const double moment = hold_stiffness_ * (curve_tilt_.back() - fits);
+    const double arm = std::min(pose.depth, bushing_length_);
+    out->couple_normal = 2.0 * moment / arm;
+    out->couple_moment = -moment * hold_axis_;
+  }
 }
 
 void CylinderContactAnalyzer::DoInterferenceMap(const MatingPose& pose,

@@ -92,6 +92,7 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
                        std::vector<Eigen::Vector2d>* polygon) const override;
   // Prepared for ModelSettings::held_tilt; MatingPose::tilt is not read.
   bool DoTakesHeldTilt() const override { return true; }
+  bool DoTakesCompliantTilt() const override { return true; }
 
  private:
   struct Slice {
@@ -182,6 +183,15 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<Eigen::Vector2d> vertices;
     std::vector<double> centre_angles, origin_angles;
   };
+  // Per column, the lateral slope of a part tilted by `rotation` (x, z of its rotation vector)
+  // along the column's direction.
+  std::vector<double> ColumnSlopes(const Eigen::Vector2d& rotation) const;
+  // Whether a part tilted with column slopes `kappa` fits laterally nowhere with its leading end
+  // at `depth` (the assembly space is empty). Prepare-time.
+  bool TiltedSpaceEmpty(double depth, const std::vector<double>& kappa) const;
+  // The depth at which a part tilted with column slopes `kappa` first stops fitting (two-point
+  // contact), to within a micrometre; the largest depth when it never does.
+  double TwoPointDepth(const std::vector<double>& kappa) const;
   // ChunkMinima for a part held tilted: each slice's gaps widened by its distance behind the
   // leading end (kappa_), at the slice's end where that is least.
   void TiltedChunkMinima(std::size_t first, std::size_t end, StepScratch* scratch) const;
@@ -236,6 +246,14 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // than the leading end, so its gap there grows by that much: the tables hold the leading end's
   // room (pose.offset is the leading end's). Empty: aligned.
   std::vector<double> kappa_;
+  // A compliant holder's tilt (finite ModelSettings::held_tilt_stiffness): the tables are the
+  // aligned part's, and these give where two-point contact forces it towards the axis. For tilts
+  // curve_tilt_ (ascending, the last the holder's), the leading end's depth curve_depth_ at which
+  // the part so tilted stops fitting laterally (descending); the holder's stiffness, N*m/rad; and
+  // the unit direction of the tilt's rotation vector (x, z).
+  std::vector<double> curve_tilt_, curve_depth_;
+  double hold_stiffness_ = 0.0;
+  Eigen::Vector2d hold_axis_{0.0, 0.0};
   PressFitSection section_;
   // The hub's and the shaft's deformation along their axes: with the axial coupling, the bodies
   // and, once a depth step needed them, their elements (empty: not needed yet, or plane sections).

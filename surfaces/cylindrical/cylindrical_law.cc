@@ -82,7 +82,11 @@ double PressFitLaw::RadialAndNormal(const ContactState& contact, Wrench* out) co
   const double normal = Normal(contact, k, &radial);
   out->force.x() = radial.x();
   out->force.z() = radial.y();
-  return normal;
+  // A compliant holder's tilt forced towards the axis: the two contacts' couple turns the part,
+  // and their normal forces add to what friction acts on.
+  out->torque.x() = contact.couple_moment.x();
+  out->torque.z() = contact.couple_moment.y();
+  return normal + contact.couple_normal;
 }
 
 void PressFitLaw::DoEvaluate(const ContactState& contact, const MatingMotion& motion,
@@ -97,8 +101,7 @@ void PressFitLaw::DoEvaluateWithState(const ContactState& contact, const MatingM
   out->force.y() = friction_.Step({motion.depth, 0.0}, normal, &state->friction).x();
 }
 
-void GpsLaw::PrepareLaw(const PartSpec& inner, const PartSpec& outer,
-                        const PressFitDimensions& d) {
+void GpsLaw::PrepareLaw(const PartSpec& inner, const PartSpec& outer, const PressFitDimensions& d) {
   const double hub_re = outer.material.yield_strength, shaft_re = inner.material.yield_strength;
   hub_yield_pressure_ = hub_re > 0.0 ? HubYieldPressure(d.d1, d.d2, hub_re) : 0.0;
   shaft_yield_pressure_ = shaft_re > 0.0 ? ShaftYieldPressure(d.d1, d.di, shaft_re) : 0.0;
