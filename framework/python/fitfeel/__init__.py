@@ -7,8 +7,9 @@
 
 Errors in a scenario raise fitfeel.ScenarioError (a fitfeel.UserError, a ValueError) with the
 message `fitfeel validate` prints: file:line:column, key path, expected, found. A study spread over
-a Dask cluster: `python3 -m fitfeel.study`, or fitfeel.study.run_on_dask (fitfeel/study.py); on
-this machine's threads: fitfeel.study_on_threads. docs/embedding.md has the rest.
+a Dask cluster: `/usr/bin/python3 -m fitfeel.study` (workers: `fitfeel-worker`), or
+fitfeel.study.run_on_dask (fitfeel/study.py); on this machine's threads: fitfeel.study_on_threads.
+docs/embedding.md has the rest.
 """
 from ._fitfeel import (STAGES, ScenarioError, UserError, run, skin_model_shapes,
                        study_on_threads, study_pair, validate, write_study)
