@@ -1,7 +1,8 @@
 // fitfeel stability: where rendering methods fail. Sweeps the contact stiffness (x rate x virtual
 // damping) of a sampled wall against a simulated hand, rendered directly and through the safety
 // chain's virtual coupling, around the passivity bound and at the scene's own press-fit
-// stiffness, and writes the stability map as CSV (framework/stability/README.md).
+// stiffness, and writes the stability map as CSV and, asked for, as a chart
+// (framework/stability/README.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,10 +21,12 @@
 #include "framework/core/interrupt.h"
 #include "framework/core/quantity.h"
 #include "framework/device/device_specs.h"
+#include "framework/plot/gnuplot.h"
 #include "framework/plugin/registry.h"
 #include "framework/safety/safety_settings.h"
 #include "framework/safety/virtual_coupling.h"
 #include "framework/scenario/scene.h"
+#include "framework/stability/stability_chart.h"
 #include "framework/stability/stability_map.h"
 #include "framework/stability/stiction_experiment.h"
 
@@ -164,13 +167,31 @@ void Run(const StabilityOptions& options) {
   map.stiffnesses.push_back(case_lame);
   std::sort(map.stiffnesses.begin(), map.stiffnesses.end());
 
-  const std::string path = options.output.empty() ? scene.name + "-stability.csv" : options.output;
+  // -o FILE.png or FILE.svg: the chart there and its data beside it as FILE.csv.
+  const std::filesystem::path output = options.output;
+  const bool chart = output.extension() == ".png" || output.extension() == ".svg";
+  std::vector<plot::OutputFile> images;
+  if (chart) {
+    images = plot::ResolveOutputs(output);
+    plot::Gnuplot::Find();  // UnsupportedError now rather than after the sweep
+  }
+  const std::string path =
+      options.output.empty()
+          ? scene.name + "-stability.csv"
+          : (chart ? std::filesystem::path(output).replace_extension(".csv") : output).string();
   CheckOutputFile("--output", path);
+  if (chart) CheckOutputFile("--output", output);
 
   const std::vector<StabilityMapRow> rows = SweepStabilityMap(map);
   interrupt.Cooperate();
   SweepStaleTemporaries(std::filesystem::path(path).parent_path());
   WriteFileAtomically(path, StabilityMapCsv(rows));
+  if (chart) {
+    RenderStabilityMap(
+        rows, spec.damping,
+        "Stability of " + spec.model + " against " + scene.name + ": direct and coupled rendering",
+        images);
+  }
 
   const double b = spec.damping;
   std::cout << "stability of " << spec.model << " (b = " << Number(b) << " N*s/m, peak "
@@ -250,9 +271,8 @@ void Run(const StabilityOptions& options) {
         e.push_force = push;
         const StictionOutcome out = RunStictionExperiment(e);
         std::printf("  %-7s  %6.3g  %-7s  %15.4g  %16.4g  %14.4g  %s\n", ToString(method).c_str(),
-                    push, out.sliding ? "yes" : "no", out.displacement * 1e3,
-                    out.final_speed * 1e3, out.contact_work,
-                    push == hold ? (out.stable ? "yes" : "no") : "-");
+                    push, out.sliding ? "yes" : "no", out.displacement * 1e3, out.final_speed * 1e3,
+                    out.contact_work, push == hold ? (out.stable ? "yes" : "no") : "-");
       }
     }
   }
@@ -260,7 +280,7 @@ void Run(const StabilityOptions& options) {
   std::size_t stable = 0;
   for (const StabilityMapRow& r : rows) stable += r.outcome.stable ? 1 : 0;
   std::cout << "\nstability map: " << rows.size() << " runs (" << stable << " stable) -> " << path
-            << "\n";
+            << (chart ? ", " + output.string() : std::string()) << "\n";
 }
 
 }  // namespace
@@ -270,13 +290,15 @@ void AddStabilityCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "stability",
       "Sweep contact stiffness x rate x virtual damping for direct and coupled rendering of the "
-      "scene's contact against a simulated hand, and write the stability map (CSV)");
+      "scene's contact against a simulated hand, and write the stability map (CSV, and a chart "
+      "for -o FILE.png or FILE.svg)");
   cmd->add_option("scenario", options->scenario, "Scenario file")->default_str(kDefaultScenario);
   cmd->add_option("--device", options->device,
                   "Device model whose limits and damping are used (default: the scene's device "
                   "when it is a known model, else PHANTOM Desktop)");
   cmd->add_option("-o,--output", options->output,
-                  "CSV file to write (default: <scenario name>-stability.csv)");
+                  "CSV file to write (default: <scenario name>-stability.csv); FILE.png or "
+                  "FILE.svg draws the map there (a panel per damping) and writes FILE.csv");
   cmd->add_option("--rate", options->rates,
                   "Rendering rate, repeatable (default 250 Hz, 500 Hz, "
                   "1 kHz, 2 kHz and the scene's rate)")
@@ -289,15 +311,15 @@ void AddStabilityCommand(CLI::App& app) {
   cmd->add_option("--stiffness-max", options->stiffness_max, "High end of the stiffness sweep")
       ->default_str("100 N/mm");
   AddIntegerOption(
-      cmd, "--per-decade", 1, 100,
-      [options](long n) { options->per_decade = static_cast<int>(n); },
+      cmd, "--per-decade", 1, 100, [options](long n) { options->per_decade = static_cast<int>(n); },
       "Stiffness values per decade (default 8)");
   cmd->add_option("--hand-mass", options->hand_mass, "Mass of the simulated hand (default 0.2 kg)");
   cmd->add_option("--push", options->push, "Steady push of the hand (default 0.5 N)");
   cmd->add_option("--horizon", options->horizon, "Simulated time per run (default 2 s)");
-  AddQuantityOption(cmd, "--force-scale", Dimension::kDimensionless, 1e-6, 1e6,
-                    [options](double scale) { options->force_scale = scale; },
-                  "Device N per physical N (default: the scene's safety section, else 1)");
+  AddQuantityOption(
+      cmd, "--force-scale", Dimension::kDimensionless, 1e-6, 1e6,
+      [options](double scale) { options->force_scale = scale; },
+      "Device N per physical N (default: the scene's safety section, else 1)");
   cmd->callback([options] { Run(*options); });
 }
 

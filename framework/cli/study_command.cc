@@ -16,12 +16,9 @@
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/core/interrupt.h"
-#include "framework/plot/gnuplot.h"
-#include "framework/plot/render.h"
 #include "framework/plot/study_chart.h"
 #include "framework/plugin/registry.h"
 #include "framework/study/study.h"
-#include "framework/study/study_record.h"
 
 namespace fitfeel::cli {
 namespace {
@@ -39,9 +36,9 @@ struct StudyArgs {
 
 void Run(const StudyArgs& args) {
   InterruptScope interrupt("fitfeel study");
-  const fs::path dir = args.out.empty() ? fs::path("out") / (fs::path(args.file).stem().string() +
-                                                              "-study")
-                                       : fs::path(args.out);
+  const fs::path dir = args.out.empty()
+                           ? fs::path("out") / (fs::path(args.file).stem().string() + "-study")
+                           : fs::path(args.out);
   CheckOutputFolder("--out", dir);
   PluginRegistry registry;
   registry.LoadAll();
@@ -49,9 +46,9 @@ void Run(const StudyArgs& args) {
   settings.pairs = args.pairs;
   settings.seed = args.seed;
   settings.allow_large = args.allow_large;
-  settings.threads =
-      args.threads > 0 ? args.threads
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  settings.threads = args.threads > 0
+                         ? args.threads
+                         : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const bool terminal = ::isatty(STDERR_FILENO) == 1;
   if (terminal) {
     settings.progress = [](int done, int total) {
@@ -72,8 +69,7 @@ void Run(const StudyArgs& args) {
   study::WriteStudy(dir, result);
   // The chart from the files just written (what `fitfeel plot study DIR` draws): a failure to
   // draw leaves the two data files, complete.
-  plot::Render(plot::MakeStudyChart({study::LoadStudy(dir)}, std::nullopt),
-               plot::ResolveOutputs(dir / "study.png"));
+  plot::WriteStudyChart(dir);
 
   std::vector<double> mean;
   int interfering = 0;
@@ -85,14 +81,14 @@ void Run(const StudyArgs& args) {
   const double n = static_cast<double>(result.pairs.size());
   std::printf("fitfeel study: %s (%s), seed %llu\n", result.scenario.c_str(),
               result.scenario_file.c_str(), static_cast<unsigned long long>(result.seed));
-  std::printf("  %zu of %d pairs%s on %d threads in %.2f s (%.1f pairs/s)\n",
-              result.pairs.size(), result.requested_pairs,
-              result.interrupted ? " (interrupted)" : "", result.threads, result.wall_s,
-              result.wall_s > 0 ? n / result.wall_s : 0.0);
+  std::printf("  %zu of %d pairs%s on %d threads in %.2f s (%.1f pairs/s)\n", result.pairs.size(),
+              result.requested_pairs, result.interrupted ? " (interrupted)" : "", result.threads,
+              result.wall_s, result.wall_s > 0 ? n / result.wall_s : 0.0);
   std::printf("  probability of interference %.3f\n", n > 0 ? interfering / n : 0.0);
-  std::printf("  axial resistance mean over a pair: p5 %.4g, p25 %.4g, p50 %.4g, p75 %.4g, "
-              "p95 %.4g N\n",
-              d.p5, d.p25, d.p50, d.p75, d.p95);
+  std::printf(
+      "  axial resistance mean over a pair: p5 %.4g, p25 %.4g, p50 %.4g, p75 %.4g, "
+      "p95 %.4g N\n",
+      d.p5, d.p25, d.p50, d.p75, d.p95);
   std::printf("  pairs %s\n  study %s\n  chart %s\n", (dir / "pairs.csv").c_str(),
               (dir / "study.json").c_str(), (dir / "study.png").c_str());
   if (result.interrupted) {
@@ -123,7 +119,8 @@ void AddStudyCommand(CLI::App& app) {
       "worker threads (default: every core)");
   cmd->add_flag("--allow-large", args->allow_large,
                 "run a scene whose estimated preparation exceeds 1 GiB or 30 s");
-  cmd->add_option("--out", args->out, "output folder (default: out/<scenario file name without .yaml>-study)");
+  cmd->add_option("--out", args->out,
+                  "output folder (default: out/<scenario file name without .yaml>-study)");
   cmd->callback([args] { Run(*args); });
 }
 

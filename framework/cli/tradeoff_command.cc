@@ -82,8 +82,8 @@ void Run(const TradeoffOptions& options) {
     // Grids of the default ladder the scene cannot take, or would not prepare within the
     // large-scene thresholds, are left out (said); a grid the user names is refused instead.
     std::vector<std::string> left_out;
-    settings.ladder = tradeoff::AdmittedGrids(scene, settings.ladder, options.allow_large,
-                                              &left_out);
+    settings.ladder =
+        tradeoff::AdmittedGrids(scene, settings.ladder, options.allow_large, &left_out);
     for (const std::string& grid : left_out) {
       std::cerr << "tradeoff: note: the default ladder leaves out " << grid << "\n";
     }
@@ -114,11 +114,12 @@ void Run(const TradeoffOptions& options) {
 
   const double duration = settings.duration ? *settings.duration : scene.run.duration;
   char title[512];
-  std::snprintf(title, sizeof title,
-                "%s: accuracy against tick cost (%d seeds per grid from seed %llu, %g s each, "
-                "virtual clock)",
-                scene.name.c_str(), settings.seeds, static_cast<unsigned long long>(scene.run.seed),
-                duration);
+  std::snprintf(
+      title, sizeof title,
+      "%s: accuracy against prepare and tick cost (%d seeds per grid from seed %llu, %g s each, "
+      "virtual clock)",
+      scene.name.c_str(), settings.seeds, static_cast<unsigned long long>(scene.run.seed),
+      duration);
   interrupt.Cooperate();
   SweepStaleTemporaries(folder);
   tradeoff::RenderTradeoffChart(
@@ -149,9 +150,9 @@ void AddTradeoffCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "tradeoff",
       "Speed against accuracy: run the scene (virtual clock) at a ladder of grid resolutions, "
-      "each with several seeds, and chart the mean axial resistance (mean +- seed-to-seed SD) "
-      "and the error of the seed-averaged trace against the finest grid over the tick "
-      "compute time (median or 99th percentile, --cost). Several seeds because a different grid "
+      "each with several seeds, and chart the error of the seed-averaged trace against the "
+      "finest grid over the prepare time and over the tick compute time (median or 99th "
+      "percentile, --cost). Several seeds because a different grid "
       "draws a different skin model shape "
       "from the same seed: one seed per grid would mix discretisation error with sampling "
       "variation. Writes PREFIX.csv, PREFIX.png and PREFIX.svg");

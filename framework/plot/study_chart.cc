@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "framework/core/error.h"
+#include "framework/plot/render.h"
 
 namespace fitfeel::plot {
 namespace {
@@ -52,7 +53,8 @@ LinePanel Panel(const std::vector<study::StudyRecord>& studies,
     panel.series.push_back(Quantiles(text, maxima ? s.axial_max_N : s.axial_mean_N));
   }
   if (reference) {
-    panel.series.push_back(Series{reference->label, {0.0, 1.0}, {reference->value, reference->value}});
+    panel.series.push_back(
+        Series{reference->label, {0.0, 1.0}, {reference->value, reference->value}});
   }
   return panel;
 }
@@ -67,6 +69,10 @@ LineChart MakeStudyChart(const std::vector<study::StudyRecord>& studies,
   chart.panels.push_back(Panel(studies, reference, false));
   chart.panels.push_back(Panel(studies, reference, true));
   return chart;
+}
+
+void WriteStudyChart(const std::filesystem::path& dir) {
+  Render(MakeStudyChart({study::LoadStudy(dir)}, std::nullopt), ResolveOutputs(dir / "study.png"));
 }
 
 }  // namespace fitfeel::plot

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -22,5 +23,10 @@ struct ReferenceLine {
 // axial resistance. Throws UserError for no studies.
 FITFEEL_API LineChart MakeStudyChart(const std::vector<study::StudyRecord>& studies,
                                      const std::optional<ReferenceLine>& reference);
+
+// DIR/study.png from DIR's pairs.csv and study.json: the chart `fitfeel study` draws after its
+// data files (and `fitfeel plot study DIR` draws again), for every writer of a study to share.
+// Throws UserError for an unreadable study, UnsupportedError without gnuplot.
+FITFEEL_API void WriteStudyChart(const std::filesystem::path& dir);
 
 }  // namespace fitfeel::plot

@@ -16,10 +16,13 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/core/error.h"
+#include "framework/plot/study_chart.h"
 #include "framework/plugin/registry.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
+#include "framework/runtime/scene_stages.h"
 #include "framework/runtime/tick_observer.h"
+#include "framework/runtime/trace_columns.h"
 #include "framework/scenario/scene.h"
 #include "framework/scenario/scene_summary.h"
 #include "framework/study/study.h"
@@ -91,10 +94,10 @@ py::dict ShapeDict(const PartSpec& part, const SkinModelShape& s) {
   d["role"] = part.role == Role::kInner ? "inner" : "outer";
   d["rows"] = g.rows;
   d["columns"] = g.columns;
-  d["row_position"] = Array(std::vector<double>(g.row_position.data(),
-                                                g.row_position.data() + g.row_position.size()));
-  d["column_angle"] = Array(std::vector<double>(g.column_angle.data(),
-                                                g.column_angle.data() + g.column_angle.size()));
+  d["row_position"] = Array(
+      std::vector<double>(g.row_position.data(), g.row_position.data() + g.row_position.size()));
+  d["column_angle"] = Array(
+      std::vector<double>(g.column_angle.data(), g.column_angle.data() + g.column_angle.size()));
   d["variation"] = Matrix(s.variation, g.rows, g.columns);
   d["dimension_part"] = Matrix(s.dimension_part, g.rows, g.columns);
   d["form_part"] = Matrix(s.form_part, g.rows, g.columns);
@@ -103,23 +106,42 @@ py::dict ShapeDict(const PartSpec& part, const SkinModelShape& s) {
   return d;
 }
 
-// Collects the run's records on the writer thread (never in the tick).
+// Collects the run's records on the writer thread (never in the tick) as trace.csv's columns:
+// TraceValues is the CSV writer's own definition of them.
 class TraceCollector final : public TickObserver {
  public:
+  TraceCollector(std::vector<std::string> features, bool screw)
+      : features_(std::move(features)),
+        screw_(screw),
+        count_(TraceColumnCount(static_cast<int>(features_.size()), screw)),
+        columns_(static_cast<std::size_t>(count_)),
+        row_(static_cast<std::size_t>(count_)) {}
   void OnTick(const TickRecord&) noexcept override {}
   void OnRecord(const TickRecord& r, std::uint64_t) override {
-    t.push_back(r.time);
-    stage.push_back(static_cast<int>(r.stage));
-    depth.push_back(r.pose.depth);
-    for (int k = 0; k < 3; ++k) {
-      force[k].push_back(r.wrench.force(k));
-      torque[k].push_back(r.wrench.torque(k));
-      position[k].push_back(r.position(k));
-    }
-    interference.push_back(r.contact.max_interference);
+    TraceValues(r, static_cast<int>(features_.size()), screw_, row_.data());
+    for (std::size_t k = 0; k < row_.size(); ++k) columns_[k].push_back(row_[k]);
   }
-  std::vector<double> t, depth, interference, force[3], torque[3], position[3];
-  std::vector<int> stage;
+  // Column name -> array, in trace.csv's order; the stage and the 0/1 flags as integers.
+  py::dict Take() {
+    py::dict d;
+    const std::vector<TraceColumn> columns = TraceColumns(features_, screw_);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      std::vector<double>& v = columns_[k];
+      if (columns[k].kind == TraceColumnKind::kNumber) {
+        d[py::str(columns[k].name)] = Array(std::move(v));
+      } else {
+        d[py::str(columns[k].name)] = Array(std::vector<int>(v.begin(), v.end()));
+      }
+    }
+    return d;
+  }
+
+ private:
+  std::vector<std::string> features_;
+  bool screw_;
+  int count_;
+  std::vector<std::vector<double>> columns_;
+  std::vector<double> row_;
 };
 
 py::dict PairDict(const study::PairResult& p) {
@@ -128,8 +150,8 @@ py::dict PairDict(const study::PairResult& p) {
   d["seed"] = p.seed;
   d["shaft_size_um"] = p.shaft_size_um;
   d["hole_size_um"] = p.hole_size_um;
-  d["min_clearance_um"] = p.min_clearance_um ? py::object(py::float_(*p.min_clearance_um))
-                                             : py::object(py::none());
+  d["min_clearance_um"] =
+      p.min_clearance_um ? py::object(py::float_(*p.min_clearance_um)) : py::object(py::none());
   d["interfering"] = p.interfering;
   d["axial_mean_N"] = p.axial_mean_N;
   d["axial_max_N"] = p.axial_max_N;
@@ -188,6 +210,9 @@ PYBIND11_MODULE(_fitfeel, m) {
     }
   });
 
+  m.attr("STAGES") = py::make_tuple(std::string(ToString(StageId::kPositioning)),
+                                    std::string(ToString(StageId::kConstrained)));
+
   m.def(
       "validate",
       [](const std::string& file) {
@@ -223,7 +248,9 @@ PYBIND11_MODULE(_fitfeel, m) {
       [](const std::string& file, std::optional<std::uint64_t> seed,
          std::optional<std::string> out) {
         Scene scene = LoadScene(file, Registry());
-        TraceCollector trace;
+        std::vector<std::string> features;
+        for (const MatingFeature& feature : scene.features) features.push_back(feature.name);
+        TraceCollector trace(std::move(features), IsScrewScene(scene));
         RunResult result;
         {
           py::gil_scoped_release release;
@@ -234,22 +261,13 @@ PYBIND11_MODULE(_fitfeel, m) {
           if (out) options.out_dir = *out;
           result = RunScene(std::move(scene), options);
         }
-        py::dict t;
-        t["t_s"] = Array(std::move(trace.t));
-        t["stage"] = Array(std::move(trace.stage));
-        t["depth_m"] = Array(std::move(trace.depth));
-        t["max_interference_m"] = Array(std::move(trace.interference));
-        const char* axes[3] = {"x", "y", "z"};
-        for (int k = 0; k < 3; ++k) {
-          t[py::str(std::string("f") + axes[k] + "_N")] = Array(std::move(trace.force[k]));
-          t[py::str(std::string("t") + axes[k] + "_Nm")] = Array(std::move(trace.torque[k]));
-          t[py::str(std::string(axes[k]) + "_m")] = Array(std::move(trace.position[k]));
-        }
+        py::dict t = trace.Take();
         return py::make_tuple(t, ToPython(result.summary));
       },
       py::arg("file"), py::arg("seed") = py::none(), py::arg("out") = py::none(),
-      "Runs a scenario in virtual time; returns (trace, summary): the trace as NumPy arrays "
-      "(stage 0 = positioning, 1 = constrained), the summary as `summary.json`'s dict. With "
+      "Runs a scenario in virtual time; returns (trace, summary): the trace as a dict of NumPy "
+      "arrays, one per column of `trace.csv` with its name and unit, in its order (`stage` as "
+      "an index into STAGES, 0/1 flags as integers), the summary as `summary.json`'s dict. With "
       "`out`, also writes the run's files there.");
 
   m.def(
@@ -277,7 +295,10 @@ PYBIND11_MODULE(_fitfeel, m) {
           s.seed = seed;
           s.threads = threads;
           r = study::RunStudy(file, Registry(), s);
-          if (out) study::WriteStudy(*out, r);
+          if (out) {
+            study::WriteStudy(*out, r);
+            plot::WriteStudyChart(*out);
+          }
         }
         py::list rows;
         for (const auto& p : r.pairs) rows.append(PairDict(p));
@@ -286,7 +307,8 @@ PYBIND11_MODULE(_fitfeel, m) {
       py::arg("file"), py::arg("pairs") = 100, py::arg("seed") = 1, py::arg("threads") = 1,
       py::arg("out") = py::none(),
       "A fit study on this machine's threads; returns (pairs, study): the rows of pairs.csv as "
-      "dicts and study.json as a dict. With `out`, writes the study's files there.");
+      "dicts and study.json as a dict. With `out`, writes pairs.csv, study.json and study.png "
+      "there, as `fitfeel study` does.");
 
   m.def(
       "write_study",
@@ -303,14 +325,16 @@ PYBIND11_MODULE(_fitfeel, m) {
         for (std::size_t i = 0; i < r.pairs.size(); ++i) {
           if (r.pairs[i].pair != static_cast<int>(i)) {
             throw UserError("write_study: pairs must be 0 .. n-1 in order; position " +
-                            std::to_string(i) + " holds pair " +
-                            std::to_string(r.pairs[i].pair));
+                            std::to_string(i) + " holds pair " + std::to_string(r.pairs[i].pair));
           }
         }
         r.interrupted = static_cast<int>(r.pairs.size()) < requested;
+        py::gil_scoped_release release;
         study::WriteStudy(dir, r);
+        plot::WriteStudyChart(dir);
       },
       py::arg("dir"), py::arg("file"), py::arg("seed"), py::arg("requested"), py::arg("pairs"),
       py::arg("workers"), py::arg("wall_s"),
-      "Writes pairs.csv and study.json of pairs computed elsewhere (study_pair), both or neither.");
+      "Writes pairs.csv and study.json of pairs computed elsewhere (study_pair), both or neither, "
+      "then study.png from them, as `fitfeel study` does.");
 }

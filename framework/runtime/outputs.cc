@@ -14,6 +14,7 @@
 #include "framework/core/number_text.h"
 #include "framework/core/os_reason.h"
 #include "framework/core/temporary_files.h"
+#include "framework/runtime/trace_columns.h"
 
 namespace fitfeel {
 namespace {
@@ -36,42 +37,44 @@ void WriteFile(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-std::string TraceHeader() {
-  return "t_s,stage,depth_mm,fx_N,fy_N,fz_N,tick_us,x_mm,y_mm,z_mm,angle_rad,tx_Nm,ty_Nm,tz_Nm,"
-         "engaged,interference,offset_um,assembly_extent_um,penetration_um,max_interference_um,"
-         "stiffness_N_per_um,guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,"
-         // Appended last so the contract's earlier columns keep their places. x_mm and z_mm are the
-         // device's position; the pose's offset differs where the constrained stage settles the
-         // part quasi-statically under a radial load (DeviceState::load).
-         "offset_x_um,offset_z_um,"
-         // The largest equivalent stress over the yield strength (DIN 7190), and 1 where a part
-         // yields (the ratio exceeds 1): the elastic model no longer holds there.
-         "elastic_utilisation,yielding,"
-         // 1 where the device state was not finite or beyond physical bounds: the last sane state
-         // was held and zero force sent (summary.json: device_faults).
-         "device_fault";
-}
+std::string TraceHeader() { return TraceHeader({}, false); }
 
 std::string TraceHeader(const std::vector<std::string>& features, bool screw) {
-  std::string header = TraceHeader();
-  for (const std::string& name : features) header += ",axial_" + name + "_N";
-  if (screw) header += ",preload_N,torque_Nm,thread_torque_Nm,head_torque_Nm,seated";
+  std::string header;
+  for (const TraceColumn& column : TraceColumns(features, screw)) {
+    if (!header.empty()) header += ',';
+    header += column.name;
+  }
   return header;
 }
 
 void AppendTraceRow(std::string* out, const TickRecord& r, int features, bool screw) {
-  AppendTraceRow(out, r);
-  for (int i = 0; i < features && i < kMaxJointFeatures; ++i) {
-    *out += ',';
-    AppendShortestDecimal(out, r.feature_axial[i]);
+  // The kinds of a screw scene's columns without features: the features' own are numbers.
+  static const std::vector<TraceColumn> kinds = TraceColumns({}, true);
+  static const int base = TraceColumnCount(0, false);
+  features = std::clamp(features, 0, kMaxJointFeatures);
+  std::array<double, kMaxJointFeatures + 64> values;
+  const int count = TraceColumnCount(features, screw);
+  TraceValues(r, features, screw, values.data());
+  std::string& row = *out;
+  for (int k = 0; k < count; ++k) {
+    if (k > 0) row += ',';
+    const bool feature = k >= base && k < base + features;
+    const TraceColumnKind kind =
+        feature ? TraceColumnKind::kNumber
+                : kinds[static_cast<std::size_t>(k < base ? k : k - features)].kind;
+    switch (kind) {
+      case TraceColumnKind::kNumber:
+        AppendShortestDecimal(&row, values[static_cast<std::size_t>(k)]);
+        break;
+      case TraceColumnKind::kFlag:
+        row += values[static_cast<std::size_t>(k)] != 0.0 ? '1' : '0';
+        break;
+      case TraceColumnKind::kStage:
+        row += ToString(r.stage);
+        break;
+    }
   }
-  if (!screw) return;
-  for (const double v :
-       {r.screw.preload, r.screw.torque, r.screw.thread_torque, r.screw.head_torque}) {
-    *out += ',';
-    AppendShortestDecimal(out, v);
-  }
-  *out += r.screw.seated ? ",1" : ",0";
 }
 
 std::string TraceRow(const TickRecord& r) {
@@ -81,44 +84,7 @@ std::string TraceRow(const TickRecord& r) {
   return row;
 }
 
-void AppendTraceRow(std::string* out, const TickRecord& r) {
-  std::string& row = *out;
-  auto add = [&row](double v) {
-    row += ',';
-    AppendShortestDecimal(&row, v);
-  };
-  AppendShortestDecimal(&row, r.time);
-  row += ',';
-  row += ToString(r.stage);
-  add(r.pose.depth * 1e3);
-  add(r.wrench.force.x());
-  add(r.wrench.force.y());
-  add(r.wrench.force.z());
-  // Compute time to 0.01 us: finer digits are clock noise and would only bloat the file.
-  add(std::round(r.compute_us * 100.0) / 100.0);
-  add(r.position.x() * 1e3);
-  add(r.position.y() * 1e3);
-  add(r.position.z() * 1e3);
-  add(r.pose.angle);
-  add(r.wrench.torque.x());
-  add(r.wrench.torque.y());
-  add(r.wrench.torque.z());
-  row += r.contact.engaged ? ",1" : ",0";
-  row += r.contact.interference ? ",1" : ",0";
-  add(r.contact.offset_distance * 1e6);
-  add(r.contact.assembly_extent * 1e6);
-  add(r.contact.penetration * 1e6);
-  add(r.contact.max_interference * 1e6);
-  add(r.stiffness * 1e-6);
-  row += r.guard_fault ? ",1" : ",0";
-  for (int i = 0; i < 3; ++i) add(r.device_wrench.force[i]);
-  for (int i = 0; i < 3; ++i) add(r.device_wrench.torque[i]);
-  add(r.pose.offset.x() * 1e6);
-  add(r.pose.offset.y() * 1e6);
-  add(r.elastic.utilisation);
-  row += r.elastic.utilisation > 1.0 ? ",1" : ",0";
-  row += r.device_fault ? ",1" : ",0";
-}
+void AppendTraceRow(std::string* out, const TickRecord& r) { AppendTraceRow(out, r, 0, false); }
 
 void SummaryBuilder::Add(const TickRecord& r) {
   if (r.stage != StageId::kConstrained) return;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
 #include "framework/core/number_text.h"
+#include "framework/plot/palette.h"
 #include "framework/plot/render.h"
 
 namespace fitfeel::tradeoff {
@@ -13,87 +15,112 @@ namespace fs = std::filesystem;
 namespace {
 
 // Grid labels hold digits, 'x', '=', '/', '(', ')' and spaces only (grid_ladder.cc and
-// tradeoff_study.cc make them), so double quotes delimit them safely in a data block.
-std::string DataLabel(const std::string& label) {
+// tradeoff_study.cc make them); a quote would end the key's string, so none passes.
+std::string KeyLabel(const GridRow& r) {
   std::string out;
-  for (char c : label) out += c == '"' ? '\'' : c;
-  return "\"" + out + "\"";
-}
-
-// Labels of every other point below it rather than above, so that neighbours stay apart. Only
-// for a block of two or more points: gnuplot warns about an empty selection.
-std::string AlternateLabels(const std::string& block) {
-  return ", " + block +
-         " every 2::1 using 1:2:4 with labels left offset 0.8,-0.9 font ',10' notitle";
+  for (char c : r.label) out += c == '\'' || c == '"' ? ' ' : c;
+  return plot::QuoteForGnuplot(out + " (" + std::to_string(r.inner_cells) + " cells)");
 }
 
 double Cost(const GridRow& r, TickCost cost) {
   return cost == TickCost::kP50 ? r.tick_p50_us : r.tick_p99_us;
 }
 
+// A cost axis: logarithmic when the costs span more than a decade (prepare times do: milliseconds
+// to seconds), else linear with a margin, where a log axis over a fraction of a decade would show
+// no tic at all (tick times of a table-driven law differ by tens of percent).
+std::string CostAxis(const std::vector<double>& costs) {
+  const auto [lo, hi] = std::minmax_element(costs.begin(), costs.end());
+  std::ostringstream s;
+  if (*hi > 10.0 * *lo) {
+    s << "set logscale x\nset xrange [" << ShortestDecimal(*lo / 1.6) << ":"
+      << ShortestDecimal(*hi * 1.6) << "]\n";
+  } else {
+    const double pad = *hi > *lo ? 0.12 * (*hi - *lo) : 0.1 * *hi;
+    s << "unset logscale x\nset xrange [" << ShortestDecimal(std::max(0.0, *lo - pad)) << ":"
+      << ShortestDecimal(*hi + pad) << "]\n";
+  }
+  return s.str();
+}
+
+// Filled and open variants of a point type, in gnuplot's numbering.
+constexpr int kFilled[] = {7, 5, 9, 11, 13, 15};
+constexpr int kOpen[] = {6, 4, 8, 10, 12, 14};
+
 std::string Body(const std::vector<GridRow>& rows, const std::string& title, TickCost cost) {
-  double x_min = Cost(rows.front(), cost), x_max = x_min, ref_mean = 0.0, y_max = 0.0;
+  const GridRow* reference = nullptr;
+  std::vector<const GridRow*> compared;
   for (const GridRow& r : rows) {
     if (!(Cost(r, cost) > 0.0) || !std::isfinite(Cost(r, cost))) {
       throw std::invalid_argument("tradeoff chart: grid " + r.label + " has no positive tick time");
     }
-    x_min = std::min(x_min, Cost(r, cost));
-    x_max = std::max(x_max, Cost(r, cost));
-    if (r.reference) ref_mean = r.mean_axial_N;
-    y_max = std::max(y_max, r.mean_axial_N + r.sd_axial_N);
+    if (r.reference) reference = &r;
+    if (!r.reference && r.rms_error_N > 0.0) compared.push_back(&r);
   }
   std::ostringstream s;
   s << "reset\nset encoding utf8\n";
-  s << "$grids << EOD\n";
-  for (const GridRow& r : rows) {
-    s << ShortestDecimal(Cost(r, cost)) << " " << ShortestDecimal(r.mean_axial_N) << " "
-      << ShortestDecimal(r.sd_axial_N) << " " << DataLabel(r.label) << "\n";
-  }
-  s << "EOD\n$errors << EOD\n";
-  int errors = 0;
-  for (const GridRow& r : rows) {
-    if (r.reference || !(r.rms_error_N > 0.0)) continue;
-    ++errors;
-    s << ShortestDecimal(Cost(r, cost)) << " " << ShortestDecimal(r.rms_error_N) << " "
-      << ShortestDecimal(std::max(r.noise_rms_N, 1e-300)) << " " << DataLabel(r.label) << "\n";
+  // Each compared grid is one line, so `every ::k::k` draws it alone in its own colour and point
+  // type: the key names the grids, and no label is written beside a point to collide with a
+  // neighbour's.
+  s << "$errors << EOD\n";
+  std::vector<double> prepare, tick;
+  for (const GridRow* r : compared) {
+    // Prepare times too short for the clock's resolution still need a place on a log axis.
+    const double p = std::max(r->prepare_seconds, 1e-6);
+    prepare.push_back(p);
+    tick.push_back(Cost(*r, cost));
+    s << ShortestDecimal(p) << " " << ShortestDecimal(Cost(*r, cost)) << " "
+      << ShortestDecimal(r->rms_error_N) << " " << ShortestDecimal(std::max(r->noise_rms_N, 1e-300))
+      << "\n";
   }
   s << "EOD\n";
-  s << "set multiplot layout 2,1 title " << plot::QuoteForGnuplot(title) << " font ',14'\n";
-  s << "set lmargin 12\nset rmargin 6\n";
-  s << "set grid xtics ytics mxtics lc rgb '#c8c8c8' lw 1 dt solid\n";
-  s << "set logscale x\nset xrange [" << ShortestDecimal(x_min / 1.6) << ":"
-    << ShortestDecimal(x_max * 1.6) << "]\n";
-  s << "set key below\n";
-  s << "set xtics (0.1, 0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)\n";
-  s << "set xlabel 'tick compute time: median over the seeds of each run`s "
-    << (cost == TickCost::kP50 ? "p50" : "p99") << " (us, log scale)'\n";
-  s << "set ylabel 'mean axial resistance (N)'\n";
-  // |fy| is never negative: a bar below zero only says how wide the spread is.
-  s << "set yrange [0:" << ShortestDecimal(y_max > 0.0 ? 1.08 * y_max : 1.0) << "]\n";
-  s << "set title 'Mean |fy| over the constrained ticks: mean over seeds, bars +-1 seed-to-seed "
-       "SD'\n";
-  s << "plot $grids using 1:2:3 with yerrorbars pt 7 ps 1.2 lw 1.5 lc rgb '#3b528b' "
-       "title 'grid (rows x columns per part), mean +-1 SD over seeds', "
-    << ShortestDecimal(ref_mean)
-    << " with lines dt 2 lw 1.5 lc rgb '#5ec962' title 'finest grid (reference)', "
-       "$grids every 2 using 1:2:4 with labels left offset 0.8,0.9 font ',10' notitle"
-    << (rows.size() > 1 ? AlternateLabels("$grids") : "") << "\n";
-  s << "set yrange [*:*]\nset logscale y\n";
-  s << "set ylabel 'RMS error (N, log scale)'\n";
-  s << "set title 'Seed-averaged axial trace against the reference: RMS over the constrained "
-       "ticks'\n";
-  if (errors > 0) {
-    s << "plot $errors using 1:2 with points pt 7 ps 1.2 lw 1.5 lc rgb '#3b528b' "
-         "title 'RMS |mean fy - mean fy_ref|', "
-         "$errors using 1:3 with points pt 6 lw 1.2 lc rgb '#b5367a' "
-         "title 'sampling noise (RMS paired standard error of the difference)', "
-         "$errors every 2 using 1:2:4 with labels left offset 0.8,0.9 font ',10' notitle"
-      << (errors > 1 ? AlternateLabels("$errors") : "") << "\n";
-  } else {
-    s << "unset logscale y\nset yrange [0:1]\n"
+  s << "set multiplot layout 2,1 title " << plot::QuoteForGnuplot(title)
+    << " font ',14' margins 0.09,0.68,0.09,0.88 spacing 0.1,0.13\n";
+  s << "set grid xtics ytics mxtics mytics lc rgb '#dcdcdc' lw 1 dt solid\n";
+  s << "set format x '%g'\nset format y '%g'\n";
+  if (compared.empty()) {
+    s << "unset key\nset yrange [0:1]\nset xrange [0:1]\n"
          "set label 1 'only the reference: no error to show' at graph 0.5,0.5 center\n"
-         "plot 0 with lines lc rgb '#ffffff' notitle\n";
+         "plot 0 with lines lc rgb '#ffffff' notitle\nplot 0 with lines lc rgb '#ffffff' "
+         "notitle\nunset multiplot\n";
+    return s.str();
   }
+  s << "set logscale y\n";
+  s << "set ylabel 'RMS error of the mean |fy| trace (N)'\n";
+  auto plot = [&](int column, bool key) {
+    s << (key ? "set key outside right top vertical Left reverse samplen 1 spacing 1.3 "
+                "title 'grid (rows x columns per part)'\n"
+              : "unset key\n");
+    s << "plot ";
+    for (std::size_t k = 0; k < compared.size(); ++k) {
+      const unsigned colour = plot::kLineColours[k % plot::kLineColours.size()];
+      const std::size_t type = (k / plot::kLineColours.size()) % std::size(kFilled);
+      char rgb[16];
+      std::snprintf(rgb, sizeof rgb, "'#%06x'", colour);
+      s << "$errors every ::" << k << "::" << k << " using " << column << ":3 with points pt "
+        << kFilled[type] << " ps 1.5 lc rgb " << rgb << " title " << KeyLabel(*compared[k])
+        << ", $errors every ::" << k << "::" << k << " using " << column << ":4 with points pt "
+        << kOpen[type] << " ps 1.5 lc rgb " << rgb << " notitle, ";
+    }
+    s << "NaN with points pt 6 ps 1.5 lc rgb '#505050' title 'open: its sampling noise'\n";
+  };
+  s << "set title 'against the prepare time (once per scene)'\n";
+  s << "set xlabel 'prepare time: median over the seeds (s"
+    << (CostAxis(prepare).starts_with("set log") ? ", log scale" : "") << ")'\n";
+  s << CostAxis(prepare);
+  if (reference != nullptr) {
+    s << "set label 2 "
+      << plot::QuoteForGnuplot("errors against the finest grid, " + reference->label)
+      << " at screen 0.70,0.12 left font ',10'\n";
+  }
+  plot(1, true);
+  s << "unset label 2\n";
+  s << "set title 'against the tick compute time (every tick, 1 ms at 1 kHz)'\n";
+  s << "set xlabel 'tick compute time: median over the seeds of each run`s "
+    << (cost == TickCost::kP50 ? "p50" : "p99") << " (us"
+    << (CostAxis(tick).starts_with("set log") ? ", log scale" : "") << ")'\n";
+  s << CostAxis(tick);
+  plot(2, false);
   s << "unset multiplot\n";
   // A backquote stands for an apostrophe: gnuplot writes one as two inside single quotes.
   std::string body;

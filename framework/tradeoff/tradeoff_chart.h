@@ -15,12 +15,12 @@ namespace fitfeel::tradeoff {
 enum class TickCost { kP50, kP99 };
 
 // The speed-accuracy chart, drawn by gnuplot (framework/plot's subprocess) into every output,
-// all formats rendered before any is installed. Top panel: mean axial resistance +- the
-// seed-to-seed standard deviation against the tick compute time (log x; median over the seeds of
-// each run's p50 or p99), each point labelled with its grid, the reference's mean as a dashed line.
-// Bottom panel: RMS error of the seed-averaged trace against the reference's and its sampling-noise
-// floor (log y; the reference itself has no error and is left out). Throws UnsupportedError without
-// gnuplot.
+// all formats rendered before any is installed. Accuracy is the RMS error of the seed-averaged
+// axial trace against the reference's (log y; filled), with its sampling-noise floor (open); top
+// panel against the prepare time, bottom panel against the tick compute time (median over the
+// seeds of each run's p50 or p99). Each grid has its own colour and point type, named in the key,
+// so no label sits beside a point. The reference itself has no error and is left out. Throws
+// UnsupportedError without gnuplot.
 FITFEEL_API void RenderTradeoffChart(const std::vector<GridRow>& rows, const std::string& title,
                                      TickCost cost, const std::vector<plot::OutputFile>& outputs);
 

@@ -86,6 +86,11 @@ if [ -d "$prefix/lib/python3/dist-packages/fitfeel" ]; then
   echo "$py_out"
   grep -q "^P(interference)" <<<"$py_out" && test -s "$work/py-study/pairs.csv" ||
     { echo "the Python example did not run its study"; exit 1; }
+  test -s "$work/py-study/study.png" || { echo "the Python study drew no study.png"; exit 1; }
+  # The Dask worker script finds the installed package beside it, with nothing on PYTHONPATH.
+  worker_path=$(env -u PYTHONPATH "$prefix/bin/fitfeel-worker" --fitfeel-path)
+  [ "$worker_path" = "$prefix/lib/python3/dist-packages" ] ||
+    { echo "fitfeel-worker found $worker_path, not the prefix's package"; exit 1; }
 else
   echo "install test: no Python package installed (pybind11 missing?)"; exit 1
 fi
