@@ -22,7 +22,9 @@
 PACKAGES := build-essential cmake ninja-build ccache libeigen3-dev libfcl-dev libccd-dev \
             libboost-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libgtest-dev \
             libgmock-dev libbenchmark-dev gnuplot-nox libjs-three chromium nodejs python3 \
-            pybind11-dev python3-dev python3-numpy python3-distributed mono-mcs mono-runtime
+            pybind11-dev python3-dev python3-numpy python3-distributed mono-mcs mono-runtime \
+            libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev \
+            libocct-foundation-dev libocct-ocaf-dev libtbb-dev
 # Only for `make fem-check`: the tests use the committed FEM data and need no solver.
 FEM_PACKAGES := calculix-ccx python3-numpy
 # Only for `make fuzz`: clang and its libFuzzer runtime (Debian 12 ships it in libclang-rt-14-dev).

@@ -19,6 +19,9 @@ void AddTradeoffCommand(CLI::App& app);
 void AddStudyCommand(CLI::App& app);
 void AddViewCommand(CLI::App& app);
 void AddNewCommand(CLI::App& app);
+#ifdef FITFEEL_HAVE_CAD
+void AddImportCommand(CLI::App& app);
+#endif
 
 // The scenario `run` and `view` take when given none.
 inline constexpr const char* kDefaultScenario = "scenarios/paper-case1-h7js6.yaml";

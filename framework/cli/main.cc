@@ -66,6 +66,9 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddStudyCommand(app);
   fitfeel::cli::AddViewCommand(app);
   fitfeel::cli::AddNewCommand(app);
+#ifdef FITFEEL_HAVE_CAD
+  fitfeel::cli::AddImportCommand(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -1,0 +1,195 @@
+// The CAD import's library: the fixtures read through the child process, every refusal with its
+// message, feature grouping and pairing, the sidecar.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "framework/cad/import.h"
+#include "framework/cad/isolated_read.h"
+#include "framework/core/error.h"
+#include "framework/testing/cli_runner.h"
+
+namespace fitfeel::cad {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+fs::path Fixture(const std::string& name) {
+  return fs::path(fitfeel_test_build_dir()) / "cad-fixtures" / name;
+}
+fs::path Sidecar(const std::string& name) {
+  return fs::path(fitfeel_test_source_dir()) / "framework/cad/test" / name;
+}
+
+// The message of the UserError `action` throws; fails the test when it throws none.
+template <typename F>
+std::string Refusal(F action) {
+  try {
+    action();
+  } catch (const UserError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no UserError";
+  return "";
+}
+
+const Feature& Named(const Import& import, const std::string& part, const std::string& name) {
+  for (const Feature& f : import.features) {
+    if (f.part == part && f.name == name) return f;
+  }
+  throw std::runtime_error("no feature " + part + " " + name);
+}
+
+TEST(CadImport, Ap242GivesPartsFeaturesTolerancesAndOnePair) {
+  const Import import = BuildImport(ReadStep(Fixture("paper-ap242.step")), std::nullopt);
+  ASSERT_EQ(import.document.parts.size(), 2u);
+  EXPECT_EQ(import.document.parts[0].name, "bushing");
+  EXPECT_EQ(import.document.parts[1].name, "shaft");
+  const Feature& bore = Named(import, "bushing", "hole-1");
+  EXPECT_NEAR(bore.diameter, 0.020, 1e-12);
+  EXPECT_NEAR(bore.axial_max - bore.axial_min, 0.020, 1e-12);
+  const Feature& outside = Named(import, "bushing", "cylinder-1");
+  EXPECT_NEAR(outside.diameter, 0.030, 1e-12);
+  const Feature& journal = Named(import, "shaft", "cylinder-1");
+  EXPECT_NEAR(journal.axial_max - journal.axial_min, 0.040, 1e-12);
+  ASSERT_EQ(import.pairs.size(), 1u);
+  const std::string listing = DescribeImport(import);
+  EXPECT_THAT(listing, HasSubstr("size 20 mm H7 (0 um / 21 um, from STEP #"));
+  EXPECT_THAT(listing, HasSubstr("size 20 mm g6 (-20 um / -7 um, from STEP #"));
+  EXPECT_THAT(listing, HasSubstr("roundness 10 um (from STEP #"));
+  EXPECT_THAT(listing, HasSubstr("straightness 10 um (from STEP #"));
+  EXPECT_THAT(listing, HasSubstr("pair: bushing hole-1 / shaft cylinder-1 (Ø20 mm, coaxial)"));
+}
+
+TEST(CadImport, ABoreSplitIntoTwoHalvesIsOneHole) {
+  const Import import = BuildImport(ReadStep(Fixture("paper-split-bore-ap242.step")), std::nullopt);
+  const Feature& bore = Named(import, "bushing", "hole-1");
+  EXPECT_EQ(bore.faces.size(), 2u);
+  EXPECT_NEAR(bore.axial_max - bore.axial_min, 0.020, 1e-12);
+  EXPECT_EQ(Named(import, "bushing", "cylinder-1").faces.size(), 2u);
+  EXPECT_EQ(import.pairs.size(), 1u);
+}
+
+TEST(CadImport, Ap214WithoutPmiNeedsTheSidecar) {
+  const Import bare = BuildImport(ReadStep(Fixture("paper-ap214.step")), std::nullopt);
+  EXPECT_TRUE(bare.tolerances.empty());
+  EXPECT_THAT(Refusal([&] { ScenarioText(bare, "x", "paper-ap214.step"); }),
+              HasSubstr("has no size tolerance in the STEP file; give it in the sidecar"));
+  const Import with =
+      BuildImport(ReadStep(Fixture("paper-ap214.step")), Sidecar("paper-ap214.sidecar.yaml"));
+  EXPECT_THAT(DescribeImport(with), HasSubstr("size 20 mm g6 (-20 um / -7 um, from sidecar)"));
+}
+
+TEST(CadImport, EveryUntrustedPmiValueIsRefusedNamingItsFace) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"zero-tolerance-ap242.step",
+       "diameter on face #240 is refused: both deviations read as 0 (the reader gives 0 for a "
+       "value it did not read); give it in the sidecar instead"},
+      // OCCT 7.6 reads its own ± output back as a range about a wrong nominal.
+      {"plus-minus-ap242.step",
+       "diameter on face #240 is refused: its nominal 10.01 mm is not the face's diameter 20 mm "
+       "(a value not in the document's unit)"},
+      {"inverted-tolerance-ap242.step", "diameter on face #240 is refused: its nominal"},
+      {"undefined-class-ap242.step", "diameter on face #192 is refused: its ISO 286 class K9"},
+      {"inch-plus-minus-ap242.step",
+       "diameter on face #195 is refused: its nominal 508 mm is not the face's diameter 20 mm"},
+      {"bspline-bore-ap242.step",
+       "diameter on face #255 is refused: the face is a B-spline surface"},
+  };
+  for (const auto& [file, says] : cases) {
+    EXPECT_THAT(Refusal([&] { BuildImport(ReadStep(Fixture(file)), std::nullopt); }),
+                HasSubstr(says))
+        << file;
+  }
+}
+
+// Values OCCT's writer cannot be made to produce, checked on the reader's output directly.
+TEST(CadImport, InvertedDeviationsAndInchValuesAreRefused) {
+  CadDocument document = ReadStep(Fixture("paper-ap242.step"));
+  CadDocument inverted = document;
+  for (CadTolerance& t : inverted.tolerances) {
+    if (t.kind == ToleranceKind::kSize && t.iso_class == "g6") {
+      t.iso_class.clear();
+      t.has_plus_minus = true;
+      t.lower = 7e-6;  // the sign of -7 um dropped
+      t.upper = -20e-6;
+    }
+  }
+  EXPECT_THAT(Refusal([&] { BuildImport(inverted, std::nullopt); }),
+              HasSubstr("its lower deviation 7 um is not below its upper -20 um (the reader may "
+                        "drop a lower deviation's sign)"));
+  CadDocument inch = document;
+  inch.length_unit = "INCH";
+  EXPECT_THAT(Refusal([&] { BuildImport(inch, std::nullopt); }),
+              HasSubstr("tolerance on face #192 is refused: the file's length unit is INCH"));
+}
+
+TEST(CadImport, ABSplineFaceOnAMatingCylinderIsRefused) {
+  CadDocument document = ReadStep(Fixture("bspline-bore-ap242.step"));
+  document.tolerances.clear();
+  EXPECT_THAT(Refusal([&] { BuildImport(document, std::nullopt); }),
+              HasSubstr("part bushing: face #255 is a B-spline surface where it mates with shaft's "
+                        "cylinder-1 (Ø20 mm)"));
+}
+
+TEST(CadImport, ASidecarValueThatDisagreesWithTheStepFileIsAnError) {
+  const std::string message = Refusal([&] {
+    BuildImport(ReadStep(Fixture("paper-ap242.step")), Sidecar("disagreeing.sidecar.yaml"));
+  });
+  EXPECT_THAT(message, HasSubstr("disagreeing.sidecar.yaml:5:"));
+  EXPECT_THAT(message, HasSubstr("expected the value the STEP file gives (STEP #240: g6, -20 um / "
+                                 "-7 um) or none, found '20 mm h6'"));
+}
+
+TEST(CadImport, FilesThatAreNoStepTextAreRefusedBeforeReading) {
+  const fs::path dir = test_support::EmptyTestFolder("cad");
+  const std::string good = test_support::ReadText(Fixture("paper-ap242.step"));
+  test_support::WriteText(dir / "empty.step", "");
+  test_support::WriteText(dir / "truncated.step", good.substr(0, good.size() / 2));
+  test_support::WriteText(dir / "binary.step", std::string("\x7f"
+                                                           "ELF\x02\x01\x01\0\0",
+                                                           9) +
+                                                   good);
+  test_support::WriteText(dir / "big.step", good);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"empty.step", "is empty"},
+      {"truncated.step", "is truncated: it does not end with END-ISO-10303-21;"},
+      {"binary.step", "is not a STEP file: it holds binary bytes"},
+  };
+  for (const auto& [file, says] : cases) {
+    EXPECT_THAT(Refusal([&] { ReadStep(dir / file); }), HasSubstr(says)) << file;
+  }
+  ReadLimits small;
+  small.max_bytes = 1000;
+  EXPECT_THAT(Refusal([&] { ReadStep(dir / "big.step", small); }),
+              HasSubstr("bytes, above the 1000 bytes the import reads"));
+  // The real cap, on a sparse file of 513 MiB that holds no data.
+  { std::ofstream sparse(dir / "huge.step"); }
+  ASSERT_EQ(::truncate((dir / "huge.step").c_str(), off_t{513} << 20), 0);
+  EXPECT_THAT(Refusal([&] { ReadStep(dir / "huge.step"); }),
+              HasSubstr("is 537919488 bytes, above the 536870912 bytes the import reads"));
+}
+
+TEST(CadImport, AReaderThatCrashesOrHangsEndsInARefusal) {
+  ::setenv("FITFEEL_TEST_CAD_READER", "abort", 1);
+  const std::string crashed = Refusal([] { ReadStep(Fixture("paper-ap242.step")); });
+  ::setenv("FITFEEL_TEST_CAD_READER", "hang", 1);
+  ReadLimits quick;
+  quick.seconds = 0.3;
+  const std::string hung = Refusal([&] { ReadStep(Fixture("paper-ap242.step"), quick); });
+  ::unsetenv("FITFEEL_TEST_CAD_READER");
+  EXPECT_THAT(crashed, HasSubstr("crashed the STEP reader (Aborted); the reader ran in a child "
+                                 "process and the file is refused"));
+  EXPECT_THAT(hung, HasSubstr("was not read within 0.3 s; the STEP reader was stopped"));
+}
+
+}  // namespace
+}  // namespace fitfeel::cad

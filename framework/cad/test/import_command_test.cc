@@ -1,0 +1,115 @@
+// `fitfeel import` as a user runs it: the paper case from STEP (AP242 with PMI, or AP214 and a
+// sidecar) gives the YAML paper case's scene, whose run gives its trace; a reader crash is exit 2.
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "framework/testing/cli_runner.h"
+
+namespace fitfeel::cad {
+namespace {
+
+namespace fs = std::filesystem;
+using test_support::CliOptions;
+using test_support::RunFitfeel;
+using test_support::ShellQuote;
+using ::testing::HasSubstr;
+
+std::string FixtureWord(const std::string& name) {
+  return ShellQuote((fs::path(fitfeel_test_build_dir()) / "cad-fixtures" / name).string());
+}
+std::string SidecarWord(const std::string& name) {
+  return ShellQuote((fs::path(fitfeel_test_source_dir()) / "framework/cad/test" / name).string());
+}
+
+// The scenario without its comments and name: what the scene is made of.
+std::vector<std::string> Content(const fs::path& file) {
+  std::vector<std::string> out;
+  for (std::string line : test_support::Lines(test_support::ReadText(file))) {
+    const std::size_t hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    if (!line.empty() && line.rfind("scenario:", 0) != 0) out.push_back(line);
+  }
+  return out;
+}
+
+// The trace's numbers, without tick_us (the wall-clock time a tick took, different every run).
+std::vector<std::vector<double>> Trace(const fs::path& file) {
+  std::vector<std::vector<double>> rows;
+  const std::vector<std::string> lines = test_support::Lines(test_support::ReadText(file));
+  if (lines.empty()) return rows;
+  const std::vector<std::string> header = test_support::SplitCells(lines.front());
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    std::vector<double> row;
+    const std::vector<std::string> cells = test_support::SplitCells(lines[i]);
+    for (std::size_t j = 0; j < cells.size(); ++j) {
+      if (j < header.size() && header[j] == "tick_us") continue;
+      row.push_back(std::strtod(cells[j].c_str(), nullptr));
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(ImportCommand, PaperCaseFromStepRunsAsTheYamlPaperCase) {
+  const fs::path dir = test_support::EmptyTestFolder("import");
+  const test_support::CliResult imported =
+      RunFitfeel("import " + FixtureWord("paper-ap242.step") + " --sidecar " +
+                     SidecarWord("paper-ap242.sidecar.yaml") + " -o from-ap242.yaml",
+                 CliOptions().In(dir));
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  EXPECT_THAT(imported.out, HasSubstr("pair: bushing hole-1 / shaft cylinder-1"));
+  const test_support::CliResult from_214 =
+      RunFitfeel("import " + FixtureWord("paper-ap214.step") + " --sidecar " +
+                     SidecarWord("paper-ap214.sidecar.yaml") + " -o from-ap214.yaml",
+                 CliOptions().In(dir));
+  ASSERT_EQ(from_214.exit_code, 0) << from_214.err;
+  EXPECT_EQ(Content(dir / "from-ap242.yaml"), Content(dir / "from-ap214.yaml"));
+
+  const fs::path yaml = fs::path(fitfeel_test_source_dir()) / "scenarios/paper-case1-h7g6.yaml";
+  for (const auto& [scenario, out] :
+       {std::pair{(dir / "from-ap242.yaml").string(), "cad"}, std::pair{yaml.string(), "yaml"}}) {
+    const test_support::CliResult run =
+        RunFitfeel("run " + ShellQuote(scenario) + " --out " + out, CliOptions().In(dir));
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  const auto cad = Trace(dir / "cad" / "trace.csv");
+  const auto reference = Trace(dir / "yaml" / "trace.csv");
+  ASSERT_EQ(cad.size(), reference.size());
+  ASSERT_GT(cad.size(), 1000u);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < cad.size(); ++i) {
+    ASSERT_EQ(cad[i].size(), reference[i].size()) << "row " << i;
+    for (std::size_t j = 0; j < cad[i].size(); ++j) {
+      worst = std::max(worst, std::abs(cad[i][j] - reference[i][j]));
+    }
+  }
+  EXPECT_LE(worst, 1e-9);
+}
+
+TEST(ImportCommand, AReaderCrashIsAClearErrorWithExitTwo) {
+  const std::string command = "env FITFEEL_TEST_CAD_READER=abort " +
+                              ShellQuote(test_support::FitfeelBinary().string()) + " import " +
+                              FixtureWord("paper-ap242.step") + " 2>&1";
+  std::string said;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) said += buffer;
+  const int status = ::pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_THAT(said, HasSubstr("fitfeel: error: import: '"));
+  EXPECT_THAT(said, HasSubstr("crashed the STEP reader (Aborted)"));
+}
+
+}  // namespace
+}  // namespace fitfeel::cad
