@@ -46,11 +46,11 @@ std::string Describe(const BadLine& line) {
 const std::vector<BadLine> kBadLines = {
     // A command missing, unknown.
     {{}, "", "expected a command (run, validate, plugins, fit, sms, plot, stability, tradeoff, "
-             "study, view, new), found none"},
+             "study, view, new, import), found none"},
     {{"bogus"}, "", "expected a command (run, validate, plugins, fit, sms, plot, stability, "
-                    "tradeoff, study, view, new), found 'bogus'"},
+                    "tradeoff, study, view, new, import), found 'bogus'"},
     {{"--bogus"}, "", "expected a command (run, validate, plugins, fit, sms, plot, stability, "
-                      "tradeoff, study, view, new), found '--bogus'"},
+                      "tradeoff, study, view, new, import), found '--bogus'"},
     {{"plot"}, "plot", "expected a command (trace, sms, pressure, study, mapping), found none"},
     {{"plot", "bogus"}, "plot",
      "expected a command (trace, sms, pressure, study, mapping), found 'bogus'"},

@@ -84,6 +84,20 @@ TEST(StabilityCommand, DefaultScenarioIsThePaperCase) {
   EXPECT_THAT(ReadText(dir / "m.csv"), HasSubstr("coupled,1000,3665000000,0,0,1,"));
 }
 
+// -o FILE.png draws the map itself (no script from the source tree) and writes its data beside it.
+TEST(StabilityCommand, DrawsTheMapAsAPictureWithItsData) {
+  const fs::path dir = StabilityFolder("picture");
+  const CliResult r = Stability("'" + kStillScene.string() +
+                                    "' --rate '1 kHz' --damping '0 N*s/m,2 N*s/m' --per-decade 1 "
+                                    "--horizon '0.5 s' -o map.png",
+                                dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string png = ReadText(dir / "map.png");
+  ASSERT_GT(png.size(), 1000u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_THAT(ReadText(dir / "map.csv"), HasSubstr("coupled,1000,"));
+}
+
 TEST(StabilityCommand, DeviceAndForceScaleChangeTheMap) {
   const fs::path dir = StabilityFolder("touch");
   const CliResult r = Stability("'" + kStillScene.string() +
