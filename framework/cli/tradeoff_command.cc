@@ -114,12 +114,10 @@ void Run(const TradeoffOptions& options) {
 
   const double duration = settings.duration ? *settings.duration : scene.run.duration;
   char title[512];
-  std::snprintf(
-      title, sizeof title,
-      "%s: accuracy against prepare and tick cost (%d seeds per grid from seed %llu, %g s each, "
-      "virtual clock)",
-      scene.name.c_str(), settings.seeds, static_cast<unsigned long long>(scene.run.seed),
-      duration);
+  std::snprintf(title, sizeof title,
+                "%s: accuracy against cost, %d seeds per grid from seed %llu, %g s each",
+                scene.name.c_str(), settings.seeds, static_cast<unsigned long long>(scene.run.seed),
+                duration);
   interrupt.Cooperate();
   SweepStaleTemporaries(folder);
   tradeoff::RenderTradeoffChart(
