@@ -397,6 +397,20 @@ def make_bases(fitfeel, scratch):
         bases[variant] = re.sub(r"(?m)^device:\n(?:  .*\n|\s*#.*\n)+", hand_and_safety,
                                 bases[name])
         SCENARIOS.append(variant)
+    # A hand starting the part crooked and giving in tilt, rendered as a Touch with the perceptual
+    # force map: the tilt, tilt_stiffness, model and mapping keys.
+    tilted_hand = (
+        "device:\n  plugin: fitfeel.device.simulated\n  mode: scripted\n  model: touch\n"
+        "  force_mapping: perceptual\n"
+        "  hand: {mass: 0.5 kg, stiffness: 2000 N/m, damping: 20 N*s/m, tilt_stiffness: 2 N*m/rad}\n"
+        "  waypoints:\n"
+        "    - {time: 0 s, position: [0 mm, -2 mm, 0 mm], tilt: [0.3 deg, 0 deg]}\n"
+        "    - {time: 20 ms, position: [0 mm, 5 mm, 0 mm], tilt: [0.3 deg, 0 deg]}\n"
+        "safety:\n  mapping_knee: 0.1 N\n  mapping_top: 20 kN\n")
+    variant = "paper-case1-h7g6-paper+tilted-hand.yaml"
+    bases[variant] = re.sub(r"(?m)^device:\n(?:  .*\n|\s*#.*\n)+", tilted_hand,
+                            bases["paper-case1-h7g6-paper.yaml"])
+    SCENARIOS.append(variant)
     return bases
 
 
