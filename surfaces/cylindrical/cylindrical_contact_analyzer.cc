@@ -415,23 +415,29 @@ std::vector<double> CylinderContactAnalyzer::ColumnSlopes(const Eigen::Vector2d&
   return kappa;
 }
 
-bool CylinderContactAnalyzer::TiltedSpaceEmpty(double depth,
-                                               const std::vector<double>& kappa) const {
-  std::vector<Slice> slices;
-  SlicesAt(depth, &slices);
-  if (slices.empty()) return false;
-  std::vector<double> h(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
+void CylinderContactAnalyzer::TiltedMinima(double depth, const std::vector<Slice>& slices,
+                                           const std::vector<double>& kappa, double* h) const {
   double pos = std::max(depth - shaft_length_, 0.0);
   for (const Slice& sl : slices) {
     const double* vs = v_shaft_.data() + static_cast<Eigen::Index>(sl.shaft_row) * n_;
     const double* vb = v_bushing_.data() + static_cast<Eigen::Index>(sl.bushing_row) * n_;
+    // Behind the leading end (<= 0): the slice's two ends.
     const double near = pos + sl.length - depth, far = pos - depth;
-    for (std::size_t j = 0; j < h.size(); ++j) {
+    for (std::size_t j = 0; j < kappa.size(); ++j) {
       const double widening = -std::max(near * kappa[j], far * kappa[j]);
       h[j] = std::min(h[j], vb[j] - vs[j] + smoothing_ + widening);
     }
     pos += sl.length;
   }
+}
+
+bool CylinderContactAnalyzer::TiltedSpaceEmpty(double depth,
+                                               const std::vector<double>& kappa) const {
+  std::vector<Slice> slices;
+  SlicesAt(depth, &slices);
+  if (slices.empty()) return false;
+  std::vector<double> h(kappa.size(), std::numeric_limits<double>::infinity());
+  TiltedMinima(depth, slices, kappa, h.data());
   std::vector<Eigen::Vector2d> polygon;
   return !half_planes_.Intersect(h, &polygon);
 }
@@ -495,19 +501,7 @@ void CylinderContactAnalyzer::TiltedChunkMinima(std::size_t first, std::size_t e
   for (std::size_t t = 0; t < steps; ++t) {
     const double depth = static_cast<double>(first + t) * step_;
     SlicesAt(depth, &s->chunk_slices[t]);
-    double* h = s->chunk_h.data() + t * n;
-    double pos = std::max(depth - shaft_length_, 0.0);
-    for (const Slice& sl : s->chunk_slices[t]) {
-      const double* vs = v_shaft_.data() + static_cast<Eigen::Index>(sl.shaft_row) * n_;
-      const double* vb = v_bushing_.data() + static_cast<Eigen::Index>(sl.bushing_row) * n_;
-      // Behind the leading end (<= 0): the slice's two ends.
-      const double near = pos + sl.length - depth, far = pos - depth;
-      for (std::size_t j = 0; j < n; ++j) {
-        const double widening = -std::max(near * kappa_[j], far * kappa_[j]);
-        h[j] = std::min(h[j], vb[j] - vs[j] + smoothing_ + widening);
-      }
-      pos += sl.length;
-    }
+    TiltedMinima(depth, s->chunk_slices[t], kappa_, s->chunk_h.data() + t * n);
   }
 }
 

@@ -186,6 +186,11 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   // Per column, the lateral slope of a part tilted by `rotation` (x, z of its rotation vector)
   // along the column's direction.
   std::vector<double> ColumnSlopes(const Eigen::Vector2d& rotation) const;
+  // The smallest gap per column (into h, n values, min-ed with what is there) over `slices` at
+  // `depth` of a part tilted with column slopes `kappa`: each slice's gaps widened by its distance
+  // behind the leading end, at the slice's end where that is least.
+  void TiltedMinima(double depth, const std::vector<Slice>& slices,
+                    const std::vector<double>& kappa, double* h) const;
   // Whether a part tilted with column slopes `kappa` fits laterally nowhere with its leading end
   // at `depth` (the assembly space is empty). Prepare-time.
   bool TiltedSpaceEmpty(double depth, const std::vector<double>& kappa) const;
