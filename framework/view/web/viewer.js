@@ -29,7 +29,9 @@ const view = {
   holders: [],  // several-feature scene: the group holding each part's mesh within its body
   labels: [],   // several-feature scene: each feature's name over its fixed part
   sequence: null,  // a sequence's newest sequence message
-  forcePeak: 0,  // the largest resistance of the run so far (of a finished run: of its history), N
+  // The largest resistance of the run so far (of a finished run: of its history), N: of the
+  // constrained stage, which the trace draws, and of any stage.
+  forcePeak: 0, forcePeakAny: 0,
 };
 // A several-feature scene (the scene message lists its features).
 const joint = () => Boolean(view.scene && view.scene.features && view.scene.features.length);
@@ -331,16 +333,25 @@ function niceUp(x) {
 }
 
 // Arrows are proportional to the force, so that two arrows compare as their forces do: the run's
-// largest resistance so far is drawn at most 30 % of the parts' size, at a round number of newtons
-// per mm of the scene (the key says which). Null before any force.
+// largest resistance so far in the constrained stage (in any stage before that stage) is drawn at
+// most 30 % of the parts' size, at a round number of newtons per mm of the scene (the key says
+// which). A positioning stage may push far harder than the fit resists (the pin's 8.8 kN against
+// its 1 kN): its arrows are cut at 60 % of the parts' size and the key says so. Null before any
+// force.
 function newtonsPerMm() {
-  return view.forcePeak > 0 ? niceUp(view.forcePeak / (0.3 * (view.size || 20))) : null;
+  const peak = view.forcePeak || view.forcePeakAny;
+  return peak > 0 ? niceUp(peak / (0.3 * (view.size || 20))) : null;
 }
 function arrowLength(force) {
   const scale = newtonsPerMm();
   return scale ? Math.abs(force) / scale : 0;
 }
+const arrowLimit = () => 0.6 * (view.size || 20);
 const peakOf = (force) => Math.max(Math.abs(force[1]), Math.hypot(force[0], force[2]));
+function notePeak(stage, force) {
+  view.forcePeakAny = Math.max(view.forcePeakAny, peakOf(force));
+  if (stage === 1) view.forcePeak = Math.max(view.forcePeak, peakOf(force));
+}
 
 function place(state) {
   if (joint()) {
@@ -360,11 +371,11 @@ function drawArrows(tip, force) {
   axialArrow.setDirection(new THREE.Vector3(0, fy >= 0 ? 1 : -1, 0));
   // The head stays a fixed share of the parts' size, never longer than the arrow.
   const head = (l) => Math.min(0.4 * l, 0.04 * (view.size || 20));
-  const la = arrowLength(fy);
+  const la = Math.min(arrowLength(fy), arrowLimit());
   axialArrow.visible = la > 1e-6;
   if (axialArrow.visible) axialArrow.setLength(la, head(la), 0.5 * head(la));
   radialArrow.position.copy(tip);
-  const lr = arrowLength(radial);
+  const lr = Math.min(arrowLength(radial), arrowLimit());
   radialArrow.visible = lr > 1e-6;
   if (radialArrow.visible) {
     radialArrow.setDirection(new THREE.Vector3(fx / radial, 0, fz / radial));
@@ -372,12 +383,13 @@ function drawArrows(tip, force) {
   }
 }
 
+// Three significant digits; thousands in full (1250, not 1.25e+3, which toPrecision gives).
 const fmt = (x, d = 3) => (Math.abs(x) >= 1e4 || (Math.abs(x) < 1e-3 && x !== 0))
-  ? x.toExponential(2) : x.toPrecision(d);
+  ? x.toExponential(2) : Math.abs(x) >= 1e3 ? x.toFixed(0) : x.toPrecision(d);
 
 function showState(state) {
   view.state = state;
-  view.forcePeak = Math.max(view.forcePeak, peakOf(state.force));
+  notePeak(state.stage, state.force);
   colourPressure(state);
   place(state);
   const [fx, fy, fz] = state.force;
@@ -500,8 +512,9 @@ function drawForceKey(ppm) {
   const [fx, fy, fz] = joint() ? J.bodyForce(view.state, view.scene) : view.state.force;
   values.innerHTML = `<span class="axial">axial ${fmt(Math.abs(fy))} N</span> · ` +
     `<span class="radial">radial ${fmt(Math.hypot(fx, fz))} N</span>`;
+  arrow.style.display = scale ? '' : 'none';  // an SVG element has no `hidden`
   if (!scale) {
-    $('force-scale-text').textContent = 'no force so far';
+    $('force-scale-text').textContent = view.history ? 'no force in this run' : 'no force so far';
     $('force-scale-note').textContent = '';
     return;
   }
@@ -510,7 +523,9 @@ function drawForceKey(ppm) {
   arrow.append(svg('line', { x1: 1, y1: 6, x2: px - 6, y2: 6, stroke: '#333', 'stroke-width': 2 }),
     svg('path', { d: `M${px} 6 L${px - 8} 2 L${px - 8} 10 Z`, fill: '#333' }));
   $('force-scale-text').textContent = `${round(reference)} N`;
-  $('force-scale-note').textContent = `arrow length: 1 mm = ${round(scale)} N`;
+  const cut = [Math.abs(fy), Math.hypot(fx, fz)].some((f) => f / scale > arrowLimit());
+  $('force-scale-note').textContent = `arrow length: 1 mm = ${round(scale)} N` +
+    (cut ? `; cut at ${round(arrowLimit() * scale)} N` : '');
 }
 
 function drawSpace(state) {
@@ -572,7 +587,8 @@ function drawTrace() {
     rows.forEach((row, i) => (i ? g.lineTo : g.moveTo).call(g, X(row[0]), Y(row[k])));
     g.stroke();
   }
-  g.fillText(`${fmt(y1, 2)} N`, 2, 14);
+  // The top force inside the plot: four digits (1100 N) are wider than the margin.
+  g.fillText(`${String(+y1.toPrecision(2))} N`, L + 3, 17);
   g.fillText('0', 24, B);
   g.fillText(`${x0.toFixed(1)}`, L, cv.height - 4);
   g.textAlign = 'right'; g.fillText(`${x1.toFixed(1)} ${rotationalPair() ? '° angle' : 'mm depth'}`, cv.width - 6, cv.height - 4);
@@ -630,7 +646,8 @@ function clearScene() {
   }
   for (const label of view.labels) label.element.remove();
   Object.assign(view, { meshes: [null, null], geometry: [null, null], holders: [], labels: [],
-    state: null, trace: [], history: null, finished: false, forcePeak: 0 });
+    state: null, trace: [], history: null, finished: false, forcePeak: 0,
+    forcePeakAny: 0 });
   document.body.dataset.parts = 0;
   $('features-panel').hidden = true;
   $('scrub').hidden = true;
@@ -780,7 +797,7 @@ function showFeatures(info) {
 function onHistory(rows) {
   view.history = rows;
   // The arrows' scale of the whole run: scrubbing does not change it.
-  for (const row of rows) view.forcePeak = Math.max(view.forcePeak, peakOf(row.force));
+  for (const row of rows) notePeak(row.stage, row.force);
   view.finished = true;
   $('scrub').hidden = false;
   const t = $('time');
