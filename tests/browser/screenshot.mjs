@@ -3,10 +3,11 @@
 // then saves a screenshot.
 //
 // node --experimental-websocket screenshot.mjs URL OUT.png [--min-frames N] [--timeout S]
-//      [--size WxH] [--eval JS] [--expect JS]
+//      [--size WxH] [--eval JS] [--expect JS | --expect-file FILE]
 // --eval runs JS in the page once the frames came (e.g. moves the time slider) and waits for
 // one more frame. --expect JS, evaluated in the page once the picture is drawn, must give true
-// (anything else is reported). Exit 0 on success, 1 with a message otherwise.
+// (anything else is reported); --expect-file reads that JS from FILE. Exit 0 on success, 1 with
+// a message otherwise.
 import { spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync, existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -22,7 +23,8 @@ const minFrames = Number(option('--min-frames', '1'));
 const timeoutMs = 1000 * Number(option('--timeout', '90'));
 const [width, height] = option('--size', '1280x800').split('x').map(Number);
 const script = option('--eval', '');
-const expectation = option('--expect', '');
+const expectFile = option('--expect-file', '');
+const expectation = expectFile ? readFileSync(expectFile, 'utf8') : option('--expect', '');
 const chromium = process.env.CHROMIUM || '/usr/bin/chromium';
 
 const profile = mkdtempSync(join(tmpdir(), 'fitfeel-chromium-'));

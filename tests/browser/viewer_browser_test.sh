@@ -3,9 +3,9 @@
 # surface with curl (the page, the WebSocket handshake's 101, 404 for traversal and unknown
 # paths), loads the page in headless Chromium (screenshot.mjs, DevTools protocol), scrubs the
 # finished run's time slider, and checks the screenshot shows the parts (not a blank canvas) and,
-# when given, that EXPECT (JavaScript evaluated in the page) gives true.
+# when given, that EXPECT (JavaScript evaluated in the page, or a file of it) gives true.
 #
-# viewer_browser_test.sh FITFEEL SCENARIO OUT.png [EXPECT]
+# viewer_browser_test.sh FITFEEL SCENARIO OUT.png [EXPECT | EXPECT.js]
 set -euo pipefail
 fitfeel=$1 scenario=$2 out=$3 expect_js=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -49,10 +49,13 @@ expect 101 --max-time 10 -H "Connection: Upgrade" -H "Upgrade: websocket" \
 expect 403 --max-time 10 -H "Connection: Upgrade" -H "Upgrade: websocket" -H "Origin: http://evil.example" \
   -H "Sec-WebSocket-Version: 13" -H "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==" "$url/ws"
 
+expectation=()
+if [ -f "$expect_js" ]; then expectation=(--expect-file "$expect_js")
+elif [ -n "$expect_js" ]; then expectation=(--expect "$expect_js"); fi
 # The slider to 45 % of the run: the server answers with that instant's pressure map.
 node --no-warnings --experimental-websocket "$here/screenshot.mjs" "$url/" "$out" --timeout 150 \
   --eval "const t = document.getElementById('time'); t.value = Math.round(0.45 * t.max); t.dispatchEvent(new Event('input'))" \
-  ${expect_js:+--expect "$expect_js"}
+  "${expectation[@]}"
 
 # The 3D view is the left part of the window (the panel is 290 px on the right): the parts must
 # cover a share of it (a key's thin flanks cover 4 %, a shaft 30 %), in shades of lit surfaces.

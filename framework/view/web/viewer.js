@@ -29,6 +29,9 @@ const view = {
   holders: [],  // several-feature scene: the group holding each part's mesh within its body
   labels: [],   // several-feature scene: each feature's name over its fixed part
   sequence: null,  // a sequence's newest sequence message
+  // The largest resistance of the run so far (of a finished run: of its history), N: of the
+  // constrained stage, which the trace draws, and of any stage.
+  forcePeak: 0, forcePeakAny: 0,
 };
 // A several-feature scene (the scene message lists its features).
 const joint = () => Boolean(view.scene && view.scene.features && view.scene.features.length);
@@ -58,6 +61,7 @@ function requestRender() {
     renderPending = false;
     renderer.render(scene, camera);
     if (view.labels.length) placeLabels();
+    drawKeys();
   });
 }
 controls.addEventListener('change', requestRender);
@@ -261,7 +265,8 @@ function placeLabels() {
 }
 
 // Both parts as they stand before insertion (the moving one's leading end at the entrance), seen
-// from the side, slightly from above and in front.
+// from the side, a little from above and in front, so that the mating axis y runs across the
+// screen; as close as lets their bounding box fit with a margin for the keys in the corners.
 function frameCamera() {
   const saved = moving.position.clone();
   const twist = moving.rotation.y;
@@ -276,9 +281,26 @@ function frameCamera() {
   if (box.isEmpty()) return;
   const centre = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3());
   const r = Math.max(size.x, size.y, size.z);
-  camera.position.set(centre.x + 1.9 * r, centre.y - 0.45 * r, centre.z + 0.75 * r);
-  camera.near = r / 100;
-  camera.far = r * 100;
+  camera.position.copy(centre).add(new THREE.Vector3(1, -0.22, 0.42).normalize());
+  camera.lookAt(centre);
+  camera.updateMatrixWorld(true);
+  const e = camera.matrixWorld.elements;
+  const right = new THREE.Vector3(e[0], e[1], e[2]), up = new THREE.Vector3(e[4], e[5], e[6]);
+  const back = new THREE.Vector3(e[8], e[9], e[10]);
+  // A corner at (u, v) across the view and w towards the camera fits at distance d where
+  // |u| <= (d - w) tan(half width) and |v| <= (d - w) tan(half height); the box takes 62 % of
+  // the width and 70 % of the height, leaving the corners to the keys.
+  const tanV = Math.tan(camera.fov * Math.PI / 360), tanH = tanV * camera.aspect;
+  let d = 0;
+  for (let i = 0; i < 8; ++i) {
+    const q = new THREE.Vector3(i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y,
+      i & 4 ? box.max.z : box.min.z).sub(centre);
+    const w = q.dot(back);
+    d = Math.max(d, w + Math.abs(q.dot(right)) / (0.62 * tanH), w + Math.abs(q.dot(up)) / (0.7 * tanV));
+  }
+  camera.position.copy(centre).addScaledVector(back, d);
+  camera.near = Math.max(d - 2 * r, d / 1000);
+  camera.far = d + 100 * r;
   camera.updateProjectionMatrix();
   controls.target.copy(centre);
   controls.update();
@@ -300,9 +322,35 @@ function colourPressure(state) {
   g.attributes.color.needsUpdate = true;
 }
 
-// Arrow length grows with the logarithm of the force: newtons to kilonewtons stay readable.
+// 1, 2 or 5 times a power of ten: the nearest to x on a log scale, or the smallest at least x.
+function nice(x) {
+  const e = Math.floor(Math.log10(x)), m = x / 10 ** e;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * 10 ** e;
+}
+function niceUp(x) {
+  const e = Math.floor(Math.log10(x)), m = x / 10 ** e;
+  return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * 10 ** e;
+}
+
+// Arrows are proportional to the force, so that two arrows compare as their forces do: the run's
+// largest resistance so far in the constrained stage (in any stage before that stage) is drawn at
+// most 30 % of the parts' size, at a round number of newtons per mm of the scene (the key says
+// which). A positioning stage may push far harder than the fit resists (the pin's 8.8 kN against
+// its 1 kN): its arrows are cut at 60 % of the parts' size and the key says so. Null before any
+// force.
+function newtonsPerMm() {
+  const peak = view.forcePeak || view.forcePeakAny;
+  return peak > 0 ? niceUp(peak / (0.3 * (view.size || 20))) : null;
+}
 function arrowLength(force) {
-  return (view.size || 20) * 0.12 * Math.log10(1 + Math.abs(force) / 0.1);
+  const scale = newtonsPerMm();
+  return scale ? Math.abs(force) / scale : 0;
+}
+const arrowLimit = () => 0.6 * (view.size || 20);
+const peakOf = (force) => Math.max(Math.abs(force[1]), Math.hypot(force[0], force[2]));
+function notePeak(stage, force) {
+  view.forcePeakAny = Math.max(view.forcePeakAny, peakOf(force));
+  if (stage === 1) view.forcePeak = Math.max(view.forcePeak, peakOf(force));
 }
 
 function place(state) {
@@ -321,23 +369,27 @@ function drawArrows(tip, force) {
   const [fx, fy, fz] = force, radial = Math.hypot(fx, fz);
   axialArrow.position.copy(tip);
   axialArrow.setDirection(new THREE.Vector3(0, fy >= 0 ? 1 : -1, 0));
-  const la = arrowLength(fy);
+  // The head stays a fixed share of the parts' size, never longer than the arrow.
+  const head = (l) => Math.min(0.4 * l, 0.04 * (view.size || 20));
+  const la = Math.min(arrowLength(fy), arrowLimit());
   axialArrow.visible = la > 1e-6;
-  if (axialArrow.visible) axialArrow.setLength(la, 0.25 * la, 0.12 * la);
+  if (axialArrow.visible) axialArrow.setLength(la, head(la), 0.5 * head(la));
   radialArrow.position.copy(tip);
-  const lr = arrowLength(radial);
+  const lr = Math.min(arrowLength(radial), arrowLimit());
   radialArrow.visible = lr > 1e-6;
   if (radialArrow.visible) {
     radialArrow.setDirection(new THREE.Vector3(fx / radial, 0, fz / radial));
-    radialArrow.setLength(lr, 0.25 * lr, 0.12 * lr);
+    radialArrow.setLength(lr, head(lr), 0.5 * head(lr));
   }
 }
 
+// Three significant digits; thousands in full (1250, not 1.25e+3, which toPrecision gives).
 const fmt = (x, d = 3) => (Math.abs(x) >= 1e4 || (Math.abs(x) < 1e-3 && x !== 0))
-  ? x.toExponential(2) : x.toPrecision(d);
+  ? x.toExponential(2) : Math.abs(x) >= 1e3 ? x.toFixed(0) : x.toPrecision(d);
 
 function showState(state) {
   view.state = state;
+  notePeak(state.stage, state.force);
   colourPressure(state);
   place(state);
   const [fx, fy, fz] = state.force;
@@ -347,12 +399,11 @@ function showState(state) {
     `depth ${(MM * state.depth).toFixed(3)} mm · ${stage}` +
     ((state.flags & F.FLAG_INTERFERENCE) ? ' · interference' : '') +
     (state.dropped ? ` · ${state.dropped} samples skipped (the run outpaced the display)` : '');
-  $('forces').innerHTML =
-    `<span class="axial">axial resistance ${fmt(Math.abs(fy))} N</span><br>` +
-    `<span class="radial">radial resistance ${fmt(Math.hypot(fx, fz))} N</span>` +
-    (view.scene && view.scene.rotational ? `<br>torque ${fmt(Math.hypot(...state.torque))} N·m` : '') +
-    (joint() ? `<br>twist ${fmt(1e3 * state.angle)} mrad · torque about the axis ` +
-      `${fmt(state.torque[1])} N·m` : '');
+  // The axial and radial resistances are in the key over the 3D view, by their arrows.
+  $('forces').textContent = [
+    view.scene && view.scene.rotational ? `torque ${fmt(Math.hypot(...state.torque))} N·m` : '',
+    joint() ? `twist ${fmt(1e3 * state.angle)} mrad · torque about the axis ` +
+      `${fmt(state.torque[1])} N·m` : ''].filter((t) => t).join(' · ');
   drawLegend(state);
   drawSpace(state);
   if (!finished && state.stage === 1) {
@@ -363,24 +414,118 @@ function showState(state) {
   requestRender();
 }
 
+// The colour bar of the pressure map with its scale in MPa; grey, and said in words, where
+// nothing touches (the map's untouched cells are that grey) or the law gives no pressure map.
+const UNTOUCHED = [0.78, 0.78, 0.76];
 function drawLegend(state) {
   const cv = $('legend'), g = cv.getContext('2d');
-  g.clearRect(0, 0, cv.width, cv.height);
-  const w = cv.width - 20;
-  for (let x = 0; x < w; ++x) {
-    const [r, gg, b] = viridis(x / (w - 1));
+  const none = view.scene && !view.scene.pressure ? 'no pressure map for this law'
+    : state.pressureMax > 0 ? '' : 'no contact';
+  for (let x = 0; x < cv.width; ++x) {
+    const [r, gg, b] = none ? UNTOUCHED : viridis(x / (cv.width - 1));
     g.fillStyle = `rgb(${255 * r},${255 * gg},${255 * b})`;
-    g.fillRect(10 + x, 4, 1, 16);
+    g.fillRect(x, 0, 1, cv.height);
   }
-  g.fillStyle = '#222';
-  g.font = '11px system-ui';
   const max = state.pressureMax / 1e6;
-  g.fillText('0', 10, 34);
-  const label = view.scene && !view.scene.pressure ? 'no pressure map for this law'
-    : `${fmt(max)} MPa`;
-  g.textAlign = 'right';
-  g.fillText(label, cv.width - 10, 34);
-  g.textAlign = 'left';
+  const ticks = $('pressure-ticks');
+  ticks.replaceChildren();
+  if (!none) {
+    [0, 0.5, 1].forEach((t) => {
+      const tick = document.createElement('span');
+      tick.style.left = `${100 * t}%`;
+      tick.textContent = t === 0 ? '0' : t === 1 ? `${fmt(max)} MPa` : fmt(t * max);
+      ticks.appendChild(tick);
+    });
+  }
+  ticks.hidden = Boolean(none);
+  const range = $('pressure-range');
+  range.className = none ? 'none' : '';
+  range.textContent = none || `0 to ${fmt(max)} MPa; grey: no contact`;
+}
+
+// --- keys over the 3D view -------------------------------------------------------------------
+// Screen pixels per mm of the scene at the orbit's centre, where the parts are (a perspective
+// view draws nearer things larger: the scale bar and the arrows' key hold at that depth).
+function pixelsPerMm() {
+  const d = camera.position.distanceTo(controls.target);
+  return $('scene').clientHeight / (2 * d * Math.tan(camera.fov * Math.PI / 360));
+}
+
+// A round number as it reads: 5, 0.2, 2000 (not 5.00).
+const round = (x) => String(+x.toPrecision(3));
+const lengthText = (mm) => (mm >= 1 ? `${round(mm)} mm` : `${round(1e3 * mm)} µm`);
+
+// Drawn after every render: a zoom or turn of the camera changes the scale and the axes.
+function drawKeys() {
+  const ppm = pixelsPerMm();
+  if (!(ppm > 0) || !Number.isFinite(ppm)) return;
+  const bar = nice(100 / ppm);
+  $('scale-line').style.width = `${Math.round(bar * ppm)}px`;
+  $('scale-text').textContent = lengthText(bar);
+  document.body.dataset.scaleBarMm = bar;
+  drawTriad();
+  drawForceKey(ppm);
+}
+
+const SVG = 'http://www.w3.org/2000/svg';
+function svg(tag, attributes, text) {
+  const e = document.createElementNS(SVG, tag);
+  for (const [k, v] of Object.entries(attributes)) e.setAttribute(k, v);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+// The scene's axes as the camera sees them, the farthest drawn first; y, the mating axis, bold.
+function drawTriad() {
+  const triad = $('triad'), cx = 48, cy = 46, length = 28;
+  const axes = [['x', [1, 0, 0]], ['y', [0, 1, 0]], ['z', [0, 0, 1]]].map(([name, a]) => {
+    const d = new THREE.Vector3(...a).transformDirection(camera.matrixWorldInverse);
+    return { name, x: d.x, y: -d.y, depth: d.z };
+  }).sort((a, b) => a.depth - b.depth);
+  triad.replaceChildren();
+  for (const a of axes) {
+    const bold = a.name === 'y';
+    triad.appendChild(svg('line', { x1: cx, y1: cy, x2: cx + length * a.x, y2: cy + length * a.y,
+      stroke: bold ? '#111' : '#555', 'stroke-width': bold ? 3 : 1.6, 'stroke-linecap': 'round' }));
+    // The letter beyond the tip, or beside the centre where the axis points at the viewer.
+    const n = Math.hypot(a.x, a.y), ux = n > 0.2 ? a.x / n : 0.7, uy = n > 0.2 ? a.y / n : -0.7;
+    const reach = length * Math.max(n, 0.3) + 9;
+    triad.appendChild(svg('text', { x: cx + reach * ux, y: cy + reach * uy + 4,
+      'text-anchor': 'middle' }, a.name));
+  }
+  triad.appendChild(svg('text', { x: cx, y: 106, 'text-anchor': 'middle', class: 'caption' },
+    'y: mating axis'));
+}
+
+// The resistances' values and the arrows' scale: a round force and the arrow it gets on screen at
+// the orbit's centre, and the scale in newtons per mm of the scene.
+function drawForceKey(ppm) {
+  const values = $('force-values'), arrow = $('force-arrow');
+  const scale = newtonsPerMm();
+  arrow.replaceChildren();
+  if (!view.state) {
+    values.textContent = 'waiting for the first state';
+    $('force-scale-text').textContent = '';
+    $('force-scale-note').textContent = '';
+    return;
+  }
+  const [fx, fy, fz] = joint() ? J.bodyForce(view.state, view.scene) : view.state.force;
+  values.innerHTML = `<span class="axial">axial ${fmt(Math.abs(fy))} N</span> · ` +
+    `<span class="radial">radial ${fmt(Math.hypot(fx, fz))} N</span>`;
+  arrow.style.display = scale ? '' : 'none';  // an SVG element has no `hidden`
+  if (!scale) {
+    $('force-scale-text').textContent = view.history ? 'no force in this run' : 'no force so far';
+    $('force-scale-note').textContent = '';
+    return;
+  }
+  const reference = nice(70 / ppm * scale), px = Math.min(reference / scale * ppm, 106);
+  arrow.setAttribute('width', Math.ceil(px) + 2);
+  arrow.append(svg('line', { x1: 1, y1: 6, x2: px - 6, y2: 6, stroke: '#333', 'stroke-width': 2 }),
+    svg('path', { d: `M${px} 6 L${px - 8} 2 L${px - 8} 10 Z`, fill: '#333' }));
+  $('force-scale-text').textContent = `${round(reference)} N`;
+  const cut = [Math.abs(fy), Math.hypot(fx, fz)].some((f) => f / scale > arrowLimit());
+  $('force-scale-note').textContent = `arrow length: 1 mm = ${round(scale)} N` +
+    (cut ? `; cut at ${round(arrowLimit() * scale)} N` : '');
 }
 
 function drawSpace(state) {
@@ -442,7 +587,8 @@ function drawTrace() {
     rows.forEach((row, i) => (i ? g.lineTo : g.moveTo).call(g, X(row[0]), Y(row[k])));
     g.stroke();
   }
-  g.fillText(`${fmt(y1, 2)} N`, 2, 14);
+  // The top force inside the plot: four digits (1100 N) are wider than the margin.
+  g.fillText(`${String(+y1.toPrecision(2))} N`, L + 3, 17);
   g.fillText('0', 24, B);
   g.fillText(`${x0.toFixed(1)}`, L, cv.height - 4);
   g.textAlign = 'right'; g.fillText(`${x1.toFixed(1)} ${rotationalPair() ? '° angle' : 'mm depth'}`, cv.width - 6, cv.height - 4);
@@ -500,7 +646,8 @@ function clearScene() {
   }
   for (const label of view.labels) label.element.remove();
   Object.assign(view, { meshes: [null, null], geometry: [null, null], holders: [], labels: [],
-    state: null, trace: [], history: null, finished: false });
+    state: null, trace: [], history: null, finished: false, forcePeak: 0,
+    forcePeakAny: 0 });
   document.body.dataset.parts = 0;
   $('features-panel').hidden = true;
   $('scrub').hidden = true;
@@ -512,6 +659,8 @@ function clearScene() {
   // Nothing of the step before stands for this one's state until its first state frame.
   $('status').textContent = 'waiting for this step\'s first state';
   $('forces').replaceChildren();
+  $('pressure-ticks').replaceChildren();
+  $('pressure-range').textContent = '';
   for (const cv of [$('legend'), $('space')]) {
     cv.getContext('2d').clearRect(0, 0, cv.width, cv.height);
   }
@@ -647,6 +796,8 @@ function showFeatures(info) {
 
 function onHistory(rows) {
   view.history = rows;
+  // The arrows' scale of the whole run: scrubbing does not change it.
+  for (const row of rows) notePeak(row.stage, row.force);
   view.finished = true;
   $('scrub').hidden = false;
   const t = $('time');
