@@ -9,7 +9,18 @@
 
 namespace fitfeel {
 
+namespace {
+thread_local int scoped_threads = 0;  // 0: none set on this thread
+}  // namespace
+
+ScopedPrepareThreads::ScopedPrepareThreads(int threads) : outer_(scoped_threads) {
+  scoped_threads = std::max(1, threads);
+}
+
+ScopedPrepareThreads::~ScopedPrepareThreads() { scoped_threads = outer_; }
+
 int PrepareThreads() {
+  if (scoped_threads > 0) return scoped_threads;
   if (const char* text = std::getenv("FITFEEL_PREPARE_THREADS")) {
     char* end = nullptr;
     const long n = std::strtol(text, &end, 10);

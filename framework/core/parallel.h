@@ -10,6 +10,20 @@ namespace fitfeel {
 // positive integer, else the hardware's concurrency (at least 1). Never used in the tick.
 FITFEEL_API int PrepareThreads();
 
+// While it lives, PrepareThreads() gives `threads` on the thread that made it (and only there): a
+// study whose pairs keep every core busy prepares each pair on the pair's own thread. What a
+// prepare computes never depends on its thread count.
+class FITFEEL_API ScopedPrepareThreads {
+ public:
+  explicit ScopedPrepareThreads(int threads);
+  ~ScopedPrepareThreads();
+  ScopedPrepareThreads(const ScopedPrepareThreads&) = delete;
+  ScopedPrepareThreads& operator=(const ScopedPrepareThreads&) = delete;
+
+ private:
+  int outer_;
+};
+
 // Calls body(begin, end) on `threads` contiguous, disjoint chunks of [0, count) (the calling
 // thread takes the first), and returns when all are done; rethrows the first chunk's exception.
 // The split never changes what a chunk computes, so work whose items are independent gives the

@@ -12,6 +12,8 @@
 
 namespace fitfeel {
 
+class SharedPrepare;
+
 // Pose of the moving part relative to the fixed one, in the fixed part's mating frame.
 struct MatingPose {
   double depth = 0.0;                // insertion along the mating axis (y), m; 0 = first contact
@@ -107,6 +109,12 @@ class FITFEEL_API ContactAnalyzer {
   // Prepare-time; may allocate.
   void Prepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                const SkinModelShape& outer_sms, const ModelSettings& settings);
+  // The same, taking from `shared` (and leaving there) what depends only on the scene, for the
+  // other prepares of runs of the same scene (a study's pairs); null: nothing shared. The
+  // analyzer keeps no reference to it: its tables are its own either way, bit for bit the same.
+  void Prepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+               const SkinModelShape& outer_sms, const ModelSettings& settings,
+               SharedPrepare* shared);
   // Per tick: no allocation, no locks, no exceptions, no I/O.
   void Evaluate(const MatingPose& pose, ContactState* out) const noexcept;
   bool prepared() const { return prepared_; }
@@ -135,9 +143,13 @@ class FITFEEL_API ContactAnalyzer {
   virtual bool DoAssemblySpace(const MatingPose& pose, std::vector<Eigen::Vector2d>* polygon) const;
   virtual bool DoTakesHeldTilt() const { return false; }
   virtual bool DoTakesCompliantTilt() const { return false; }
+  // During DoPrepare: what this prepare shares with the others of the same scene; null when it
+  // shares nothing.
+  SharedPrepare* shared_prepare() const { return shared_; }
 
  private:
   bool prepared_ = false;
+  SharedPrepare* shared_ = nullptr;  // set only while Prepare runs
 };
 
 }  // namespace fitfeel

@@ -110,9 +110,20 @@ void VariationGenerator::DoConfigure(const SurfaceOptions&) {}
 void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                               const PartSpec& outer, const SkinModelShape& outer_sms,
                               const ModelSettings& settings) {
+  Prepare(inner, inner_sms, outer, outer_sms, settings, nullptr);
+}
+
+void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
+                              const PartSpec& outer, const SkinModelShape& outer_sms,
+                              const ModelSettings& settings, SharedPrepare* shared) {
   if (inner_sms.grid.size() == 0 || outer_sms.grid.size() == 0) {
     throw UserError("contact analysis needs a skin model shape for both parts");
   }
+  struct Sharing {  // cleared however DoPrepare ends
+    SharedPrepare*& at;
+    ~Sharing() { at = nullptr; }
+  } sharing{shared_};
+  shared_ = shared;
   DoPrepare(inner, inner_sms, outer, outer_sms, settings);
   prepared_ = true;
 }

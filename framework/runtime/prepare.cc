@@ -100,7 +100,7 @@ std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(const Scene& 
   return deviations;
 }
 
-PreparedScene Prepare(const Scene& scene) {
+PreparedScene Prepare(const Scene& scene, SharedPrepare* shared) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
@@ -147,7 +147,7 @@ PreparedScene Prepare(const Scene& scene) {
     }
   }
   prepared.analyzer->Prepare(scene.inner, *prepared.inner_sms, scene.outer, *prepared.outer_sms,
-                             model);
+                             model, shared);
   prepared.law = scene.surface->MakeLaw(scene.model.law);
   prepared.law->Prepare(scene.inner, scene.outer, scene.model);
   prepared.analyze_seconds = SecondsSince(t);
@@ -170,7 +170,8 @@ PreparedScene Prepare(const Scene& scene) {
       throw UnsupportedError("surface type '" + feature.surface_id +
                              "' provides no contact analyzer");
     }
-    p.analyzer->Prepare(feature.inner, *p.inner_sms, feature.outer, *p.outer_sms, feature.model);
+    p.analyzer->Prepare(feature.inner, *p.inner_sms, feature.outer, *p.outer_sms, feature.model,
+                        shared);
     p.law = feature.surface->MakeLaw(feature.model.law);
     p.law->Prepare(feature.inner, feature.outer, feature.model);
     prepared.analyze_seconds += SecondsSince(t);

@@ -9,6 +9,7 @@
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/resistance_law.h"
+#include "framework/model/shared_prepare.h"
 #include "framework/model/skin_model_shape.h"
 #include "framework/model/surface_type.h"
 #include "framework/model/variation_generator.h"
@@ -95,7 +96,9 @@ FITFEEL_API std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(c
 // scene then does the same for each further feature in order, and last draws the features'
 // positions (inner side, then outer, feature by feature). Throws
 // UnsupportedError for a surface type that cannot render forces, UserError for anything the
-// surface plugin refuses.
-FITFEEL_API PreparedScene Prepare(const Scene& scene);
+// surface plugin refuses. `shared`, when given, is what the prepares of runs of this same scene
+// share (SharedPrepare: a study's pairs); the prepared scene is bit for bit the same with or
+// without it.
+FITFEEL_API PreparedScene Prepare(const Scene& scene, SharedPrepare* shared = nullptr);
 
 }  // namespace fitfeel

@@ -111,7 +111,7 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
 
   const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
   RunResult result;
-  PreparedScene prepared = Prepare(scene);
+  PreparedScene prepared = Prepare(scene, options.shared);
   if (stopped()) throw Interrupted("while preparing the scene; no outputs written");
   if (options.prepared) options.prepared(prepared);
 

@@ -34,6 +34,9 @@ struct RunOptions {
   // no outputs written"). An interrupted run writes nothing: a trace cut short would read as a
   // complete run of another duration.
   const std::atomic<bool>* stop = nullptr;
+  // Borrowed, may be null: what the prepare takes from and leaves for the prepares of other runs
+  // of the same scene (a study's pairs; SharedPrepare). The run's results do not depend on it.
+  SharedPrepare* shared = nullptr;
 };
 
 struct RunResult {

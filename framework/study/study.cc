@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,8 @@
 #include "framework/core/atomic_files.h"
 #include "framework/core/error.h"
 #include "framework/core/number_text.h"
+#include "framework/core/parallel.h"
+#include "framework/model/shared_prepare.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/scene_stages.h"
@@ -49,12 +52,13 @@ LoadOptions StudyLoad(bool allow_large) {
 }
 
 PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int index,
-                   std::uint64_t study_seed, const LoadOptions& load) {
+                   std::uint64_t study_seed, const LoadOptions& load, SharedPrepare* shared) {
   PairResult pair;
   pair.pair = index;
   pair.seed = PairSeed(study_seed, index);
-  // A scene of its own per pair: its own device and plugin objects, nothing shared between pairs
-  // but the registry's read-only tables.
+  // A scene of its own per pair: its own device and plugin objects. Pairs share only the
+  // registry's read-only tables and what the prepare computes from the scene alone (`shared`:
+  // read-only once made, the same bits as a pair's own solve would give).
   Scene scene = LoadScene(file, registry, load);
   const bool checked =
       scene.inner.material.yield_strength > 0.0 || scene.outer.material.yield_strength > 0.0;
@@ -64,6 +68,7 @@ PairResult RunPair(const fs::path& file, const PluginRegistry& registry, int ind
   RunOptions options;
   options.seed = pair.seed;
   options.clock = ClockMode::kVirtual;
+  options.shared = shared;
   options.prepared = [&pair](const PreparedScene& prepared) {
     const PairGeometry geometry = MeasurePair(*prepared.inner_sms, *prepared.outer_sms);
     pair.shaft_size_um = geometry.inner_size * 1e6;
@@ -103,7 +108,11 @@ nlohmann::json DistributionJson(const Distribution& d) {
 PairResult RunStudyPair(const fs::path& file, const PluginRegistry& registry, std::uint64_t seed,
                         int index) {
   if (index < 0) throw UserError("study: pair index must be >= 0, got " + std::to_string(index));
-  return RunPair(file, registry, index, seed, StudyLoad(false));
+  // A worker process runs pair after pair of the same study: what their prepares share is kept
+  // for the process's life. Its keys spell out every input, so pairs of other scenes, or a
+  // scenario edited between calls, never take a value that is not theirs.
+  static SharedPrepare shared;
+  return RunPair(file, registry, index, seed, StudyLoad(false), &shared);
 }
 
 std::uint64_t PairSeed(std::uint64_t seed, int index) {
@@ -168,15 +177,22 @@ StudyResult RunStudy(const fs::path& file, const PluginRegistry& registry,
   std::mutex report_mutex;  // progress callback and the first failure; never per tick
   std::exception_ptr failure;
   int done = 0;
+  // What the pairs' prepares compute from the scene alone, made by the first pair that needs it.
+  SharedPrepare shared;
   const auto start = Clock::now();
   auto worker = [&] {
+    // Pairs on every thread already keep the cores busy: each pair prepares on its own thread
+    // instead of spreading over all of them (the result does not depend on it).
+    std::optional<ScopedPrepareThreads> one_thread;
+    if (result.threads > 1) one_thread.emplace(1);
     while (!failed.load()) {
       if (settings.stop != nullptr && settings.stop->load()) return;
       const int i = next.fetch_add(1);
       if (i >= settings.pairs) return;
       try {
         slots[static_cast<std::size_t>(i)] =
-            RunPair(file, registry, i, settings.seed, StudyLoad(settings.allow_large));
+            RunPair(file, registry, i, settings.seed, StudyLoad(settings.allow_large),
+                    settings.share_prepare ? &shared : nullptr);
       } catch (...) {
         std::lock_guard<std::mutex> lock(report_mutex);
         if (!failure) failure = std::current_exception();

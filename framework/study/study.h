@@ -30,6 +30,10 @@ struct StudySettings {
   // Polled before each pair starts; when it becomes true no new pair starts and the pairs under
   // way finish, so the result holds the pairs 0 .. k-1 for some k (a valid, smaller study).
   const std::atomic<bool>* stop = nullptr;
+  // Pairs share what their prepares compute from the scene alone (SharedPrepare: the elastic
+  // model's elements); off, every pair computes everything itself. The pairs are the same bit for
+  // bit either way: off is for comparing the two.
+  bool share_prepare = true;
   // Called (from the worker threads, serialised) after each finished pair with the count done.
   std::function<void(int done, int total)> progress;
 };
@@ -44,7 +48,7 @@ struct PairResult {
   // any offset but no tilt (see README.md); negative: the parts must deform to pass. Absent for a
   // surface type that is not a circular cylinder.
   std::optional<double> min_clearance_um;
-  bool interfering = false;  // any constrained tick of the run was in interference
+  bool interfering = false;   // any constrained tick of the run was in interference
   double axial_mean_N = 0.0;  // over the constrained ticks (summary.json's axial_resistance_N)
   double axial_max_N = 0.0;
   double radial_max_N = 0.0;
@@ -54,7 +58,7 @@ struct PairResult {
   // strength.
   std::optional<double> elastic_utilisation_max;
   bool plastic = false;  // some tick yielded (utilisation > 1): the elastic model no longer holds
-  int rejections = 0;  // parts a statistical process scrapped before this pair's two parts
+  int rejections = 0;    // parts a statistical process scrapped before this pair's two parts
   double prepare_s = 0.0;
   double wall_s = 0.0;
 };

@@ -16,6 +16,7 @@
 #include "framework/core/parallel.h"
 #include "framework/core/simd_clones.h"
 #include "framework/model/convex_polygon.h"
+#include "framework/model/shared_prepare.h"
 #include "surfaces/common/grid_rows.h"
 #include "surfaces/cylindrical/cylindrical_law.h"
 #include "surfaces/cylindrical/cylindrical_options.h"
@@ -893,7 +894,38 @@ void CylinderContactAnalyzer::SolvePartModes(std::vector<AxialCoupling>* hub,
 
 void CylinderContactAnalyzer::EnsurePartModes() {
   const std::lock_guard<std::mutex> lock(modes_mutex_);
-  if (hub_modes_.empty()) SolvePartModes(&hub_modes_, &shaft_modes_);
+  if (!hub_modes_.empty()) return;
+  SharedPrepare* shared = shared_prepare();
+  if (shared == nullptr) {
+    SolvePartModes(&hub_modes_, &shaft_modes_);
+    return;
+  }
+  // The elements depend on the parts' bodies and coupling rows alone, never on their drawn
+  // variations: one solve serves every pair of a study (a tenth of a transition fit's prepare).
+  std::string key = "cylindrical part modes:";
+  for (const AxialBody* body : {&hub_body_, &shaft_body_}) {
+    for (double x : {body->inner_radius, body->outer_radius, body->material.youngs_modulus,
+                     body->material.poisson}) {
+      AppendKey(&key, x);
+    }
+    key += body->loaded_inside ? "i" : "o";
+    key += body->held_faces ? "h;" : "f;";
+  }
+  for (const std::vector<double>* rows : {&hub_coupling_rows_, &shaft_coupling_rows_}) {
+    for (double x : *rows) AppendKey(&key, x);
+    key += ';';
+  }
+  for (int order : coupled_orders_) key += std::to_string(order) + ',';
+  struct Modes {
+    std::vector<AxialCoupling> hub, shaft;
+  };
+  const std::shared_ptr<const Modes> modes = shared->Get<Modes>(key, [this] {
+    Modes m;
+    SolvePartModes(&m.hub, &m.shaft);
+    return m;
+  });
+  hub_modes_ = modes->hub;
+  shaft_modes_ = modes->shaft;
 }
 
 RigidContactResult CylinderContactAnalyzer::SolveSections(

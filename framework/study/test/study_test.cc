@@ -180,6 +180,48 @@ TEST_F(PaperStudy, SamePairsWhateverTheThreadCount) {
   }
 }
 
+// The first `rows` pairs of data/NAME-seed1-20-pairs.csv: pairs.csv of a 20-pair study of
+// scenarios/NAME.yaml, seed 1, with every pair prepared alone on one thread (nothing shared between
+// pairs).
+std::string ReferenceRows(const std::string& name, int rows) {
+  std::ifstream in(fs::path(FITFEEL_TEST_SOURCE_DIR) / "framework/study/test/data" /
+                   (name + "-seed1-20-pairs.csv"));
+  std::string text, line;
+  for (int i = 0; i <= rows && std::getline(in, line); ++i) text += line + '\n';
+  return text;
+}
+
+// Pairs share what their prepares compute from the scene alone, and run on two threads: every
+// row is still byte for byte what the pair computes alone. A transition fit (some pairs interfere,
+// so the elastic model's elements are made once and shared) and an interference fit (every pair
+// needs them), each from a cold start and on threads racing for the first solve.
+TEST_F(PaperStudy, SharedPrepareGivesThePairsOfUnsharedOnes) {
+  for (const auto& [name, pairs] : {std::pair{std::string("paper-case1-h7js6"), 20},
+                                    std::pair{std::string("fits-20mm-h7n6"), 6}}) {
+    for (int threads : {1, 2}) {
+      StudySettings s;
+      s.pairs = pairs;
+      s.threads = threads;
+      const StudyResult r = RunStudy(
+          fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios" / (name + ".yaml"), registry_, s);
+      EXPECT_EQ(PairsCsv(r), ReferenceRows(name, pairs)) << name << ", " << threads << " threads";
+    }
+  }
+  // And against this build's own unshared path.
+  StudySettings shared;
+  shared.pairs = 4;
+  shared.seed = 11;
+  shared.threads = 2;
+  StudySettings alone = shared;
+  alone.share_prepare = false;
+  const fs::path press = fs::path(FITFEEL_TEST_SOURCE_DIR) / "scenarios/fits-20mm-h7n6.yaml";
+  EXPECT_EQ(PairsCsv(RunStudy(press, registry_, shared)),
+            PairsCsv(RunStudy(press, registry_, alone)));
+  // One pair alone (the distributed study's task) keeps what it made for the next call.
+  EXPECT_EQ(RunStudyPair(scene_, registry_, 1, 3).axial_mean_N,
+            RunStudyPair(scene_, registry_, 1, 3).axial_mean_N);
+}
+
 TEST_F(PaperStudy, StopLeavesACompletePrefix) {
   std::atomic<bool> stop{false};
   StudySettings s;
