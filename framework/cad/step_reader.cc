@@ -100,6 +100,8 @@ class Reader {
       case GeomAbs_Sphere:
         out.kind = SurfaceKind::kSphere;
         origin = surface.Sphere().Location();
+        // A band of a sphere is bounded by circles of latitude about its own axis.
+        axis = surface.Sphere().Position().Direction();
         out.radius = surface.Sphere().Radius() * kMetresPerReaderUnit;
         break;
       case GeomAbs_BSplineSurface:
@@ -141,11 +143,19 @@ class Reader {
       }
     }
     // The grid's rows sit half a step inside the face: its axial extent comes from its bounds.
+    // v is the axial coordinate of a cylinder, the slant one of a cone (along the axis v cos of
+    // the semi-angle) and the latitude of a sphere (along the axis R sin v).
+    const double lo = std::min(v0, v1), hi = std::max(v0, v1);
     if (out.kind == SurfaceKind::kCylinder) {
-      const double lo = std::min(v0, v1) * kMetresPerReaderUnit;
-      const double hi = std::max(v0, v1) * kMetresPerReaderUnit;
-      out.axial_min = lo;
-      out.axial_max = hi;
+      out.axial_min = lo * kMetresPerReaderUnit;
+      out.axial_max = hi * kMetresPerReaderUnit;
+    } else if (out.kind == SurfaceKind::kCone) {
+      const double c = std::cos(out.semi_angle) * kMetresPerReaderUnit;
+      out.axial_min = lo * c;
+      out.axial_max = hi * c;
+    } else if (out.kind == SurfaceKind::kSphere) {
+      out.axial_min = out.radius * std::sin(std::max(lo, -M_PI / 2));
+      out.axial_max = out.radius * std::sin(std::min(hi, M_PI / 2));
     }
     return out;
   }
