@@ -4,6 +4,7 @@
 // sidecar's tolerances beside them, the mating features of each part and the pairs they form,
 // and the scenario text. No Open CASCADE here: the reader's output is plain data.
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -14,18 +15,25 @@
 
 namespace fitfeel::cad {
 
-enum class FeatureKind { kHole, kShaft, kPlane, kCone, kSphere };
+// A revolved feature is concave (a hole, a taper hole, a spherical seat: the material outside
+// the surface) or convex (a cylinder, a cone, a sphere); a plane is neither.
+enum class FeatureKind { kHole, kShaft, kTaperHole, kCone, kSeat, kSphere, kPlane };
 
 // Faces of one part that make one feature: a hole split into two half-cylinders is one hole.
 struct Feature {
   std::string part;
-  std::string name;  // "hole-1", "cylinder-2", "plane-1": by kind, then size, then position
+  std::string name;  // "hole-1", "cylinder-2", "cone-1", "seat-1": by kind, size, position
   FeatureKind kind = FeatureKind::kPlane;
   std::vector<int> faces;
-  std::array<double, 3> origin{};
-  std::array<double, 3> axis{0, 0, 1};
-  double diameter = 0.0;  // geometric, m (holes and cylinders; spheres)
-  double axial_min = 0.0;
+  std::array<double, 3> origin{};       // on the axis; a sphere's centre; on a plane
+  std::array<double, 3> axis{0, 0, 1};  // unit; a plane's normal
+  double ref_radius = 0.0;              // at `origin`, m
+  double slope = 0.0;                   // the radius' change along `axis` (a cone's tan, signed)
+  // The nominal size: a cylinder's or sphere's diameter, a cone's at its small end (the
+  // conical surface's reference plane), m.
+  double diameter = 0.0;
+  double large_diameter = 0.0;  // a cone's at its large end
+  double axial_min = 0.0;       // extent along `axis` from `origin`
   double axial_max = 0.0;
 };
 
@@ -42,9 +50,17 @@ struct FeatureTolerances {
   std::map<std::string, std::pair<double, std::string>> form;  // "roundness" -> (value, source)
 };
 
+// A concave feature of one part and the convex one of another that it mates with: coaxial
+// cylinders, coaxial cones of one taper, or concentric spheres, of one nominal size.
 struct Pair {
   std::size_t hole = 0;  // index in Import::features
   std::size_t shaft = 0;
+};
+
+// What the sidecar gives a feature besides its tolerances.
+struct FeatureSettings {
+  std::optional<double> outer_diameter;  // of the ring round a hole in a part with no outside
+  std::optional<double> position;        // ISO 1101 position zone's diameter (several features)
 };
 
 struct Import {
@@ -52,7 +68,8 @@ struct Import {
   std::vector<Feature> features;
   std::map<std::size_t, FeatureTolerances> tolerances;  // by feature index
   std::vector<Pair> pairs;
-  std::vector<std::string> ignored;  // PMI read and not used, said in the listing
+  std::map<std::size_t, FeatureSettings> settings;  // by feature index, from the sidecar
+  std::vector<std::string> ignored;                 // PMI read and not used, said in the listing
   // What the sidecar adds that CAD does not carry, as YAML flow text: per part "chamfer",
   // "texture", "material"; and the scenario's own sections.
   std::map<std::string, std::map<std::string, std::string>> part_extras;
@@ -66,9 +83,12 @@ Import BuildImport(CadDocument document, const std::optional<std::filesystem::pa
 // The listing `fitfeel import` prints: parts, features, tolerances and their sources, pairs.
 std::string DescribeImport(const Import& import);
 
-// The scenario (YAML text) of the first pair: the cylindrical surface, the hole's part outer.
-// Throws UserError when there is no pair or a part lacks what the scene needs.
+// The scenario (YAML text): with `pair` (0-based) that pair's; without, the only pair's, or all
+// pairs as a several-feature scene when they join the same two parts along parallel axes with a
+// surface that slides along them (docs/assemblies.md). Throws UserError when there is no pair,
+// when several pairs form no such joint (naming `--pair`), or a part lacks what the scene needs.
 std::string ScenarioText(const Import& import, const std::string& name,
-                         const std::string& source_file);
+                         const std::string& source_file,
+                         std::optional<std::size_t> pair = std::nullopt);
 
 }  // namespace fitfeel::cad

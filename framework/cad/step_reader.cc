@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -21,8 +22,10 @@
 #include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopLoc_Location.hxx>
+#include <TopTools_DataMapOfShapeInteger.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
+#include <TransferBRep.hxx>
 #include <Transfer_TransientProcess.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDimTolObjects_DatumObject.hxx>
@@ -58,17 +61,29 @@ std::string Name(const TDF_Label& label) {
 
 class Reader {
  public:
+  // The faces' entity numbers are looked up once: the transfer reader's own lookup
+  // (EntityFromShapeResult) passes over every mapped entity per face, which makes reading an
+  // assembly quadratic in its faces.
   explicit Reader(STEPCAFControl_Reader& reader)
-      : reader_(reader), model_(reader.ChangeReader().StepModel()) {}
-
-  // The STEP entity number of the face the reader made `face` from; 0 when it kept none.
-  int Entity(const TopoDS_Shape& face) const {
-    const Handle(XSControl_TransferReader) transfer = reader_.ChangeReader().WS()->TransferReader();
-    for (const int mode : {1, -1, 0}) {
-      const Handle(Standard_Transient) entity = transfer->EntityFromShapeResult(face, mode);
-      if (!entity.IsNull()) return model_->IdentLabel(entity);
+      : reader_(reader), model_(reader.ChangeReader().StepModel()) {
+    const Handle(Transfer_TransientProcess) process =
+        reader_.ChangeReader().WS()->TransferReader()->TransientProcess();
+    if (process.IsNull()) return;
+    for (int i = 1; i <= process->NbMapped(); ++i) {
+      const TopoDS_Shape result = TransferBRep::ShapeResult(process->MapItem(i));
+      if (result.IsNull() || result.ShapeType() != TopAbs_FACE) continue;
+      const int entity = model_->IdentLabel(process->Mapped(i));
+      if (!same_.IsBound(result)) same_.Bind(result, entity);
+      by_shape_.emplace(result.TShape().get(), entity);
     }
-    return 0;
+  }
+
+  // The STEP entity number of the face the reader made `face` from (the same face and place
+  // first, then the same face anywhere); 0 when it kept none.
+  int Entity(const TopoDS_Shape& face) const {
+    if (const int* entity = same_.Seek(face)) return *entity;
+    const auto found = by_shape_.find(face.TShape().get());
+    return found == by_shape_.end() ? 0 : found->second;
   }
 
   CadFace Face(const TopoDS_Face& original, const TopLoc_Location& placement) const {
@@ -100,6 +115,8 @@ class Reader {
       case GeomAbs_Sphere:
         out.kind = SurfaceKind::kSphere;
         origin = surface.Sphere().Location();
+        // A band of a sphere is bounded by circles of latitude about its own axis.
+        axis = surface.Sphere().Position().Direction();
         out.radius = surface.Sphere().Radius() * kMetresPerReaderUnit;
         break;
       case GeomAbs_BSplineSurface:
@@ -141,11 +158,19 @@ class Reader {
       }
     }
     // The grid's rows sit half a step inside the face: its axial extent comes from its bounds.
+    // v is the axial coordinate of a cylinder, the slant one of a cone (along the axis v cos of
+    // the semi-angle) and the latitude of a sphere (along the axis R sin v).
+    const double lo = std::min(v0, v1), hi = std::max(v0, v1);
     if (out.kind == SurfaceKind::kCylinder) {
-      const double lo = std::min(v0, v1) * kMetresPerReaderUnit;
-      const double hi = std::max(v0, v1) * kMetresPerReaderUnit;
-      out.axial_min = lo;
-      out.axial_max = hi;
+      out.axial_min = lo * kMetresPerReaderUnit;
+      out.axial_max = hi * kMetresPerReaderUnit;
+    } else if (out.kind == SurfaceKind::kCone) {
+      const double c = std::cos(out.semi_angle) * kMetresPerReaderUnit;
+      out.axial_min = lo * c;
+      out.axial_max = hi * c;
+    } else if (out.kind == SurfaceKind::kSphere) {
+      out.axial_min = out.radius * std::sin(std::max(lo, -M_PI / 2));
+      out.axial_max = out.radius * std::sin(std::min(hi, M_PI / 2));
     }
     return out;
   }
@@ -286,6 +311,8 @@ class Reader {
  private:
   STEPCAFControl_Reader& reader_;
   Handle(StepData_StepModel) model_;
+  TopTools_DataMapOfShapeInteger same_;
+  std::unordered_map<const TopoDS_TShape*, int> by_shape_;
 };
 
 }  // namespace

@@ -1,6 +1,6 @@
-// `fitfeel import ASSEMBLY.step [--sidecar FILE] [-o SCENARIO.yaml]`: the parts, features,
-// tolerances and mating pairs read from a STEP file (and its sidecar), and the scenario of the
-// pair, checked to load before it is written (docs/cad-import.md).
+// `fitfeel import ASSEMBLY.step [--sidecar FILE] [-o SCENARIO.yaml] [--pair N]`: the parts,
+// features, tolerances and mating pairs read from a STEP file (and its sidecar), and the scenario
+// of the pair, checked to load before it is written (docs/cad-import.md).
 
 #include <cctype>
 #include <filesystem>
@@ -26,6 +26,7 @@ struct ImportArgs {
   std::string file;
   std::string sidecar;
   std::string out;
+  int pair = 0;  // 1-based; 0: all pairs
 };
 
 // A scenario name (letters, digits, '_', '-', '.') from a file's stem.
@@ -50,7 +51,8 @@ void RunImport(const ImportArgs& args) {
     throw UserError("import: the output must be a .yaml file, found '" + out.string() + "'");
   }
   const std::string text =
-      cad::ScenarioText(import, ScenarioName(out), fs::path(args.file).filename().string());
+      cad::ScenarioText(import, ScenarioName(out), fs::path(args.file).filename().string(),
+                        args.pair > 0 ? std::optional<std::size_t>(args.pair - 1) : std::nullopt);
   PluginRegistry registry;
   registry.LoadAll();
   LoadSceneFromYaml(text, out, registry);
@@ -71,6 +73,10 @@ void AddImportCommand(CLI::App& app) {
   cmd->add_option("--sidecar", args->sidecar,
                   "YAML file of the tolerances and settings the STEP file lacks");
   cmd->add_option("-o,--out", args->out, "scenario file to write (.yaml)");
+  cmd->add_option("--pair", args->pair,
+                  "write the scenario of this pair alone (1-based, as listed) where several "
+                  "pairs form no joint")
+      ->check(CLI::PositiveNumber);
   cmd->callback([args] { RunImport(*args); });
 }
 

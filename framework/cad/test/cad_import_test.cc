@@ -66,7 +66,7 @@ TEST(CadImport, Ap242GivesPartsFeaturesTolerancesAndOnePair) {
   EXPECT_THAT(listing, HasSubstr("size 20 mm g6 (-20 um / -7 um, from STEP #"));
   EXPECT_THAT(listing, HasSubstr("roundness 10 um (from STEP #"));
   EXPECT_THAT(listing, HasSubstr("straightness 10 um (from STEP #"));
-  EXPECT_THAT(listing, HasSubstr("pair: bushing hole-1 / shaft cylinder-1 (Ø20 mm, coaxial)"));
+  EXPECT_THAT(listing, HasSubstr("pair 1: bushing hole-1 / shaft cylinder-1 (Ø20 mm, coaxial)"));
 }
 
 TEST(CadImport, ABoreSplitIntoTwoHalvesIsOneHole) {
@@ -76,6 +76,77 @@ TEST(CadImport, ABoreSplitIntoTwoHalvesIsOneHole) {
   EXPECT_NEAR(bore.axial_max - bore.axial_min, 0.020, 1e-12);
   EXPECT_EQ(Named(import, "bushing", "cylinder-1").faces.size(), 2u);
   EXPECT_EQ(import.pairs.size(), 1u);
+}
+
+TEST(CadImport, ATaperPinAndItsReamedHoleAreAConicalPair) {
+  const Import import = BuildImport(ReadStep(Fixture("taper-pin-ap242.step")), std::nullopt);
+  const Feature& pin = Named(import, "pin", "cone-1");
+  EXPECT_NEAR(pin.diameter, 0.008, 1e-12);
+  EXPECT_NEAR(pin.large_diameter, 0.0088, 1e-12);
+  EXPECT_NEAR(pin.axial_max - pin.axial_min, 0.040, 1e-12);
+  const Feature& hole = Named(import, "hub", "taper-hole-1");
+  EXPECT_NEAR(hole.diameter, 0.008, 1e-12);
+  EXPECT_NEAR(hole.large_diameter, 0.0084, 1e-12);
+  EXPECT_NEAR(std::abs(hole.slope), 0.01, 1e-12);
+  ASSERT_EQ(import.pairs.size(), 1u);
+  EXPECT_THAT(DescribeImport(import),
+              HasSubstr("pair 1: hub taper-hole-1 / pin cone-1 (Ø8 mm at the small end, taper "
+                        "\"1:50\", coaxial)"));
+  const std::string text = ScenarioText(import, "taper", "taper-pin-ap242.step");
+  EXPECT_THAT(text, HasSubstr("surface: fitfeel.surface.conical"));
+  EXPECT_THAT(text, HasSubstr("size: 8 mm h10"));
+  EXPECT_THAT(text, HasSubstr("geometry: {length: 40 mm, taper: \"1:50\"}"));
+  EXPECT_THAT(text, HasSubstr("geometry: {length: 20 mm, taper: \"1:50\", outer_diameter: 24 mm}"));
+}
+
+TEST(CadImport, ABallInItsSeatIsASphericalPair) {
+  const Import import = BuildImport(ReadStep(Fixture("knuckle-bearing-ap242.step")), std::nullopt);
+  const Feature& ball = Named(import, "inner_ring", "sphere-1");
+  EXPECT_NEAR(ball.diameter, 0.029, 1e-12);
+  EXPECT_NEAR(ball.axial_max - ball.axial_min, 0.016, 1e-12);
+  EXPECT_NEAR(Named(import, "outer_ring", "seat-1").axial_max -
+                  Named(import, "outer_ring", "seat-1").axial_min,
+              0.012, 1e-12);
+  ASSERT_EQ(import.pairs.size(), 1u);
+  const std::string text = ScenarioText(import, "knuckle", "knuckle-bearing-ap242.step");
+  EXPECT_THAT(text, HasSubstr("surface: fitfeel.surface.spherical"));
+  EXPECT_THAT(text, HasSubstr("geometry: {width: 16 mm, bore_diameter: 20 mm}"));
+  EXPECT_THAT(text, HasSubstr("geometry: {width: 12 mm, outer_diameter: 35 mm}"));
+  EXPECT_THAT(text, HasSubstr("mode: constant_rotation"));
+}
+
+TEST(CadImport, TwoPinsUnderAPlateAreOneSceneOfTwoFeatures) {
+  const Import bare = BuildImport(ReadStep(Fixture("two-pin-ap242.step")), std::nullopt);
+  ASSERT_EQ(bare.pairs.size(), 2u);
+  EXPECT_THAT(DescribeImport(bare), HasSubstr("scene: the 2 pairs as the features of one joint"));
+  EXPECT_THAT(Refusal([&] { ScenarioText(bare, "x", "two-pin-ap242.step"); }),
+              HasSubstr("part plate has no outer cylinder on the axis of hole-1"));
+  const Import import =
+      BuildImport(ReadStep(Fixture("two-pin-ap242.step")), Sidecar("two-pin.sidecar.yaml"));
+  const std::string text = ScenarioText(import, "two-pin", "two-pin-ap242.step");
+  EXPECT_THAT(text, HasSubstr("features:\n  hole-1:"));
+  EXPECT_THAT(text, HasSubstr("  hole-2:   # plate hole-2 / base cylinder-2"));
+  EXPECT_THAT(text, HasSubstr("at: {x: 60 mm, z: 0 mm}"));
+  EXPECT_THAT(text, HasSubstr("position: {base: 40 um, plate: 40 um}"));
+  // Either pair alone is still a scene of its own.
+  EXPECT_THAT(ScenarioText(import, "pin-b", "two-pin-ap242.step", 1),
+              HasSubstr("surface: fitfeel.surface.cylindrical\nparts:\n  base:"));
+}
+
+TEST(CadImport, PairsOfDifferentPartsAreWrittenOnePerPair) {
+  const Import import = BuildImport(ReadStep(Fixture("separate-pins-ap242.step")),
+                                    Sidecar("separate-pins.sidecar.yaml"));
+  ASSERT_EQ(import.pairs.size(), 2u);
+  EXPECT_THAT(DescribeImport(import),
+              HasSubstr("scene: one per pair, with --pair N: the pairs form no joint (they join "
+                        "different parts"));
+  EXPECT_THAT(Refusal([&] { ScenarioText(import, "x", "separate-pins-ap242.step"); }),
+              HasSubstr("write one scenario per pair with --pair N"));
+  const std::string second = ScenarioText(import, "x", "separate-pins-ap242.step", 1);
+  EXPECT_THAT(second, HasSubstr("  pin-2:\n    role: inner"));
+  EXPECT_THAT(second, HasSubstr("outer_diameter: 24 mm"));
+  EXPECT_THAT(Refusal([&] { ScenarioText(import, "x", "separate-pins-ap242.step", 2); }),
+              HasSubstr("--pair 3 names no pair: there are 2"));
 }
 
 TEST(CadImport, Ap214WithoutPmiNeedsTheSidecar) {

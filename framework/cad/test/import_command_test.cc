@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gmock/gmock.h>
@@ -67,7 +68,7 @@ TEST(ImportCommand, PaperCaseFromStepRunsAsTheYamlPaperCase) {
                      SidecarWord("paper-ap242.sidecar.yaml") + " -o from-ap242.yaml",
                  CliOptions().In(dir));
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
-  EXPECT_THAT(imported.out, HasSubstr("pair: bushing hole-1 / shaft cylinder-1"));
+  EXPECT_THAT(imported.out, HasSubstr("pair 1: bushing hole-1 / shaft cylinder-1"));
   const test_support::CliResult from_214 =
       RunFitfeel("import " + FixtureWord("paper-ap214.step") + " --sidecar " +
                      SidecarWord("paper-ap214.sidecar.yaml") + " -o from-ap214.yaml",
@@ -94,6 +95,77 @@ TEST(ImportCommand, PaperCaseFromStepRunsAsTheYamlPaperCase) {
     }
   }
   EXPECT_LE(worst, 1e-9);
+}
+
+// The largest difference between two traces' numbers; fails when their shapes differ.
+double TraceDifference(const fs::path& a, const fs::path& b) {
+  const auto first = Trace(a);
+  const auto second = Trace(b);
+  EXPECT_EQ(first.size(), second.size());
+  EXPECT_GT(first.size(), 1000u);
+  double worst = first.size() == second.size() ? 0.0 : 1e300;
+  for (std::size_t i = 0; i < std::min(first.size(), second.size()); ++i) {
+    EXPECT_EQ(first[i].size(), second[i].size()) << "row " << i;
+    for (std::size_t j = 0; j < std::min(first[i].size(), second[i].size()); ++j) {
+      worst = std::max(worst, std::abs(first[i][j] - second[i][j]));
+    }
+  }
+  return worst;
+}
+
+// A taper pin, a spherical plain bearing and a plate on two pins, drawn as STEP parts with the
+// sidecar of what CAD does not carry, run as the shipped scenes of the same parts.
+TEST(ImportCommand, ConeSphereAndTwoPinScenesFromStepRunAsTheShippedOnes) {
+  const fs::path dir = test_support::EmptyTestFolder("import-surfaces");
+  for (const auto& [fixture, sidecar, shipped] :
+       {std::tuple{"taper-pin", "taper-pin", "taper-pin"},
+        std::tuple{"knuckle-bearing", "knuckle-bearing", "knuckle-bearing"},
+        std::tuple{"two-pin", "two-pin", "two-pin-location"}}) {
+    SCOPED_TRACE(fixture);
+    const std::string name = fixture;
+    const test_support::CliResult imported = RunFitfeel(
+        "import " + FixtureWord(name + "-ap242.step") + " --sidecar " +
+            SidecarWord(std::string(sidecar) + ".sidecar.yaml") + " -o " + name + ".yaml",
+        CliOptions().In(dir));
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    const fs::path yaml =
+        fs::path(fitfeel_test_source_dir()) / "scenarios" / (std::string(shipped) + ".yaml");
+    for (const auto& [scenario, out] : {std::pair{(dir / (name + ".yaml")).string(), name + "-cad"},
+                                        std::pair{yaml.string(), name + "-yaml"}}) {
+      const test_support::CliResult run =
+          RunFitfeel("run " + ShellQuote(scenario) + " --out " + out, CliOptions().In(dir));
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+    }
+    EXPECT_LE(
+        TraceDifference(dir / (name + "-cad") / "trace.csv", dir / (name + "-yaml") / "trace.csv"),
+        1e-9);
+  }
+}
+
+// Without a sidecar the scene takes defaults that run; pairs that form no joint are written one
+// at a time.
+TEST(ImportCommand, DefaultsRunAndSeveralPairsAreWrittenOneAtATime) {
+  const fs::path dir = test_support::EmptyTestFolder("import-defaults");
+  for (const std::string name : {"taper-pin", "knuckle-bearing"}) {
+    const test_support::CliResult imported =
+        RunFitfeel("import " + FixtureWord(name + "-ap242.step") + " -o " + name + ".yaml",
+                   CliOptions().In(dir));
+    ASSERT_EQ(imported.exit_code, 0) << imported.err;
+    const test_support::CliResult run =
+        RunFitfeel("run " + name + ".yaml --out " + name, CliOptions().In(dir));
+    EXPECT_EQ(run.exit_code, 0) << name << ": " << run.err;
+  }
+  const std::string pins = "import " + FixtureWord("separate-pins-ap242.step") + " --sidecar " +
+                           SidecarWord("separate-pins.sidecar.yaml");
+  const test_support::CliResult refused = RunFitfeel(pins + " -o pins.yaml", CliOptions().In(dir));
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_THAT(refused.err, HasSubstr("write one scenario per pair with --pair N"));
+  const test_support::CliResult second =
+      RunFitfeel(pins + " --pair 2 -o pin-2.yaml", CliOptions().In(dir));
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_THAT(second.out, HasSubstr("scene: one per pair, with --pair N"));
+  EXPECT_THAT(test_support::ReadText(dir / "pin-2.yaml"), HasSubstr("  pin-2:\n    role: inner"));
+  EXPECT_EQ(RunFitfeel("run pin-2.yaml --out pin-2", CliOptions().In(dir)).exit_code, 0);
 }
 
 TEST(ImportCommand, AReaderCrashIsAClearErrorWithExitTwo) {
