@@ -723,9 +723,20 @@ class SceneWriter {
   }
 
   // One part's map in a feature: `indent` is the part key's.
-  void Part(std::size_t index, bool outer, Surface surface, const std::string& indent) {
+  // One part's keys in a scene of `surface`, with where each value comes from.
+  struct PartLines {
+    std::string size;
+    std::string size_source;
+    std::vector<std::pair<std::string, std::string>> geometry;
+    std::string geometry_sources;
+    std::vector<std::array<std::string, 3>> form;  // key, value, source
+    std::vector<std::string> not_written;          // tolerances the surface does not model
+    std::optional<std::string> texture;
+    std::optional<std::string> material;
+  };
+
+  PartLines Lines(std::size_t index, bool outer, Surface surface) const {
     const Feature& f = import_.features[index];
-    const std::string in = indent + "  ";
     const auto t = import_.tolerances.find(index);
     if (t == import_.tolerances.end() || !t->second.size) {
       throw UserError("import: part " + f.part + ", " + f.name + " (" + Entities(f.faces) +
@@ -733,18 +744,20 @@ class SceneWriter {
                       f.part + ": features: " + f.name + ": size: ...)");
     }
     const FeatureTolerances& tol = t->second;
-    out_ << indent << f.part << ":\n" << in << "role: " << (outer ? "outer" : "inner") << "\n";
-    out_ << in << "size: " << SizeText(*tol.size) << "   # " << f.name << ", from "
-         << tol.size->source << "\n";
+    PartLines lines;
+    lines.size = SizeText(*tol.size);
+    lines.size_source = f.name + ", from " + tol.size->source;
     const double length = f.axial_max - f.axial_min;
-    std::string sources = "STEP";
-    out_ << in << "geometry: {";
+    lines.geometry_sources = "STEP";
+    const auto outer_diameter = [&] {
+      const auto [d, from] = OuterDiameter(index, surface);
+      lines.geometry.emplace_back("outer_diameter", Mm(d));
+      if (from != "STEP") lines.geometry_sources += ", outer diameter from " + from;
+    };
     if (surface == Surface::kSpherical) {
-      out_ << "width: " << Mm(length);
+      lines.geometry.emplace_back("width", Mm(length));
       if (outer) {
-        const auto [d, from] = OuterDiameter(index, surface);
-        out_ << ", outer_diameter: " << Mm(d);
-        if (from != "STEP") sources += ", outer diameter from " + from;
+        outer_diameter();
       } else {
         // The inner ring's bore: its largest hole on the band's axis, inside the sphere.
         double bore = 0.0;
@@ -754,22 +767,17 @@ class SceneWriter {
             bore = std::max(bore, other.diameter);
           }
         }
-        if (bore > 0.0) out_ << ", bore_diameter: " << Mm(bore);
+        if (bore > 0.0) lines.geometry.emplace_back("bore_diameter", Mm(bore));
       }
     } else {
-      out_ << "length: " << Mm(length);
-      if (surface == Surface::kConical) out_ << ", taper: " << TaperText(f.slope);
-      if (outer) {
-        const auto [d, from] = OuterDiameter(index, surface);
-        out_ << ", outer_diameter: " << Mm(d);
-        if (from != "STEP") sources += ", outer diameter from " + from;
-      }
+      lines.geometry.emplace_back("length", Mm(length));
+      if (surface == Surface::kConical) lines.geometry.emplace_back("taper", TaperText(f.slope));
+      if (outer) outer_diameter();
       if (Extra(f.part, "chamfer")) {
-        out_ << ", chamfer: " << *Extra(f.part, "chamfer");
-        sources += ", chamfer from the sidecar";
+        lines.geometry.emplace_back("chamfer", *Extra(f.part, "chamfer"));
+        lines.geometry_sources += ", chamfer from the sidecar";
       }
     }
-    out_ << "}   # lengths from " << sources << "\n";
     // The characteristics each surface models, by the PMI's or sidecar's names.
     std::map<std::string, std::string> keys;
     switch (surface) {
@@ -788,24 +796,41 @@ class SceneWriter {
         keys = {{"roundness", "roundness"}, {"sphericity", "sphericity"}};
         break;
     }
-    bool form_open = false;
     for (const auto& [key, value] : tol.form) {
       const auto k = keys.find(key);
       if (k == keys.end()) {
-        out_ << in << "# " << key << " " << Um(value.first) << " (from " << value.second
-             << ") is not written: " << PluginOf(surface) << " models no such tolerance\n";
-        continue;
+        lines.not_written.push_back(key + " " + Um(value.first) + " (from " + value.second +
+                                    ") is not written: " + PluginOf(surface) +
+                                    " models no such tolerance");
+      } else {
+        lines.form.push_back({k->second, Um(value.first), value.second});
       }
-      if (!form_open) out_ << in << "form:\n";
-      form_open = true;
-      out_ << in << "  " << k->second << ": " << Um(value.first) << "   # from " << value.second
-           << "\n";
     }
-    if (Extra(f.part, "texture")) {
-      out_ << in << "texture: " << *Extra(f.part, "texture") << "   # from the sidecar\n";
+    lines.texture = Extra(f.part, "texture");
+    lines.material = Extra(f.part, "material");
+    return lines;
+  }
+
+  // One part's map in a feature: `indent` is the part key's.
+  void Part(std::size_t index, bool outer, Surface surface, const std::string& indent) {
+    const Feature& f = import_.features[index];
+    const std::string in = indent + "  ";
+    const PartLines lines = Lines(index, outer, surface);
+    out_ << indent << f.part << ":\n" << in << "role: " << (outer ? "outer" : "inner") << "\n";
+    out_ << in << "size: " << lines.size << "   # " << lines.size_source << "\n";
+    out_ << in << "geometry: {";
+    for (std::size_t i = 0; i < lines.geometry.size(); ++i) {
+      out_ << (i == 0 ? "" : ", ") << lines.geometry[i].first << ": " << lines.geometry[i].second;
     }
-    if (Extra(f.part, "material")) {
-      out_ << in << "material: " << *Extra(f.part, "material") << "   # from the sidecar\n";
+    out_ << "}   # lengths from " << lines.geometry_sources << "\n";
+    for (const std::string& note : lines.not_written) out_ << in << "# " << note << "\n";
+    if (!lines.form.empty()) out_ << in << "form:\n";
+    for (const auto& [key, value, source] : lines.form) {
+      out_ << in << "  " << key << ": " << value << "   # from " << source << "\n";
+    }
+    if (lines.texture) out_ << in << "texture: " << *lines.texture << "   # from the sidecar\n";
+    if (lines.material) {
+      out_ << in << "material: " << *lines.material << "   # from the sidecar\n";
     } else {
       out_ << in
            << "material: {name: steel, youngs_modulus: 210 GPa, poisson: 0.3}   # not in the "
@@ -957,6 +982,34 @@ std::string DescribeImport(const Import& import) {
     }
   }
   return out.str();
+}
+
+scenario::CadPartKeys PartKeys(const Import& import, std::size_t feature, bool outer) {
+  Surface surface = Surface::kCylindrical;
+  switch (import.features[feature].kind) {
+    case FeatureKind::kTaperHole:
+    case FeatureKind::kCone:
+      surface = Surface::kConical;
+      break;
+    case FeatureKind::kSeat:
+    case FeatureKind::kSphere:
+      surface = Surface::kSpherical;
+      break;
+    case FeatureKind::kPlane:
+      throw UserError("import: a plane is no feature a surface of fitfeel takes alone");
+    default:
+      break;
+  }
+  std::ostringstream unused;
+  const SceneWriter writer(import, unused);
+  const SceneWriter::PartLines lines = writer.Lines(feature, outer, surface);
+  scenario::CadPartKeys keys;
+  keys.size = lines.size;
+  keys.geometry = lines.geometry;
+  for (const auto& [key, value, source] : lines.form) keys.form.emplace_back(key, value);
+  keys.texture = lines.texture;
+  keys.material = lines.material;
+  return keys;
 }
 
 std::string ScenarioText(const Import& import, const std::string& name,

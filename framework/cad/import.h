@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/cad/cad_document.h"
+#include "framework/scenario/cad_parts.h"
 
 namespace fitfeel::cad {
 
@@ -90,5 +91,14 @@ std::string DescribeImport(const Import& import);
 std::string ScenarioText(const Import& import, const std::string& name,
                          const std::string& source_file,
                          std::optional<std::size_t> pair = std::nullopt);
+
+// What a part of a scene takes from `feature` (an index in import.features) with the role
+// `outer`: its size, the geometry of the surface the feature's kind asks for, its form, and the
+// sidecar's chamfer, texture and material. Throws UserError as ScenarioText does.
+scenario::CadPartKeys PartKeys(const Import& import, std::size_t feature, bool outer);
+
+// Lets every scene this process loads name CAD features in its parts (framework/scenario/
+// cad_parts.h): each file read once, through ReadStep, with the import's checks.
+void InstallSceneCadParts();
 
 }  // namespace fitfeel::cad

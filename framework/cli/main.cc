@@ -11,6 +11,9 @@
 #include "framework/cli/strict_options.h"
 #include "framework/core/error.h"
 #include "framework/core/interrupt.h"
+#ifdef FITFEEL_HAVE_CAD
+#include "framework/cad/import.h"
+#endif
 
 namespace {
 
@@ -68,6 +71,8 @@ int main(int argc, char** argv) {
   fitfeel::cli::AddNewCommand(app);
 #ifdef FITFEEL_HAVE_CAD
   fitfeel::cli::AddImportCommand(app);
+  // Scenes this command loads may name CAD features in their parts (docs/cad-import.md).
+  fitfeel::cad::InstallSceneCadParts();
 #endif
   try {
     app.parse(argc, argv);

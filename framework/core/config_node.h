@@ -16,6 +16,9 @@ class Node;
 }  // namespace YAML
 
 namespace fitfeel {
+namespace scenario {
+struct YamlAccess;  // the scene loader's, to put a CAD file's keys in a part (cad_parts.cc)
+}  // namespace scenario
 
 // A read-only view of one node of a scenario file that knows where it stands (file, line, column,
 // key path) so that every check a framework or plugin makes on it fails with the same precise
@@ -80,6 +83,7 @@ class FITFEEL_API ConfigNode {
   std::string Describe() const;
 
  private:
+  friend struct scenario::YamlAccess;
   const YAML::Node& node() const;
 
   std::shared_ptr<const YAML::Node> node_;

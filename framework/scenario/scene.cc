@@ -16,6 +16,7 @@
 #include "framework/model/measured_surface.h"
 #include "framework/plugin/registry.h"
 #include "framework/safety/safety_settings.h"
+#include "framework/scenario/cad_parts.h"
 #include "framework/scenario/part_parser.h"
 #include "framework/scenario/scene_sections.h"
 #include "framework/scenario/yaml_file.h"
@@ -514,6 +515,8 @@ namespace scenario {
 Scene LoadSceneFrom(const ConfigNode& root, const std::filesystem::path& file,
                     const PluginRegistry& registry, const LoadOptions& options,
                     const RunSettings* step_run) {
+  // A part that names a CAD feature becomes a part like any other before anything reads it.
+  ResolveCadParts(root, file);
   if (step_run != nullptr) {
     root.ExpectOnlyKeys({"step", "description", "surface", "parts", "moving", "features",
                          "part_motion", "model", "device", "safety", "duration", "seated"});

@@ -133,6 +133,70 @@ TEST(CadImport, TwoPinsUnderAPlateAreOneSceneOfTwoFeatures) {
               HasSubstr("surface: fitfeel.surface.cylindrical\nparts:\n  base:"));
 }
 
+// A cylindrical face as the reader gives it: axis along z through (x, 0), extent z0 to z1 (m).
+CadFace Cylinder(int entity, double x, double radius, double z0, double z1, bool convex) {
+  CadFace face;
+  face.entity = entity;
+  face.kind = SurfaceKind::kCylinder;
+  face.origin = {x, 0.0, 0.0};
+  face.axis = {0.0, 0.0, 1.0};
+  face.radius = radius;
+  face.axial_min = z0;
+  face.axial_max = z1;
+  face.convex = convex;
+  return face;
+}
+
+TEST(CadImport, TheFirstPinToEngageIsTheDatumAndTheOtherEngagesAfterIt) {
+  // Pin B (x = 60 mm) stands 15 mm above the base, pin A 2 mm less; the plate's holes start at
+  // z = 15 mm, so pin B meets its hole first.
+  CadDocument document;
+  document.schema = "synthetic";
+  document.length_unit = "MM";
+  document.parts.push_back(
+      {"base",
+       {Cylinder(1, 0.0, 0.004, 0.0, 0.013, true), Cylinder(2, 0.060, 0.004, 0.0, 0.015, true)},
+       {}});
+  document.parts.push_back({"plate",
+                            {Cylinder(3, 0.0, 0.004, 0.015, 0.025, false),
+                             Cylinder(4, 0.060, 0.004, 0.015, 0.025, false)},
+                            {}});
+  const fs::path sidecar = test_support::EmptyTestFolder("cad-joint") / "joint.sidecar.yaml";
+  std::ofstream(sidecar)
+      << "parts:\n"
+         "  base:\n"
+         "    features:\n"
+         "      cylinder-1: {size: 8 mm m6}\n"
+         "      cylinder-2: {size: 8 mm m6}\n"
+         "  plate:\n"
+         "    features:\n"
+         "      hole-1: {size: 8 mm E7, outer_diameter: 24 mm, position: 20 um}\n"
+         "      hole-2: {size: 8 mm E7, outer_diameter: 24 mm}\n";
+  const Import import = BuildImport(document, sidecar);
+  ASSERT_EQ(import.pairs.size(), 2u);
+  const std::string text = ScenarioText(import, "joint", "synthetic");
+  EXPECT_THAT(text, HasSubstr("features:\n  hole-2:   # plate hole-2 / base cylinder-2 (Ø8 mm, "
+                              "coaxial), the datum: the first to engage\n"));
+  EXPECT_THAT(text, HasSubstr("  hole-1:   # plate hole-1 / base cylinder-1"));
+  EXPECT_THAT(text, HasSubstr("at: {x: 60 mm, z: 0 mm}"));
+  EXPECT_THAT(text, HasSubstr("engages_after: 2 mm"));
+  EXPECT_THAT(text, HasSubstr("position: {plate: 20 um}"));
+  // A position tolerance on the datum is refused: it places the others.
+  std::ofstream(sidecar) << "parts:\n"
+                            "  base:\n"
+                            "    features:\n"
+                            "      cylinder-1: {size: 8 mm m6}\n"
+                            "      cylinder-2: {size: 8 mm m6, position: 20 um}\n"
+                            "  plate:\n"
+                            "    features:\n"
+                            "      hole-1: {size: 8 mm E7, outer_diameter: 24 mm}\n"
+                            "      hole-2: {size: 8 mm E7, outer_diameter: 24 mm}\n";
+  const Import datum = BuildImport(document, sidecar);
+  EXPECT_THAT(Refusal([&] { ScenarioText(datum, "joint", "synthetic"); }),
+              HasSubstr("the sidecar gives a position tolerance to base's cylinder-2, of the "
+                        "datum feature"));
+}
+
 TEST(CadImport, PairsOfDifferentPartsAreWrittenOnePerPair) {
   const Import import = BuildImport(ReadStep(Fixture("separate-pins-ap242.step")),
                                     Sidecar("separate-pins.sidecar.yaml"));

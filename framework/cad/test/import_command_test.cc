@@ -168,6 +168,60 @@ TEST(ImportCommand, DefaultsRunAndSeveralPairsAreWrittenOneAtATime) {
   EXPECT_EQ(RunFitfeel("run pin-2.yaml --out pin-2", CliOptions().In(dir)).exit_code, 0);
 }
 
+// A scene whose parts name the paper case's STEP features (the file beside the scene, the
+// sidecar elsewhere) runs as the YAML paper case; a missing file or feature is refused where the
+// scene names it.
+TEST(ImportCommand, AScenesPartsMayNameCadFeatures) {
+  const fs::path dir = test_support::EmptyTestFolder("import-cad-parts");
+  fs::copy_file(fs::path(fitfeel_test_build_dir()) / "cad-fixtures" / "paper-ap242.step",
+                dir / "paper-ap242.step");
+  const std::string sidecar =
+      (fs::path(fitfeel_test_source_dir()) / "framework/cad/test/paper-ap242.sidecar.yaml")
+          .string();
+  const auto scene = [&](const std::string& file, const std::string& bore) {
+    return "scenario: cad-parts\n"
+           "surface: fitfeel.surface.cylindrical\n"
+           "parts:\n"
+           "  shaft: {role: inner, cad: {file: " +
+           file + ", feature: cylinder-1, sidecar: \"" + sidecar +
+           "\"}}\n"
+           "  bushing:\n"
+           "    role: outer\n"
+           "    cad: {file: paper-ap242.step, feature: " +
+           bore + ", sidecar: \"" + sidecar +
+           "\"}\n"
+           "moving: shaft\n"
+           "model: {law: elastic, friction: 0.15, contact_stiffness: 3665 N/um, resolution: "
+           "{rows: 40, columns: 360}, texture: din7190, options: {tilt: free}, depth_step: auto}\n"
+           "part_motion: {radial_load: 2 N}\n"
+           "device: {plugin: fitfeel.device.simulated, speed: 10 mm/s}\n"
+           "run: {rate: 1000 Hz, duration: 4 s, seed: 1, clock: virtual, outputs: [trace, "
+           "summary]}\n";
+  };
+  test_support::WriteText(dir / "cad.yaml", scene("paper-ap242.step", "hole-1"));
+  test_support::WriteText(dir / "no-file.yaml", scene("missing.step", "hole-1"));
+  test_support::WriteText(dir / "no-feature.yaml", scene("paper-ap242.step", "hole-7"));
+  const test_support::CliResult run = RunFitfeel("run cad.yaml --out cad", CliOptions().In(dir));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const fs::path yaml = fs::path(fitfeel_test_source_dir()) / "scenarios/paper-case1-h7g6.yaml";
+  ASSERT_EQ(RunFitfeel("run " + ShellQuote(yaml.string()) + " --out yaml", CliOptions().In(dir))
+                .exit_code,
+            0);
+  EXPECT_LE(TraceDifference(dir / "cad" / "trace.csv", dir / "yaml" / "trace.csv"), 1e-9);
+
+  const test_support::CliResult no_file = RunFitfeel("validate no-file.yaml", CliOptions().In(dir));
+  EXPECT_EQ(no_file.exit_code, 2);
+  EXPECT_THAT(no_file.err, HasSubstr("no-file.yaml:4:36: parts.shaft.cad.file: expected a STEP "
+                                     "file (a path from the scenario's folder), found "
+                                     "'missing.step', which is no file"));
+  const test_support::CliResult no_feature =
+      RunFitfeel("validate no-feature.yaml", CliOptions().In(dir));
+  EXPECT_EQ(no_feature.exit_code, 2);
+  EXPECT_THAT(no_feature.err,
+              HasSubstr("no-feature.yaml:7:44: parts.bushing.cad.feature: expected a feature of "
+                        "bushing (hole-1, cylinder-1, plane-1, plane-2), found 'hole-7'"));
+}
+
 TEST(ImportCommand, AReaderCrashIsAClearErrorWithExitTwo) {
   const std::string command = "env FITFEEL_TEST_CAD_READER=abort " +
                               ShellQuote(test_support::FitfeelBinary().string()) + " import " +
