@@ -110,9 +110,11 @@ PairResult RunStudyPair(const fs::path& file, const PluginRegistry& registry, st
   if (index < 0) throw UserError("study: pair index must be >= 0, got " + std::to_string(index));
   // A worker process runs pair after pair of the same study: what their prepares share is kept
   // for the process's life. Its keys spell out every input, so pairs of other scenes, or a
-  // scenario edited between calls, never take a value that is not theirs.
-  static SharedPrepare shared;
-  return RunPair(file, registry, index, seed, StudyLoad(false), &shared);
+  // scenario edited between calls, never take a value that is not theirs. Never destroyed: its
+  // values were made by plugin code, which a registry may have unloaded before static
+  // destructors run.
+  static SharedPrepare* const shared = new SharedPrepare();
+  return RunPair(file, registry, index, seed, StudyLoad(false), shared);
 }
 
 std::uint64_t PairSeed(std::uint64_t seed, int index) {

@@ -142,8 +142,11 @@ def run_on_dask(file, pairs, seed=1, client=None, workers=None, out=None, progre
     own = None
     if client is None:
         n = workers or os.cpu_count() or 1
+        # Several workers keep the cores busy with pairs: each pair prepares on its worker's own
+        # thread (a prepare's result does not depend on its thread count).
+        env = {"FITFEEL_PREPARE_THREADS": "1"} if n > 1 else {}
         cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                           host="127.0.0.1", dashboard_address=None)
+                                           host="127.0.0.1", dashboard_address=None, env=env)
         own = (cluster, distributed.Client(cluster))
         client = own[1]
     try:
