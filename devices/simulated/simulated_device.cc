@@ -195,6 +195,15 @@ void SimulatedDevice::Twist(double time, double* angle, double* rate) const noex
   }
 }
 
+double SimulatedDevice::DoReach(double duration) const {
+  // The robot's leading end moves by the clock alone (a force-driven press stops it sooner); the
+  // rotary drive and the hand are not bounded here.
+  if (settings_.mode != Settings::Mode::kConstantSpeed || !(duration >= 0.0)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return -settings_.start_offset + settings_.speed * duration;
+}
+
 std::optional<Eigen::Vector2d> SimulatedDevice::DoHeldTilt() const {
   if (settings_.tilt.isZero()) return std::nullopt;
   return settings_.tilt;

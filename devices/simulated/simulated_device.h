@@ -106,6 +106,7 @@ class SimulatedDevice final : public Device {
   DeviceSpec DoSpec() const override;
   std::optional<Eigen::Vector2d> DoHeldTilt() const override;
   double DoHeldTiltStiffness() const override { return settings_.tilt_stiffness; }
+  double DoReach(double duration) const override;
 
  protected:
   void DoConfigure(const ConfigNode& node) override;  // simulated_config.cc

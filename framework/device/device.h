@@ -94,6 +94,10 @@ class FITFEEL_API Device {
   // infinite (the default) for a rigid holder (a robot); finite for a hand's fingers and wrist,
   // which let the contact turn the part towards the mating axis (ModelSettings).
   double held_tilt_stiffness() const { return DoHeldTiltStiffness(); }
+  // The largest y the part's leading end reaches within a run of `duration` s, m, for a device
+  // whose trajectory is fixed in advance (a robot); +inf when the device cannot bound it (a hand
+  // follows its contact, hardware its user). A prepare need not tabulate a contact further in.
+  double reach(double duration) const { return DoReach(duration); }
   ClockOwner clock_owner() const { return DoClockOwner(); }
   // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
   // rate until it returns false or `duration` seconds pass. Throws UserError for a duration that
@@ -109,6 +113,7 @@ class FITFEEL_API Device {
   virtual DeviceSpec DoSpec() const = 0;
   virtual std::optional<Eigen::Vector2d> DoHeldTilt() const { return std::nullopt; }
   virtual double DoHeldTiltStiffness() const { return std::numeric_limits<double>::infinity(); }
+  virtual double DoReach(double) const { return std::numeric_limits<double>::infinity(); }
   virtual ClockOwner DoClockOwner() const { return ClockOwner::kFramework; }
   // Default: the device does not own a clock (throws UnsupportedError).
   virtual void DoRunServoLoop(double duration, const std::function<bool(double)>& tick);

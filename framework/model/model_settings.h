@@ -42,6 +42,10 @@ struct ModelSettings {
   // rigid holder, whose part stays at the tilt; finite for a compliant one, whose part the contact
   // turns towards the axis once it touches at two points (ContactAnalyzer::takes_compliant_tilt).
   double held_tilt_stiffness = std::numeric_limits<double>::infinity();
+  // The deepest mating depth the run's device can take the part to (Device::reach), m; +inf:
+  // unbounded. An analyzer that tabulates by depth may stop its tables past it; a pose deeper than
+  // it is then answered as out of engagement, so only the run whose device bounded it may use it.
+  double reach = std::numeric_limits<double>::infinity();
 };
 
 // The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in

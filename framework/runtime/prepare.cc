@@ -100,7 +100,7 @@ std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(const Scene& 
   return deviations;
 }
 
-PreparedScene Prepare(const Scene& scene, SharedPrepare* shared) {
+PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
@@ -126,6 +126,7 @@ PreparedScene Prepare(const Scene& scene, SharedPrepare* shared) {
     throw UnsupportedError("surface type '" + scene.surface_id + "' provides no contact analyzer");
   }
   ModelSettings model = scene.model;
+  model.reach = reach;
   if (const std::optional<Eigen::Vector2d> tilt =
           scene.device ? scene.device->held_tilt() : std::nullopt) {
     model.held_tilt = *tilt;

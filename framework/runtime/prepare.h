@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -99,6 +100,10 @@ FITFEEL_API std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(c
 // surface plugin refuses. `shared`, when given, is what the prepares of runs of this same scene
 // share (SharedPrepare: a study's pairs); the prepared scene is bit for bit the same with or
 // without it.
-FITFEEL_API PreparedScene Prepare(const Scene& scene, SharedPrepare* shared = nullptr);
+// `reach` (m): the deepest mating depth the run's own device takes the part to
+// (ModelSettings::reach); +inf for a prepared scene that other devices may drive (a host's, the
+// viewer's).
+FITFEEL_API PreparedScene Prepare(const Scene& scene, SharedPrepare* shared = nullptr,
+                                  double reach = std::numeric_limits<double>::infinity());
 
 }  // namespace fitfeel

@@ -111,7 +111,8 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
 
   const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
   RunResult result;
-  PreparedScene prepared = Prepare(scene, options.shared);
+  // The scene's own device drives this run: the contact need not be tabulated past its reach.
+  PreparedScene prepared = Prepare(scene, options.shared, scene.device->reach(scene.run.duration));
   if (stopped()) throw Interrupted("while preparing the scene; no outputs written");
   if (options.prepared) options.prepared(prepared);
 

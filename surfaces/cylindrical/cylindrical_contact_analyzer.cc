@@ -332,6 +332,14 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   max_depth_ = shaft_length_ + bushing_length_;
   step_ = settings.depth_step > 0.0 ? settings.depth_step
                                     : std::max(min_row, max_depth_ / kAutoDepthSteps);
+  // A run whose device stops short (ModelSettings::reach) needs no table past it: the steps kept
+  // are the same bits as in the whole table (a chunk's warm starts only run forwards), and the
+  // step stays the whole length's. Two steps and a millimetre of margin cover a lead-in's capture
+  // depth and the interpolation's next step.
+  if (settings.reach < max_depth_) {
+    const double reach = std::max(settings.reach, 0.0) + 1e-3;
+    max_depth_ = std::min(max_depth_, (std::ceil(reach / step_) + 2.0) * step_);
+  }
   const double steps = std::ceil(max_depth_ / step_);
   // Each step stores up to n + 4 polygon vertices.
   if (!(steps < kMaxDepthSteps) || !(steps * (n_ + 4) < kMaxDepthTableVertices)) {
