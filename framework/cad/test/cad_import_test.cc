@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -17,6 +18,9 @@
 #include "framework/cad/import.h"
 #include "framework/cad/isolated_read.h"
 #include "framework/core/error.h"
+#include "framework/scenario/cad_parts.h"
+#include "framework/scenario/scene.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/testing/cli_runner.h"
 
 namespace fitfeel::cad {
@@ -383,6 +387,56 @@ TEST(CadImport, EachPartsTessellationHasItsAreaVolumeAndExtent) {
     EXPECT_NEAR(hi[0] - lo[0], e.dx, 2 * deflection);
     EXPECT_NEAR(hi[1] - lo[1], e.dx, 2 * deflection);
     EXPECT_NEAR(hi[2] - lo[2], e.dz, 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::cad
+
+namespace fitfeel::cad {
+namespace {
+
+// A scene's parts made of the paper case's features carry the parts' own shapes in their mating
+// frames (framework/model/render_mesh.h): the shaft's leading end at y = 0 and its body behind
+// it, the bushing entered at y = 0 and lying beyond, both about the y axis.
+TEST(CadImport, AScenesCadPartsCarryTheirShapesInTheirMatingFrames) {
+  const fs::path dir = test_support::EmptyTestFolder("cad-part-meshes");
+  fs::copy_file(Fixture("paper-ap242.step"), dir / "paper-ap242.step");
+  const std::string sidecar = Sidecar("paper-ap242.sidecar.yaml").string();
+  std::ofstream(dir / "cad.yaml")
+      << "scenario: cad-meshes\nsurface: fitfeel.surface.cylindrical\nparts:\n"
+      << "  shaft: {role: inner, cad: {file: paper-ap242.step, feature: cylinder-1, sidecar: \""
+      << sidecar << "\"}}\n"
+      << "  bushing: {role: outer, cad: {file: paper-ap242.step, feature: hole-1, sidecar: \""
+      << sidecar << "\"}}\n"
+      << "moving: shaft\n"
+         "model: {law: elastic, friction: 0.15, contact_stiffness: 3665 N/um, resolution: "
+         "{rows: 40, columns: 360}, texture: din7190, options: {tilt: free}, depth_step: auto}\n"
+         "device: {plugin: fitfeel.device.simulated, speed: 10 mm/s}\n"
+         "run: {rate: 1000 Hz, duration: 4 s, seed: 1, clock: virtual}\n";
+  InstallSceneCadParts();
+  const Scene scene = LoadScene(dir / "cad.yaml", test_support::BuildTreePlugins());
+  scenario::SetCadPartResolver({});
+  struct Expected {
+    const char* name;
+    double radius, y_min, y_max;  // mm
+  };
+  for (const Expected& e : {Expected{"shaft", 10, -40, 0}, Expected{"bushing", 15, 0, 20}}) {
+    SCOPED_TRACE(e.name);
+    const std::shared_ptr<const scenario::CadMesh> mesh = scenario::CadMeshOf(scene.file, e.name);
+    ASSERT_NE(mesh, nullptr);
+    ASSERT_FALSE(mesh->triangles.empty()) << mesh->note;
+    double y_min = 1e9, y_max = -1e9, radius = 0.0;
+    for (std::size_t i = 0; i < mesh->triangles.size(); i += 3) {
+      const double x = mesh->triangles[i] * 1e3, y = mesh->triangles[i + 1] * 1e3,
+                   z = mesh->triangles[i + 2] * 1e3;
+      y_min = std::min(y_min, y);
+      y_max = std::max(y_max, y);
+      radius = std::max(radius, std::hypot(x, z));
+    }
+    EXPECT_NEAR(y_min, e.y_min, 1e-3);
+    EXPECT_NEAR(y_max, e.y_max, 1e-3);
+    EXPECT_NEAR(radius, e.radius, 1e-3);
   }
 }
 
