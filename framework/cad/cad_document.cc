@@ -58,7 +58,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CadFace, entity, kind, surface_type, origin, 
                                    semi_angle, axial_min, axial_max, convex, samples)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CadTolerance, kind, type, faces, value, has_plus_minus, lower,
                                    has_range, upper, iso_class, hole_class)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CadPart, name, faces, datums)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(CadPart, name, faces, datums, mesh, mesh_note)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CadDocument, schema, length_unit, parts, tolerances)
 
 std::string ToText(const CadDocument& document) {

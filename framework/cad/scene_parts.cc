@@ -1,6 +1,8 @@
 // A scene's part that names a feature of a STEP file (`cad: {file, feature, part, sidecar}`):
 // the file read and checked as `fitfeel import` reads it, the feature's keys put in the part.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -55,6 +57,59 @@ std::shared_ptr<const Import> ImportOf(const ConfigNode& file_node, const fs::pa
   return import;
 }
 
+using Vec = std::array<double, 3>;
+
+double Dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// The part's shape in its mating frame (framework/model/render_mesh.h), the frame the scene's part
+// made of feature `index` is drawn in: y along the insertion as `fitfeel import` reads it for a
+// pair (the shaft moves towards the hole from the side it lies on), the origin at the shaft's
+// leading end or the hole's entrance (a sphere's or seat's centre), x any direction across.
+std::shared_ptr<const scenario::CadMesh> MatingFrameMesh(const Import& import, std::size_t index,
+                                                         const CadPart& part, bool outer) {
+  auto mesh = std::make_shared<scenario::CadMesh>();
+  mesh->note = part.mesh_note;
+  if (part.mesh.empty()) return mesh;
+  const Feature& f = import.features[index];
+  Vec y = f.axis;
+  for (const Pair& p : import.pairs) {
+    if (p.hole != index && p.shaft != index) continue;
+    const Feature& hole = import.features[p.hole];
+    const Feature& shaft = import.features[p.shaft];
+    const auto middle = [&](const Feature& g) {
+      return Dot(g.origin, hole.axis) + 0.5 * (g.axial_min + g.axial_max) * Dot(g.axis, hole.axis);
+    };
+    const double d = middle(shaft) > middle(hole) ? -1.0 : 1.0;
+    y = {d * hole.axis[0], d * hole.axis[1], d * hole.axis[2]};
+    break;
+  }
+  Vec o = f.origin;
+  if (f.kind != FeatureKind::kSeat && f.kind != FeatureKind::kSphere) {
+    const auto end = [&](double t) {
+      return Vec{f.origin[0] + t * f.axis[0], f.origin[1] + t * f.axis[1],
+                 f.origin[2] + t * f.axis[2]};
+    };
+    const Vec lo = end(f.axial_min), hi = end(f.axial_max);
+    // A shaft leads with its end furthest along the insertion; a hole is entered at its nearest.
+    const bool hi_ahead = Dot(hi, y) > Dot(lo, y);
+    o = hi_ahead != outer ? hi : lo;
+  }
+  const Vec any = std::abs(y[0]) < 0.9 ? Vec{1, 0, 0} : Vec{0, 1, 0};
+  const double along = Dot(any, y);
+  Vec x = {any[0] - along * y[0], any[1] - along * y[1], any[2] - along * y[2]};
+  const double length = std::sqrt(Dot(x, x));
+  x = {x[0] / length, x[1] / length, x[2] / length};
+  const Vec z = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  mesh->triangles.reserve(part.mesh.size());
+  for (std::size_t i = 0; i + 2 < part.mesh.size(); i += 3) {
+    const Vec v = {part.mesh[i] - o[0], part.mesh[i + 1] - o[1], part.mesh[i + 2] - o[2]};
+    for (const Vec* a : std::array<const Vec*, 3>{&x, &y, &z}) {
+      mesh->triangles.push_back(static_cast<float>(Dot(v, *a)));
+    }
+  }
+  return mesh;
+}
+
 scenario::CadPartKeys Resolve(const ConfigNode& cad, const std::string& part_name, bool outer,
                               const fs::path& scenario_file) {
   if (!cad.is_map()) cad.Fail("a map {file, feature} (and part, sidecar)", cad.Describe());
@@ -104,7 +159,11 @@ scenario::CadPartKeys Resolve(const ConfigNode& cad, const std::string& part_nam
         "'" + feature + "'");
   }
   try {
-    return PartKeys(*import, *index, outer);
+    scenario::CadPartKeys keys = PartKeys(*import, *index, outer);
+    for (const CadPart& p : import->document.parts) {
+      if (p.name == part) keys.mesh = MatingFrameMesh(*import, *index, p, outer);
+    }
+    return keys;
   } catch (const ScenarioError&) {
     throw;
   } catch (const UserError& e) {

@@ -5,13 +5,17 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp_Face.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
+#include <Poly_Triangulation.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <StepData_StepModel.hxx>
@@ -52,6 +56,45 @@ std::array<double, 3> Metres(const gp_XYZ& p) {
   return {p.X() * kMetresPerReaderUnit, p.Y() * kMetresPerReaderUnit, p.Z() * kMetresPerReaderUnit};
 }
 std::array<double, 3> Unit(const gp_Dir& d) { return {d.X(), d.Y(), d.Z()}; }
+
+// Each face's triangles with the face's location applied, turned round where the face is
+// reversed so that every triangle faces out of the material.
+void Tessellate(const TopoDS_Shape& shape, CadPart* part) {
+  BRepMesh_IncrementalMesh mesher(shape, kMeshLinearDeflection / kMetresPerReaderUnit,
+                                  Standard_False, kMeshAngularDeflection, Standard_False);
+  std::size_t triangles = 0;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) t =
+        BRep_Tool::Triangulation(TopoDS::Face(it.Current()), location);
+    if (!t.IsNull()) triangles += static_cast<std::size_t>(t->NbTriangles());
+  }
+  if (triangles > kMaxMeshTriangles) {
+    part->mesh_note = "its tessellation has " + std::to_string(triangles) +
+                      " triangles, above the " + std::to_string(kMaxMeshTriangles) +
+                      " the viewer takes";
+    return;
+  }
+  part->mesh.reserve(9 * triangles);
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(it.Current());
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) t = BRep_Tool::Triangulation(face, location);
+    if (t.IsNull()) continue;
+    const gp_Trsf move = location.Transformation();
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    for (Standard_Integer i = 1; i <= t->NbTriangles(); ++i) {
+      Standard_Integer n[3];
+      t->Triangle(i).Get(n[0], n[1], n[2]);
+      if (reversed) std::swap(n[1], n[2]);
+      for (const Standard_Integer k : n) {
+        const std::array<double, 3> p = Metres(t->Node(k).Transformed(move).XYZ());
+        for (const double c : p) part->mesh.push_back(static_cast<float>(c));
+      }
+    }
+  }
+  if (part->mesh.empty()) part->mesh_note = "the mesher gave its shape no triangles";
+}
 
 std::string Name(const TDF_Label& label) {
   Handle(TDataStd_Name) name;
@@ -193,6 +236,7 @@ class Reader {
     for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
       part.faces.push_back(Face(TopoDS::Face(it.Current()), placement));
     }
+    Tessellate(shape.Moved(placement), &part);
     document.parts.push_back(std::move(part));
   }
 

@@ -1,5 +1,6 @@
 #include "framework/scenario/cad_parts.h"
 
+#include <map>
 #include <mutex>
 #include <string>
 
@@ -15,6 +16,14 @@ struct YamlAccess {
 namespace {
 
 std::mutex resolver_mutex;
+std::mutex mesh_mutex;
+std::map<std::pair<std::string, std::string>, std::shared_ptr<const CadMesh>>& Meshes() {
+  static std::map<std::pair<std::string, std::string>, std::shared_ptr<const CadMesh>> meshes;
+  return meshes;
+}
+std::string MeshKey(const std::filesystem::path& scenario_file) {
+  return std::filesystem::absolute(scenario_file).lexically_normal().string();
+}
 CadPartResolver& Resolver() {
   static CadPartResolver resolver;
   return resolver;
@@ -49,7 +58,8 @@ void Merge(const ConfigNode& part, const char* key,
   for (const auto& [name, value] : keys) map[name] = LoadAt(at, value);
 }
 
-void ResolveParts(const ConfigNode& parts, const std::filesystem::path& scenario_file) {
+void ResolveParts(const ConfigNode& parts, const std::filesystem::path& scenario_file,
+                  const std::string& prefix) {
   if (!parts.is_map()) return;
   for (const std::string& name : parts.Keys()) {
     const ConfigNode part = parts.Child(name);
@@ -78,6 +88,8 @@ void ResolveParts(const ConfigNode& parts, const std::filesystem::path& scenario
     if (keys.texture && !part.Has("texture")) target["texture"] = LoadAt(at, *keys.texture);
     if (keys.material && !part.Has("material")) target["material"] = LoadAt(at, *keys.material);
     target.remove("cad");
+    const std::lock_guard<std::mutex> lock(mesh_mutex);
+    Meshes()[{MeshKey(scenario_file), prefix + name}] = keys.mesh;
   }
 }
 
@@ -88,16 +100,23 @@ void SetCadPartResolver(CadPartResolver resolver) {
   Resolver() = std::move(resolver);
 }
 
+std::shared_ptr<const CadMesh> CadMeshOf(const std::filesystem::path& scenario_file,
+                                         const std::string& part) {
+  const std::lock_guard<std::mutex> lock(mesh_mutex);
+  const auto found = Meshes().find({MeshKey(scenario_file), part});
+  return found == Meshes().end() ? nullptr : found->second;
+}
+
 void ResolveCadParts(const ConfigNode& root, const std::filesystem::path& scenario_file) {
   if (!root.is_map()) return;
-  if (std::optional<ConfigNode> parts = root.Find("parts")) ResolveParts(*parts, scenario_file);
+  if (std::optional<ConfigNode> parts = root.Find("parts")) ResolveParts(*parts, scenario_file, "");
   if (std::optional<ConfigNode> features = root.Find("features")) {
     if (!features->is_map()) return;
     for (const std::string& name : features->Keys()) {
       const ConfigNode feature = features->Child(name);
       if (!feature.is_map()) continue;
       if (std::optional<ConfigNode> parts = feature.Find("parts")) {
-        ResolveParts(*parts, scenario_file);
+        ResolveParts(*parts, scenario_file, name + "/");
       }
     }
   }

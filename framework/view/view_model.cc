@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,6 +15,7 @@
 #include "framework/core/error.h"
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/scene_stages.h"
+#include "framework/scenario/cad_parts.h"
 
 namespace fitfeel::view {
 namespace {
@@ -41,6 +45,25 @@ nlohmann::json PartJson(const PartSpec& part, const SkinModelShape& sms, bool pl
           {"variation_min_um", v.size() > 0 ? v.minCoeff() * 1e6 : 0.0},
           {"variation_max_um", v.size() > 0 ? v.maxCoeff() * 1e6 : 0.0},
           {"placeholder", placeholder}};
+}
+
+// A part made of a CAD feature carries its own shape, sent once with the scene: the page draws it
+// in place of the primitive surface. Whole micrometres keep the message short; the mesher's
+// deflection is fifty times coarser.
+void AddCadMesh(nlohmann::json* j, const std::filesystem::path& scenario_file,
+                const std::string& part) {
+  const std::shared_ptr<const scenario::CadMesh> mesh = scenario::CadMeshOf(scenario_file, part);
+  if (!mesh) return;
+  if (mesh->triangles.empty()) {
+    (*j)["cad_mesh_note"] = mesh->note;
+    return;
+  }
+  std::vector<std::int32_t> um;
+  um.reserve(mesh->triangles.size());
+  for (const float v : mesh->triangles) {
+    um.push_back(static_cast<std::int32_t>(std::lround(static_cast<double>(v) * 1e6)));
+  }
+  (*j)["cad_mesh"] = {{"triangles", mesh->triangles.size() / 9}, {"positions_um", um}};
 }
 
 }  // namespace
@@ -147,6 +170,10 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step) : scene_(
     j["features"] = features;
     j["moving_body"] = scene.moving_body;
     j["fixed_body"] = scene.fixed_body;
+  }
+  if (scene.features.empty()) {
+    AddCadMesh(&j["inner"], scene.file, scene.inner.name);
+    AddCadMesh(&j["outer"], scene.file, scene.outer.name);
   }
   if (step >= 0) j["step"] = step;
   scene_message_ = j.dump();

@@ -3,9 +3,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -14,6 +18,9 @@
 #include "framework/cad/import.h"
 #include "framework/cad/isolated_read.h"
 #include "framework/core/error.h"
+#include "framework/scenario/cad_parts.h"
+#include "framework/scenario/scene.h"
+#include "framework/testing/build_tree_plugins.h"
 #include "framework/testing/cli_runner.h"
 
 namespace fitfeel::cad {
@@ -156,10 +163,14 @@ TEST(CadImport, TheFirstPinToEngageIsTheDatumAndTheOtherEngagesAfterIt) {
   document.parts.push_back(
       {"base",
        {Cylinder(1, 0.0, 0.004, 0.0, 0.013, true), Cylinder(2, 0.060, 0.004, 0.0, 0.015, true)},
+       {},
+       {},
        {}});
   document.parts.push_back({"plate",
                             {Cylinder(3, 0.0, 0.004, 0.015, 0.025, false),
                              Cylinder(4, 0.060, 0.004, 0.015, 0.025, false)},
+                            {},
+                            {},
                             {}});
   const fs::path sidecar = test_support::EmptyTestFolder("cad-joint") / "joint.sidecar.yaml";
   std::ofstream(sidecar)
@@ -324,6 +335,109 @@ TEST(CadImport, AReaderThatCrashesOrHangsEndsInARefusal) {
   EXPECT_THAT(crashed, HasSubstr("crashed the STEP reader (Aborted); the reader ran in a child "
                                  "process and the file is refused"));
   EXPECT_THAT(hung, HasSubstr("was not read within 0.3 s; the STEP reader was stopped"));
+}
+
+}  // namespace
+}  // namespace fitfeel::cad
+
+namespace fitfeel::cad {
+namespace {
+
+// The viewer's triangles of the paper case's parts: their area and enclosed volume (the
+// divergence theorem, which also checks that every triangle faces out) within 2 % of the
+// cylinders' own, their extent the parts' within the mesher's deflection.
+TEST(CadImport, EachPartsTessellationHasItsAreaVolumeAndExtent) {
+  const CadDocument document = ReadStep(Fixture("paper-ap242.step"));
+  struct Expected {
+    const char* name;
+    double area, volume, dx, dz;  // mm², mm³, mm across, mm along
+  };
+  const double pi = std::acos(-1.0);
+  for (const Expected& e : {Expected{"shaft", 1000 * pi, 4000 * pi, 20, 40},
+                            Expected{"bushing", 1250 * pi, 2500 * pi, 30, 20}}) {
+    SCOPED_TRACE(e.name);
+    const CadPart* part = nullptr;
+    for (const CadPart& p : document.parts) {
+      if (p.name == e.name) part = &p;
+    }
+    ASSERT_NE(part, nullptr);
+    ASSERT_FALSE(part->mesh.empty()) << part->mesh_note;
+    ASSERT_EQ(part->mesh.size() % 9, 0u);
+    double area = 0.0, volume = 0.0;
+    std::array<double, 3> lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
+    for (std::size_t t = 0; t < part->mesh.size(); t += 9) {
+      std::array<std::array<double, 3>, 3> c;
+      for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) {
+          c[k][a] = part->mesh[t + 3 * k + a] * 1e3;
+          lo[a] = std::min(lo[a], c[k][a]);
+          hi[a] = std::max(hi[a], c[k][a]);
+        }
+      }
+      const std::array<double, 3> u{c[1][0] - c[0][0], c[1][1] - c[0][1], c[1][2] - c[0][2]};
+      const std::array<double, 3> v{c[2][0] - c[0][0], c[2][1] - c[0][1], c[2][2] - c[0][2]};
+      const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                    u[0] * v[1] - u[1] * v[0]};
+      area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      volume += (c[0][0] * n[0] + c[0][1] * n[1] + c[0][2] * n[2]) / 6.0;
+    }
+    EXPECT_NEAR(area, e.area, 0.02 * e.area);
+    EXPECT_NEAR(volume, e.volume, 0.02 * e.volume);
+    const double deflection = kMeshLinearDeflection * 1e3;
+    EXPECT_NEAR(hi[0] - lo[0], e.dx, 2 * deflection);
+    EXPECT_NEAR(hi[1] - lo[1], e.dx, 2 * deflection);
+    EXPECT_NEAR(hi[2] - lo[2], e.dz, 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace fitfeel::cad
+
+namespace fitfeel::cad {
+namespace {
+
+// A scene's parts made of the paper case's features carry the parts' own shapes in their mating
+// frames (framework/model/render_mesh.h): the shaft's leading end at y = 0 and its body behind
+// it, the bushing entered at y = 0 and lying beyond, both about the y axis.
+TEST(CadImport, AScenesCadPartsCarryTheirShapesInTheirMatingFrames) {
+  const fs::path dir = test_support::EmptyTestFolder("cad-part-meshes");
+  fs::copy_file(Fixture("paper-ap242.step"), dir / "paper-ap242.step");
+  const std::string sidecar = Sidecar("paper-ap242.sidecar.yaml").string();
+  std::ofstream(dir / "cad.yaml")
+      << "scenario: cad-meshes\nsurface: fitfeel.surface.cylindrical\nparts:\n"
+      << "  shaft: {role: inner, cad: {file: paper-ap242.step, feature: cylinder-1, sidecar: \""
+      << sidecar << "\"}}\n"
+      << "  bushing: {role: outer, cad: {file: paper-ap242.step, feature: hole-1, sidecar: \""
+      << sidecar << "\"}}\n"
+      << "moving: shaft\n"
+         "model: {law: elastic, friction: 0.15, contact_stiffness: 3665 N/um, resolution: "
+         "{rows: 40, columns: 360}, texture: din7190, options: {tilt: free}, depth_step: auto}\n"
+         "device: {plugin: fitfeel.device.simulated, speed: 10 mm/s}\n"
+         "run: {rate: 1000 Hz, duration: 4 s, seed: 1, clock: virtual}\n";
+  InstallSceneCadParts();
+  const Scene scene = LoadScene(dir / "cad.yaml", test_support::BuildTreePlugins());
+  scenario::SetCadPartResolver({});
+  struct Expected {
+    const char* name;
+    double radius, y_min, y_max;  // mm
+  };
+  for (const Expected& e : {Expected{"shaft", 10, -40, 0}, Expected{"bushing", 15, 0, 20}}) {
+    SCOPED_TRACE(e.name);
+    const std::shared_ptr<const scenario::CadMesh> mesh = scenario::CadMeshOf(scene.file, e.name);
+    ASSERT_NE(mesh, nullptr);
+    ASSERT_FALSE(mesh->triangles.empty()) << mesh->note;
+    double y_min = 1e9, y_max = -1e9, radius = 0.0;
+    for (std::size_t i = 0; i < mesh->triangles.size(); i += 3) {
+      const double x = mesh->triangles[i] * 1e3, y = mesh->triangles[i + 1] * 1e3,
+                   z = mesh->triangles[i + 2] * 1e3;
+      y_min = std::min(y_min, y);
+      y_max = std::max(y_max, y);
+      radius = std::max(radius, std::hypot(x, z));
+    }
+    EXPECT_NEAR(y_min, e.y_min, 1e-3);
+    EXPECT_NEAR(y_max, e.y_max, 1e-3);
+    EXPECT_NEAR(radius, e.radius, 1e-3);
+  }
 }
 
 }  // namespace

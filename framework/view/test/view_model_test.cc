@@ -3,9 +3,13 @@
 // scene's every part, drawn as the run draws it and placed in the joint frame (PartPlacement).
 #include "framework/view/view_model.h"
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,6 +19,7 @@
 #include "framework/runtime/prepare.h"
 #include "framework/runtime/run.h"
 #include "framework/runtime/sequence_run.h"
+#include "framework/scenario/cad_parts.h"
 #include "framework/scenario/scene.h"
 #include "framework/scenario/sequence.h"
 #include "framework/testing/build_tree_plugins.h"
@@ -284,6 +289,50 @@ TEST(ViewModelScrew, BoltM10DrawsBothThreadsAndTheLoadedFlankOnceTightened) {
   ViewSample outside;
   outside.depth = -2e-3;
   EXPECT_EQ(model.Extras(outside).pressure_max, 0.0);
+}
+
+}  // namespace
+}  // namespace fitfeel::view
+
+namespace fitfeel::view {
+namespace {
+
+// A part made of a CAD feature carries its own triangles in the scene message; a part given by
+// its size and geometry carries none. The resolver stands in for the STEP reader.
+TEST(ViewModelCadMesh, TheSceneMessageCarriesACadPartsTrianglesOnly) {
+  std::ifstream in("scenarios/paper-case1-h7g6.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string size =
+      "    size: 20 mm g6          # ISO 286 table, 18-30 mm step: -20/-7 um\n";
+  const std::string geometry = "    geometry: {length: 40 mm, chamfer: 0.5 mm}\n";
+  ASSERT_NE(text.find(size), std::string::npos);
+  ASSERT_NE(text.find(geometry), std::string::npos);
+  text.replace(text.find(size), size.size(), "    cad: {file: shaft.step, feature: cylinder-1}\n");
+  text.erase(text.find(geometry), geometry.size());
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("fitfeel-view-cad-" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(file) << text;
+  scenario::SetCadPartResolver(
+      [](const ConfigNode&, const std::string&, bool, const std::filesystem::path&) {
+        scenario::CadPartKeys keys;
+        keys.size = "20 mm g6";
+        keys.geometry = {{"length", "40 mm"}, {"chamfer", "0.5 mm"}};
+        auto mesh = std::make_shared<scenario::CadMesh>();
+        mesh->triangles = {0.0f, 0.0f, 0.0f, 0.01f, 0.0f, 0.0f, 0.0f, -0.04f, 0.0f};
+        keys.mesh = mesh;
+        return keys;
+      });
+  const Scene scene = LoadScene(file, test_support::BuildTreePlugins());
+  scenario::SetCadPartResolver({});
+  std::filesystem::remove(file);
+  const ViewModel model(scene, 1);
+  const nlohmann::json message = nlohmann::json::parse(model.scene_message());
+  ASSERT_TRUE(message["inner"].contains("cad_mesh")) << message["inner"].dump();
+  EXPECT_EQ(message["inner"]["cad_mesh"]["triangles"], 1);
+  EXPECT_EQ(message["inner"]["cad_mesh"]["positions_um"],
+            nlohmann::json({0, 0, 0, 10000, 0, 0, 0, -40000, 0}));
+  EXPECT_FALSE(message["outer"].contains("cad_mesh"));
+  EXPECT_FALSE(message["outer"].contains("cad_mesh_note"));
 }
 
 }  // namespace

@@ -128,6 +128,19 @@ function displace(part) {
   g.computeBoundingSphere();
 }
 
+// A part made of a CAD feature: the part's own tessellated shape from the scene message, in the
+// same mating frame as its render mesh, so the group that moves the primitive moves it too.
+function cadGeometry(side) {
+  if (!side || !side.cad_mesh) return null;
+  const um = side.cad_mesh.positions_um, p = new Float32Array(um.length);
+  for (let i = 0; i < um.length; ++i) p[i] = um[i] * 1e-3;
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(p, 3));
+  g.computeVertexNormals();
+  g.computeBoundingSphere();
+  return g;
+}
+
 function addPart(mesh) {
   if (joint()) {
     addFeaturePart(mesh);
@@ -156,11 +169,14 @@ function addPart(mesh) {
   view.geometry[mesh.part] = g;
   document.body.dataset.parts = view.meshes.filter((m) => m).length;
   displace(mesh.part);
+  const cad = cadGeometry(mesh.part === 0 ? view.scene.inner : view.scene.outer);
   const material = mesh.part === 0
-    ? new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide })
+    ? new THREE.MeshLambertMaterial(cad ? { color: 0xd9b100, side: THREE.DoubleSide }
+      : { vertexColors: THREE.VertexColors, side: THREE.DoubleSide })
     : new THREE.MeshLambertMaterial({ color: 0x8a9bb0, side: THREE.DoubleSide, transparent: true,
       opacity: 0.35, depthWrite: false });
-  group.add(new THREE.Mesh(g, material));
+  group.add(new THREE.Mesh(cad || g, material));
+  if (cad) document.body.dataset.cadParts = (Number(document.body.dataset.cadParts) || 0) + 1;
   if (view.meshes[0] && view.meshes[1]) frameCamera();
   requestRender();
 }
