@@ -232,19 +232,10 @@ const CadFace* FindFace(const CadDocument& document, int entity) {
   return nullptr;
 }
 
+// The scenario's form key of a form tolerance (its name); empty for a size or an unknown kind.
 std::string FormKey(ToleranceKind kind) {
-  switch (kind) {
-    case ToleranceKind::kRoundness:
-      return "roundness";
-    case ToleranceKind::kCylindricity:
-      return "cylindricity";
-    case ToleranceKind::kStraightness:
-      return "straightness";
-    case ToleranceKind::kFlatness:
-      return "flatness";
-    default:
-      return "";
-  }
+  return kind == ToleranceKind::kSize || kind == ToleranceKind::kOther ? ""
+                                                                       : ToleranceKindName(kind);
 }
 
 // Every PMI value checked before it is used: the reader is known to give 0 for values it did not
