@@ -105,6 +105,13 @@ void SimulatedDevice::DoStart(double period) {
   Validate(settings_);
   period_ = period;
   time_ = 0.0;
+  // The twist about y comes after the swing in DoRead, so that MatingPoseOf's swing-twist
+  // decomposition reads both back.
+  const double tilt = settings_.tilt.norm();
+  swing_ = tilt > 0.0
+               ? Eigen::Quaterniond(Eigen::AngleAxisd(
+                     tilt, Eigen::Vector3d(settings_.tilt.x(), 0.0, settings_.tilt.y()) / tilt))
+               : Eigen::Quaterniond::Identity();
   delivered_.SetZero();
   velocity_.setZero();
   stiffness_ = 0.0;
@@ -211,14 +218,7 @@ std::optional<Eigen::Vector2d> SimulatedDevice::DoHeldTilt() const {
 
 void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
   time_ = time;
-  // The held tilt, a swing about an axis across y; the twist about y comes after it, so that
-  // MatingPoseOf's swing-twist decomposition reads both back.
-  const double tilt = settings_.tilt.norm();
-  const Eigen::Quaterniond swing =
-      tilt > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(
-                       tilt, Eigen::Vector3d(settings_.tilt.x(), 0.0, settings_.tilt.y()) / tilt))
-                 : Eigen::Quaterniond::Identity();
-  out->orientation = swing;
+  out->orientation = swing_;
   out->angular_velocity.setZero();
   if (settings_.mode == Settings::Mode::kConstantSpeed) {
     // Computed from the time, never accumulated: the axial position is exact at every tick.
@@ -235,7 +235,7 @@ void SimulatedDevice::DoRead(double time, DeviceState* out) noexcept {
     // twist MatingPoseOf reads back is the angle itself, to rounding.
     angle = std::remainder(angle, 2.0 * M_PI);
     out->orientation =
-        swing * Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, std::sin(0.5 * angle), 0.0);
+        swing_ * Eigen::Quaterniond(std::cos(0.5 * angle), 0.0, std::sin(0.5 * angle), 0.0);
     out->angular_velocity.y() = rate;
   }
   out->time = time;

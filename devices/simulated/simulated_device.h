@@ -131,6 +131,8 @@ class SimulatedDevice final : public Device {
   double time_ = 0.0;  // of the last Read
   Eigen::Vector3d position_{0.0, 0.0, 0.0};
   Eigen::Vector3d velocity_{0.0, 0.0, 0.0};
+  // The held tilt as a swing about an axis across y (Settings::tilt), made once at Start.
+  Eigen::Quaterniond swing_ = Eigen::Quaterniond::Identity();
   Wrench delivered_;
   double stiffness_ = 0.0;      // of the contact behind the next wrench (scripted hand), N/m
   bool stopped_ = false;        // constant speed with stop_force: the ram has stopped
