@@ -3,6 +3,7 @@
 // folder or a finished sequence's.
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -26,6 +27,7 @@
 #include "framework/scenario/scene.h"
 #include "framework/scenario/sequence.h"
 #include "framework/view/sequence_view.h"
+#include "framework/view/live_session.h"
 #include "framework/view/server.h"
 #include "framework/view/tick_publisher.h"
 #include "framework/view/view_model.h"
@@ -49,6 +51,8 @@ struct ViewArgs {
   double exit_after = -1.0;
   bool wait = false;
   bool allow_large = false;
+  bool edit = false;
+  std::string compare;
 };
 
 // The constrained rows of a finished run as viewer samples. A several-feature scene's rows take
@@ -238,6 +242,69 @@ void ViewSequence(const ViewArgs& args, const fs::path& file, const PluginRegist
   Serve(server, args);
 }
 
+// A live view the page changes (--edit) or switches between two scenes (--compare): passes of
+// the scene's run in real time until interrupted (or --exit-after seconds after the start).
+void ViewLive(const ViewArgs& args, const fs::path& file, const PluginRegistry& registry,
+              const LoadOptions& load, const view::ServerOptions& options) {
+  if (!args.trace.empty()) throw UserError("view: --edit and --compare run a scene, not --trace");
+  if (args.virtual_clock) {
+    throw UserError("view: --edit and --compare run the device in real time (a person feels each "
+                    "change); remove --virtual");
+  }
+  if (!args.out.empty()) {
+    throw UserError("view: --edit and --compare write no outputs (each pass is a new run); "
+                    "remove --out, and save an edited scene from the page");
+  }
+  view::LiveSessionOptions live;
+  live.server = options;
+  live.load = load;
+  live.load.writes_outputs = false;
+  live.seed = args.seed;
+  live.stop = &InterruptFlag();
+  live.say = [](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  };
+  const std::optional<fs::path> compare =
+      args.compare.empty() ? std::nullopt : std::optional<fs::path>(args.compare);
+  view::LiveSession session(file, compare, registry, live);
+  session.server().Start();
+  std::printf("fitfeel view: %s (%s), %s\n  http://%s:%u/\n", session.rendering().c_str(),
+              file.string().c_str(),
+              compare ? ("compared with " + compare->string()).c_str()
+                      : "edited from the page",
+              args.host.c_str(), session.server().port());
+  std::fflush(stdout);
+  if (args.wait) {
+    std::printf("  waiting for a browser to connect before running\n");
+    std::fflush(stdout);
+    while (session.server().clients() == 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
+  std::thread timer;
+  std::atomic<bool> done{false};
+  if (args.exit_after >= 0.0) {
+    timer = std::thread([&] {
+      const auto end = std::chrono::steady_clock::now() +
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(args.exit_after));
+      while (!done.load() && std::chrono::steady_clock::now() < end) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+      session.Stop();
+    });
+  }
+  session.Run();
+  done.store(true);
+  if (timer.joinable()) timer.join();
+  std::printf("  %llu passes, %llu scenes swapped in, %llu state frames served\n",
+              static_cast<unsigned long long>(session.passes()),
+              static_cast<unsigned long long>(session.swaps()),
+              static_cast<unsigned long long>(session.server().frames_sent()));
+  std::fflush(stdout);
+}
+
 void View(const ViewArgs& args) {
   std::optional<InterruptScope> interrupt;
   interrupt.emplace("fitfeel view");
@@ -287,6 +354,10 @@ void View(const ViewArgs& args) {
   }
 
   const fs::path file = args.file.empty() ? FindDefaultScenario() : fs::path(args.file);
+  if (args.edit || !args.compare.empty()) {
+    ViewLive(args, file, registry, load, options);
+    return;
+  }
   if (IsSequenceFile(file)) {
     ViewSequence(args, file, registry, load, options, interrupt);
     return;
@@ -366,6 +437,15 @@ void AddViewCommand(CLI::App& app) {
                 "files would exceed 4 GiB");
   cmd->add_flag("--wait", args->wait,
                 "start the run only once a browser has connected (watch it from the first tick)");
+  auto* edit = cmd->add_flag(
+      "--edit", args->edit,
+      "let the page change the scene while it runs: sizes (ISO 286 classes and fits), form and "
+      "texture values, friction, seed; the run goes on in passes, each new scene swapped in "
+      "when the part is out of contact");
+  cmd->add_option("--compare", args->compare,
+                  "a second scenario to compare with FILE: both prepared, the page switches which "
+                  "one the device renders (keys A and B) and overlays both traces")
+      ->excludes(edit);
   auto* realtime = cmd->add_flag("--realtime", args->realtime,
                                  "real-time clock (the default for view: watch it at 1 kHz)");
   auto* virtual_clock = cmd->add_flag(

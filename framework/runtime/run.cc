@@ -110,12 +110,20 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   }
 
   const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
-  RunResult result;
   // The scene's own device drives this run: the contact need not be tabulated past its reach.
   PreparedScene prepared = Prepare(scene, options.shared, scene.device->reach(scene.run.duration));
   if (stopped()) throw Interrupted("while preparing the scene; no outputs written");
   if (options.prepared) options.prepared(prepared);
+  return RunPreparedScene(scene, prepared, options);
+}
 
+RunResult RunPreparedScene(const Scene& scene, const PreparedScene& prepared,
+                           const RunOptions& options) {
+  if (!scene.device) {
+    throw UserError("scene '" + scene.name + "' has no device '" + scene.device_id + "'");
+  }
+  const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
+  RunResult result;
   RunInfo& info = result.info;
   info = MakeRunInfo(scene, prepared);
 

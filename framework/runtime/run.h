@@ -56,6 +56,13 @@ struct RunResult {
 // file is created when the scene cannot run, Interrupted when options.stop was set (no file left).
 FITFEEL_API RunResult RunScene(Scene scene, const RunOptions& options);
 
+// The run of a scene already prepared (Prepare with the device's reach, or +inf): the part of
+// RunScene after its preparation, for a caller that runs one prepared scene more than once (a
+// live view's passes). `options.seed`, `clock` and `prepared` are not read: the scene's own run
+// settings apply, and `prepared` must be Prepare(scene) of this scene.
+FITFEEL_API RunResult RunPreparedScene(const Scene& scene, const PreparedScene& prepared,
+                                       const RunOptions& options);
+
 // What summary.json says of a prepared scene before its run (name, law, rates, prepare times,
 // grids, measured parts); the device report is added after the run.
 FITFEEL_API RunInfo MakeRunInfo(const Scene& scene, const PreparedScene& prepared);

@@ -138,6 +138,8 @@ struct Server::Impl {
   void Broadcast(std::size_t k, const Frame& frame);
   void BeginStep(std::shared_ptr<Step> step, Frame sequence);
   void UpdateSequence(Frame sequence);
+  void ReplaceScene(std::shared_ptr<Step> step);
+  void UpdatePanel(Frame panel);
 
   ServerOptions options;
   // Before io: sessions that io's destructor destroys still count themselves out.
@@ -156,6 +158,7 @@ struct Server::Impl {
   // there, Server::BeginStep) and only handed over to this one.
   std::vector<std::shared_ptr<Step>> steps;
   Frame sequence_frame;  // null for a scene
+  Frame panel_frame;     // a live session's newest panel message; null otherwise
 };
 
 // One WebSocket client. Frames the client must get (sequence, scene, meshes, history) queue in
@@ -171,12 +174,13 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
     server.clients.fetch_add(1, std::memory_order_relaxed);
     step = server.newest();
     ws.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
-    ws.read_message_max(kMaxClientMessage);
+    ws.read_message_max(server.options.on_message ? kMaxEditMessage : kMaxClientMessage);
     ws.async_accept(request, [self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
       self->open = true;
       if (self->server.sequence_frame) self->Queue(self->server.sequence_frame, true);
       self->Show(self->step);
+      if (self->server.panel_frame) self->Queue(self->server.panel_frame, true);
       self->Read();
     });
   }
@@ -248,10 +252,15 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
   }
 
   // "seek N": the state of row N of the shown step's finished history. "step N": a sequence's
-  // begun step N, shown from its scene message on. Anything else is ignored.
+  // begun step N, shown from its scene message on. Anything else goes to a live session's
+  // handler, or is ignored.
   void Handle(const std::string& message) {
     const bool seek = message.rfind("seek ", 0) == 0;
-    if (!seek && (message.rfind("step ", 0) != 0 || !server.sequence_frame)) return;
+    const bool step_message = message.rfind("step ", 0) == 0 && server.sequence_frame;
+    if (!seek && !step_message) {
+      if (server.options.on_message) server.options.on_message(message);
+      return;
+    }
     std::size_t n = 0;
     try {
       n = std::stoul(message.substr(5));
@@ -457,6 +466,25 @@ void Server::Impl::UpdateSequence(Frame sequence) {
   }
 }
 
+void Server::Impl::ReplaceScene(std::shared_ptr<Step> step) {
+  const std::size_t shown = newest();
+  // The samples waiting are the scene's before (its pass ended before this was posted): drawn on
+  // the new scene's parts they would show the old scene's forces.
+  ViewSample stale;
+  if (step->publisher != nullptr) step->publisher->PopLatest(&stale);
+  steps[shown] = std::move(step);
+  for (auto& weak : sessions) {
+    if (auto s = weak.lock(); s && s->step == shown) s->Show(shown);
+  }
+}
+
+void Server::Impl::UpdatePanel(Frame panel) {
+  panel_frame = std::move(panel);
+  for (auto& weak : sessions) {
+    if (auto s = weak.lock()) s->Queue(panel_frame, true);
+  }
+}
+
 namespace {
 
 void CheckOptions(const ServerOptions& options) {
@@ -480,6 +508,14 @@ Server::Server(const ViewModel& model, TickPublisher* publisher, std::vector<Vie
   steps[0].model = std::shared_ptr<const ViewModel>(std::shared_ptr<const ViewModel>(), &model);
   steps[0].publisher = publisher;
   steps[0].history = std::move(history);
+  impl_ = std::make_unique<Impl>(std::move(steps), nullptr, options);
+}
+
+Server::Server(ServedStep scene, const ServerOptions& options) {
+  CheckOptions(options);
+  if (!scene.model) throw UserError("viewer: a scene's server needs its view model");
+  std::vector<ServedStep> steps(1);
+  steps[0] = std::move(scene);
   impl_ = std::make_unique<Impl>(std::move(steps), nullptr, options);
 }
 
@@ -546,6 +582,19 @@ void Server::UpdateSequence(std::string sequence_message) {
   asio::post(impl_->io, [impl = impl_.get(), frame]() mutable {
     impl->UpdateSequence(std::move(frame));
   });
+}
+
+void Server::ReplaceScene(ServedStep step) {
+  if (!step.model) throw UserError("viewer: a live session's scene has no view model");
+  auto served = std::make_shared<Impl::Step>(std::move(step));
+  asio::post(impl_->io,
+             [impl = impl_.get(), served]() mutable { impl->ReplaceScene(std::move(served)); });
+}
+
+void Server::UpdatePanel(std::string panel_message) {
+  auto frame = std::make_shared<const std::string>(std::move(panel_message));
+  asio::post(impl_->io,
+             [impl = impl_.get(), frame]() mutable { impl->UpdatePanel(std::move(frame)); });
 }
 
 unsigned short Server::port() const { return impl_->bound_port; }

@@ -24,6 +24,11 @@ struct ServerOptions {
   // Receives the server's notices, a line each without its line break, on the server's thread;
   // empty: standard error.
   std::function<void(const std::string&)> log;
+  // A live session's (LiveSession): receives every client message the server does not answer
+  // itself (anything but `seek N` and `step N`), on the server's thread; it must hand the work
+  // over and return at once. Empty: such messages are ignored. With it, a client message may be
+  // up to kMaxEditMessage bytes (an edit's key paths and values), else kMaxClientMessage.
+  std::function<void(const std::string&)> on_message;
 };
 
 // One step of a sequence (docs/assemblies.md) as the server shows it: its parts (the model, which
@@ -57,6 +62,7 @@ struct ServedStep {
 class FITFEEL_API Server {
  public:
   static constexpr std::size_t kMaxClientMessage = 256;
+  static constexpr std::size_t kMaxEditMessage = 8192;
   static constexpr std::size_t kMaxRequestHeader = 8192;
   static constexpr std::size_t kMaxHistoryRows = 4000;
   static constexpr int kMaxClientsCap = 4096;
@@ -66,6 +72,9 @@ class FITFEEL_API Server {
   // UserError for a frame rate outside [1, 240] Hz or max_clients outside [1, kMaxClientsCap].
   Server(const ViewModel& model, TickPublisher* publisher, std::vector<ViewSample> history,
          const ServerOptions& options);
+  // A scene whose model the server shares (a live session's, whose scene is replaced while the
+  // server serves it). Throws as the constructor above does, and UserError for no model.
+  Server(ServedStep scene, const ServerOptions& options);
   // A sequence's: its steps so far, the last the one the run is in (every step of a finished
   // sequence), and the sequence message. Throws as the scene's constructor does, and UserError for
   // no step or a step without a model.
@@ -86,6 +95,14 @@ class FITFEEL_API Server {
   void BeginStep(ServedStep step, std::string sequence_message);
   // A sequence's message changed (a step finished): every client gets it. Any thread.
   void UpdateSequence(std::string sequence_message);
+  // A live session's scene changed (an edit applied, the other scene of a comparison selected):
+  // the newest step becomes `step`, and every client on it gets its scene message and meshes, as
+  // a sequence's next step is shown. Any thread.
+  void ReplaceScene(ServedStep step);
+  // A live session's panel (JSON text: what can be edited, what the last edit gave, which scene
+  // of a comparison renders): every client gets it now, and each client that connects later gets
+  // the newest one after its scene. Any thread.
+  void UpdatePanel(std::string panel_message);
   unsigned short port() const;
   // State frames handed to clients so far, and clients connected (any thread; for tests and the
   // command's summary).

@@ -3,9 +3,10 @@
 // then saves a screenshot.
 //
 // node --experimental-websocket screenshot.mjs URL OUT.png [--min-frames N] [--timeout S]
-//      [--size WxH] [--eval JS] [--expect JS | --expect-file FILE]
+//      [--size WxH] [--eval JS] [--act-file FILE] [--expect JS | --expect-file FILE]
 // --eval runs JS in the page once the frames came (e.g. moves the time slider) and waits for
-// one more frame. --expect JS, evaluated in the page once the picture is drawn, must give true
+// one more frame. --act-file FILE: JavaScript (awaited) that acts on the page and must give true
+// before the picture is taken (a live view's edits). --expect JS, evaluated in the page once the picture is drawn, must give true
 // (anything else is reported); --expect-file reads that JS from FILE. Exit 0 on success, 1 with
 // a message otherwise.
 import { spawn } from 'node:child_process';
@@ -25,6 +26,8 @@ const [width, height] = option('--size', '1280x800').split('x').map(Number);
 const script = option('--eval', '');
 const expectFile = option('--expect-file', '');
 const expectation = expectFile ? readFileSync(expectFile, 'utf8') : option('--expect', '');
+const actFile = option('--act-file', '');
+const action = actFile ? readFileSync(actFile, 'utf8') : '';
 const chromium = process.env.CHROMIUM || '/usr/bin/chromium';
 
 const profile = mkdtempSync(join(tmpdir(), 'fitfeel-chromium-'));
@@ -96,6 +99,12 @@ if (script) {
   const before = await frames();
   await evaluate(script);
   await waitFrames(before + 1);
+}
+if (action) {
+  const result = await evaluate(action);
+  if (result !== true) fail(`the page gives ${JSON.stringify(result)} for --act-file ${actFile}`);
+  const report = await evaluate('document.body.dataset.report || ""');
+  if (report) console.log(`screenshot: the page reports ${report}`);
 }
 // Two animation frames: the last state is drawn before the picture is taken.
 await evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');

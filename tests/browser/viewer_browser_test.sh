@@ -9,26 +9,10 @@
 set -euo pipefail
 fitfeel=$1 scenario=$2 out=$3 expect_js=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
-log=$(mktemp)
-server=""
-cleanup() {
-  [ -n "$server" ] && kill "$server" 2>/dev/null || true
-  rm -f "$log"
-}
-trap cleanup EXIT
+. "$here/view_server.sh"
 
 # Virtual clock: the run is done at once and the page opens it as a finished run with a slider.
-# The waits below are bounds against a hang, not measurements: a loaded machine may take long.
-"$fitfeel" view "$scenario" --port 0 --virtual --exit-after 300 >"$log" 2>&1 &
-server=$!
-for _ in $(seq 1 1200); do
-  grep -aq "run finished" "$log" && break
-  kill -0 "$server" 2>/dev/null || { cat "$log"; echo "fitfeel view exited early"; exit 1; }
-  sleep 0.1
-done
-port=$(grep -ao "http://127.0.0.1:[0-9]*" "$log" | head -1 | sed 's/.*://')
-[ -n "$port" ] || { cat "$log"; echo "no URL printed"; exit 1; }
-url="http://127.0.0.1:$port"
+start_view "run finished" "$scenario" --virtual --exit-after 300
 
 # The status code only: a kept-open WebSocket ends curl by its --max-time, which is not a failure
 # (10 s: time for the handshake on a loaded machine; each such check costs that long).
@@ -57,13 +41,4 @@ node --no-warnings --experimental-websocket "$here/screenshot.mjs" "$url/" "$out
   --eval "const t = document.getElementById('time'); t.value = Math.round(0.45 * t.max); t.dispatchEvent(new Event('input'))" \
   "${expectation[@]}"
 
-# The 3D view is the left part of the window (the panel is 290 px on the right): the parts must
-# cover a share of it (a key's thin flanks cover 4 %, a shaft 30 %), in shades of lit surfaces.
-stats=$(/usr/bin/python3 "$here/png_stats.py" "$out" 0 0 980 800)
-echo "screenshot $out: $stats"
-/usr/bin/python3 - "$stats" <<'PY'
-import json, sys
-s = json.loads(sys.argv[1])
-assert s["foreground_fraction"] > 0.02, f"blank canvas? only {s['foreground_fraction']:.3f} drawn"
-assert s["distinct_colours"] > 20, f"flat picture: {s['distinct_colours']} colours"
-PY
+check_picture "$out"

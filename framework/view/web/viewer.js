@@ -8,6 +8,7 @@ import * as THREE from '/three/build/three.module.js';
 import { OrbitControls } from '/three/examples/jsm/controls/OrbitControls.js';
 import * as F from '/frames.js';
 import * as J from '/joint.js';
+import * as Live from '/live.js';
 
 const $ = (id) => document.getElementById(id);
 const MM = 1000;  // frames are in m; the scene is drawn in mm
@@ -32,6 +33,10 @@ const view = {
   // The largest resistance of the run so far (of a finished run: of its history), N: of the
   // constrained stage, which the trace draws, and of any stage.
   forcePeak: 0, forcePeakAny: 0,
+  // A live view's scenes before this one (a comparison's other scene, the scene before an edit):
+  // their traces' last rows by label, drawn dashed under this scene's.
+  others: new Map(),
+  scenes: 0,  // scene messages received
 };
 // A several-feature scene (the scene message lists its features).
 const joint = () => Boolean(view.scene && view.scene.features && view.scene.features.length);
@@ -422,6 +427,11 @@ function showState(state) {
       `${fmt(state.torque[1])} N·m` : ''].filter((t) => t).join(' · ');
   drawLegend(state);
   drawSpace(state);
+  if (state.stage === 1) {
+    view.axialPeak = Math.max(view.axialPeak || 0, Math.abs(fy));
+    document.body.dataset.axialPeak = view.axialPeak;
+  }
+  document.body.dataset.axial = Math.abs(fy);
   if (!finished && state.stage === 1) {
     view.trace.push([abscissa(state), Math.abs(fy), Math.hypot(fx, fz)]);
     if (view.trace.length > 600) view.trace.shift();  // scrolls: the newest 10 s at 60 Hz
@@ -590,18 +600,43 @@ function drawTrace() {
     : view.trace;
   g.font = '11px system-ui';
   g.fillStyle = '#222';
-  if (rows.length < 2) { g.fillText('waiting for the constrained stage', 8, 16); return; }
+  if (rows.length < 2 && view.others.size === 0) {
+    g.fillText('waiting for the constrained stage', 8, 16);
+    return;
+  }
+  // A comparison's scene that renders again is drawn solid only.
+  const others = [...view.others].filter(([label]) => label !== Live.renderingLabel());
   let x0 = Infinity, x1 = -Infinity, y1 = 0;
-  for (const [d, a, r] of rows) { x0 = Math.min(x0, d); x1 = Math.max(x1, d); y1 = Math.max(y1, a, r); }
+  for (const r of [rows, ...others.map(([, other]) => other)]) {
+    for (const [d, a, f] of r) { x0 = Math.min(x0, d); x1 = Math.max(x1, d); y1 = Math.max(y1, a, f); }
+  }
   if (x1 <= x0) x1 = x0 + 1e-3;
   y1 = y1 > 0 ? 1.1 * y1 : 1;
   const L = 34, B = cv.height - 18, W = cv.width - L - 6, H = B - 6;
   const X = (d) => L + W * (d - x0) / (x1 - x0), Y = (f) => B - H * f / y1;
   g.strokeStyle = '#999'; g.strokeRect(L, 6, W, H);
+  // The scenes before this one dashed and pale, this one's solid; each named in the legend.
+  const legend = [];
+  for (const [label, other] of others) {
+    g.setLineDash([4, 3]);
+    for (const [k, colour] of [[1, '#e6a39b'], [2, '#9db5e0']]) {
+      g.strokeStyle = colour; g.beginPath();
+      other.forEach((row, i) => (i ? g.lineTo : g.moveTo).call(g, X(row[0]), Y(row[k])));
+      g.stroke();
+    }
+    g.setLineDash([]);
+    legend.push(`- - ${label}`);
+  }
   for (const [k, colour] of [[1, '#c0392b'], [2, '#1f5fbf']]) {
     g.strokeStyle = colour; g.beginPath();
     rows.forEach((row, i) => (i ? g.lineTo : g.moveTo).call(g, X(row[0]), Y(row[k])));
     g.stroke();
+  }
+  if (others.length) {
+    legend.unshift(`— ${Live.renderingLabel() || 'this scene'}`);
+    g.textAlign = 'right';
+    legend.forEach((text, i) => g.fillText(text, cv.width - 10, 19 + 12 * i));
+    g.textAlign = 'left';
   }
   // The top force inside the plot: four digits (1100 N) are wider than the margin.
   g.fillText(`${String(+y1.toPrecision(2))} N`, L + 3, 17);
@@ -651,6 +686,13 @@ function defaultFactor(info) {
 // its own parts from its scene message on, as the first scene is drawn.
 const oneFeatureFactorHint = $('factor-hint').textContent;
 function clearScene() {
+  // A live view keeps the trace of the scene it leaves: a comparison's by its label, an edited
+  // scene's as the one before the edit.
+  if (document.body.dataset.live && view.trace.length > 1) {
+    const label = document.body.dataset.live === 'compare' ? Live.renderingLabel() : 'before the edit';
+    if (document.body.dataset.live === 'edit') view.others.clear();
+    view.others.set(label, view.trace);
+  }
   for (const group of [moving, fixed]) {
     group.traverse((o) => {
       if (o.geometry) o.geometry.dispose();
@@ -663,7 +705,8 @@ function clearScene() {
   for (const label of view.labels) label.element.remove();
   Object.assign(view, { meshes: [null, null], geometry: [null, null], holders: [], labels: [],
     state: null, trace: [], history: null, finished: false, forcePeak: 0,
-    forcePeakAny: 0 });
+    forcePeakAny: 0, axialPeak: 0 });
+  document.body.dataset.axialPeak = 0;
   document.body.dataset.parts = 0;
   $('features-panel').hidden = true;
   $('scrub').hidden = true;
@@ -687,6 +730,8 @@ function clearScene() {
 function onScene(info) {
   if (view.scene) clearScene();
   view.scene = info;
+  view.scenes += 1;
+  document.body.dataset.scenes = view.scenes;
   $('title').textContent = info.scenario;
   $('subtitle').textContent = `${info.surface} · law ${info.law || '–'} · seed ${info.seed} · ` +
     `${info.inner.name} (${info.inner.rows}×${info.inner.columns}) in ${info.outer.name} ` +
@@ -831,6 +876,7 @@ function connect() {
       const msg = JSON.parse(event.data);
       if (msg.type === 'scene') onScene(msg);
       else if (msg.type === 'sequence') onSequence(msg);
+      else if (msg.type === 'live') Live.onLive(msg, (text) => socket.send(text));
       return;
     }
     const kind = F.frameKind(event.data);
@@ -849,4 +895,5 @@ function connect() {
   };
 }
 
+Live.setUp();
 connect();
