@@ -117,6 +117,7 @@ LiveSession::LiveSession(const std::filesystem::path& file,
   ServedStep step;
   step.model = current_->model;
   step.publisher = publisher_.get();
+  if (compare) step.companion = compared_[1]->model;
   server_ = std::make_unique<Server>(std::move(step), server);
   Publish();
   worker_ = std::thread([this] { Work(); });
@@ -183,6 +184,7 @@ void LiveSession::Run(std::optional<std::uint64_t> passes) {
       ServedStep step;
       step.model = slot->model;
       step.publisher = publisher_.get();
+      if (!compared_.empty()) step.companion = compared_[slot == compared_[0] ? 1 : 0]->model;
       server_->ReplaceScene(std::move(step));
       swaps_.fetch_add(1);
       Say("  renders " + slot->scene.name + (slot->label.empty() ? "" : " (" + slot->label + ")"));

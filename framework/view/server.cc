@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <deque>
 #include <functional>
-#include <tuple>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -58,6 +58,17 @@ struct Server::Impl {
         mesh_frames.push_back(std::make_shared<const std::string>(model->mesh_frame(k)));
       }
       if (!served.history.empty()) SetHistory(std::move(served.history));
+      if (served.companion) {
+        // The other scene's message, marked: the page draws it beside this one.
+        const std::string& message = served.companion->scene_message();
+        companion_frames.push_back(std::make_shared<const std::string>(
+            "{\"companion\":true," + message.substr(message.find('{') + 1)));
+        for (int k = 0; k < served.companion->mesh_count(); ++k) {
+          companion_frames.push_back(
+              std::make_shared<const std::string>(served.companion->mesh_frame(k)));
+        }
+        companion = std::move(served.companion);
+      }
     }
 
     void SetHistory(std::vector<ViewSample> rows) {
@@ -88,6 +99,9 @@ struct Server::Impl {
     // Encoded once, queued to every client as the same buffers.
     const Frame scene_frame;
     std::vector<Frame> mesh_frames;  // filled by the constructor, read-only afterwards
+    // A comparison's other scene: its marked scene message, then its meshes; kept alive with it.
+    std::vector<Frame> companion_frames;
+    std::shared_ptr<const ViewModel> companion;
   };
 
   Impl(std::vector<ServedStep> served, Frame sequence, const ServerOptions& o)
@@ -101,8 +115,8 @@ struct Server::Impl {
   bool OriginAllowed(std::string_view origin) const {
     if (origin.empty()) return true;  // not a browser: no cross-site page behind it
     const std::string port_text = ":" + std::to_string(bound_port);
-    for (const std::string& host : {std::string("127.0.0.1"), std::string("localhost"),
-                                    std::string("[::1]"), options.host}) {
+    for (const std::string& host :
+         {std::string("127.0.0.1"), std::string("localhost"), std::string("[::1]"), options.host}) {
       if (origin == "http://" + host + port_text) return true;
     }
     return false;
@@ -194,6 +208,9 @@ struct Server::Impl::Session : std::enable_shared_from_this<Session> {
     const Step& s = *server.steps[k];
     Queue(s.scene_frame, true);
     for (const Frame& mesh : s.mesh_frames) Queue(mesh, false);
+    for (std::size_t f = 0; f < s.companion_frames.size(); ++f) {
+      Queue(s.companion_frames[f], f == 0);
+    }
     if (s.history_frame) Queue(s.history_frame, false);
     if (s.latest_frame) Offer(s.latest_frame);
   }
@@ -355,8 +372,8 @@ struct HttpSession : std::enable_shared_from_this<HttpSession> {
   }
 
   void Reply(unsigned status, const char* text) {
-    auto response = std::make_shared<http::response<http::string_body>>(
-        static_cast<http::status>(status), 11);
+    auto response =
+        std::make_shared<http::response<http::string_body>>(static_cast<http::status>(status), 11);
     response->set(http::field::content_type, "text/plain; charset=utf-8");
     response->body() = text;
     response->prepare_payload();
@@ -527,8 +544,7 @@ Server::Server(std::vector<ServedStep> steps, std::string sequence_message,
     if (!step.model) throw UserError("viewer: a sequence's step has no view model");
   }
   impl_ = std::make_unique<Impl>(
-      std::move(steps), std::make_shared<const std::string>(std::move(sequence_message)),
-      options);
+      std::move(steps), std::make_shared<const std::string>(std::move(sequence_message)), options);
 }
 
 Server::~Server() { Stop(); }
@@ -538,8 +554,7 @@ void Server::Start() {
   beast::error_code ec;
   const auto address = asio::ip::make_address(s.options.host, ec);
   if (ec) {
-    throw UserError("viewer: '" + s.options.host + "' is not an IP address (" + ec.message() +
-                    ")");
+    throw UserError("viewer: '" + s.options.host + "' is not an IP address (" + ec.message() + ")");
   }
   const tcp::endpoint endpoint(address, s.options.port);
   s.acceptor.open(endpoint.protocol(), ec);
@@ -579,9 +594,8 @@ void Server::BeginStep(ServedStep step, std::string sequence_message) {
 
 void Server::UpdateSequence(std::string sequence_message) {
   auto frame = std::make_shared<const std::string>(std::move(sequence_message));
-  asio::post(impl_->io, [impl = impl_.get(), frame]() mutable {
-    impl->UpdateSequence(std::move(frame));
-  });
+  asio::post(impl_->io,
+             [impl = impl_.get(), frame]() mutable { impl->UpdateSequence(std::move(frame)); });
 }
 
 void Server::ReplaceScene(ServedStep step) {

@@ -39,6 +39,9 @@ struct ServedStep {
   TickPublisher* publisher = nullptr;
   // A finished step's rows (a finished sequence opened with --trace), or empty.
   std::vector<ViewSample> history;
+  // A comparison's other scene (LiveSession): drawn beside this one and not run. Its scene
+  // message (with `companion`: true) and meshes follow this scene's; null for none.
+  std::shared_ptr<const ViewModel> companion;
 };
 
 // The viewer's HTTP and WebSocket server (Boost.Beast on one thread of its own): the page and its

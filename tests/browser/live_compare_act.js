@@ -17,6 +17,11 @@
   key('b');  // when the part is out of contact: at the end of this pass
   if (!(await until(() => body.rendering === 'B', 30))) return ['B not rendered', body.rendering];
   if (!(await until(() => Number(body.axialPeak) > 8, 30))) return ['B force', body.axialPeak];
+  // Both scenes drawn: the one rendering, and the other below it, named.
+  if (body.companionParts !== '2' || !document.getElementById('companion-label').textContent
+    .includes('paper-case1-h7g6')) {
+    return ['the other scene not drawn', body.companionParts];
+  }
   const buttons = [...document.querySelectorAll('#compare-buttons button')].map((b) => b.textContent);
   if (buttons.join() !== 'A: H7/g6,B: paper-case1-h7js6') return ['buttons', buttons];
 

@@ -117,7 +117,10 @@ function buildGeometry(mesh) {
 }
 
 function displace(part) {
-  const mesh = view.meshes[part], g = view.geometry[part];
+  displaceMesh(view.meshes[part], view.geometry[part]);
+}
+
+function displaceMesh(mesh, g) {
   if (!mesh || !g) return;
   const p = g.attributes.position.array, s = view.factor;
   for (let c = 0; c < mesh.cells; ++c) {
@@ -131,6 +134,59 @@ function displace(part) {
   g.attributes.position.needsUpdate = true;
   g.computeVertexNormals();
   g.computeBoundingSphere();
+}
+
+// A comparison's other scene (its scene message marked `companion`, then its meshes), drawn
+// below the one the device renders: translucent, its moving part at the rendered part's depth,
+// without pressure (it does not run). A several-feature scene's companion is named, not drawn.
+const companion = { group: new THREE.Group(), moving: new THREE.Group(), fixed: new THREE.Group(),
+  scene: null, pending: 0, drawn: false, meshes: [], geometry: [] };
+companion.group.add(companion.moving, companion.fixed);
+scene.add(companion.group);
+
+function clearCompanion() {
+  for (const group of [companion.moving, companion.fixed]) {
+    group.traverse((o) => {
+      if (o.geometry) o.geometry.dispose();
+      if (o.material) o.material.dispose();
+    });
+    group.children.slice().forEach((c) => group.remove(c));
+  }
+  Object.assign(companion, { scene: null, pending: 0, drawn: false, meshes: [], geometry: [] });
+  document.body.dataset.companionParts = 0;
+  $('companion-label').hidden = true;
+}
+
+function onCompanion(info) {
+  clearCompanion();
+  companion.scene = info;
+  const several = Boolean(info.features && info.features.length);
+  companion.pending = several ? 2 * info.features.length : 2;
+  companion.drawn = !several;
+  $('companion-label').hidden = false;
+  $('companion-label').textContent = `${several ? 'Not drawn' : 'Below'}, not rendering: ` +
+    `${info.scenario} (${info.inner.name} in ${info.outer.name})`;
+}
+
+function addCompanionPart(mesh) {
+  companion.pending -= 1;
+  if (!companion.drawn || mesh.placeholder) return;
+  const g = buildGeometry(mesh);
+  companion.meshes[mesh.part] = mesh;
+  companion.geometry[mesh.part] = g;
+  displaceMesh(mesh, g);
+  const material = new THREE.MeshLambertMaterial({ color: mesh.part === 0 ? 0xc8b870 : 0x9aa5b5,
+    side: THREE.DoubleSide, transparent: true, opacity: mesh.part === 0 ? 0.55 : 0.25,
+    depthWrite: false });
+  (mesh.part === 0 ? companion.moving : companion.fixed).add(new THREE.Mesh(g, material));
+  document.body.dataset.companionParts = companion.geometry.filter((x) => x).length;
+  if (companion.pending === 0) {
+    // One and a half of the rendered outer part's heights below it.
+    const box = new THREE.Box3().expandByObject(fixed);
+    companion.group.position.set(0, 0, box.isEmpty() ? 0 : -1.5 * (box.max.z - box.min.z));
+    frameCamera();
+  }
+  requestRender();
 }
 
 // A part made of a CAD feature: the part's own tessellated shape from the scene message, in the
@@ -241,6 +297,7 @@ function shiftDeviation(k) {
 // apart on the screen where two would overlap.
 function makeLabels() {
   for (const label of view.labels) label.element.remove();
+  clearCompanion();
   view.labels = [];
   fixed.updateMatrixWorld(true);
   view.scene.features.forEach((feature, i) => {
@@ -295,7 +352,7 @@ function frameCamera() {
   if (joint()) moving.rotation.set(0, 0, 0);
   moving.updateMatrixWorld(true);
   const box = new THREE.Box3();
-  for (const group of [moving, fixed]) box.expandByObject(group);
+  for (const group of [moving, fixed, companion.group]) box.expandByObject(group);
   moving.position.copy(saved);
   if (joint()) moving.rotation.set(0, twist, 0);
   moving.updateMatrixWorld(true);
@@ -383,6 +440,7 @@ function place(state) {
     return;
   }
   J.placeBody(moving, J.scenePose(state, view.scene, view.factor));
+  companion.moving.position.set(0, moving.position.y, 0);
   drawArrows(moving.position.clone(), state.force);
 }
 
@@ -656,6 +714,7 @@ function setFactor(exponent) {
   view.factor = Math.pow(10, exponent);
   $('factor-value').textContent = view.factor >= 10 ? Math.round(view.factor) : view.factor.toFixed(1);
   displace(0); displace(1);
+  companion.meshes.forEach((mesh, k) => displaceMesh(mesh, companion.geometry[k]));
   for (let k = 2; k < view.meshes.length; ++k) displace(k);
   view.holders.forEach((h, k) => shiftDeviation(k));
   if (view.labels.length) makeLabels();  // over the fixed parts, where this factor draws them
@@ -703,6 +762,7 @@ function clearScene() {
     group.rotation.set(0, 0, 0);
   }
   for (const label of view.labels) label.element.remove();
+  clearCompanion();
   Object.assign(view, { meshes: [null, null], geometry: [null, null], holders: [], labels: [],
     state: null, trace: [], history: null, finished: false, forcePeak: 0,
     forcePeakAny: 0, axialPeak: 0 });
@@ -874,13 +934,15 @@ function connect() {
   socket.onmessage = (event) => {
     if (typeof event.data === 'string') {
       const msg = JSON.parse(event.data);
-      if (msg.type === 'scene') onScene(msg);
+      if (msg.type === 'scene' && msg.companion) onCompanion(msg);
+      else if (msg.type === 'scene') onScene(msg);
       else if (msg.type === 'sequence') onSequence(msg);
       else if (msg.type === 'live') Live.onLive(msg, (text) => socket.send(text));
       return;
     }
     const kind = F.frameKind(event.data);
-    if (kind === F.KIND_MESH) addPart(F.readMesh(event.data));
+    if (kind === F.KIND_MESH && companion.pending > 0) addCompanionPart(F.readMesh(event.data));
+    else if (kind === F.KIND_MESH) addPart(F.readMesh(event.data));
     else if (kind === F.KIND_HISTORY) onHistory(F.readHistory(event.data));
     else if (kind === F.KIND_STATE) {
       showState(F.readState(event.data));
