@@ -209,6 +209,8 @@ void LiveSession::Run(std::optional<std::uint64_t> passes) {
 void LiveSession::Submit(const std::string& message) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
+    // A page sends a message a click; a flood is bounded (each message is at most 8 KiB).
+    if (inbox_.size() >= kMaxWaitingMessages) return;
     inbox_.push_back(message);
   }
   wake_.notify_all();
@@ -228,7 +230,18 @@ void LiveSession::Work() {
     inbox_.pop_front();
     ++busy_;
     lock.unlock();
-    Handle(message);
+    try {
+      Handle(message);
+    } catch (const std::exception& e) {
+      // A message of the wrong shape ("now": "yes"): said in the page, the session goes on.
+      {
+        const std::lock_guard<std::mutex> refused(mutex_);
+        last_edit_ = {
+            {"state", "refused"},
+            {"message", std::string("view: a message the session cannot take: ") + e.what()}};
+      }
+      Publish();
+    }
     lock.lock();
     --busy_;
     idle_.notify_all();

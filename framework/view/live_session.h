@@ -59,6 +59,9 @@ struct LiveSessionOptions {
 // can be edited, what the last edit gave, which scene renders, and how many passes ran.
 class FITFEEL_API LiveSession {
  public:
+  // Messages waiting for the session's thread at most; more are dropped.
+  static constexpr std::size_t kMaxWaitingMessages = 64;
+
   // Loads `file` (a one-feature or several-feature scene; not a sequence) for edits, or `file`
   // and `compare` for a comparison, prepares them and makes the server (not yet serving). Throws
   // ScenarioError/UserError as `fitfeel view` does for a scene that cannot run.

@@ -71,6 +71,11 @@ TEST(LiveSession, ARefusedEditIsShownWithItsLocatedMessageAndTheRunGoesOnUntouch
   EXPECT_EQ(panel["edit"]["key_path"], "device.speed");
   EXPECT_FALSE(panel["pending"].get<bool>());
 
+  session.Submit(R"({"type":"edit","edits":{"model.friction":0.2},"apply":7})");
+  session.Submit(R"({"type":"select","scene":1,"now":"yes"})");
+  session.Submit(R"({"type":"edit","edits":[1,2]})");
+  session.Drain();
+  EXPECT_EQ(session.panel()["edit"]["state"], "refused");
   session.Submit(Edit("model.friction", "sticky", "now"));
   session.Drain();
   const std::string message = session.panel()["edit"]["message"];
@@ -105,6 +110,9 @@ TEST(LiveSession, AComparisonRendersTheSelectedSceneAndSwitchesBack) {
   EXPECT_GT(session.last_pass_peak(), 10.0);
   EXPECT_LT(session.last_pass_peak(), 11.0);
 
+  session.Submit(R"({"type":"select","scene":0,"now":"yes"})");  // refused, said in the page
+  session.Drain();
+  EXPECT_EQ(session.panel()["edit"]["state"], "refused");
   session.Submit(R"({"type":"select","scene":0})");
   session.Drain();
   session.Run(3);
