@@ -1,7 +1,9 @@
 // The depth table is computed in fixed chunks of steps on PrepareThreads() threads: the tables,
-// and so every tick, are the same bit for bit on one thread or two (issue: parallel prepare).
+// and so every tick, are the same bit for bit on one thread or two (issue: parallel prepare), and
+// prepared progressively (ContactAnalyzer::PrepareStart, PrepareAhead, FinishPrepare).
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -16,10 +18,20 @@ namespace {
 
 using namespace testing;
 
+// How a test prepares the tables: whole, or progressively, ready to `ready` m, then `ahead`
+// steps one at a time (all of them when negative), then (with `finish`) the rest at once.
+struct Schedule {
+  bool progressive = false;
+  double ready = 0.0;
+  int ahead = -1;
+  bool finish = true;  // false: left after the steps ahead
+};
+
 // Lobed random form of a few micrometres on a shaft whose radius grows by 8 um along it from
 // `mean`: steps with an assembly space and steps in interference (the Newton or elastic solves)
 // both occur.
-void PrepareOn(int threads, const std::string& law, double mean, CylinderContactAnalyzer* a) {
+void PrepareOn(int threads, const std::string& law, double mean, CylinderContactAnalyzer* a,
+               const Schedule& schedule = {}) {
   setenv("FITFEEL_PREPARE_THREADS", std::to_string(threads).c_str(), 1);
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> noise(-1.5e-6, 1.5e-6);
@@ -34,15 +46,31 @@ void PrepareOn(int threads, const std::string& law, double mean, CylinderContact
   const PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
   ModelSettings settings = Settings(0.15, 0.0, TextureMode::kDin7190);
   settings.law = law;
-  a->Prepare(shaft, MakeSms(MakeGrid(40, columns, 0.020, 0.040), lobed(mean, 8e-6, 0.0)), bushing,
-             MakeSms(MakeGrid(40, columns, 0.020, 0.020), lobed(0.0, 0.0, 1.0)), settings);
+  const SkinModelShape inner = MakeSms(MakeGrid(40, columns, 0.020, 0.040), lobed(mean, 8e-6, 0.0));
+  const SkinModelShape outer = MakeSms(MakeGrid(40, columns, 0.020, 0.020), lobed(0.0, 0.0, 1.0));
+  if (!schedule.progressive) {
+    a->Prepare(shaft, inner, bushing, outer, settings);
+  } else {
+    a->PrepareStart(shaft, inner, bushing, outer, settings, nullptr, schedule.ready);
+    EXPECT_TRUE(a->prepared());
+    EXPECT_GE(a->prepared_depth(), schedule.ready);
+    for (int k = 0; (schedule.ahead < 0 || k < schedule.ahead) && a->PrepareAhead(1); ++k) {
+    }
+    if (schedule.finish) {
+      a->FinishPrepare();
+      EXPECT_EQ(a->prepared_depth(), std::numeric_limits<double>::infinity());
+      EXPECT_FALSE(a->PrepareAhead(1));
+    }
+  }
   unsetenv("FITFEEL_PREPARE_THREADS");
 }
 
-void ExpectSameTables(const std::string& law, double mean) {
+void ExpectSameTables(const std::string& law, double mean, const Schedule& schedule = {}) {
   CylinderContactAnalyzer one, two;
   PrepareOn(1, law, mean, &one);
-  PrepareOn(2, law, mean, &two);
+  PrepareOn(2, law, mean, &two, schedule);
+  EXPECT_EQ(one.newton_iterations(), two.newton_iterations());
+  EXPECT_EQ(one.max_polygon_vertices(), two.max_polygon_vertices());
   ASSERT_EQ(one.depth_steps(), two.depth_steps());
   int interfering = 0;
   for (int k = 0; k < one.depth_steps(); ++k) {
@@ -79,6 +107,64 @@ TEST(CylinderPrepare, TablesAreTheSameBitForBitOnOneOrTwoThreadsWithTheGpsLaw) {
 
 TEST(CylinderPrepare, TablesAreTheSameBitForBitOnOneOrTwoThreadsWithTheElasticLaw) {
   ExpectSameTables("elastic", -6.0e-6);
+}
+
+// Step by step from first contact to the end, as the run's worker prepares them.
+TEST(CylinderProgressivePrepare, StepByStepGivesTheWholePreparesTables) {
+  ExpectSameTables("gps", -6.0e-6, {.progressive = true, .ready = 1e-3, .ahead = -1});
+}
+
+// Ready, a few steps into the second chunk (the elastic solves' warm starts carried across the
+// first chunk's end), then the rest on two threads (a run whose ticks end before its worker: the
+// rest finished at once).
+TEST(CylinderProgressivePrepare, PartWayThenFinishedAtOnceGivesTheWholePreparesTables) {
+  ExpectSameTables("elastic", -6.0e-6, {.progressive = true, .ready = 2e-3, .ahead = 37});
+  ExpectSameTables("gps", -6.0e-6, {.progressive = true, .ready = 0.0, .ahead = 0});
+}
+
+// The parts of a state a law reads, bit for bit.
+void ExpectSameState(const ContactState& a, const ContactState& b) {
+  EXPECT_EQ(a.engaged_length, b.engaged_length);
+  EXPECT_EQ(a.interference, b.interference);
+  EXPECT_EQ(a.interference_volume, b.interference_volume);
+  EXPECT_EQ(a.pressure_resultant, b.pressure_resultant);
+  EXPECT_EQ(a.max_interference, b.max_interference);
+  EXPECT_EQ(a.penetration, b.penetration);
+  EXPECT_EQ(a.normal_force, b.normal_force);
+  EXPECT_EQ(a.tilt, b.tilt);
+}
+
+// Past the frontier a pose feels the frontier's state, flagged with how far past it it is; once
+// whole, its own.
+TEST(CylinderProgressivePrepare, APosePastTheFrontierFeelsTheFrontiersStateHeld) {
+  CylinderContactAnalyzer whole, part;
+  PrepareOn(1, "gps", -6.0e-6, &whole);
+  PrepareOn(1, "gps", -6.0e-6, &part,
+            {.progressive = true, .ready = 3e-3, .ahead = 0, .finish = false});
+  const double frontier = part.prepared_depth();
+  ASSERT_GE(frontier, 3e-3);
+  ASSERT_LT(frontier, 3e-3 + 2.0 * part.depth_step());
+  MatingPose at;
+  at.depth = frontier;
+  at.offset = {1e-6, -2e-6};
+  MatingPose past = at;
+  past.depth = 0.012;
+  ContactState held, there, whole_there;
+  part.Evaluate(past, &held);
+  part.Evaluate(at, &there);
+  whole.Evaluate(at, &whole_there);
+  EXPECT_EQ(held.held_depth, past.depth - frontier);
+  EXPECT_EQ(there.held_depth, 0.0);
+  ExpectSameState(held, there);
+  ExpectSameState(there, whole_there);  // the frontier's state is the whole table's there
+
+  part.FinishPrepare();
+  ContactState own, whole_own;
+  part.Evaluate(past, &own);
+  whole.Evaluate(past, &whole_own);
+  EXPECT_EQ(own.held_depth, 0.0);
+  ExpectSameState(own, whole_own);
+  EXPECT_NE(own.engaged_length, held.engaged_length);  // the pose's own state, not the frontier's
 }
 
 }  // namespace
