@@ -112,7 +112,7 @@ namespace {
 
 // Prepare's and PrepareProgressive's: `progressive` null prepares whole.
 PreparedScene PrepareScene(const Scene& scene, SharedPrepare* shared, double reach,
-                           const ProgressiveSettings* progressive) {
+                           double angular_reach, const ProgressiveSettings* progressive) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
@@ -139,6 +139,7 @@ PreparedScene PrepareScene(const Scene& scene, SharedPrepare* shared, double rea
   }
   ModelSettings model = scene.model;
   model.reach = reach;
+  model.angular_reach = angular_reach;
   if (const std::optional<Eigen::Vector2d> tilt =
           scene.device ? scene.device->held_tilt() : std::nullopt) {
     model.held_tilt = *tilt;
@@ -215,13 +216,14 @@ PreparedScene PrepareScene(const Scene& scene, SharedPrepare* shared, double rea
 
 }  // namespace
 
-PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
-  return PrepareScene(scene, shared, reach, nullptr);
+PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach,
+                      double angular_reach) {
+  return PrepareScene(scene, shared, reach, angular_reach, nullptr);
 }
 
 PreparedScene PrepareProgressive(const Scene& scene, const ProgressiveSettings& settings,
-                                 SharedPrepare* shared, double reach) {
-  return PrepareScene(scene, shared, reach, &settings);
+                                 SharedPrepare* shared, double reach, double angular_reach) {
+  return PrepareScene(scene, shared, reach, angular_reach, &settings);
 }
 
 }  // namespace fitfeel

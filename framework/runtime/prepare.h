@@ -134,16 +134,19 @@ FITFEEL_API std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(c
 // share (SharedPrepare: a study's pairs); the prepared scene is bit for bit the same with or
 // without it.
 // `reach` (m): the deepest mating depth the run's own device takes the part to
-// (ModelSettings::reach); +inf for a prepared scene that other devices may drive (a host's, the
-// viewer's).
+// (ModelSettings::reach), and `angular_reach` (rad) the largest turn about the axis it gives it
+// (ModelSettings::angular_reach); +inf for a prepared scene that other devices may drive (a
+// host's, the viewer's).
 FITFEEL_API PreparedScene Prepare(const Scene& scene, SharedPrepare* shared = nullptr,
-                                  double reach = std::numeric_limits<double>::infinity());
+                                  double reach = std::numeric_limits<double>::infinity(),
+                                  double angular_reach = std::numeric_limits<double>::infinity());
 
 // The same prepare, progressive (ContactAnalyzer::PrepareStart): every analyzer that takes it is
 // prepared to settings.ready_depth, the rest is left to PreparedScene::rest. Its tables, once
 // whole, are the same bits as Prepare's. `shared` must then outlive the rest.
 FITFEEL_API PreparedScene PrepareProgressive(
     const Scene& scene, const ProgressiveSettings& settings, SharedPrepare* shared = nullptr,
-    double reach = std::numeric_limits<double>::infinity());
+    double reach = std::numeric_limits<double>::infinity(),
+    double angular_reach = std::numeric_limits<double>::infinity());
 
 }  // namespace fitfeel

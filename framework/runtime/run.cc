@@ -112,7 +112,8 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
 
   const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
   RunResult result;
-  // The scene's own device drives this run: the contact need not be tabulated past its reach.
+  // The scene's own device drives this run: the contact need not be tabulated past its reach, in
+  // depth or in turn.
   // In real time the ticks start once the scene is ready to touch, the rest prepared on a worker
   // thread ahead of the device; virtual time has no deadline to meet, and its trace is the same
   // bits either way, so the rest is prepared before the first tick, on every prepare thread.
@@ -121,7 +122,8 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
       scene.run.clock == ClockMode::kRealTime || scene.device->clock_owner() == ClockOwner::kDevice;
   progressive.pace = options.prepare_pace;
   PreparedScene prepared = PrepareProgressive(scene, progressive, options.shared,
-                                              scene.device->reach(scene.run.duration));
+                                              scene.device->reach(scene.run.duration),
+                                              scene.device->angular_reach(scene.run.duration));
   if (!progressive.worker) prepared.FinishPreparing();
   if (stopped()) throw Interrupted("while preparing the scene; no outputs written");
   if (options.prepared) options.prepared(prepared);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <Eigen/Dense>
@@ -404,6 +405,10 @@ void CylinderContactAnalyzer::DoPrepareStart(const PartSpec& inner, const SkinMo
 }
 
 void CylinderContactAnalyzer::JoinPolygon(std::size_t k, const StepPolygon& p) {
+  // Past the room reserved the arrays would move under a tick reading them.
+  if (vertices_.size() + p.vertices.size() > vertices_.capacity()) {
+    throw std::logic_error("cylindrical contact: a step's polygon has more than n + 4 vertices");
+  }
   vertex_begin_[k] = static_cast<int>(vertices_.size());
   vertex_count_[k] = static_cast<int>(p.vertices.size());
   max_vertices_ = std::max(max_vertices_, vertex_count_[k]);

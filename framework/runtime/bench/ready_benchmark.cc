@@ -54,7 +54,8 @@ void BM_Ready(benchmark::State& state, const fs::path& file) {
     settings.worker = false;
     const double t0 = ProcessSeconds();
     PreparedScene prepared =
-        PrepareProgressive(scene, settings, nullptr, scene.device->reach(scene.run.duration));
+        PrepareProgressive(scene, settings, nullptr, scene.device->reach(scene.run.duration),
+                           scene.device->angular_reach(scene.run.duration));
     const double ready = ProcessSeconds();
     // The rest as the worker does it, one step at a time, the datum analyzer's frontier timed.
     double lead = std::numeric_limits<double>::infinity(), covered = 0.0, datum_seconds = 0.0;

@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "surfaces/common/test/column_table_checks.h"
 #include "surfaces/cylindrical/cylindrical_contact_analyzer.h"
 #include "surfaces/cylindrical/test/contact_test_support.h"
 
@@ -83,22 +84,13 @@ void ExpectSameTables(const std::string& law, double mean, const Schedule& sched
   // Both kinds of step, or the comparison proves less than it says.
   EXPECT_GT(interfering, 10) << law;
   EXPECT_LT(interfering, one.depth_steps() - 10) << law;
-  std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> depth(0.0, 0.060), offset(-4e-6, 4e-6);
-  for (int trial = 0; trial < 2000; ++trial) {
+  test_support::ExpectSameTicks(one, two, [&](std::mt19937_64& rng, const auto&) {
     MatingPose pose;
     pose.depth = depth(rng);
     pose.offset = {offset(rng), offset(rng)};
-    ContactState a, b;
-    one.Evaluate(pose, &a);
-    two.Evaluate(pose, &b);
-    ASSERT_EQ(a.interference_volume, b.interference_volume) << trial;
-    ASSERT_EQ(a.pressure_resultant, b.pressure_resultant) << trial;
-    ASSERT_EQ(a.max_interference, b.max_interference) << trial;
-    ASSERT_EQ(a.penetration, b.penetration) << trial;
-    ASSERT_EQ(a.penetration_direction, b.penetration_direction) << trial;
-    ASSERT_EQ(a.normal_force, b.normal_force) << trial;
-  }
+    return pose;
+  });
 }
 
 TEST(CylinderPrepare, TablesAreTheSameBitForBitOnOneOrTwoThreadsWithTheGpsLaw) {
