@@ -436,6 +436,11 @@ bool CylinderContactAnalyzer::DoPrepareAhead(int steps) {
       if (solver_ && !scratch.solver) scratch.solver = solver_;  // its own copy: it keeps state
       ChunkMinima(first, std::min(count, first + kChunkSteps), &scratch);
     }
+    // Each step's polygon from empty, as a step of the parallel prepare has its own (a step in
+    // interference writes no fan angles, and must not join the step before's).
+    step_polygon_.vertices.clear();
+    step_polygon_.centre_angles.clear();
+    step_polygon_.origin_angles.clear();
     PrepareStep(k, k - first, &scratch, &step_polygon_);
     JoinPolygon(k, step_polygon_);
     ++next_step_;

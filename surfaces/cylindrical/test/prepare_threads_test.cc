@@ -28,11 +28,11 @@ struct Schedule {
   bool finish = true;  // false: left after the steps ahead
 };
 
-// Lobed random form of a few micrometres on a shaft whose radius grows by 8 um along it from
+// Lobed random form of a few micrometres on a shaft whose radius grows by `growth` along it from
 // `mean`: steps with an assembly space and steps in interference (the Newton or elastic solves)
 // both occur.
 void PrepareOn(int threads, const std::string& law, double mean, CylinderContactAnalyzer* a,
-               const Schedule& schedule = {}) {
+               const Schedule& schedule = {}, double growth = 8e-6) {
   setenv("FITFEEL_PREPARE_THREADS", std::to_string(threads).c_str(), 1);
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> noise(-1.5e-6, 1.5e-6);
@@ -47,7 +47,8 @@ void PrepareOn(int threads, const std::string& law, double mean, CylinderContact
   const PartSpec shaft = MakeShaft(0.020, 0.040), bushing = MakeBushing(0.020, 0.020, 0.030);
   ModelSettings settings = Settings(0.15, 0.0, TextureMode::kDin7190);
   settings.law = law;
-  const SkinModelShape inner = MakeSms(MakeGrid(40, columns, 0.020, 0.040), lobed(mean, 8e-6, 0.0));
+  const SkinModelShape inner =
+      MakeSms(MakeGrid(40, columns, 0.020, 0.040), lobed(mean, growth, 0.0));
   const SkinModelShape outer = MakeSms(MakeGrid(40, columns, 0.020, 0.020), lobed(0.0, 0.0, 1.0));
   if (!schedule.progressive) {
     a->Prepare(shaft, inner, bushing, outer, settings);
@@ -66,10 +67,11 @@ void PrepareOn(int threads, const std::string& law, double mean, CylinderContact
   unsetenv("FITFEEL_PREPARE_THREADS");
 }
 
-void ExpectSameTables(const std::string& law, double mean, const Schedule& schedule = {}) {
+void ExpectSameTables(const std::string& law, double mean, const Schedule& schedule = {},
+                      double taper = 8e-6) {
   CylinderContactAnalyzer one, two;
-  PrepareOn(1, law, mean, &one);
-  PrepareOn(2, law, mean, &two, schedule);
+  PrepareOn(1, law, mean, &one, {}, taper);
+  PrepareOn(2, law, mean, &two, schedule, taper);
   EXPECT_EQ(one.newton_iterations(), two.newton_iterations());
   EXPECT_EQ(one.max_polygon_vertices(), two.max_polygon_vertices());
   ASSERT_EQ(one.depth_steps(), two.depth_steps());
@@ -84,6 +86,19 @@ void ExpectSameTables(const std::string& law, double mean, const Schedule& sched
   // Both kinds of step, or the comparison proves less than it says.
   EXPECT_GT(interfering, 10) << law;
   EXPECT_LT(interfering, one.depth_steps() - 10) << law;
+  // Every step, its axis off the assembly space all round: the polygons' projections and fans.
+  for (int k = 0; k + 1 < one.depth_steps(); ++k) {
+    for (int q = 0; q < 8; ++q) {
+      MatingPose pose;
+      pose.depth = (k + 0.25) * one.depth_step();
+      pose.offset = 20e-6 * Eigen::Vector2d(std::cos(q * M_PI / 4), std::sin(q * M_PI / 4));
+      ContactState a, b;
+      one.Evaluate(pose, &a);
+      two.Evaluate(pose, &b);
+      ASSERT_EQ(a.penetration_direction, b.penetration_direction) << k << " " << q;
+      ASSERT_EQ(a.assembly_extent, b.assembly_extent) << k << " " << q;
+    }
+  }
   std::uniform_real_distribution<double> depth(0.0, 0.060), offset(-4e-6, 4e-6);
   test_support::ExpectSameTicks(one, two, [&](std::mt19937_64& rng, const auto&) {
     MatingPose pose;
@@ -104,6 +119,13 @@ TEST(CylinderPrepare, TablesAreTheSameBitForBitOnOneOrTwoThreadsWithTheElasticLa
 // Step by step from first contact to the end, as the run's worker prepares them.
 TEST(CylinderProgressivePrepare, StepByStepGivesTheWholePreparesTables) {
   ExpectSameTables("gps", -6.0e-6, {.progressive = true, .ready = 1e-3, .ahead = -1});
+}
+
+// A shaft whose radius falls along it: the steps interfere while its thick leading rows are in
+// the bore and clear once they have passed through, so steps in clearance follow steps in
+// interference within one progressive chunk (each step's polygon and fans its own).
+TEST(CylinderProgressivePrepare, ClearanceAfterInterferenceGivesTheWholePreparesTables) {
+  ExpectSameTables("gps", 2.0e-6, {.progressive = true, .ready = 1e-3, .ahead = -1}, -8e-6);
 }
 
 // Ready, a few steps into the second chunk (the elastic solves' warm starts carried across the
