@@ -211,6 +211,14 @@ double SimulatedDevice::DoReach(double duration) const {
   return -settings_.start_offset + settings_.speed * duration;
 }
 
+double SimulatedDevice::DoAngularReach(double duration) const {
+  // The rotary drive turns by the clock alone: its swing's amplitude, or its whole travel.
+  if (settings_.mode != Settings::Mode::kConstantRotation || !(duration >= 0.0)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return settings_.swing > 0.0 ? settings_.swing : settings_.angular_speed * duration;
+}
+
 std::optional<Eigen::Vector2d> SimulatedDevice::DoHeldTilt() const {
   if (settings_.tilt.isZero()) return std::nullopt;
   return settings_.tilt;

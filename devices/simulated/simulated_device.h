@@ -107,6 +107,7 @@ class SimulatedDevice final : public Device {
   std::optional<Eigen::Vector2d> DoHeldTilt() const override;
   double DoHeldTiltStiffness() const override { return settings_.tilt_stiffness; }
   double DoReach(double duration) const override;
+  double DoAngularReach(double duration) const override;
 
  protected:
   void DoConfigure(const ConfigNode& node) override;  // simulated_config.cc

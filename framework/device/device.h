@@ -98,6 +98,10 @@ class FITFEEL_API Device {
   // whose trajectory is fixed in advance (a robot); +inf when the device cannot bound it (a hand
   // follows its contact, hardware its user). A prepare need not tabulate a contact further in.
   double reach(double duration) const { return DoReach(duration); }
+  // The largest turn |angle| about the mating axis the part reaches within a run of `duration` s,
+  // rad, for a device whose trajectory is fixed in advance (a rotary drive's swing); +inf when
+  // the device cannot bound it. A prepare need not tabulate a contact past it.
+  double angular_reach(double duration) const { return DoAngularReach(duration); }
   ClockOwner clock_owner() const { return DoClockOwner(); }
   // For devices that own the clock: run `tick(time)` from the vendor's servo thread at the native
   // rate until it returns false or `duration` seconds pass. Throws UserError for a duration that
@@ -114,6 +118,7 @@ class FITFEEL_API Device {
   virtual std::optional<Eigen::Vector2d> DoHeldTilt() const { return std::nullopt; }
   virtual double DoHeldTiltStiffness() const { return std::numeric_limits<double>::infinity(); }
   virtual double DoReach(double) const { return std::numeric_limits<double>::infinity(); }
+  virtual double DoAngularReach(double) const { return std::numeric_limits<double>::infinity(); }
   virtual ClockOwner DoClockOwner() const { return ClockOwner::kFramework; }
   // Default: the device does not own a clock (throws UnsupportedError).
   virtual void DoRunServoLoop(double duration, const std::function<bool(double)>& tick);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <limits>
 #include <vector>
 
@@ -94,6 +95,10 @@ struct ContactState {
   // turning it towards the axis). Zero otherwise.
   double couple_normal = 0.0;
   Eigen::Vector2d couple_moment{0.0, 0.0};
+  // A progressive prepare (ContactAnalyzer::PrepareStart) that had not reached the pose's depth:
+  // how far the pose is past the prepared frontier, m. Everything above is then the state at the
+  // frontier, held until the tables reach the pose. Zero: the state at the pose itself.
+  double held_depth = 0.0;
 };
 
 // The analyzer's answer at AnalyzerPose(pose, moving) with its directions across the axis in the
@@ -103,8 +108,20 @@ struct ContactState {
 FITFEEL_API void SceneContact(ContactState* contact, Role moving) noexcept;
 
 // Builds per-depth tables in prepare and answers per-tick queries in bounded time.
+//
+// Progressive prepare (docs/progressive-prepare.md). An analyzer that takes it
+// (takes_progressive_prepare()) prepares its depth tables in depth order: PrepareStart prepares
+// what does not depend on depth and the steps up to a ready depth, PrepareAhead the rest a few
+// steps at a time from one other thread (the prepare's worker), or FinishPrepare all of it at
+// once. Each call publishes how deep the tables are complete (prepared_depth(), release); a tick's
+// Evaluate reads it (acquire) and, past it, answers the state at that depth with
+// ContactState::held_depth set. The tables are the same bits however they were prepared. An
+// analyzer without it prepares whole in PrepareStart.
 class FITFEEL_API ContactAnalyzer {
  public:
+  ContactAnalyzer() = default;
+  ContactAnalyzer(const ContactAnalyzer& other);
+  ContactAnalyzer& operator=(const ContactAnalyzer& other);
   virtual ~ContactAnalyzer();
   // Prepare-time; may allocate.
   void Prepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
@@ -115,7 +132,26 @@ class FITFEEL_API ContactAnalyzer {
   void Prepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                const SkinModelShape& outer_sms, const ModelSettings& settings,
                SharedPrepare* shared);
-  // Per tick: no allocation, no locks, no exceptions, no I/O.
+  // The progressive prepare's start: what does not depend on depth and the depth steps up to
+  // `ready_depth` (m past first contact), on the calling thread; an analyzer that does not take
+  // it prepares whole. `shared` (may be null) must outlive the prepare's last call. Evaluate
+  // answers once it returns.
+  void PrepareStart(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+                    const SkinModelShape& outer_sms, const ModelSettings& settings,
+                    SharedPrepare* shared, double ready_depth);
+  // After PrepareStart, from one thread at a time while ticks may Evaluate on others: prepares up
+  // to `steps` more depth steps in depth order and publishes them. False once the tables are
+  // whole (then nothing is left to do).
+  bool PrepareAhead(int steps);
+  // After PrepareStart, on one thread while no PrepareAhead runs: prepares the rest of the
+  // tables, with the prepare's threads where the analyzer parallelises.
+  void FinishPrepare();
+  // How deep the tables are complete, m: Evaluate answers exactly up to here and holds the state
+  // here past it. +inf once whole. Safe from any thread.
+  double prepared_depth() const { return prepared_depth_.load(std::memory_order_acquire); }
+  bool takes_progressive_prepare() const { return DoTakesProgressivePrepare(); }
+  // Per tick: no allocation, no locks, no exceptions, no I/O. Past prepared_depth(): the state at
+  // that depth, with ContactState::held_depth the distance past it.
   void Evaluate(const MatingPose& pose, ContactState* out) const noexcept;
   bool prepared() const { return prepared_; }
   // Whether the analyzer models a part held tilted (ModelSettings::held_tilt, or MatingPose::tilt
@@ -143,13 +179,31 @@ class FITFEEL_API ContactAnalyzer {
   virtual bool DoAssemblySpace(const MatingPose& pose, std::vector<Eigen::Vector2d>* polygon) const;
   virtual bool DoTakesHeldTilt() const { return false; }
   virtual bool DoTakesCompliantTilt() const { return false; }
-  // During DoPrepare: what this prepare shares with the others of the same scene; null when it
-  // shares nothing.
+  // Progressive prepare; false (the default): PrepareStart calls DoPrepare.
+  virtual bool DoTakesProgressivePrepare() const { return false; }
+  // What DoPrepare does but the depth steps; publishes prepared_depth() (the depth its tables are
+  // complete to, with none of them prepared). Called only where DoTakesProgressivePrepare().
+  virtual void DoPrepareStart(const PartSpec& inner, const SkinModelShape& inner_sms,
+                              const PartSpec& outer, const SkinModelShape& outer_sms,
+                              const ModelSettings& settings);
+  // The next `steps` depth steps in depth order, each published as it is done (+inf after the
+  // last); false once none is left.
+  virtual bool DoPrepareAhead(int steps);
+  // Every step left; the default calls DoPrepareAhead until none is left.
+  virtual void DoFinishPrepare();
+  // From DoPrepareStart, DoPrepareAhead and DoFinishPrepare: the tables are complete to `depth`
+  // (m; +inf: whole), and every entry Evaluate reads up to it is written (release).
+  void PublishPreparedDepth(double depth) {
+    prepared_depth_.store(depth, std::memory_order_release);
+  }
+  // While the prepare runs (DoPrepare, or from DoPrepareStart to the last step): what this
+  // prepare shares with the others of the same scene; null when it shares nothing.
   SharedPrepare* shared_prepare() const { return shared_; }
 
  private:
   bool prepared_ = false;
-  SharedPrepare* shared_ = nullptr;  // set only while Prepare runs
+  SharedPrepare* shared_ = nullptr;  // set only while a prepare runs
+  std::atomic<double> prepared_depth_{std::numeric_limits<double>::infinity()};
 };
 
 }  // namespace fitfeel

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -113,6 +114,16 @@ void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner
   Prepare(inner, inner_sms, outer, outer_sms, settings, nullptr);
 }
 
+ContactAnalyzer::ContactAnalyzer(const ContactAnalyzer& other)
+    : prepared_(other.prepared_), prepared_depth_(other.prepared_depth()) {}
+
+ContactAnalyzer& ContactAnalyzer::operator=(const ContactAnalyzer& other) {
+  prepared_ = other.prepared_;
+  shared_ = nullptr;
+  PublishPreparedDepth(other.prepared_depth());
+  return *this;
+}
+
 void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                               const PartSpec& outer, const SkinModelShape& outer_sms,
                               const ModelSettings& settings, SharedPrepare* shared) {
@@ -124,8 +135,71 @@ void ContactAnalyzer::Prepare(const PartSpec& inner, const SkinModelShape& inner
     ~Sharing() { at = nullptr; }
   } sharing{shared_};
   shared_ = shared;
+  prepared_ = false;
+  PublishPreparedDepth(std::numeric_limits<double>::infinity());
   DoPrepare(inner, inner_sms, outer, outer_sms, settings);
   prepared_ = true;
+}
+
+void ContactAnalyzer::PrepareStart(const PartSpec& inner, const SkinModelShape& inner_sms,
+                                   const PartSpec& outer, const SkinModelShape& outer_sms,
+                                   const ModelSettings& settings, SharedPrepare* shared,
+                                   double ready_depth) {
+  if (!DoTakesProgressivePrepare()) {
+    Prepare(inner, inner_sms, outer, outer_sms, settings, shared);
+    return;
+  }
+  if (inner_sms.grid.size() == 0 || outer_sms.grid.size() == 0) {
+    throw UserError("contact analysis needs a skin model shape for both parts");
+  }
+  prepared_ = false;
+  shared_ = shared;
+  try {
+    DoPrepareStart(inner, inner_sms, outer, outer_sms, settings);
+    while (prepared_depth() < ready_depth && DoPrepareAhead(1)) {
+    }
+  } catch (...) {
+    shared_ = nullptr;
+    throw;
+  }
+  if (!(prepared_depth() < std::numeric_limits<double>::infinity())) shared_ = nullptr;
+  prepared_ = true;
+}
+
+bool ContactAnalyzer::PrepareAhead(int steps) {
+  if (!prepared_) throw UserError("PrepareAhead before PrepareStart");
+  if (!(prepared_depth() < std::numeric_limits<double>::infinity())) return false;
+  struct Sharing {  // cleared once the tables are whole, or when a step throws
+    ContactAnalyzer* analyzer;
+    bool more = false;
+    ~Sharing() {
+      if (!more) analyzer->shared_ = nullptr;
+    }
+  } sharing{this};
+  sharing.more = DoPrepareAhead(std::max(steps, 1));
+  return sharing.more;
+}
+
+void ContactAnalyzer::FinishPrepare() {
+  if (!prepared_) throw UserError("FinishPrepare before PrepareStart");
+  if (!(prepared_depth() < std::numeric_limits<double>::infinity())) return;
+  struct Sharing {  // cleared however DoFinishPrepare ends
+    SharedPrepare*& at;
+    ~Sharing() { at = nullptr; }
+  } sharing{shared_};
+  DoFinishPrepare();
+}
+
+void ContactAnalyzer::DoPrepareStart(const PartSpec&, const SkinModelShape&, const PartSpec&,
+                                     const SkinModelShape&, const ModelSettings&) {
+  throw UnsupportedError("this contact analyzer prepares whole (no progressive prepare)");
+}
+
+bool ContactAnalyzer::DoPrepareAhead(int) { return false; }
+
+void ContactAnalyzer::DoFinishPrepare() {
+  while (DoPrepareAhead(std::numeric_limits<int>::max())) {
+  }
 }
 
 MatingPose AnalyzerPose(const MatingPose& scene_pose, Role moving) noexcept {
@@ -149,7 +223,16 @@ void SceneContact(ContactState* contact, Role moving) noexcept {
 
 void ContactAnalyzer::Evaluate(const MatingPose& pose, ContactState* out) const noexcept {
   FITFEEL_DEMAND(prepared_ && out != nullptr);
-  DoEvaluate(pose, out);
+  const double frontier = prepared_depth();
+  if (!(pose.depth > frontier)) {
+    DoEvaluate(pose, out);
+    return;
+  }
+  // Past the frontier: the last prepared state, held (never a table entry not yet written).
+  MatingPose held = pose;
+  held.depth = frontier;
+  DoEvaluate(held, out);
+  out->held_depth = pose.depth - frontier;
 }
 
 void ContactAnalyzer::InterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const {

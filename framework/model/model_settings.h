@@ -46,6 +46,10 @@ struct ModelSettings {
   // unbounded. An analyzer that tabulates by depth may stop its tables past it; a pose deeper than
   // it is then answered as out of engagement, so only the run whose device bounded it may use it.
   double reach = std::numeric_limits<double>::infinity();
+  // The largest turn |angle| about the mating axis the run's device gives the part
+  // (Device::angular_reach), rad; +inf: unbounded. An analyzer that tabulates by the turn may
+  // stop its tables past it, under the same rule as `reach`.
+  double angular_reach = std::numeric_limits<double>::infinity();
 };
 
 // The stick-slip parameters a law builds its friction from. mu_s below mu_k (settings made in

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#define FITFEEL_PLUGIN_ABI_VERSION 6u
+#define FITFEEL_PLUGIN_ABI_VERSION 7u
 #define FITFEEL_PLUGIN_HOOK_NAME "fitfeel_plugin_register"
 
 namespace fitfeel {

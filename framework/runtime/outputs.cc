@@ -87,6 +87,13 @@ std::string TraceRow(const TickRecord& r) {
 void AppendTraceRow(std::string* out, const TickRecord& r) { AppendTraceRow(out, r, 0, false); }
 
 void SummaryBuilder::Add(const TickRecord& r) {
+  if (r.contact.held_depth > 0.0) {
+    ++held_ticks_;
+    held_longest_ = std::max(held_longest_, ++held_stretch_);
+    held_deepest_ = std::max(held_deepest_, r.contact.held_depth);
+  } else {
+    held_stretch_ = 0;
+  }
   if (r.stage != StageId::kConstrained) return;
   if (r.elastic.utilisation > 1.0) ++yielding_ticks_;
   if (r.elastic.utilisation > 0.0 &&
@@ -165,6 +172,12 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
   j["guard_faults"] = stats.guard_faults;
   j["device_faults"] = stats.device_faults;
   j["dropped_rows"] = stats.dropped_rows;
+  // A progressive prepare that the device outran: the ticks that felt the contact held at the
+  // prepared frontier, their longest stretch and how far past the frontier the part went.
+  j["held_for_prepare"] = {
+      {"ticks", held_ticks_},
+      {"longest_s", info.rate > 0.0 ? static_cast<double>(held_longest_) / info.rate : 0.0},
+      {"deepest_mm", held_deepest_ * 1e3}};
   j["tick_us"] = ToJson(stats.compute_us);
   j["contact_evaluations"] = ToJson(stats.contact_evaluations);
   if (stats.realtime) {
@@ -272,6 +285,7 @@ nlohmann::json SummaryBuilder::Make(const RunInfo& info, const RunStats& stats) 
                     {"generate", info.generate_seconds},
                     {"analyze", info.analyze_seconds},
                     {"total", info.prepare_seconds}};
+  j["ready_to_touch_ms"] = info.ready_seconds * 1e3;
   j["grid"] = {{"inner", {{"rows", info.inner_rows}, {"columns", info.inner_columns}}},
                {"outer", {{"rows", info.outer_rows}, {"columns", info.outer_columns}}}};
   return j;

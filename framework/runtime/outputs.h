@@ -37,7 +37,10 @@ struct RunInfo {
   double discretize_seconds = 0.0;
   double generate_seconds = 0.0;
   double analyze_seconds = 0.0;
-  double prepare_seconds = 0.0;
+  double prepare_seconds = 0.0;  // until every table was whole
+  // Until the scene was ready to touch (a progressive prepare's ready steps; a whole prepare's
+  // total).
+  double ready_seconds = 0.0;
   int inner_rows = 0, inner_columns = 0, outer_rows = 0, outer_columns = 0;
   // The tilt the device holds the part at (Device::held_tilt), rad, 0: aligned; and how far the
   // tilted part's leading edge reaches past its leading end's centre, r sin(tilt), m.
@@ -124,6 +127,10 @@ class FITFEEL_API SummaryBuilder {
   // compliant holder's two-point couple acted on, m; NaN: none.
   double first_interference_depth_ = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t yielding_ticks_ = 0;
+  // Ticks whose contact was held at a progressive prepare's frontier (ContactState::held_depth),
+  // the longest run of them in a row, and the deepest past the frontier, m.
+  std::uint64_t held_ticks_ = 0, held_stretch_ = 0, held_longest_ = 0;
+  double held_deepest_ = 0.0;
   TickRecord worst_;  // the tick with the largest elastic-limit utilisation
   bool has_worst_ = false;
 };

@@ -21,9 +21,17 @@ double SecondsSince(Clock::time_point start) {
 }  // namespace
 
 PreparedScene::PreparedScene() = default;
-PreparedScene::~PreparedScene() = default;
+PreparedScene::~PreparedScene() { rest.reset(); }
 PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
 PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
+
+void PreparedScene::FinishPreparing() {
+  if (!rest) return;
+  const double whole = rest->Finish();
+  rest.reset();
+  analyze_seconds += whole - ready_seconds;
+  total_seconds = whole;
+}
 
 namespace {
 
@@ -100,7 +108,11 @@ std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(const Scene& 
   return deviations;
 }
 
-PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
+namespace {
+
+// Prepare's and PrepareProgressive's: `progressive` null prepares whole.
+PreparedScene PrepareScene(const Scene& scene, SharedPrepare* shared, double reach,
+                           double angular_reach, const ProgressiveSettings* progressive) {
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
@@ -127,6 +139,7 @@ PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
   }
   ModelSettings model = scene.model;
   model.reach = reach;
+  model.angular_reach = angular_reach;
   if (const std::optional<Eigen::Vector2d> tilt =
           scene.device ? scene.device->held_tilt() : std::nullopt) {
     model.held_tilt = *tilt;
@@ -147,8 +160,19 @@ PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
                              "inner part of a one-feature scene; remove the device's tilt");
     }
   }
-  prepared.analyzer->Prepare(scene.inner, *prepared.inner_sms, scene.outer, *prepared.outer_sms,
-                             model, shared);
+  // Each analyzer whole, or ready to touch and the rest left to the worker.
+  auto prepare = [&](ContactAnalyzer& analyzer, const PartSpec& inner,
+                     const SkinModelShape& inner_sms, const PartSpec& outer,
+                     const SkinModelShape& outer_sms, const ModelSettings& settings) {
+    if (progressive == nullptr) {
+      analyzer.Prepare(inner, inner_sms, outer, outer_sms, settings, shared);
+    } else {
+      analyzer.PrepareStart(inner, inner_sms, outer, outer_sms, settings, shared,
+                            progressive->ready_depth);
+    }
+  };
+  prepare(*prepared.analyzer, scene.inner, *prepared.inner_sms, scene.outer, *prepared.outer_sms,
+          model);
   prepared.law = scene.surface->MakeLaw(scene.model.law);
   prepared.law->Prepare(scene.inner, scene.outer, scene.model);
   prepared.analyze_seconds = SecondsSince(t);
@@ -171,8 +195,7 @@ PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
       throw UnsupportedError("surface type '" + feature.surface_id +
                              "' provides no contact analyzer");
     }
-    p.analyzer->Prepare(feature.inner, *p.inner_sms, feature.outer, *p.outer_sms, feature.model,
-                        shared);
+    prepare(*p.analyzer, feature.inner, *p.inner_sms, feature.outer, *p.outer_sms, feature.model);
     p.law = feature.surface->MakeLaw(feature.model.law);
     p.law->Prepare(feature.inner, feature.outer, feature.model);
     prepared.analyze_seconds += SecondsSince(t);
@@ -181,7 +204,26 @@ PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach) {
   prepared.position_deviations = DrawPositionDeviations(scene, prepared.rng);
 
   prepared.total_seconds = SecondsSince(start);
+  prepared.ready_seconds = prepared.total_seconds;
+  if (progressive != nullptr) {
+    std::vector<ContactAnalyzer*> analyzers{prepared.analyzer.get()};
+    for (PreparedFeature& f : prepared.more_features) analyzers.push_back(f.analyzer.get());
+    prepared.rest = std::make_unique<PrepareWorker>(std::move(analyzers), start,
+                                                    progressive->worker, progressive->pace);
+  }
   return prepared;
+}
+
+}  // namespace
+
+PreparedScene Prepare(const Scene& scene, SharedPrepare* shared, double reach,
+                      double angular_reach) {
+  return PrepareScene(scene, shared, reach, angular_reach, nullptr);
+}
+
+PreparedScene PrepareProgressive(const Scene& scene, const ProgressiveSettings& settings,
+                                 SharedPrepare* shared, double reach, double angular_reach) {
+  return PrepareScene(scene, shared, reach, angular_reach, &settings);
 }
 
 }  // namespace fitfeel

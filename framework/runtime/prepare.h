@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "framework/model/skin_model_shape.h"
 #include "framework/model/surface_type.h"
 #include "framework/model/variation_generator.h"
+#include "framework/runtime/prepare_worker.h"
 #include "framework/scenario/scene.h"
 
 namespace fitfeel {
@@ -42,6 +44,16 @@ struct FITFEEL_API PreparedScene {
   PreparedScene(PreparedScene&&) noexcept;
   PreparedScene& operator=(PreparedScene&&) noexcept;
 
+  // A progressive prepare (PrepareProgressive): the analyzers' depth steps left after the ready
+  // ones, prepared on its worker thread or by FinishPreparing; null once whole, and for a whole
+  // prepare. The first member, so that it stops before anything it prepares is replaced (a move
+  // assigns members in order) or destroyed (the destructor stops it first).
+  std::unique_ptr<PrepareWorker> rest;
+  // Prepares what the rest has left on the calling thread (stopping the worker first), so that
+  // every table is whole, and sets analyze_seconds and total_seconds to include it. Rethrows what
+  // the worker threw. Nothing to do after a whole prepare.
+  void FinishPreparing();
+
   // The scene's only random generator, seeded from run.seed. Prepare draws the inner part's skin
   // model shape first, then the outer part's; whatever is prepared later (a stage, a device
   // script) continues from here, so a scene and seed give the same run bit for bit.
@@ -59,11 +71,32 @@ struct FITFEEL_API PreparedScene {
   std::vector<PreparedFeature> more_features;
   std::vector<std::array<Eigen::Vector2d, 2>> position_deviations;
 
-  // Wall time of each prepare step, s.
+  // Wall time of each prepare step, s. A progressive prepare's analyze and total seconds count
+  // its rest once FinishPreparing has run.
   double discretize_seconds = 0.0;
   double generate_seconds = 0.0;
   double analyze_seconds = 0.0;
   double total_seconds = 0.0;
+  // Wall time until the scene was ready to touch, s: a progressive prepare's ready steps, a whole
+  // prepare's total.
+  double ready_seconds = 0.0;
+};
+
+// A part whose leading end starts at or before the entrance meets the depth steps just past it
+// first: a progressive prepare has them ready before the scene is handed over, m (a tenth of a
+// second of a hand at 10 mm/s; a few of the cylinder's steps).
+inline constexpr double kReadyDepth = 1e-3;
+
+// How PrepareProgressive leaves the analyzers' depth tables.
+struct ProgressiveSettings {
+  // Every analyzer is ready to this depth past first contact, m, when PrepareProgressive returns.
+  double ready_depth = kReadyDepth;
+  // The rest on a worker thread the prepared scene owns (a run in real time); false: the caller
+  // finishes it (PreparedScene::FinishPreparing; a run in virtual time, before its first tick).
+  bool worker = true;
+  // Test hook (may be empty): asked by the worker before each step; while it answers false the
+  // worker waits.
+  std::function<bool()> pace;
 };
 
 // Both parts' skin model shapes, drawn as every command draws them.
@@ -101,9 +134,19 @@ FITFEEL_API std::vector<std::array<Eigen::Vector2d, 2>> DrawPositionDeviations(c
 // share (SharedPrepare: a study's pairs); the prepared scene is bit for bit the same with or
 // without it.
 // `reach` (m): the deepest mating depth the run's own device takes the part to
-// (ModelSettings::reach); +inf for a prepared scene that other devices may drive (a host's, the
-// viewer's).
+// (ModelSettings::reach), and `angular_reach` (rad) the largest turn about the axis it gives it
+// (ModelSettings::angular_reach); +inf for a prepared scene that other devices may drive (a
+// host's, the viewer's).
 FITFEEL_API PreparedScene Prepare(const Scene& scene, SharedPrepare* shared = nullptr,
-                                  double reach = std::numeric_limits<double>::infinity());
+                                  double reach = std::numeric_limits<double>::infinity(),
+                                  double angular_reach = std::numeric_limits<double>::infinity());
+
+// The same prepare, progressive (ContactAnalyzer::PrepareStart): every analyzer that takes it is
+// prepared to settings.ready_depth, the rest is left to PreparedScene::rest. Its tables, once
+// whole, are the same bits as Prepare's. `shared` must then outlive the rest.
+FITFEEL_API PreparedScene PrepareProgressive(
+    const Scene& scene, const ProgressiveSettings& settings, SharedPrepare* shared = nullptr,
+    double reach = std::numeric_limits<double>::infinity(),
+    double angular_reach = std::numeric_limits<double>::infinity());
 
 }  // namespace fitfeel

@@ -89,6 +89,7 @@ RunInfo MakeRunInfo(const Scene& scene, const PreparedScene& prepared) {
   info.generate_seconds = prepared.generate_seconds;
   info.analyze_seconds = prepared.analyze_seconds;
   info.prepare_seconds = prepared.total_seconds;
+  info.ready_seconds = prepared.ready_seconds;
   info.inner_rows = prepared.inner_sms->grid.rows;
   info.inner_columns = prepared.inner_sms->grid.columns;
   info.outer_rows = prepared.outer_sms->grid.rows;
@@ -110,14 +111,25 @@ RunResult RunScene(Scene scene, const RunOptions& options) {
   }
 
   const auto stopped = [&options] { return options.stop != nullptr && options.stop->load(); };
-  // The scene's own device drives this run: the contact need not be tabulated past its reach.
-  PreparedScene prepared = Prepare(scene, options.shared, scene.device->reach(scene.run.duration));
+  // The scene's own device drives this run: the contact need not be tabulated past its reach, in
+  // depth or in turn.
+  // In real time the ticks start once the scene is ready to touch, the rest prepared on a worker
+  // thread ahead of the device; virtual time has no deadline to meet, and its trace is the same
+  // bits either way, so the rest is prepared before the first tick, on every prepare thread.
+  ProgressiveSettings progressive;
+  progressive.worker =
+      scene.run.clock == ClockMode::kRealTime || scene.device->clock_owner() == ClockOwner::kDevice;
+  progressive.pace = options.prepare_pace;
+  PreparedScene prepared = PrepareProgressive(scene, progressive, options.shared,
+                                              scene.device->reach(scene.run.duration),
+                                              scene.device->angular_reach(scene.run.duration));
+  if (!progressive.worker) prepared.FinishPreparing();
   if (stopped()) throw Interrupted("while preparing the scene; no outputs written");
   if (options.prepared) options.prepared(prepared);
   return RunPreparedScene(scene, prepared, options);
 }
 
-RunResult RunPreparedScene(const Scene& scene, const PreparedScene& prepared,
+RunResult RunPreparedScene(const Scene& scene, PreparedScene& prepared,
                            const RunOptions& options) {
   if (!scene.device) {
     throw UserError("scene '" + scene.name + "' has no device '" + scene.device_id + "'");
@@ -175,6 +187,11 @@ RunResult RunPreparedScene(const Scene& scene, const PreparedScene& prepared,
       throw Interrupted("after " + std::to_string(scheduler.ticks_done()) + " of " +
                         std::to_string(scheduler.planned_ticks()) + " ticks; no outputs written");
     }
+    // The rest of the tables (what the worker had left when the ticks ended), so that the
+    // summary states the whole prepare's time; the worker's error, if any, fails the run here.
+    prepared.FinishPreparing();
+    info.analyze_seconds = prepared.analyze_seconds;
+    info.prepare_seconds = prepared.total_seconds;
     result.stats = scheduler.stats();
     result.final_pose = scheduler.last_output().pose;
     result.final_stage = scheduler.last_output().stage;

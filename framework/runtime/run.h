@@ -37,6 +37,10 @@ struct RunOptions {
   // Borrowed, may be null: what the prepare takes from and leaves for the prepares of other runs
   // of the same scene (a study's pairs; SharedPrepare). The run's results do not depend on it.
   SharedPrepare* shared = nullptr;
+  // Test hook (may be empty): a run in real time prepares its tables progressively on a worker
+  // thread (ProgressiveSettings::pace), which asks this before each step and waits while it
+  // answers false.
+  std::function<bool()> prepare_pace;
 };
 
 struct RunResult {
@@ -51,16 +55,22 @@ struct RunResult {
   StageId final_stage = StageId::kPositioning;
 };
 
-// A whole run of a loaded scene: Prepare, the two stages, the device started at run.rate, the
-// scheduler, and the outputs written atomically. Throws UserError/UnsupportedError before any
-// file is created when the scene cannot run, Interrupted when options.stop was set (no file left).
+// A whole run of a loaded scene: the prepare, the two stages, the device started at run.rate, the
+// scheduler, and the outputs written atomically. The prepare is progressive (PrepareProgressive):
+// the run starts once the scene is ready to touch; in virtual time the rest is prepared before the
+// first tick (the same trace bit for bit as a whole prepare's), in real time on a worker thread
+// while the ticks run (a tick past its frontier feels the contact held there; summary.json's
+// held_for_prepare), and finished before the outputs are written. Throws UserError/UnsupportedError
+// before any file is created when the scene cannot run, Interrupted when options.stop was set (no
+// file left).
 FITFEEL_API RunResult RunScene(Scene scene, const RunOptions& options);
 
-// The run of a scene already prepared (Prepare with the device's reach, or +inf): the part of
-// RunScene after its preparation, for a caller that runs one prepared scene more than once (a
-// live view's passes). `options.seed`, `clock` and `prepared` are not read: the scene's own run
-// settings apply, and `prepared` must be Prepare(scene) of this scene.
-FITFEEL_API RunResult RunPreparedScene(const Scene& scene, const PreparedScene& prepared,
+// The run of a scene already prepared (Prepare or PrepareProgressive with the device's reach,
+// or +inf): the part of RunScene after its preparation, for a caller that runs one prepared scene
+// more than once (a live view's passes). `options.seed`, `clock` and `prepared` are not read: the
+// scene's own run settings apply, and `prepared` must be this scene's. A progressive prepare's
+// rest is finished after the ticks (FinishPreparing), so the next run of it is whole.
+FITFEEL_API RunResult RunPreparedScene(const Scene& scene, PreparedScene& prepared,
                                        const RunOptions& options);
 
 // What summary.json says of a prepared scene before its run (name, law, rates, prepare times,

@@ -17,6 +17,8 @@ using Kind = TraceColumnKind;
 // equivalent stress over the yield strength (DIN 7190), yielding 1 where it exceeds 1 (the elastic
 // model no longer holds there). device_fault is 1 where the device state was not finite or beyond
 // physical bounds: the last sane state was held and zero force sent (summary.json: device_faults).
+// prepare_held_mm is how far the part was past a progressive prepare's frontier, its contact the
+// frontier's (0: not held; summary.json: held_for_prepare).
 const TraceColumn kBase[] = {
     {"t_s", Kind::kNumber},
     {"stage", Kind::kStage},
@@ -51,6 +53,7 @@ const TraceColumn kBase[] = {
     {"elastic_utilisation", Kind::kNumber},
     {"yielding", Kind::kFlag},
     {"device_fault", Kind::kFlag},
+    {"prepare_held_mm", Kind::kNumber},
 };
 constexpr int kBaseCount = static_cast<int>(std::size(kBase));
 
@@ -106,6 +109,7 @@ void TraceValues(const TickRecord& r, int features, bool screw, double* v) {
   *v++ = r.elastic.utilisation;
   *v++ = Flag(r.elastic.utilisation > 1.0);
   *v++ = Flag(r.device_fault);
+  *v++ = r.contact.held_depth * 1e3;
   // A record holds at most kMaxJointFeatures features' forces; columns past them read 0.
   for (int i = 0; i < features; ++i) *v++ = i < kMaxJointFeatures ? r.feature_axial[i] : 0.0;
   if (!screw) return;

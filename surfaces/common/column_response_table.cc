@@ -19,7 +19,7 @@ ColumnResponseTable::ColumnResponseTable(int steps, int columns, int samples,
   const auto entries = static_cast<std::size_t>(steps) * static_cast<std::size_t>(columns);
   entries_.assign(entries, Entry{});
   touch_from_.assign(entries, std::numeric_limits<double>::infinity());
-  values_.assign(entries * static_cast<std::size_t>(samples) * 3, 0.0);
+  values_.resize(entries * static_cast<std::size_t>(samples) * 3);
 }
 
 std::size_t ColumnResponseTable::bytes() const {
@@ -103,9 +103,21 @@ void ColumnResponseTable::Fill(int step, int column, std::span<const ColumnCell>
 
 void ColumnResponseTable::FillAll(
     const std::function<void(int step, int column, std::vector<ColumnCell>* cells)>& cells) {
-  ParallelFor(steps_, [&](int begin, int end) {
+  std::vector<int> steps(static_cast<std::size_t>(steps_));
+  for (int k = 0; k < steps_; ++k) steps[static_cast<std::size_t>(k)] = k;
+  FillSteps(steps, cells);
+}
+
+void ColumnResponseTable::FillSteps(
+    const std::vector<int>& steps,
+    const std::function<void(int step, int column, std::vector<ColumnCell>* cells)>& cells) {
+  for (int k : steps) {
+    if (k < 0 || k >= steps_) throw std::invalid_argument("column response table: no such step");
+  }
+  ParallelFor(static_cast<int>(steps.size()), [&](int begin, int end) {
     std::vector<ColumnCell> column_cells;
-    for (int k = begin; k < end; ++k) {
+    for (int i = begin; i < end; ++i) {
+      const int k = steps[static_cast<std::size_t>(i)];
       for (int j = 0; j < columns_; ++j) {
         cells(k, j, &column_cells);
         Fill(k, j, column_cells);
@@ -178,8 +190,8 @@ double ColumnResponseTable::VolumeErrorBound(int step, int column) const {
   if (e.empty) return 0.0;
   const double dx = (e.x_hi - e.x_lo) / (samples_ - 1);
   // Per cell area * cosine * min(dx^2 f_max cosine / 8, dx / 4): the chord of a convex function
-  // departs from it by at most its second derivative times dx^2 / 8, and by at most a quarter of its
-  // slope change over the interval (area * cosine in all) times dx.
+  // departs from it by at most its second derivative times dx^2 / 8, and by at most a quarter of
+  // its slope change over the interval (area * cosine in all) times dx.
   return e.volume_slope * std::min(dx * dx * texture_.max_density() * e.max_cosine / 8.0, dx / 4.0);
 }
 

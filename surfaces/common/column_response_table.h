@@ -1,6 +1,8 @@
 #pragma once
 
 #include <functional>
+#include <memory>
+#include <new>
 #include <span>
 #include <vector>
 
@@ -51,7 +53,8 @@ class ColumnResponseTable {
  public:
   ColumnResponseTable() = default;
   // Throws std::invalid_argument for fewer than 2 samples or a non-positive entry count.
-  ColumnResponseTable(int steps, int columns, int samples, const ExpectedInterferenceTable& texture);
+  ColumnResponseTable(int steps, int columns, int samples,
+                      const ExpectedInterferenceTable& texture);
 
   int steps() const { return steps_; }
   int columns() const { return columns_; }
@@ -66,6 +69,11 @@ class ColumnResponseTable {
   // Prepare: fills every entry from cells(step, column, &cells), on PrepareThreads() threads
   // (framework/core/parallel.h) over the steps; the same tables bit for bit for any count.
   void FillAll(
+      const std::function<void(int step, int column, std::vector<ColumnCell>* cells)>& cells);
+  // The same for the entries of `steps` only (each in range); the others stay empty, answering no
+  // contact, so no tick may read them.
+  void FillSteps(
+      const std::vector<int>& steps,
       const std::function<void(int step, int column, std::vector<ColumnCell>* cells)>& cells);
 
   // Per tick: no allocation. `step` and `column` must be in range. `resultant_slope`, when given,
@@ -109,8 +117,22 @@ class ColumnResponseTable {
   // Per entry, its x_lo (infinity when empty): below it the entry is zero. Apart from the
   // entries so that Blend's scan for touching columns reads 8 bytes a column, not an Entry.
   std::vector<double> touch_from_;
+  // Leaves a double it makes unset: Fill writes every value of an entry it fills and an empty
+  // entry's are never read, so a table filled for a few steps (FillSteps) never touches the rest
+  // of its memory.
+  template <class T>
+  struct UnsetAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+      using other = UnsetAllocator<U>;
+    };
+    template <class U>
+    void construct(U* p) noexcept {
+      ::new (static_cast<void*>(p)) U;
+    }
+  };
   // Per entry, `samples` triples (volume, resultant, max), contiguous.
-  std::vector<double> values_;
+  std::vector<double, UnsetAllocator<double>> values_;
 };
 
 }  // namespace fitfeel

@@ -32,14 +32,21 @@ class ColumnTableAnalyzer : public ContactAnalyzer {
 
  protected:
   // Prepare, once scan_ is prepared: entry k of column j holds the scan's cells of column j at
-  // parameter k * step, filled on PrepareThreads() threads (bit for bit the same for any count).
-  void Tabulate(int steps, double step) {
+  // parameter k * step, filled on PrepareThreads() threads (bit for bit the same for any count);
+  // only the steps `wanted` where it names any (the others answer no contact: a run's device
+  // never takes the part there).
+  void Tabulate(int steps, double step, const std::vector<int>& wanted = {}) {
     step_ = step;
     const int columns = scan_.columns();
     table_ = ColumnResponseTable(steps, columns, kSamples, scan_.texture());
-    table_.FillAll([this, step](int k, int j, std::vector<ColumnCell>* cells) {
-      scan_.ColumnCells(k * step, j, cells);
-    });
+    const auto cells = [this, step](int k, int j, std::vector<ColumnCell>* out) {
+      scan_.ColumnCells(k * step, j, out);
+    };
+    if (wanted.empty()) {
+      table_.FillAll(cells);
+    } else {
+      table_.FillSteps(wanted, cells);
+    }
     direction_.resize(2, columns);
     for (int j = 0; j < columns; ++j) direction_.col(j) = scan_.direction(j);
   }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <Eigen/Dense>
@@ -147,6 +148,13 @@ void CheckShape(const PartSpec& part, const SkinModelShape& sms) {
 void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms,
                                         const PartSpec& outer, const SkinModelShape& outer_sms,
                                         const ModelSettings& settings) {
+  DoPrepareStart(inner, inner_sms, outer, outer_sms, settings);
+  DoFinishPrepare();
+}
+
+void CylinderContactAnalyzer::DoPrepareStart(const PartSpec& inner, const SkinModelShape& inner_sms,
+                                             const PartSpec& outer, const SkinModelShape& outer_sms,
+                                             const ModelSettings& settings) {
   if (inner.role != Role::kInner || outer.role != Role::kOuter) {
     throw UserError("cylindrical contact needs the inner part (shaft) first, the outer second");
   }
@@ -197,7 +205,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   smoothing_ = settings.texture == TextureMode::kDin7190
                    ? Din7190RadialSmoothing(inner.texture, outer.texture)
                    : 0.0;
-  std::optional<RigidSectionContact> solver;
+  solver_.reset();
   RigidFreedom freedom;
   double frame = 0.0;  // angle of the elastic solve's column 0
   if (elastic_) {
@@ -240,7 +248,7 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
         coupled_orders_.push_back(order);
       }
     }
-    solver.emplace(section, n_ / block_, coupled_orders_);
+    solver_.emplace(section, n_ / block_, coupled_orders_);
     if (options.axial_coupling) {
       AxialBody hub;
       hub.inner_radius = 0.5 * d.d1;
@@ -359,44 +367,26 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
   unconstrained_.assign(count, 0);
   vertex_begin_.assign(count, 0);
   vertex_count_.assign(count, 0);
+  // Room for every step's polygon (at most n + 4 vertices) reserved, not touched: the steps join
+  // their polygons in depth order without the arrays ever moving, so a tick reads the steps
+  // prepared while the next ones are appended (PrepareAhead).
+  const std::size_t most_vertices = count * static_cast<std::size_t>(n_ + 4);
   vertices_.clear();
+  vertices_.reserve(most_vertices);
   centre_angles_.clear();
+  centre_angles_.reserve(most_vertices);
   origin_angles_.clear();
+  origin_angles_.reserve(most_vertices);
   centre_fan_.assign(count, 0);
   origin_fan_.assign(count, 0);
   max_vertices_ = 0;
   newton_iterations_ = 0;
+  next_step_ = 0;
+  step_scratch_ = StepScratch{};
+  step_polygon_ = StepPolygon{};
+  prepared_steps_.store(0, std::memory_order_release);
 
-  // Depth steps in chunks of kChunkSteps, each chunk on one thread from its own cold start (the
-  // warm starts below run within a chunk only), so the tables are the same whatever the thread
-  // count. Every step writes its own entries; polygons are joined in step order at the end.
-  const std::size_t chunks = (count + kChunkSteps - 1) / kChunkSteps;
-  std::vector<StepPolygon> polygons(count);
-  std::vector<int> chunk_newton(chunks, 0);
-  ParallelFor(static_cast<int>(chunks), [&](int chunk_begin, int chunk_end) {
-    StepScratch scratch;
-    for (auto c = static_cast<std::size_t>(chunk_begin); c < static_cast<std::size_t>(chunk_end);
-         ++c) {
-      scratch.Restart(static_cast<std::size_t>(n_), static_cast<std::size_t>(bushing_rows_));
-      if (solver && !scratch.solver) scratch.solver = solver;  // a copy per thread: it keeps state
-      const std::size_t first = c * kChunkSteps, end = std::min(count, first + kChunkSteps);
-      ChunkMinima(first, end, &scratch);
-      for (std::size_t k = first; k < end; ++k) PrepareStep(k, k - first, &scratch, &polygons[k]);
-      chunk_newton[c] = scratch.newton_iterations;
-    }
-  });
-
-  for (std::size_t k = 0; k < count; ++k) {
-    const StepPolygon& p = polygons[k];
-    vertex_begin_[k] = static_cast<int>(vertices_.size());
-    vertex_count_[k] = static_cast<int>(p.vertices.size());
-    max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
-    vertices_.insert(vertices_.end(), p.vertices.begin(), p.vertices.end());
-    centre_angles_.insert(centre_angles_.end(), p.centre_angles.begin(), p.centre_angles.end());
-    origin_angles_.insert(origin_angles_.end(), p.origin_angles.begin(), p.origin_angles.end());
-  }
-  for (int c : chunk_newton) newton_iterations_ += c;
-
+  // The compliant holder's curve depends on the parts alone, not on the tables.
   if (compliant && !settings.held_tilt.isZero()) {
     // 32 tilts between none and the holder's: the curve's chord error stays below a few per cent
     // of the tilt where the depth changes fastest (as 1 / tilt).
@@ -410,6 +400,93 @@ void CylinderContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelSh
       curve_depth_.push_back(TwoPointDepth(ColumnSlopes(level * hold_axis_)));
     }
   }
+  // Nothing past the entrance yet (a pose there reads no table).
+  PublishPreparedDepth(0.0);
+}
+
+void CylinderContactAnalyzer::JoinPolygon(std::size_t k, const StepPolygon& p) {
+  // Past the room reserved the arrays would move under a tick reading them.
+  if (vertices_.size() + p.vertices.size() > vertices_.capacity()) {
+    throw std::logic_error("cylindrical contact: a step's polygon has more than n + 4 vertices");
+  }
+  vertex_begin_[k] = static_cast<int>(vertices_.size());
+  vertex_count_[k] = static_cast<int>(p.vertices.size());
+  max_vertices_ = std::max(max_vertices_, vertex_count_[k]);
+  vertices_.insert(vertices_.end(), p.vertices.begin(), p.vertices.end());
+  centre_angles_.insert(centre_angles_.end(), p.centre_angles.begin(), p.centre_angles.end());
+  origin_angles_.insert(origin_angles_.end(), p.origin_angles.begin(), p.origin_angles.end());
+}
+
+void CylinderContactAnalyzer::PublishSteps(std::size_t steps) {
+  prepared_steps_.store(steps, std::memory_order_release);
+  // Steps 0 .. steps - 1 interpolate every depth up to the last one's.
+  PublishPreparedDepth(steps >= depth_.size() ? std::numeric_limits<double>::infinity()
+                       : steps > 1            ? static_cast<double>(steps - 1) * step_
+                                              : 0.0);
+}
+
+bool CylinderContactAnalyzer::DoPrepareAhead(int steps) {
+  const std::size_t count = depth_.size();
+  for (int done = 0; done < steps && next_step_ < count; ++done) {
+    // Chunk by chunk from each chunk's cold start, as DoFinishPrepare's threads take them.
+    const std::size_t k = next_step_, first = k - k % kChunkSteps;
+    StepScratch& scratch = step_scratch_;
+    if (k == first) {
+      scratch.Restart(static_cast<std::size_t>(n_), static_cast<std::size_t>(bushing_rows_));
+      if (solver_ && !scratch.solver) scratch.solver = solver_;  // its own copy: it keeps state
+      ChunkMinima(first, std::min(count, first + kChunkSteps), &scratch);
+    }
+    // Each step's polygon from empty, as a step of the parallel prepare has its own (a step in
+    // interference writes no fan angles, and must not join the step before's).
+    step_polygon_.vertices.clear();
+    step_polygon_.centre_angles.clear();
+    step_polygon_.origin_angles.clear();
+    PrepareStep(k, k - first, &scratch, &step_polygon_);
+    JoinPolygon(k, step_polygon_);
+    ++next_step_;
+    const bool chunk_done = next_step_ % kChunkSteps == 0 || next_step_ == count;
+    if (chunk_done) newton_iterations_ += scratch.newton_iterations;
+    PublishSteps(next_step_);
+  }
+  return next_step_ < count;
+}
+
+void CylinderContactAnalyzer::DoFinishPrepare() {
+  // The chunk under way on this thread, then the whole chunks left on the prepare's threads.
+  if (next_step_ % kChunkSteps != 0) {
+    DoPrepareAhead(static_cast<int>(kChunkSteps - next_step_ % kChunkSteps));
+  }
+  const std::size_t count = depth_.size();
+  if (next_step_ >= count) return;
+  // Depth steps in chunks of kChunkSteps, each chunk on one thread from its own cold start (the
+  // warm starts below run within a chunk only), so the tables are the same whatever the thread
+  // count and whichever steps were prepared ahead. Every step writes its own entries; polygons
+  // are joined in step order at the end.
+  const std::size_t begin = next_step_ / kChunkSteps;
+  const std::size_t chunks = (count + kChunkSteps - 1) / kChunkSteps - begin;
+  std::vector<StepPolygon> polygons(count - next_step_);
+  std::vector<int> chunk_newton(chunks, 0);
+  const std::size_t offset = next_step_;
+  ParallelFor(static_cast<int>(chunks), [&](int chunk_begin, int chunk_end) {
+    StepScratch scratch;
+    for (auto c = static_cast<std::size_t>(chunk_begin); c < static_cast<std::size_t>(chunk_end);
+         ++c) {
+      scratch.Restart(static_cast<std::size_t>(n_), static_cast<std::size_t>(bushing_rows_));
+      if (solver_ && !scratch.solver)
+        scratch.solver = solver_;  // a copy per thread: it keeps state
+      const std::size_t first = (begin + c) * kChunkSteps,
+                        end = std::min(count, first + kChunkSteps);
+      ChunkMinima(first, end, &scratch);
+      for (std::size_t k = first; k < end; ++k) {
+        PrepareStep(k, k - first, &scratch, &polygons[k - offset]);
+      }
+      chunk_newton[c] = scratch.newton_iterations;
+    }
+  });
+  for (std::size_t k = offset; k < count; ++k) JoinPolygon(k, polygons[k - offset]);
+  for (int c : chunk_newton) newton_iterations_ += c;
+  next_step_ = count;
+  PublishSteps(count);
 }
 
 std::vector<double> CylinderContactAnalyzer::ColumnSlopes(const Eigen::Vector2d& rotation) const {
@@ -771,8 +848,12 @@ void CylinderContactAnalyzer::SlicesAt(double depth, std::vector<Slice>* slices)
 
 bool CylinderContactAnalyzer::Locate(double depth, std::size_t* k, double* t) const noexcept {
   if (!(depth > 0.0) || !(depth < max_depth_)) return false;
+  // Progressive prepare: the steps written so far (ContactAnalyzer::Evaluate keeps the depth
+  // within them; rounding at the last one's depth takes it as the end of the interval before).
+  const std::size_t prepared = prepared_steps_.load(std::memory_order_acquire);
+  if (prepared < 2) return false;
   const double s = depth / step_;
-  const std::size_t last = depth_.size() - 1;
+  const std::size_t last = prepared - 1;
   std::size_t i = static_cast<std::size_t>(s);
   if (i >= last) i = last - 1;
   *k = i;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <mutex>
 #include <optional>
 #include <span>
@@ -53,6 +54,11 @@ namespace fitfeel::cylindrical {
 // continuous in depth and offset (taking the nearest step would make them jump by a whole row's
 // change at each step, which a haptic device renders as a click). Cost O(vertices) <= O(n + 4),
 // independent of m, with no allocation.
+//
+// Progressive prepare (ContactAnalyzer::PrepareStart): the steps in depth order, chunk by chunk
+// from each chunk's cold start as the parallel prepare takes them, so the tables are the same bits
+// either way; each step's entries are written before the step count is published, and the
+// polygons' arrays are reserved for every step up front, so nothing a tick reads moves.
 class CylinderContactAnalyzer final : public ContactAnalyzer {
  public:
   // Per-tick footprint: the largest vertex count of any tabulated polygon (<= n + 4).
@@ -86,6 +92,11 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
  protected:
   void DoPrepare(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
                  const SkinModelShape& outer_sms, const ModelSettings& settings) override;
+  bool DoTakesProgressivePrepare() const override { return true; }
+  void DoPrepareStart(const PartSpec& inner, const SkinModelShape& inner_sms, const PartSpec& outer,
+                      const SkinModelShape& outer_sms, const ModelSettings& settings) override;
+  bool DoPrepareAhead(int steps) override;
+  void DoFinishPrepare() override;
   void DoEvaluate(const MatingPose& pose, ContactState* out) const noexcept override;
   void DoInterferenceMap(const MatingPose& pose, Eigen::VectorXd* delta) const override;
   bool DoAssemblySpace(const MatingPose& pose,
@@ -183,6 +194,10 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
     std::vector<Eigen::Vector2d> vertices;
     std::vector<double> centre_angles, origin_angles;
   };
+  // Step k's polygon appended to the tables' vertex arrays (steps join in depth order).
+  void JoinPolygon(std::size_t k, const StepPolygon& polygon);
+  // Steps 0 .. steps - 1 are written: publishes them and the depth they interpolate to.
+  void PublishSteps(std::size_t steps);
   // Per column, the lateral slope of a part tilted by `rotation` (x, z of its rotation vector)
   // along the column's direction.
   std::vector<double> ColumnSlopes(const Eigen::Vector2d& rotation) const;
@@ -240,6 +255,14 @@ class CylinderContactAnalyzer final : public ContactAnalyzer {
   std::vector<char> centre_fan_, origin_fan_;
   int max_vertices_ = 0;
   int newton_iterations_ = 0;
+  // The steps prepared so far (the prepare's thread writes, a tick reads: release / acquire),
+  // the next one to prepare, and what the progressive prepare carries from step to step of a
+  // chunk. The elastic solver every thread of the prepare copies.
+  std::atomic<std::size_t> prepared_steps_{0};
+  std::size_t next_step_ = 0;
+  StepScratch step_scratch_;
+  StepPolygon step_polygon_;
+  std::optional<RigidSectionContact> solver_;
 
   // Elastic model.
   bool elastic_ = false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace fitfeel::spherical {
 
@@ -10,7 +11,19 @@ void SphericalContactAnalyzer::DoPrepare(const PartSpec& inner, const SkinModelS
                                          const ModelSettings& settings) {
   scan_.Prepare(inner, inner_sms, outer, outer_sms, settings);
   const int entries = scan_.columns() * kStepsPerColumn;
-  Tabulate(entries, 2.0 * M_PI / entries);
+  const double step = 2.0 * M_PI / entries;
+  // A run whose device turns the ball by at most ModelSettings::angular_reach either way needs no
+  // entry past it (a bearing's swing of 15 degrees: 13 of 144 steps); two steps more cover the
+  // blend's next entry and the turn as read back from the device. Each entry is the whole
+  // table's bits.
+  std::vector<int> wanted;
+  const double reach = std::ceil(settings.angular_reach / step) + 2.0;
+  if (2.0 * reach + 1.0 < entries) {
+    const int r = static_cast<int>(reach);
+    for (int q = 0; q <= r; ++q) wanted.push_back(q);
+    for (int q = entries - r; q < entries; ++q) wanted.push_back(q);
+  }
+  Tabulate(entries, step, wanted);
 }
 
 void SphericalContactAnalyzer::DoEvaluate(const MatingPose& pose,

@@ -19,13 +19,14 @@ namespace fitfeel::spherical {
 // nondecreasing in the offset towards the socket.
 //
 // Steps: two per column pitch over the full turn, 33 samples of x per entry; the entries are
-// filled on PrepareThreads() threads, bit for bit the same for any count. Between two steps each
-// cell's gap is linear in theta (the ball's variation is interpolated linearly between its
-// columns), so the blend's error is second order in the ball's change over half a pitch; one step
-// per pitch would miss how partial contact changes half a pitch off the columns, where a lobed
-// ball's lobes sit between the socket's cells. The error against the scan is the x interpolation
-// (ColumnResponseTable::VolumeErrorBound) at the steps, plus that blend between them; tested
-// against the scan.
+// filled on PrepareThreads() threads, bit for bit the same for any count, and only within a run's
+// ModelSettings::angular_reach where it bounds the turn (beyond it an entry answers no contact).
+// Between two steps each cell's gap is linear in theta (the ball's variation is interpolated
+// linearly between its columns), so the blend's error is second order in the ball's change over
+// half a pitch; one step per pitch would miss how partial contact changes half a pitch off the
+// columns, where a lobed ball's lobes sit between the socket's cells. The error against the scan is
+// the x interpolation (ColumnResponseTable::VolumeErrorBound) at the steps, plus that blend between
+// them; tested against the scan.
 class SphericalContactAnalyzer final : public ColumnTableAnalyzer<SphericalScanAnalyzer> {
  public:
   static constexpr int kStepsPerColumn = 2;

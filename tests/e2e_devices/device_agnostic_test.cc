@@ -216,7 +216,8 @@ FakeHdStats FakeHd() {
 // replay states other limits and damping (finite ones, so the safety report's limits and the
 // energy credited to the device's damping differ) and the same forces.
 nlohmann::json SummaryPhysics(nlohmann::json summary) {
-  for (const char* key : {"device", "scenario_file", "prepare_s", "tick_us", "wall_s"}) {
+  for (const char* key :
+       {"device", "scenario_file", "prepare_s", "ready_to_touch_ms", "tick_us", "wall_s"}) {
     summary.erase(key);
   }
   if (summary.contains("safety")) {
@@ -237,8 +238,7 @@ std::string PartMotionYaml(const std::string& radial) {
 
 // The paper's robot: 10 mm/s, the shaft's 2 N weight, with the part's radial motion.
 std::string SimulatedDevice(const std::string& radial = "quasi_static") {
-  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n" +
-         PartMotionYaml(radial);
+  return "device:\n  plugin: fitfeel.device.simulated\n  speed: 10 mm/s\n" + PartMotionYaml(radial);
 }
 
 // A simulated run whose device stream the replay plays back, and its recording.
@@ -460,13 +460,15 @@ TEST(PhantomE2e, ReachesTheConstrainedStageThroughInjectedFaults) {
   const nlohmann::json summary = nlohmann::json::parse(summary_file);
   const nlohmann::json& device = summary.at("device_report");
   std::printf("%s\n", device.dump(2).c_str());
-  std::printf("ticks %llu, constrained %llu\n",
-              static_cast<unsigned long long>(summary.at("ticks").get<std::uint64_t>()),
-              static_cast<unsigned long long>(summary.at("constrained_ticks").get<std::uint64_t>()));
+  std::printf(
+      "ticks %llu, constrained %llu\n",
+      static_cast<unsigned long long>(summary.at("ticks").get<std::uint64_t>()),
+      static_cast<unsigned long long>(summary.at("constrained_ticks").get<std::uint64_t>()));
   // The run went on to its end and most of its second half was constrained.
   EXPECT_FALSE(device.at("stopped_on_faults").get<bool>());
   EXPECT_EQ(summary.at("ticks").get<double>(), 2500.0);
-  EXPECT_GT(summary.at("constrained_ticks").get<double>(), 0.35 * summary.at("ticks").get<double>());
+  EXPECT_GT(summary.at("constrained_ticks").get<double>(),
+            0.35 * summary.at("ticks").get<double>());
   // Each fault is reported.
   EXPECT_EQ(device.at("calibration"), "updated (auto)");
   EXPECT_EQ(device.at("calibration_updates"), 1);

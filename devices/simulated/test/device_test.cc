@@ -194,6 +194,7 @@ TEST(SimulatedRotorTest, TurnsAtTheAngularSpeedAboutTheAxisAtTheEntrance) {
     SimulatedDevice d;
     d.Configure(Rotor(omega, 0.0));
     d.Start(kPeriod);
+    EXPECT_EQ(d.angular_reach(2.0), 2.0 * omega);  // its whole travel
     const DeviceState s = Drive(d, n, [](const DeviceState&) {
       Wrench w;
       w.force = Eigen::Vector3d(0.0, 0.0, 1000.0);
@@ -248,6 +249,8 @@ TEST(SimulatedRotorTest, OscillatesBetweenPlusAndMinusTheSwingAtConstantSpeed) {
   }
   EXPECT_NEAR(highest, beta, 1e-12);
   EXPECT_NEAR(lowest, -beta, 1e-12);
+  // What it reports it turns by at most, for the prepare (ModelSettings::angular_reach).
+  EXPECT_EQ(d.angular_reach(8.0), beta);
   EXPECT_EQ(reversals, 4);
 }
 

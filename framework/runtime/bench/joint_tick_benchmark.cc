@@ -34,6 +34,7 @@
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
 #include "framework/testing/hand_scene.h"
+#include "framework/testing/virtual_scene_run.h"
 
 namespace fitfeel {
 namespace {
@@ -73,21 +74,15 @@ void BM_JointRun(benchmark::State& state, const std::string& name, bool hand) {
   std::vector<double> ticks;
   Percentiles evaluations;
   for (auto _ : state) {
-    SchedulerSettings settings = SceneSchedulerSettings(scene);
-    settings.clock = ClockMode::kVirtual;
-    // Started first: a device knows its limits (the hand's 2 b / T) only at its rate.
-    scene.device->Start(1.0 / settings.rate);
-    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
-    settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
-    Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
+    test_support::VirtualSceneRun run(scene, prepared);
+    Scheduler& scheduler = run.scheduler();
     ticks.reserve(ticks.size() + scheduler.planned_ticks());
     for (std::uint64_t k = 0; k < scheduler.planned_ticks(); ++k) {
       const double t0 = ThreadSeconds();
-      const bool more = scheduler.Tick(static_cast<double>(k) / settings.rate);
+      const bool more = scheduler.Tick(static_cast<double>(k) / run.rate());
       ticks.push_back(std::max(0.0, ThreadSeconds() - t0 - clock_cost) * 1e6);
       if (!more) break;
     }
-    scene.device->Stop();
     evaluations = scheduler.StatsSoFar().contact_evaluations;
   }
   state.counters["tick_p50_us"] = Percentile(&ticks, 0.50);

@@ -34,7 +34,6 @@
 #include <map>
 #include <memory>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -48,8 +47,8 @@
 #include "framework/runtime/scene_stages.h"
 #include "framework/runtime/scheduler.h"
 #include "framework/scenario/scene.h"
-#include "framework/scenario/sequence.h"
 #include "framework/testing/hand_scene.h"
+#include "framework/testing/virtual_scene_run.h"
 #include "surfaces/conical/conical_scan_analyzer.h"
 #include "surfaces/spherical/spherical_scan_analyzer.h"
 
@@ -61,7 +60,6 @@ namespace fs = std::filesystem;
 using bench::ClockCost;
 using bench::ClockSeconds;
 using bench::Registry;
-using bench::ScenarioDir;
 
 // The surface plugin's per-tick scan, prepared on the scene's shapes; null where none exists.
 std::unique_ptr<ContactAnalyzer> ScanAnalyzer(const Scene& scene, const PreparedScene& prepared) {
@@ -117,23 +115,17 @@ void BM_Scene(benchmark::State& state, const fs::path& file, bool scan) {
     const double prepare = ClockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0;
     const double prepare_wall = ClockSeconds(CLOCK_MONOTONIC) - wall0;
     if (scan) prepared.analyzer = ScanAnalyzer(scene, prepared);
-    SchedulerSettings settings = SceneSchedulerSettings(scene);
-    settings.clock = ClockMode::kVirtual;
-    // Started first: a device knows its limits (the hand's 2 b / T) only at its rate.
-    scene.device->Start(1.0 / settings.rate);
-    const SceneStages stages = MakeSceneStages(scene, prepared, scene.device->spec());
-    settings.safety = RuntimeSafetySettings(scene.safety, scene.device->spec());
-    Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);
+    test_support::VirtualSceneRun run(scene, prepared);
+    Scheduler& scheduler = run.scheduler();
     ticks.assign(scheduler.planned_ticks(), 0.0);
     std::size_t done = 0;
     for (; done < ticks.size(); ++done) {
       const double t0 = ClockSeconds(CLOCK_THREAD_CPUTIME_ID);
-      const bool more = scheduler.Tick(static_cast<double>(done) / settings.rate);
+      const bool more = scheduler.Tick(static_cast<double>(done) / run.rate());
       const double t1 = ClockSeconds(CLOCK_THREAD_CPUTIME_ID);
       ticks[done] = std::max(0.0, t1 - t0 - clock_cost) * 1e6;
       if (!more) break;
     }
-    scene.device->Stop();
     const Percentiles evaluations = scheduler.StatsSoFar().contact_evaluations;
     state.counters["evaluations_p50"] = evaluations.p50;
     state.counters["evaluations_p99"] = evaluations.p99;
@@ -221,57 +213,25 @@ class TableReporter final : public benchmark::ConsoleReporter {
 // scene that does not load, or a missing plugin, throws.
 static int RunScenes(int argc, char** argv) {
   using namespace fitfeel;
-  std::vector<fs::path> files;
-  const fs::path folder = ScenarioDir();
-  std::error_code error;
-  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
-    // A sequence's steps are scenes of their own, timed where they run (fitfeel run's statistics).
-    if (it->path().extension() == ".yaml" && !IsSequenceFile(it->path())) {
-      files.push_back(it->path());
-    }
-  }
-  if (error || files.empty()) {
-    std::fprintf(stderr,
-                 "scene_benchmark: no scenario files (*.yaml) in '%s'%s%s; run it from the "
-                 "repository's root or set FITFEEL_SOURCE_DIR to it\n",
-                 folder.string().c_str(), error ? ": " : "", error ? error.message().c_str() : "");
-    return 2;
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = bench::ShippedSceneFiles("scene_benchmark");
+  if (files.empty()) return 2;
   for (const fs::path& file : files) {
     const std::string name = file.stem().string();
     for (bool scan : {false, true}) {
       if (scan && !HasScan(LoadScene(file, Registry()).surface_id)) continue;
-      benchmark::RegisterBenchmark(("scene/" + name + (scan ? "/scan" : "")).c_str(),
-                                   [file, scan](benchmark::State& s) { BM_Scene(s, file, scan); })
-          ->Iterations(1)
-          ->Repetitions(5)
-          ->ReportAggregatesOnly(true)
-          ->Unit(benchmark::kMillisecond);
+      bench::RegisterWholeRuns("scene/" + name + (scan ? "/scan" : ""),
+                               [file, scan](benchmark::State& s) { BM_Scene(s, file, scan); });
     }
     if (HasLeadIn(file)) {
       const fs::path hand = HandVariant(file);
-      benchmark::RegisterBenchmark(("scene/" + name + "/hand").c_str(),
-                                   [hand](benchmark::State& s) { BM_Scene(s, hand, false); })
-          ->Iterations(1)
-          ->Repetitions(5)
-          ->ReportAggregatesOnly(true)
-          ->Unit(benchmark::kMillisecond);
+      bench::RegisterWholeRuns("scene/" + name + "/hand",
+                               [hand](benchmark::State& s) { BM_Scene(s, hand, false); });
     }
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   TableReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return bench::RunRegistered(argc, argv, &reporter);
 }
 
 int main(int argc, char** argv) {
-  try {
-    return RunScenes(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "scene_benchmark: %s\n", e.what());
-    return 2;
-  }
+  return fitfeel::bench::MainOf("scene_benchmark", argc, argv, RunScenes);
 }

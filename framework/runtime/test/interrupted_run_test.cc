@@ -11,6 +11,7 @@
 #include "framework/runtime/run.h"
 #include "framework/runtime/test/fake_scene.h"
 #include "framework/testing/cli_runner.h"
+#include "framework/testing/stop_at_tick.h"
 // After the framework headers: <signal.h> (pulled in by gtest) defines si_value as a macro.
 #include <gtest/gtest.h>
 
@@ -22,20 +23,7 @@ namespace fs = std::filesystem;
 // A folder of this test only, not created.
 fs::path TestDir() { return test_support::EmptyTestFolder("interrupted-run") / "out"; }
 
-// Sets the flag during the tick numbered `at` (from 1), as a signal handler would between two
-// ticks: the tick under way completes, the next one does not start.
-class StopAtTick final : public TickObserver {
- public:
-  StopAtTick(std::atomic<bool>* flag, std::uint64_t at) : flag_(flag), at_(at) {}
-  void OnTick(const TickRecord&) noexcept override {
-    if (++ticks_ == at_) flag_->store(true);
-  }
-
- private:
-  std::atomic<bool>* flag_;
-  std::uint64_t at_;
-  std::uint64_t ticks_ = 0;
-};
+using test_support::StopAtTick;
 
 TEST(InterruptedRunTest, StopsAtTheNextTickBoundaryAndWritesNothing) {
   const fs::path dir = TestDir();

@@ -88,7 +88,7 @@ TEST(OutputsTest, TraceCarriesTheDeviceWrenchAndSummaryTheSafetyChain) {
   const auto lines = Lines(dir / "trace.csv");
   const std::string tail =
       ",guard_fault,dev_fx_N,dev_fy_N,dev_fz_N,dev_tx_Nm,dev_ty_Nm,dev_tz_Nm,offset_x_um,"
-      "offset_z_um,elastic_utilisation,yielding,device_fault";
+      "offset_z_um,elastic_utilisation,yielding,device_fault,prepare_held_mm";
   ASSERT_GE(lines[0].size(), tail.size());
   EXPECT_EQ(lines[0].substr(lines[0].size() - tail.size()), tail);
   const auto columns = std::count(lines[0].begin(), lines[0].end(), ',');
@@ -206,13 +206,13 @@ TEST(OutputsTest, TraceFlagsYieldingAndTheSummarySaysWhereAndByHowMuch) {
   EXPECT_DOUBLE_EQ(e["at_t_s"].get<double>(), 0.002);
   EXPECT_NEAR(e["excess_percent"].get<double>(), 25.0, 1e-12);
   const std::string row = TraceRow(trace[2]);
-  EXPECT_EQ(row.substr(row.size() - 9), ",1.25,1,0");  // then device_fault
+  EXPECT_EQ(row.substr(row.size() - 11), ",1.25,1,0,0");  // then device_fault, prepare_held_mm
   const std::string elastic = TraceRow(trace[1]);
-  EXPECT_EQ(elastic.substr(elastic.size() - 8), ",0.5,0,0");
+  EXPECT_EQ(elastic.substr(elastic.size() - 10), ",0.5,0,0,0");
   // Nothing checked (no yield strength, or a law without a check): null, not zero.
-  EXPECT_TRUE(MakeSummary(RunInfo{}, std::vector<TickRecord>(2), RunStats{})["elastic_limit"]
-                  ["max_utilisation"]
-                      .is_null());
+  EXPECT_TRUE(MakeSummary(RunInfo{}, std::vector<TickRecord>(2),
+                          RunStats{})["elastic_limit"]["max_utilisation"]
+                  .is_null());
 }
 
 }  // namespace

@@ -57,6 +57,24 @@ double TableRelativeError(const Analyzer& analyzer, const MatingPose& pose) {
   return std::abs(table.interference_volume - scan.interference_volume) / scale;
 }
 
+// Two analyzers give the same ticks bit for bit at 2000 poses next_pose(rng, one) draws.
+template <class Analyzer, class NextPose>
+void ExpectSameTicks(const Analyzer& one, const Analyzer& two, NextPose&& next_pose) {
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const MatingPose pose = next_pose(rng, one);
+    ContactState a, b;
+    one.Evaluate(pose, &a);
+    two.Evaluate(pose, &b);
+    ASSERT_EQ(a.interference_volume, b.interference_volume) << trial;
+    ASSERT_EQ(a.pressure_resultant, b.pressure_resultant) << trial;
+    ASSERT_EQ(a.max_interference, b.max_interference) << trial;
+    ASSERT_EQ(a.penetration, b.penetration) << trial;
+    ASSERT_EQ(a.penetration_direction, b.penetration_direction) << trial;
+    ASSERT_EQ(a.normal_force, b.normal_force) << trial;
+  }
+}
+
 // Tables prepared on one and on two prepare threads (prepare(&analyzer)) give the same ticks bit
 // for bit at 2000 poses next_pose(rng, analyzer) draws.
 template <class Analyzer, class Prepare, class NextPose>
@@ -67,16 +85,7 @@ void ExpectSameTablesOnOneOrTwoThreads(Prepare&& prepare, NextPose&& next_pose) 
   setenv("FITFEEL_PREPARE_THREADS", "2", 1);
   prepare(&two);
   unsetenv("FITFEEL_PREPARE_THREADS");
-  std::mt19937_64 rng(5);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const MatingPose pose = next_pose(rng, one);
-    ContactState a, b;
-    one.Evaluate(pose, &a);
-    two.Evaluate(pose, &b);
-    ASSERT_EQ(a.interference_volume, b.interference_volume);
-    ASSERT_EQ(a.pressure_resultant, b.pressure_resultant);
-    ASSERT_EQ(a.max_interference, b.max_interference);
-  }
+  ExpectSameTicks(one, two, next_pose);
 }
 
 }  // namespace fitfeel::test_support

@@ -2,6 +2,7 @@
 // only changes how fast it is evaluated): at the rotation steps within the table's stated
 // interpolation bound, between them within 2 % of the scan's interference volume, and bit for bit
 // the same tables whatever the number of prepare threads.
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -21,7 +22,8 @@ namespace {
 
 // The knuckle-bearing scenario's form and texture on the test bearing, with a ball whose size
 // zone straddles the socket's (clearance for some seeds, interference for others).
-void Prepare(SphericalContactAnalyzer* analyzer, std::uint64_t seed, TextureMode texture) {
+void Prepare(SphericalContactAnalyzer* analyzer, std::uint64_t seed, TextureMode texture,
+             double angular_reach = std::numeric_limits<double>::infinity()) {
   PartSpec ball = test::Ball();
   PartSpec socket = test::Socket();
   ball.size.lower_deviation = -10e-6;
@@ -36,6 +38,7 @@ void Prepare(SphericalContactAnalyzer* analyzer, std::uint64_t seed, TextureMode
   settings.friction = 0.15;
   settings.contact_stiffness = 1e6;
   settings.texture = texture;
+  settings.angular_reach = angular_reach;
   Rng rng(seed);
   const Resolution r{12, 72};
   const SkinModelShape ball_sms = SphericalVariationGenerator().Generate(
@@ -88,6 +91,27 @@ TEST(SphericalTable, BetweenTheStepsStaysWithinTwoPercentOfTheScan) {
     }
   }
   RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+// A run whose device swings the ball 15 degrees either way tabulates only that swing: within it
+// every state is the whole table's bits; past it (no run of that device gets there) none.
+TEST(SphericalTable, WithinTheDevicesSwingIsTheWholeTableBitForBit) {
+  const double swing = 15.0 * M_PI / 180.0;
+  SphericalContactAnalyzer whole, swung;
+  Prepare(&whole, 3, TextureMode::kExpected);
+  Prepare(&swung, 3, TextureMode::kExpected, swing);
+  std::uniform_real_distribution<double> turn(-swing, swing);
+  test_support::ExpectSameTicks(
+      whole, swung, [&](std::mt19937_64& rng, const auto&) { return RandomPose(rng, turn(rng)); });
+  // Half a turn away, pressed 40 um across, the swung table holds nothing.
+  MatingPose far;
+  far.angle = M_PI;
+  far.offset = {40e-6, 0.0};
+  ContactState a, b;
+  whole.Evaluate(far, &a);
+  swung.Evaluate(far, &b);
+  EXPECT_GT(a.interference_volume, 0.0);
+  EXPECT_EQ(b.interference_volume, 0.0);
 }
 
 TEST(SphericalTable, IsTheSameBitForBitOnOneOrTwoThreads) {
