@@ -1,6 +1,7 @@
 #include "surfaces/cylindrical/elastic/section_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -76,12 +77,13 @@ void CirculantContact::InverseTimes(const double* x, double* out) const {
 
 bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
                                  std::vector<char>* active, Factorization* workspace) {
-  bool feasible = true;
-  for (int j = 0; j < n_; ++j) {
-    p[j] = g_inv_u_(j, 0) * e.x() + g_inv_u_(j, 1) * e.y() - inverse_gap[j];
-    feasible = feasible && p[j] >= 0.0;
-  }
-  if (!feasible) return false;
+  // The pressures, then whether any is negative (or NaN): two loops that vectorise.
+  const double* u0 = g_inv_u_.col(0).data();
+  const double* u1 = g_inv_u_.col(1).data();
+  for (int j = 0; j < n_; ++j) p[j] = u0[j] * e.x() + u1[j] * e.y() - inverse_gap[j];
+  int infeasible = 0;
+  for (int j = 0; j < n_; ++j) infeasible |= p[j] >= 0.0 ? 0 : 1;
+  if (infeasible != 0) return false;
   active->assign(static_cast<std::size_t>(n_), 1);
   last_ = workspace;
   (workspace != nullptr ? *workspace : own_).last_full = true;
@@ -175,11 +177,25 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       throw UserError("section contact: pivoting did not terminate (" + std::to_string(steps) +
                       " steps); the compliance is not positive definite?");
     }
-    ws.index.clear();
-    ws.gaps.clear();
-    for (int j = 0; j < n; ++j) (f[static_cast<std::size_t>(j)] ? ws.index : ws.gaps).push_back(j);
-    const int m = static_cast<int>(ws.index.size());
-    const int k = n - m;
+    // The contact set and the gaps, ascending: written through raw pointers into vectors sized
+    // for every column (a push_back per column kept the vectors' ends in memory between columns,
+    // and the flags' unpredictable branch on top of it).
+    ws.index.resize(static_cast<std::size_t>(n));
+    ws.gaps.resize(static_cast<std::size_t>(n));
+    int m = 0, k = 0;
+    {
+      int* const in = ws.index.data();
+      int* const out = ws.gaps.data();
+      for (int j = 0; j < n; ++j) {
+        const bool touching = f[static_cast<std::size_t>(j)] != 0;
+        in[m] = j;
+        out[k] = j;
+        m += touching ? 1 : 0;
+        k += touching ? 0 : 1;
+      }
+    }
+    ws.index.resize(static_cast<std::size_t>(m));
+    ws.gaps.resize(static_cast<std::size_t>(k));
     std::fill(p, p + n, 0.0);
     // Pressures on the contact set F and closures on the gaps N = the rest, by whichever system is
     // smaller: G_FF p_F = delta_F (m^3) or, with H = G^-1 and y = H delta, the dual
@@ -196,15 +212,15 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       for (int c : ws.index) p[c] = full_[c] - sum_[c];
       for (int a = 0; a < k; ++a) w_[ws.gaps[static_cast<std::size_t>(a)]] = -z_[a];
     } else {
+      // p_F in the factor's order (Refactor's) in coeff_, then in place.
+      coeff_.resize(m);
       if (m > 0) {
         Refactor(g_, &ws.index, &ws.primal, &ws.mark);
-        Eigen::VectorXd pf = Eigen::Map<const Eigen::VectorXd>(delta, n)(ws.index);
-        ws.primal.cholesky.SolveInPlace(pf);
-        for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
+        for (int a = 0; a < m; ++a) coeff_[a] = delta[ws.index[static_cast<std::size_t>(a)]];
+        ws.primal.cholesky.SolveInPlace(coeff_);
+        for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = coeff_[a];
       }
       // G_NF p_F as whole columns of G over all n rows, read on N.
-      coeff_.resize(m);
-      for (int a = 0; a < m; ++a) coeff_[a] = p[ws.index[static_cast<std::size_t>(a)]];
       sum_.resize(n);
       AddScaledColumns(sum_.data(), g_.data(), ws.index.data(), coeff_.data(), m, n);
       for (int j : ws.gaps) w_[j] = sum_[j] - delta[j];
@@ -324,7 +340,6 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
   const int n = contact_.columns();
   const auto nn = static_cast<std::size_t>(n);
   delta_.resize(nn);
-  full_.resize(nn);
   pressure_.resize(sections.size() * nn);
   if (active_.size() != sections.size()) active_.assign(sections.size(), std::vector<char>(nn, 0));
   workspace_.assign(sections.size(), nullptr);
@@ -336,14 +351,14 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
     const ContactSection& sec = sections[s];
     const Eigen::Vector2d e = freedom.tilt ? Eigen::Vector2d(e0 + sec.y * t) : e0;
     double* p = pressure_.data() + s * nn;
-    bool any = false;
+    // The interference and whether any column has one, as two loops that vectorise.
     for (std::size_t j = 0; j < nn; ++j) {
       delta_[j] = e.x() * cos_[j] + e.y() * sin_[j] - sec.gap[j];
-      any = any || delta_[j] > 0.0;
     }
-    bool none_active = true;
-    for (char a : active_[s]) none_active = none_active && !a;
-    if (!any && none_active) {
+    int any = 0;
+    for (std::size_t j = 0; j < nn; ++j) any |= delta_[j] > 0.0 ? 1 : 0;
+    if (any == 0 &&
+        std::none_of(active_[s].begin(), active_[s].end(), [](char a) { return a != 0; })) {
       std::fill(p, p + n, 0.0);
       workspace_[s] = nullptr;
       continue;
@@ -351,10 +366,10 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
     CirculantContact::Factorization* factors =
         sec.factorization != nullptr ? sec.factorization : &factors_[s];
     workspace_[s] = factors;
-    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s], factors)) {
-      contact_.Solve(delta_.data(), p, &active_[s], full_.data(), factors);
-    } else {
-      std::copy(full_.begin(), full_.end(), p);
+    // Full contact's pressures straight into p; where one is negative they are Solve's `full`
+    // (which it reads before it writes p).
+    if (!contact_.SolveFull(e, InverseGap(sec, s), p, &active_[s], factors)) {
+      contact_.Solve(delta_.data(), p, &active_[s], p, factors);
     }
     double energy = 0.0;
     Eigen::Vector2d f(0.0, 0.0);
@@ -436,12 +451,19 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
     const double y = freedom.tilt ? sections[s].y : 0.0;
     const Eigen::Vector2d e = q.head<2>() + y * q.tail<2>();
     delta_.resize(nn);
-    double largest = 0.0;
     for (std::size_t j = 0; j < nn; ++j) {
       delta_[j] = e.x() * cos_[j] + e.y() * sin_[j] - sections[s].gap[j];
-      largest = std::max(largest, delta_[j]);
     }
-    for (std::size_t j = 0; j < nn; ++j) active_[s][j] = w[j] && delta_[j] > -largest;
+    // The largest of 0 and the interferences, over four lanes (a maximum is exact in any order).
+    std::array<double, 4> lane{0.0, 0.0, 0.0, 0.0};
+    std::size_t j = 0;
+    for (; j + 4 <= nn; j += 4) {
+      for (std::size_t l = 0; l < 4; ++l) lane[l] = std::max(lane[l], delta_[j + l]);
+    }
+    for (; j < nn; ++j) lane[0] = std::max(lane[0], delta_[j]);
+    const double largest = std::max(std::max(lane[0], lane[1]), std::max(lane[2], lane[3]));
+    char* flags = active_[s].data();
+    for (j = 0; j < nn; ++j) flags[j] = (w[j] != 0) & (delta_[j] > -largest);
   }
   const auto components = static_cast<std::size_t>(shift_basis_.cols());
   if (!gap_shift.empty() && gap_shift.size() == sections.size() * components &&
