@@ -5,17 +5,31 @@
 namespace fitfeel::cylindrical {
 namespace {
 
-FITFEEL_SIMD_CLONES void ColumnSumsLoop(double* __restrict out, const double* __restrict a,
-                                        Eigen::Index stride, const double* __restrict x,
-                                        Eigen::Index rows, Eigen::Index cols, bool skip_zero) {
+// Rows i .. i + B of ColumnSums: B accumulators held in registers over every column (each entry's
+// sum still in the columns' order), instead of the whole output read and written per column.
+template <int B>
+inline void ColumnSumsRows(double* __restrict out, const double* __restrict a, Eigen::Index stride,
+                           const double* __restrict x, Eigen::Index cols, bool skip_zero) {
   FITFEEL_NO_FP_CONTRACT
-  for (Eigen::Index i = 0; i < rows; ++i) out[i] = 0.0;
+  double acc[B];
+  for (int r = 0; r < B; ++r) acc[r] = 0.0;
   for (Eigen::Index j = 0; j < cols; ++j) {
     const double xj = x[j];
     if (skip_zero && xj == 0.0) continue;
     const double* __restrict column = a + j * stride;
-    for (Eigen::Index i = 0; i < rows; ++i) out[i] = column[i] * xj + out[i];
+    for (int r = 0; r < B; ++r) acc[r] = column[r] * xj + acc[r];
   }
+  for (int r = 0; r < B; ++r) out[r] = acc[r];
+}
+
+FITFEEL_SIMD_CLONES void ColumnSumsLoop(double* __restrict out, const double* __restrict a,
+                                        Eigen::Index stride, const double* __restrict x,
+                                        Eigen::Index rows, Eigen::Index cols, bool skip_zero) {
+  FITFEEL_NO_FP_CONTRACT
+  Eigen::Index i = 0;
+  for (; i + 16 <= rows; i += 16) ColumnSumsRows<16>(out + i, a + i, stride, x, cols, skip_zero);
+  for (; i + 4 <= rows; i += 4) ColumnSumsRows<4>(out + i, a + i, stride, x, cols, skip_zero);
+  for (; i < rows; ++i) ColumnSumsRows<1>(out + i, a + i, stride, x, cols, skip_zero);
 }
 
 }  // namespace
