@@ -156,7 +156,7 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   const double tol_w = 1e-12 * scale + 1e-300;
   const double tol_p = tol_w / g_(0, 0);
   int best = n + 1, chances = 3, steps = 0;
-  w_.resize(n);
+  w_.setZero(n);
   ws.last_full = false;
   // y = G^-1 delta: the pressures of full contact, and the right-hand side of the dual step.
   if (full == nullptr) {
@@ -225,13 +225,15 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       AddScaledColumns(sum_.data(), g_.data(), ws.index.data(), coeff_.data(), m, n);
       for (int j : ws.gaps) w_[j] = sum_[j] - delta[j];
     }
+    // Both tests on every column, the flag choosing (w_ holds a defined value everywhere): no
+    // branch on the flags, which the pivoting leaves in no predictable pattern.
     int infeasible = 0, last = -1;
     for (int j = 0; j < n; ++j) {
-      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w_[j] < -tol_w;
-      if (bad) {
-        ++infeasible;
-        last = j;
-      }
+      const int touching = f[static_cast<std::size_t>(j)] != 0 ? 1 : 0;
+      const int bad =
+          (touching & (p[j] < -tol_p ? 1 : 0)) | ((touching ^ 1) & (w_[j] < -tol_w ? 1 : 0));
+      infeasible += bad;
+      last = bad != 0 ? j : last;
     }
     if (infeasible == 0) break;
     if (infeasible < best) {
