@@ -1151,15 +1151,13 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     for (CouplingScratch::Part& part : c.part) {
       std::fill(part.pressure.begin(), part.pressure.end(), 0.0);
     }
-    bool all_round = true;  // every section in contact all round
+    int all_round = 1;  // every section in contact all round
     for (std::size_t s = 0; s < count; ++s) {
       const double* p = solver->pressures().data() + s * ne;
       const std::vector<char>& set = solver->contact_sets()[s];
       double sum = 0.0;
-      for (std::size_t j = 0; j < ne; ++j) {
-        sum += p[j];
-        all_round = all_round && set[j];
-      }
+      for (std::size_t j = 0; j < ne; ++j) sum += p[j];
+      for (std::size_t j = 0; j < ne; ++j) all_round &= set[j] != 0 ? 1 : 0;
       amplitude[0] = sum / static_cast<double>(ne);
       const Eigen::Map<const Eigen::VectorXd> ps(p, static_cast<Eigen::Index>(ne));
       for (std::size_t comp = 1; comp < nc; ++comp) {
@@ -1302,7 +1300,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     // In contact all round the step is exact without a solve (linear: the pressures move by
     // -G^-1 B dx, the part's offset and tilt by what order 1's net forces ask), unless a pressure
     // would turn negative; the next pass checks the shifts against it.
-    if (all_round && r.converged &&
+    if (all_round != 0 && r.converged &&
         solver->ShiftFullContact(sections, freedom_, c.section_shift, &r)) {
       continue;
     }
