@@ -17,6 +17,23 @@
 namespace fitfeel::cylindrical {
 namespace {
 
+// Rows j .. j + B of AddScaledColumns, their B sums held in registers over every column.
+template <int B>
+inline void AddScaledColumnRows(double* __restrict sum, const double* __restrict matrix,
+                                const int* cols, const double* __restrict coeff, int count, int n,
+                                int j) {
+  FITFEEL_NO_FP_CONTRACT
+  double acc[B];
+  for (int r = 0; r < B; ++r) acc[r] = 0.0;
+  for (int a = 0; a < count; ++a) {
+    const double* __restrict column =
+        matrix + static_cast<std::ptrdiff_t>(cols != nullptr ? cols[a] : a) * n + j;
+    const double c = coeff[a];
+    for (int r = 0; r < B; ++r) acc[r] += c * column[r];
+  }
+  for (int r = 0; r < B; ++r) sum[j + r] = acc[r];
+}
+
 // sum = sum over a < count of coeff[a] * column cols[a] (or column a without cols) of the
 // column-major n x n `matrix`: the solver's products with whole contiguous columns, compiled
 // also for AVX2 and AVX-512 (framework/core/simd_clones.h; each sum[j] adds in the order of a).
@@ -24,13 +41,10 @@ FITFEEL_SIMD_CLONES void AddScaledColumns(double* __restrict sum, const double* 
                                           const int* cols, const double* __restrict coeff,
                                           int count, int n) {
   FITFEEL_NO_FP_CONTRACT
-  for (int j = 0; j < n; ++j) sum[j] = 0.0;
-  for (int a = 0; a < count; ++a) {
-    const double* __restrict column =
-        matrix + static_cast<std::ptrdiff_t>(cols != nullptr ? cols[a] : a) * n;
-    const double c = coeff[a];
-    for (int j = 0; j < n; ++j) sum[j] += c * column[j];
-  }
+  int j = 0;
+  for (; j + 16 <= n; j += 16) AddScaledColumnRows<16>(sum, matrix, cols, coeff, count, n, j);
+  for (; j + 4 <= n; j += 4) AddScaledColumnRows<4>(sum, matrix, cols, coeff, count, n, j);
+  for (; j < n; ++j) AddScaledColumnRows<1>(sum, matrix, cols, coeff, count, n, j);
 }
 
 }  // namespace
