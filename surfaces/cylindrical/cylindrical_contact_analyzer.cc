@@ -1054,14 +1054,22 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     }
   };
   // The extra displacement the rows' pressures give each section and component (component-major):
-  // the overlap-weighted mean of its rows' in either part.
+  // the overlap-weighted mean of its rows' in either part. Only the rows the sections cover are
+  // read, so only theirs are computed (the shaft's rows out of the bore are most of its rows).
   auto extra_at_sections = [&](double* out) {
     for (int q = 0; q < 2; ++q) {
       CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
       const std::size_t part_rows = rows[static_cast<std::size_t>(q)]->size() - 1;
+      int lo = static_cast<int>(part_rows), hi = 0;
+      for (const auto& [row, overlap] : part.cover) {
+        lo = std::min(lo, row);
+        hi = std::max(hi, row + 1);
+      }
+      if (hi <= lo) continue;
       for (std::size_t comp = 0; comp < nc; ++comp) {
         (*part_modes[static_cast<std::size_t>(q)])[mode_of(comp)].ExtraDisplacement(
-            part.pressure.data() + comp * part_rows, part.extra.data() + comp * part_rows);
+            part.pressure.data() + comp * part_rows, part.extra.data() + comp * part_rows, lo,
+            hi - lo);
       }
     }
     for (std::size_t comp = 0; comp < nc; ++comp) {

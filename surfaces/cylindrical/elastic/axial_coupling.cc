@@ -779,10 +779,12 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
   }
 }
 
-void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out) const {
+void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out, Eigen::Index first,
+                                      Eigen::Index count) const {
   // Most of a part's rows carry no pressure at a depth step (those out of the other part): their
   // columns are skipped, which changes no sum (TimesInOrder; the elements are finite).
-  TimesInOrder(extra_, mean_pressure, out, /*skip_zero=*/true);
+  TimesInOrder(extra_, mean_pressure, out, first, count < 0 ? extra_.rows() - first : count,
+               /*skip_zero=*/true);
 }
 
 }  // namespace fitfeel::cylindrical

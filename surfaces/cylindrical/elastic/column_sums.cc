@@ -40,10 +40,15 @@ void ColumnSums(double* out, const double* a, Eigen::Index stride, const double*
 }
 
 void TimesInOrder(const Eigen::MatrixXd& a, const double* x, double* out, bool skip_zero) {
+  TimesInOrder(a, x, out, 0, a.rows(), skip_zero);
+}
+
+void TimesInOrder(const Eigen::MatrixXd& a, const double* x, double* out, Eigen::Index first,
+                  Eigen::Index count, bool skip_zero) {
   // Eigen splits 128 columns or more into blocks whose sums it adds in turn, and takes a single
   // row as an inner product (its own order of the sum).
   if (a.cols() < 128 && (a.rows() > 1 || a.cols() == 1)) {
-    ColumnSums(out, a.data(), a.outerStride(), x, a.rows(), a.cols(), skip_zero);
+    ColumnSums(out + first, a.data() + first, a.outerStride(), x, count, a.cols(), skip_zero);
     return;
   }
   Eigen::Map<Eigen::VectorXd>(out, a.rows()).noalias() =

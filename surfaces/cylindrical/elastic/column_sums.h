@@ -19,5 +19,10 @@ void ColumnSums(double* out, const double* a, Eigen::Index stride, const double*
 // out = a * x (`out`, rows values, may not overlap x): ColumnSums where Eigen forms those sums,
 // else Eigen's own product.
 void TimesInOrder(const Eigen::MatrixXd& a, const double* x, double* out, bool skip_zero = false);
+// The same for the rows first .. first + count - 1 of the product alone (out[first ..]; the other
+// entries of `out` untouched where ColumnSums forms them, written where Eigen does): each entry's
+// sum is the whole product's.
+void TimesInOrder(const Eigen::MatrixXd& a, const double* x, double* out, Eigen::Index first,
+                  Eigen::Index count, bool skip_zero);
 
 }  // namespace fitfeel::cylindrical

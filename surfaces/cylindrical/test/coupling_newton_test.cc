@@ -112,6 +112,12 @@ TEST(ColumnSums, AreEigensProductsBitForBit) {
       TimesInOrder(a, x.data(), out.data(), skip);
       const Eigen::VectorXd eigen = a * x;
       EXPECT_TRUE(SameBits(out, eigen)) << n << (skip ? " skipping zeros" : "");
+      // Rows 1/3 .. 2/3 alone: the whole product's entries there.
+      const Eigen::Index first = n / 3, count = n - 2 * (n / 3);
+      Eigen::VectorXd part = eigen;
+      part.segment(first, count).setConstant(-1.0);
+      TimesInOrder(a, x.data(), part.data(), first, count, skip);
+      EXPECT_TRUE(SameBits(part.segment(first, count), eigen.segment(first, count))) << n;
     }
   }
   // A rectangular matrix and one of a single row (Eigen's inner product there).
