@@ -169,7 +169,15 @@ RunResult RunPreparedScene(const Scene& scene, PreparedScene& prepared,
     if (scene.run.write_recording) outputs.recording = RecordingInfo{spec.model};
     for (const MatingFeature& feature : scene.features) outputs.features.push_back(feature.name);
     outputs.screw = IsScrewScene(scene);
-    TraceStream stream(outputs, options.observer);
+    // A run of fewer ticks than the ring's default holds needs no more rows than it has ticks:
+    // the ring then never fills, whatever the clock, and a short run (a study's pair) does not
+    // build and touch the default's megabytes. The scheduler refuses a duration without a tick.
+    const double ticks = std::round(settings.duration * settings.rate);
+    const std::size_t capacity =
+        ticks >= 1.0 && ticks < static_cast<double>(TraceStream::kDefaultCapacity)
+            ? static_cast<std::size_t>(ticks)
+            : TraceStream::kDefaultCapacity;
+    TraceStream stream(outputs, options.observer, capacity);
     settings.stream = &stream.ring();
     settings.stop = options.stop;
     Scheduler scheduler(*scene.device, *stages.positioning, *stages.constrained, settings);

@@ -1,10 +1,13 @@
 #include "surfaces/cylindrical/coupling_newton.h"
 
+#include <algorithm>
 #include <cassert>
 #include <utility>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/LU>
+
+#include "surfaces/cylindrical/elastic/column_sums.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -134,18 +137,24 @@ void CouplingSystem::PoseCoupled() {
 
 void CouplingSystem::Apply(const Eigen::VectorXd& x, Eigen::VectorXd* y) const {
   const Eigen::Index m = sections_, nc = components();
-  // z = diag(response) x, section by section, then y = x + M z component by component.
-  Eigen::VectorXd z(size()), xs(nc), zs(nc);
+  // z = diag(response) x, section by section, then y = x + M z component by component; the
+  // products' sums in Eigen's order (TimesInOrder), into buffers kept between calls.
+  Eigen::VectorXd& z = apply_z_;
+  Eigen::VectorXd& xs = apply_xs_;
+  Eigen::VectorXd& zs = apply_zs_;
+  z.resize(size());
+  xs.resize(nc);
+  zs.resize(std::max(nc, m));
   for (Eigen::Index s = 0; s < m; ++s) {
     for (Eigen::Index c = 0; c < nc; ++c) xs[c] = x[c * m + s];
-    zs.noalias() = response_[static_cast<std::size_t>(s)] * xs;
+    TimesInOrder(response_[static_cast<std::size_t>(s)], xs.data(), zs.data());
     for (Eigen::Index c = 0; c < nc; ++c) z[c * m + s] = zs[c];
   }
   *y = x;
   for (Eigen::Index c = 0; c < nc; ++c) {
-    y->segment(c * m, m).noalias() +=
-        coupling_[static_cast<std::size_t>(component_mode_[static_cast<std::size_t>(c)])] *
-        z.segment(c * m, m);
+    TimesInOrder(coupling_[static_cast<std::size_t>(component_mode_[static_cast<std::size_t>(c)])],
+                 z.data() + c * m, zs.data());
+    y->segment(c * m, m) += zs.head(m);
   }
   if (out_.size() > 0) y->noalias() -= out_ * (in_ * x);
 }

@@ -51,6 +51,8 @@ class CouplingSystem {
   std::vector<Eigen::MatrixXd> coupling_;  // per mode
   std::vector<Eigen::MatrixXd> response_;  // per section
   Eigen::MatrixXd out_, in_;
+  // Apply's buffers (the system is one thread's, as its callers' scratch is).
+  mutable Eigen::VectorXd apply_z_, apply_xs_, apply_zs_;
 };
 
 }  // namespace fitfeel::cylindrical

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -88,17 +89,16 @@ FITFEEL_SIMD_CLONES void EnergyMoments(double* __restrict energy, double* __rest
   }
 }
 
-// Each row of a part's variation v (rows x n, row-major) on the elastic solve's n / block columns,
-// whose column i sits at the centre of the grid's block i: the row's Fourier series up to the
-// solve's highest harmonic K = n / (2 block) (K's own term halved, as the solve's circulant takes
-// it), evaluated there. Every harmonic the solve resolves keeps its full height; a block's mean
-// would keep order k at sinc(pi k block / n) of it (0.64 at K = 60 on 360 columns), which
-// flattens the waviness's crests that a light fit bears on. The series is the Dirichlet kernel:
-// out(i) = sum_j kernel((i block - j) mod n) v(j). Returns n / block x rows.
-Eigen::MatrixXd OnSolveColumns(const Eigen::VectorXd& v, int rows, int n, int block) {
-  const int solve = n / block, highest = solve / 2;
-  // kernel(d) = (1 + 2 sum_{q < K} cos(q a) + cos(K a)) / n at a = 2 pi (d + (block - 1) / 2) / n,
-  // each angle reduced exactly in integers: q a = 2 pi (q (2 d + block - 1) mod 2 n) / (2 n).
+// The solve's columns' kernel for OnSolveColumns on n grid columns in blocks of `block`: the
+// Fourier series of a row up to the solve's highest harmonic K = n / (2 block) (K's own term
+// halved, as the solve's circulant takes it) evaluated at the centre of grid block i is the
+// Dirichlet kernel, out(i) = sum_j kernel((i block - j) mod n) v(j), with
+// kernel(d) = (1 + 2 sum_{q < K} cos(q a) + cos(K a)) / n at a = 2 pi (d + (block - 1) / 2) / n.
+// Returned wrapped: kernel((m - j) mod n) over j = 0 .. n-1 is wrapped[n - m + j], a contiguous
+// inner product. It depends on n and block alone (SolveColumnKernel shares it between prepares).
+std::vector<double> MakeSolveColumnKernel(int n, int block) {
+  const int highest = n / block / 2;
+  // Each angle reduced exactly in integers: q a = 2 pi (q (2 d + block - 1) mod 2 n) / (2 n).
   std::vector<double> kernel(static_cast<std::size_t>(n));
   for (int d = 0; d < n; ++d) {
     const long twice = 2L * d + block - 1;
@@ -109,11 +109,33 @@ Eigen::MatrixXd OnSolveColumns(const Eigen::VectorXd& v, int rows, int n, int bl
     }
     kernel[static_cast<std::size_t>(d)] = sum / n;
   }
-  // kernel((m - j) mod n) over j = 0 .. n-1 is wrapped[n - m + j]: a contiguous inner product.
   std::vector<double> wrapped(2 * static_cast<std::size_t>(n));
   for (int t = 0; t < 2 * n; ++t) {
     wrapped[static_cast<std::size_t>(t)] = kernel[static_cast<std::size_t>((2 * n - t) % n)];
   }
+  return wrapped;
+}
+
+// MakeSolveColumnKernel's, made once for all the prepares that share `shared` (null: made here).
+std::shared_ptr<const std::vector<double>> SolveColumnKernel(SharedPrepare* shared, int n,
+                                                             int block) {
+  if (shared == nullptr) {
+    return std::make_shared<const std::vector<double>>(MakeSolveColumnKernel(n, block));
+  }
+  return shared->Get<std::vector<double>>(
+      "cylindrical solve-column kernel:" + std::to_string(n) + ',' + std::to_string(block),
+      [n, block] { return MakeSolveColumnKernel(n, block); });
+}
+
+// Each row of a part's variation v (rows x n, row-major) on the elastic solve's n / block columns,
+// whose column i sits at the centre of the grid's block i: the row's Fourier series up to the
+// solve's highest harmonic (`wrapped`: SolveColumnKernel's), evaluated there. Every harmonic the
+// solve resolves keeps its full height; a block's mean would keep order k at sinc(pi k block / n)
+// of it (0.64 at K = 60 on 360 columns), which flattens the waviness's crests that a light fit
+// bears on. Returns n / block x rows.
+Eigen::MatrixXd OnSolveColumns(const Eigen::VectorXd& v, int rows, int n, int block,
+                               const std::vector<double>& wrapped) {
+  const int solve = n / block;
   Eigen::MatrixXd out(solve, rows);
   for (int r = 0; r < rows; ++r) {
     const double* row = v.data() + static_cast<std::ptrdiff_t>(r) * n;
@@ -122,6 +144,26 @@ Eigen::MatrixXd OnSolveColumns(const Eigen::VectorXd& v, int rows, int n, int bl
     }
   }
   return out;
+}
+
+// A section solver for `section` on `columns` columns with the gap shifts of `orders`: its
+// construction (the compliance matrix, its inverse and their products with the bases) depends on
+// these alone, so the prepares that share `shared` copy one made once (null: made here).
+RigidSectionContact SectionSolver(SharedPrepare* shared, const PressFitSection& section,
+                                  int columns, const std::vector<int>& orders) {
+  if (shared == nullptr) return RigidSectionContact(section, columns, orders);
+  std::string key = "cylindrical section solver:";
+  for (double x : {section.d1, section.d2, section.di, section.shaft.youngs_modulus,
+                   section.shaft.poisson, section.hub.youngs_modulus, section.hub.poisson}) {
+    AppendKey(&key, x);
+  }
+  // The names are in the messages a refused material throws.
+  key += section.shaft.name + '\n' + section.hub.name + '\n';
+  key += section.plane_strain ? "strain;" : "stress;";
+  key += std::to_string(columns) + ';';
+  for (int order : orders) key += std::to_string(order) + ',';
+  return *shared->Get<RigidSectionContact>(
+      key, [&] { return RigidSectionContact(section, columns, orders); });
 }
 
 Eigen::Vector2d Rotate(const Eigen::Vector2d& v, double angle) {
@@ -224,8 +266,10 @@ void CylinderContactAnalyzer::DoPrepareStart(const PartSpec& inner, const SkinMo
     // Fewer than this and averaging loses the ovality-to-lobing range the model is about.
     if (n_ / block_ < ElasticOptions::kFewestColumns) block_ = 1;
     if (block_ > 1) {
-      solve_shaft_ = OnSolveColumns(v_shaft_, shaft_rows_, n_, block_);
-      solve_bushing_ = OnSolveColumns(v_bushing_, bushing_rows_, n_, block_);
+      const std::shared_ptr<const std::vector<double>> kernel =
+          SolveColumnKernel(shared_prepare(), n_, block_);
+      solve_shaft_ = OnSolveColumns(v_shaft_, shaft_rows_, n_, block_, *kernel);
+      solve_bushing_ = OnSolveColumns(v_bushing_, bushing_rows_, n_, block_, *kernel);
     } else {
       solve_shaft_.resize(0, 0);
       solve_bushing_.resize(0, 0);
@@ -248,7 +292,7 @@ void CylinderContactAnalyzer::DoPrepareStart(const PartSpec& inner, const SkinMo
         coupled_orders_.push_back(order);
       }
     }
-    solver_.emplace(section, n_ / block_, coupled_orders_);
+    solver_.emplace(SectionSolver(shared_prepare(), section, n_ / block_, coupled_orders_));
     if (options.axial_coupling) {
       AxialBody hub;
       hub.inner_radius = 0.5 * d.d1;
@@ -1091,14 +1135,22 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     }
   };
   // The extra displacement the rows' pressures give each section and component (component-major):
-  // the overlap-weighted mean of its rows' in either part.
+  // the overlap-weighted mean of its rows' in either part. Only the rows the sections cover are
+  // read, so only theirs are computed (the shaft's rows out of the bore are most of its rows).
   auto extra_at_sections = [&](double* out) {
     for (int q = 0; q < 2; ++q) {
       CouplingScratch::Part& part = c.part[static_cast<std::size_t>(q)];
       const std::size_t part_rows = rows[static_cast<std::size_t>(q)]->size() - 1;
+      int lo = static_cast<int>(part_rows), hi = 0;
+      for (const auto& [row, overlap] : part.cover) {
+        lo = std::min(lo, row);
+        hi = std::max(hi, row + 1);
+      }
+      if (hi <= lo) continue;
       for (std::size_t comp = 0; comp < nc; ++comp) {
         (*part_modes[static_cast<std::size_t>(q)])[mode_of(comp)].ExtraDisplacement(
-            part.pressure.data() + comp * part_rows, part.extra.data() + comp * part_rows);
+            part.pressure.data() + comp * part_rows, part.extra.data() + comp * part_rows, lo,
+            hi - lo);
       }
     }
     for (std::size_t comp = 0; comp < nc; ++comp) {
@@ -1188,15 +1240,13 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     for (CouplingScratch::Part& part : c.part) {
       std::fill(part.pressure.begin(), part.pressure.end(), 0.0);
     }
-    bool all_round = true;  // every section in contact all round
+    int all_round = 1;  // every section in contact all round
     for (std::size_t s = 0; s < count; ++s) {
       const double* p = solver->pressures().data() + s * ne;
       const std::vector<char>& set = solver->contact_sets()[s];
       double sum = 0.0;
-      for (std::size_t j = 0; j < ne; ++j) {
-        sum += p[j];
-        all_round = all_round && set[j];
-      }
+      for (std::size_t j = 0; j < ne; ++j) sum += p[j];
+      for (std::size_t j = 0; j < ne; ++j) all_round &= set[j] != 0 ? 1 : 0;
       amplitude[0] = sum / static_cast<double>(ne);
       const Eigen::Map<const Eigen::VectorXd> ps(p, static_cast<Eigen::Index>(ne));
       for (std::size_t comp = 1; comp < nc; ++comp) {
@@ -1339,7 +1389,7 @@ RigidContactResult CylinderContactAnalyzer::SolveSections(
     // In contact all round the step is exact without a solve (linear: the pressures move by
     // -G^-1 B dx, the part's offset and tilt by what order 1's net forces ask), unless a pressure
     // would turn negative; the next pass checks the shifts against it.
-    if (all_round && r.converged &&
+    if (all_round != 0 && r.converged &&
         solver->ShiftFullContact(sections, freedom_, c.section_shift, &r)) {
       continue;
     }

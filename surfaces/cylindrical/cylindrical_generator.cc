@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "framework/core/error.h"
-#include "surfaces/cylindrical/sms_conformance.h"
-#include "surfaces/cylindrical/process_model.h"
-#include "surfaces/cylindrical/random_draws.h"
 #include "surfaces/cylindrical/cylindrical_discretizer.h"
 #include "surfaces/cylindrical/cylindrical_form_wavelengths.h"
 #include "surfaces/cylindrical/elastic_options.h"
+#include "surfaces/cylindrical/process_model.h"
+#include "surfaces/cylindrical/random_draws.h"
+#include "surfaces/cylindrical/sms_conformance.h"
 
 namespace fitfeel::cylindrical {
 namespace {
@@ -79,11 +79,15 @@ Eigen::VectorXd AxisComponent(const SurfaceGrid& g, double length, double t, Rng
     centres.col(k) << e * std::cos(alpha), e * std::sin(alpha);
   }
   const Eigen::MatrixXd c = Interpolate(g, rows, centres);
+  // The columns' directions once, not once per row.
+  Eigen::VectorXd cs(g.columns), sn(g.columns);
+  for (int j = 0; j < g.columns; ++j) {
+    cs(j) = std::cos(g.column_angle(j));
+    sn(j) = std::sin(g.column_angle(j));
+  }
   Eigen::VectorXd v(g.size());
   for (int i = 0; i < g.rows; ++i)
-    for (int j = 0; j < g.columns; ++j)
-      v(g.index(i, j)) =
-          c(0, i) * std::cos(g.column_angle(j)) + c(1, i) * std::sin(g.column_angle(j));
+    for (int j = 0; j < g.columns; ++j) v(g.index(i, j)) = c(0, i) * cs(j) + c(1, i) * sn(j);
   return v;
 }
 
@@ -154,10 +158,11 @@ Eigen::VectorXd WavinessComponent(const SurfaceGrid& g, double diameter, double 
   for (int w = 0; w < 2 && k_lo <= k_hi; ++w) {
     const int k = k_lo + static_cast<int>(Uniform(rng) * (k_hi - k_lo + 1));
     const double weight = Uniform(rng, 0.5, 1.0), phase = Uniform(rng, 0.0, 2.0 * kPi);
+    // The wave's value per column once, added to every row.
+    Eigen::VectorXd wave(g.columns);
+    for (int j = 0; j < g.columns; ++j) wave(j) = weight * std::cos(k * g.column_angle(j) + phase);
     for (int i = 0; i < g.rows; ++i) {
-      for (int j = 0; j < g.columns; ++j) {
-        v[g.index(i, j)] += weight * std::cos(k * g.column_angle(j) + phase);
-      }
+      for (int j = 0; j < g.columns; ++j) v[g.index(i, j)] += wave(j);
     }
   }
   const double pitch = g.rows > 1 ? length / g.rows : length;

@@ -12,6 +12,7 @@
 #include "framework/core/demand.h"
 #include "framework/core/error.h"
 #include "surfaces/cylindrical/elastic/band_cholesky.h"
+#include "surfaces/cylindrical/elastic/column_sums.h"
 #include "surfaces/cylindrical/elastic/harmonic_compliance.h"
 
 namespace fitfeel::cylindrical {
@@ -712,8 +713,7 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
                          .solved_from = solved_from,
                          .solved = solved};
   const int group_rows = GroupRows(mesh, elimination);
-  Responses responses =
-      group_rows > 0 ? CondensedResponses(mesh, group_rows) : BandResponses(mesh);
+  Responses responses = group_rows > 0 ? CondensedResponses(mesh, group_rows) : BandResponses(mesh);
   Eigen::MatrixXd& half = responses.half;
   if (order == 1) {
     // A load cos(theta) has a net force and moment, which the rest of the model carries by the
@@ -779,9 +779,12 @@ AxialCoupling::AxialCoupling(const AxialBody& body, std::span<const double> row_
   }
 }
 
-void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out) const {
-  Eigen::Map<Eigen::VectorXd>(out, extra_.rows()) =
-      extra_ * Eigen::Map<const Eigen::VectorXd>(mean_pressure, extra_.cols());
+void AxialCoupling::ExtraDisplacement(const double* mean_pressure, double* out, Eigen::Index first,
+                                      Eigen::Index count) const {
+  // Most of a part's rows carry no pressure at a depth step (those out of the other part): their
+  // columns are skipped, which changes no sum (TimesInOrder; the elements are finite).
+  TimesInOrder(extra_, mean_pressure, out, first, count < 0 ? extra_.rows() - first : count,
+               /*skip_zero=*/true);
 }
 
 }  // namespace fitfeel::cylindrical

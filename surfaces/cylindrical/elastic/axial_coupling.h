@@ -74,8 +74,10 @@ class AxialCoupling {
   const Eigen::MatrixXd& influence() const { return influence_; }
   // X, m/Pa: F - diag(F 1) for order 0, F - diag(c_n) for the others.
   const Eigen::MatrixXd& matrix() const { return extra_; }
-  // out[i] = sum_j X(i, j) mean_pressure[j] (rows() values each; Pa in, m out).
-  void ExtraDisplacement(const double* mean_pressure, double* out) const;
+  // out[i] = sum_j X(i, j) mean_pressure[j] (rows() values each; Pa in, m out), for the rows
+  // first .. first + count - 1 (every row without them); the others may be left as they are.
+  void ExtraDisplacement(const double* mean_pressure, double* out, Eigen::Index first = 0,
+                         Eigen::Index count = -1) const;
 
   // Rows beyond this make the influence matrix a prepare of its own (one solve per row).
   static constexpr int kMostRows = 1000;

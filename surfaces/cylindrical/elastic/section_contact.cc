@@ -1,6 +1,7 @@
 #include "surfaces/cylindrical/elastic/section_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -16,6 +17,23 @@
 namespace fitfeel::cylindrical {
 namespace {
 
+// Rows j .. j + B of AddScaledColumns, their B sums held in registers over every column.
+template <int B>
+inline void AddScaledColumnRows(double* __restrict sum, const double* __restrict matrix,
+                                const int* cols, const double* __restrict coeff, int count, int n,
+                                int j) {
+  FITFEEL_NO_FP_CONTRACT
+  double acc[B];
+  for (int r = 0; r < B; ++r) acc[r] = 0.0;
+  for (int a = 0; a < count; ++a) {
+    const double* __restrict column =
+        matrix + static_cast<std::ptrdiff_t>(cols != nullptr ? cols[a] : a) * n + j;
+    const double c = coeff[a];
+    for (int r = 0; r < B; ++r) acc[r] += c * column[r];
+  }
+  for (int r = 0; r < B; ++r) sum[j + r] = acc[r];
+}
+
 // sum = sum over a < count of coeff[a] * column cols[a] (or column a without cols) of the
 // column-major n x n `matrix`: the solver's products with whole contiguous columns, compiled
 // also for AVX2 and AVX-512 (framework/core/simd_clones.h; each sum[j] adds in the order of a).
@@ -23,13 +41,10 @@ FITFEEL_SIMD_CLONES void AddScaledColumns(double* __restrict sum, const double* 
                                           const int* cols, const double* __restrict coeff,
                                           int count, int n) {
   FITFEEL_NO_FP_CONTRACT
-  for (int j = 0; j < n; ++j) sum[j] = 0.0;
-  for (int a = 0; a < count; ++a) {
-    const double* __restrict column =
-        matrix + static_cast<std::ptrdiff_t>(cols != nullptr ? cols[a] : a) * n;
-    const double c = coeff[a];
-    for (int j = 0; j < n; ++j) sum[j] += c * column[j];
-  }
+  int j = 0;
+  for (; j + 16 <= n; j += 16) AddScaledColumnRows<16>(sum, matrix, cols, coeff, count, n, j);
+  for (; j + 4 <= n; j += 4) AddScaledColumnRows<4>(sum, matrix, cols, coeff, count, n, j);
+  for (; j < n; ++j) AddScaledColumnRows<1>(sum, matrix, cols, coeff, count, n, j);
 }
 
 }  // namespace
@@ -76,12 +91,13 @@ void CirculantContact::InverseTimes(const double* x, double* out) const {
 
 bool CirculantContact::SolveFull(const Eigen::Vector2d& e, const double* inverse_gap, double* p,
                                  std::vector<char>* active, Factorization* workspace) {
-  bool feasible = true;
-  for (int j = 0; j < n_; ++j) {
-    p[j] = g_inv_u_(j, 0) * e.x() + g_inv_u_(j, 1) * e.y() - inverse_gap[j];
-    feasible = feasible && p[j] >= 0.0;
-  }
-  if (!feasible) return false;
+  // The pressures, then whether any is negative (or NaN): two loops that vectorise.
+  const double* u0 = g_inv_u_.col(0).data();
+  const double* u1 = g_inv_u_.col(1).data();
+  for (int j = 0; j < n_; ++j) p[j] = u0[j] * e.x() + u1[j] * e.y() - inverse_gap[j];
+  int infeasible = 0;
+  for (int j = 0; j < n_; ++j) infeasible |= p[j] >= 0.0 ? 0 : 1;
+  if (infeasible != 0) return false;
   active->assign(static_cast<std::size_t>(n_), 1);
   last_ = workspace;
   (workspace != nullptr ? *workspace : own_).last_full = true;
@@ -147,14 +163,20 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
   const int n = n_;
   std::vector<char>& f = *active;
   if (static_cast<int>(f.size()) != n) f.assign(static_cast<std::size_t>(n), 0);
-  double scale = 0.0;
-  for (int j = 0; j < n; ++j) scale = std::max(scale, std::abs(delta[j]));
+  // The largest |delta| over four lanes (a maximum is exact in any order).
+  std::array<double, 4> lane{0.0, 0.0, 0.0, 0.0};
+  int at = 0;
+  for (; at + 4 <= n; at += 4) {
+    for (int l = 0; l < 4; ++l) lane[l] = std::max(lane[l], std::abs(delta[at + l]));
+  }
+  for (; at < n; ++at) lane[0] = std::max(lane[0], std::abs(delta[at]));
+  const double scale = std::max(std::max(lane[0], lane[1]), std::max(lane[2], lane[3]));
   // Tolerances relative to the data: a closure error of 1e-12 of the largest interference (and the
   // pressure that would cause it) is rounding, not contact.
   const double tol_w = 1e-12 * scale + 1e-300;
   const double tol_p = tol_w / g_(0, 0);
   int best = n + 1, chances = 3, steps = 0;
-  w_.resize(n);
+  w_.setZero(n);
   ws.last_full = false;
   // y = G^-1 delta: the pressures of full contact, and the right-hand side of the dual step.
   if (full == nullptr) {
@@ -175,11 +197,25 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       throw UserError("section contact: pivoting did not terminate (" + std::to_string(steps) +
                       " steps); the compliance is not positive definite?");
     }
-    ws.index.clear();
-    ws.gaps.clear();
-    for (int j = 0; j < n; ++j) (f[static_cast<std::size_t>(j)] ? ws.index : ws.gaps).push_back(j);
-    const int m = static_cast<int>(ws.index.size());
-    const int k = n - m;
+    // The contact set and the gaps, ascending: written through raw pointers into vectors sized
+    // for every column (a push_back per column kept the vectors' ends in memory between columns,
+    // and the flags' unpredictable branch on top of it).
+    ws.index.resize(static_cast<std::size_t>(n));
+    ws.gaps.resize(static_cast<std::size_t>(n));
+    int m = 0, k = 0;
+    {
+      int* const in = ws.index.data();
+      int* const out = ws.gaps.data();
+      for (int j = 0; j < n; ++j) {
+        const bool touching = f[static_cast<std::size_t>(j)] != 0;
+        in[m] = j;
+        out[k] = j;
+        m += touching ? 1 : 0;
+        k += touching ? 0 : 1;
+      }
+    }
+    ws.index.resize(static_cast<std::size_t>(m));
+    ws.gaps.resize(static_cast<std::size_t>(k));
     std::fill(p, p + n, 0.0);
     // Pressures on the contact set F and closures on the gaps N = the rest, by whichever system is
     // smaller: G_FF p_F = delta_F (m^3) or, with H = G^-1 and y = H delta, the dual
@@ -196,26 +232,28 @@ int CirculantContact::Solve(const double* delta, double* p, std::vector<char>* a
       for (int c : ws.index) p[c] = full_[c] - sum_[c];
       for (int a = 0; a < k; ++a) w_[ws.gaps[static_cast<std::size_t>(a)]] = -z_[a];
     } else {
+      // p_F in the factor's order (Refactor's) in coeff_, then in place.
+      coeff_.resize(m);
       if (m > 0) {
         Refactor(g_, &ws.index, &ws.primal, &ws.mark);
-        Eigen::VectorXd pf = Eigen::Map<const Eigen::VectorXd>(delta, n)(ws.index);
-        ws.primal.cholesky.SolveInPlace(pf);
-        for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = pf[a];
+        for (int a = 0; a < m; ++a) coeff_[a] = delta[ws.index[static_cast<std::size_t>(a)]];
+        ws.primal.cholesky.SolveInPlace(coeff_);
+        for (int a = 0; a < m; ++a) p[ws.index[static_cast<std::size_t>(a)]] = coeff_[a];
       }
       // G_NF p_F as whole columns of G over all n rows, read on N.
-      coeff_.resize(m);
-      for (int a = 0; a < m; ++a) coeff_[a] = p[ws.index[static_cast<std::size_t>(a)]];
       sum_.resize(n);
       AddScaledColumns(sum_.data(), g_.data(), ws.index.data(), coeff_.data(), m, n);
       for (int j : ws.gaps) w_[j] = sum_[j] - delta[j];
     }
+    // Both tests on every column, the flag choosing (w_ holds a defined value everywhere): no
+    // branch on the flags, which the pivoting leaves in no predictable pattern.
     int infeasible = 0, last = -1;
     for (int j = 0; j < n; ++j) {
-      const bool bad = f[static_cast<std::size_t>(j)] ? p[j] < -tol_p : w_[j] < -tol_w;
-      if (bad) {
-        ++infeasible;
-        last = j;
-      }
+      const int touching = f[static_cast<std::size_t>(j)] != 0 ? 1 : 0;
+      const int bad =
+          (touching & (p[j] < -tol_p ? 1 : 0)) | ((touching ^ 1) & (w_[j] < -tol_w ? 1 : 0));
+      infeasible += bad;
+      last = bad != 0 ? j : last;
     }
     if (infeasible == 0) break;
     if (infeasible < best) {
@@ -324,7 +362,6 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
   const int n = contact_.columns();
   const auto nn = static_cast<std::size_t>(n);
   delta_.resize(nn);
-  full_.resize(nn);
   pressure_.resize(sections.size() * nn);
   if (active_.size() != sections.size()) active_.assign(sections.size(), std::vector<char>(nn, 0));
   workspace_.assign(sections.size(), nullptr);
@@ -336,14 +373,14 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
     const ContactSection& sec = sections[s];
     const Eigen::Vector2d e = freedom.tilt ? Eigen::Vector2d(e0 + sec.y * t) : e0;
     double* p = pressure_.data() + s * nn;
-    bool any = false;
+    // The interference and whether any column has one, as two loops that vectorise.
     for (std::size_t j = 0; j < nn; ++j) {
       delta_[j] = e.x() * cos_[j] + e.y() * sin_[j] - sec.gap[j];
-      any = any || delta_[j] > 0.0;
     }
-    bool none_active = true;
-    for (char a : active_[s]) none_active = none_active && !a;
-    if (!any && none_active) {
+    int any = 0;
+    for (std::size_t j = 0; j < nn; ++j) any |= delta_[j] > 0.0 ? 1 : 0;
+    if (any == 0 &&
+        std::none_of(active_[s].begin(), active_[s].end(), [](char a) { return a != 0; })) {
       std::fill(p, p + n, 0.0);
       workspace_[s] = nullptr;
       continue;
@@ -351,10 +388,10 @@ double RigidSectionContact::Evaluate(std::span<const ContactSection> sections,
     CirculantContact::Factorization* factors =
         sec.factorization != nullptr ? sec.factorization : &factors_[s];
     workspace_[s] = factors;
-    if (!contact_.SolveFull(e, InverseGap(sec, s), full_.data(), &active_[s], factors)) {
-      contact_.Solve(delta_.data(), p, &active_[s], full_.data(), factors);
-    } else {
-      std::copy(full_.begin(), full_.end(), p);
+    // Full contact's pressures straight into p; where one is negative they are Solve's `full`
+    // (which it reads before it writes p).
+    if (!contact_.SolveFull(e, InverseGap(sec, s), p, &active_[s], factors)) {
+      contact_.Solve(delta_.data(), p, &active_[s], p, factors);
     }
     double energy = 0.0;
     Eigen::Vector2d f(0.0, 0.0);
@@ -436,12 +473,19 @@ RigidContactResult RigidSectionContact::Solve(std::span<const ContactSection> se
     const double y = freedom.tilt ? sections[s].y : 0.0;
     const Eigen::Vector2d e = q.head<2>() + y * q.tail<2>();
     delta_.resize(nn);
-    double largest = 0.0;
     for (std::size_t j = 0; j < nn; ++j) {
       delta_[j] = e.x() * cos_[j] + e.y() * sin_[j] - sections[s].gap[j];
-      largest = std::max(largest, delta_[j]);
     }
-    for (std::size_t j = 0; j < nn; ++j) active_[s][j] = w[j] && delta_[j] > -largest;
+    // The largest of 0 and the interferences, over four lanes (a maximum is exact in any order).
+    std::array<double, 4> lane{0.0, 0.0, 0.0, 0.0};
+    std::size_t j = 0;
+    for (; j + 4 <= nn; j += 4) {
+      for (std::size_t l = 0; l < 4; ++l) lane[l] = std::max(lane[l], delta_[j + l]);
+    }
+    for (; j < nn; ++j) lane[0] = std::max(lane[0], delta_[j]);
+    const double largest = std::max(std::max(lane[0], lane[1]), std::max(lane[2], lane[3]));
+    char* flags = active_[s].data();
+    for (j = 0; j < nn; ++j) flags[j] = (w[j] != 0) & (delta_[j] > -largest);
   }
   const auto components = static_cast<std::size_t>(shift_basis_.cols());
   if (!gap_shift.empty() && gap_shift.size() == sections.size() * components &&

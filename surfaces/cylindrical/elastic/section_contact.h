@@ -48,7 +48,8 @@ class CirculantContact {
   // Solves the LCP for delta (n values). `active` (n flags) is the warm start on entry and the
   // contact set on exit. Returns the number of pivoting steps; throws if it fails to terminate.
   // `full`, when given, is G^-1 delta (every pressure of full contact, some negative: the caller
-  // has tried SolveFull); otherwise Solve computes it and returns at once if it is feasible.
+  // has tried SolveFull; it may be p itself, read before p is written); otherwise Solve computes it
+  // and returns at once if it is feasible.
   int Solve(const double* delta, double* p, std::vector<char>* active, const double* full = nullptr,
             Factorization* workspace = nullptr);
   // The closed form of full contact for delta = U e - gap (U the columns' unit vectors) from
@@ -120,8 +121,7 @@ struct RigidFreedom {
 
 // A section's offset per step of the part's pose q = (offset, tilt): P = [I, y I] (2 x 4), or I
 // (2 x 2) where the part may not tilt.
-Eigen::MatrixXd SectionPlacement(const ContactSection& section,
-                                             const RigidFreedom& freedom);
+Eigen::MatrixXd SectionPlacement(const ContactSection& section, const RigidFreedom& freedom);
 
 struct RigidContactResult {
   Eigen::Vector2d offset{0.0, 0.0};     // axis offset at the reference point, m
@@ -205,7 +205,7 @@ class RigidSectionContact {
   Eigen::MatrixXd shift_basis_;                              // B
   Eigen::MatrixXd response_basis_, inverse_response_basis_;  // E = [B, cos, sin] and G^-1 E
   Eigen::MatrixXd full_response_;                            // E^T G^-1 E
-  std::vector<double> cos_, sin_, delta_, full_, pressure_, inverse_gap_, shifted_;
+  std::vector<double> cos_, sin_, delta_, pressure_, inverse_gap_, shifted_;
   std::vector<char> inverse_gap_ready_;
   std::vector<CirculantContact::Factorization> factors_;  // one per section of the current Solve
   // Per section of the last evaluation, the workspace its solve used (null: out of contact).

@@ -1,9 +1,12 @@
 #include "surfaces/cylindrical/coupling_newton.h"
 
+#include <cstring>
 #include <random>
 #include <vector>
 
 #include <Eigen/LU>
+
+#include "surfaces/cylindrical/elastic/column_sums.h"
 
 // After the project headers: <signal.h> (via gtest) defines a macro named si_value.
 #include <gtest/gtest.h>
@@ -86,6 +89,45 @@ TEST(CouplingSystem, SolvesToTheResidualItIsAskedFor) {
     }
     EXPECT_LE((system.Solve(rhs, 1e-12) - exact).norm(), 1e-9 * exact.norm()) << "seed " << seed;
   }
+}
+
+bool SameBits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return a.size() == b.size() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+// The products the coupling's Newton system takes in Eigen's order give Eigen's bits: every size
+// up to and past the 128-column block, right-hand sides with exact zeros (skipped columns) and
+// negative zeros, matrices with a zero column.
+TEST(ColumnSums, AreEigensProductsBitForBit) {
+  std::mt19937 draw(7);
+  for (Eigen::Index n : {1, 2, 3, 7, 8, 9, 15, 16, 17, 33, 64, 65, 127, 128, 130}) {
+    Eigen::MatrixXd a = Uniform(n, n, draw);
+    if (n > 3) a.col(1).setZero();
+    Eigen::VectorXd x = Uniform(n, 1, draw);
+    x[0] = 0.0;
+    if (n > 2) x[2] = -0.0;
+    Eigen::VectorXd out(n);
+    for (bool skip : {false, true}) {
+      TimesInOrder(a, x.data(), out.data(), skip);
+      const Eigen::VectorXd eigen = a * x;
+      EXPECT_TRUE(SameBits(out, eigen)) << n << (skip ? " skipping zeros" : "");
+      // Rows 1/3 .. 2/3 alone: the whole product's entries there.
+      const Eigen::Index first = n / 3, count = n - 2 * (n / 3);
+      Eigen::VectorXd part = eigen;
+      part.segment(first, count).setConstant(-1.0);
+      TimesInOrder(a, x.data(), part.data(), first, count, skip);
+      EXPECT_TRUE(SameBits(part.segment(first, count), eigen.segment(first, count))) << n;
+    }
+  }
+  // A rectangular matrix and one of a single row (Eigen's inner product there).
+  const Eigen::MatrixXd wide = Uniform(3, 140, draw), row = Uniform(1, 5, draw);
+  const Eigen::VectorXd x = Uniform(140, 1, draw);
+  Eigen::VectorXd out(3), one(1);
+  TimesInOrder(wide, x.data(), out.data());
+  EXPECT_TRUE(SameBits(out, wide * x));
+  TimesInOrder(row, x.data(), one.data());
+  EXPECT_TRUE(SameBits(one, row * x.head(5)));
 }
 
 }  // namespace
