@@ -147,10 +147,21 @@ std::shared_ptr<LiveSession::Slot> LiveSession::MakeSlot(std::string yaml,
   const Scene& scene = slot->scene;
   if (!scene.device) throw UserError("scene '" + scene.name + "' has no device");
   // The view's model draws the same shapes on a thread of its own while the run's are prepared.
-  std::future<std::shared_ptr<const ViewModel>> model = std::async(std::launch::async, [&scene] {
-    return std::shared_ptr<const ViewModel>(std::make_shared<ViewModel>(scene, scene.run.seed));
-  });
-  slot->prepared = Prepare(scene, nullptr, scene.device->reach(scene.run.duration));
+  // In real time both are ready to touch when they return and prepare the rest of their tables
+  // on threads of their own, as a run in real time does: a swap waits for neither's whole tables.
+  // Virtual time (tests) has no deadline and prepares them whole.
+  const bool progressive = options_.clock == ClockMode::kRealTime;
+  std::future<std::shared_ptr<const ViewModel>> model =
+      std::async(std::launch::async, [&scene, progressive] {
+        return std::shared_ptr<const ViewModel>(
+            std::make_shared<ViewModel>(scene, scene.run.seed, -1, progressive));
+      });
+  ProgressiveSettings settings;
+  settings.worker = progressive;
+  slot->prepared =
+      PrepareProgressive(scene, settings, nullptr, scene.device->reach(scene.run.duration),
+                         scene.device->angular_reach(scene.run.duration));
+  if (!progressive) slot->prepared.FinishPreparing();
   slot->model = model.get();
   if (!slot->model->renders_forces()) {
     throw UnsupportedError("view: scene '" + scene.name + "' renders no forces (" +

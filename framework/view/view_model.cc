@@ -70,7 +70,9 @@ void AddCadMesh(nlohmann::json* j, const std::filesystem::path& scenario_file,
 
 ViewModel::~ViewModel() = default;
 
-ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step) : scene_(scene) {
+ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step, bool progressive)
+    : scene_(scene) {
+  const PrepareWorker::Clock::time_point start = PrepareWorker::Clock::now();
   if (!scene.surface) {
     throw UserError("scene '" + scene.name + "' has no surface type '" + scene.surface_id + "'");
   }
@@ -92,7 +94,14 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step) : scene_(
     if (!analyzer_) {
       status_ = "surface type '" + scene.surface_id + "' provides no contact analyzer";
     } else {
-      analyzer_->Prepare(scene.inner, *inner_, scene.outer, *outer_, scene.model);
+      if (progressive) {
+        analyzer_->PrepareStart(scene.inner, *inner_, scene.outer, *outer_, scene.model, nullptr,
+                                kReadyDepth);
+        rest_ = std::make_unique<PrepareWorker>(std::vector<ContactAnalyzer*>{analyzer_.get()},
+                                                start, /*thread=*/true, nullptr);
+      } else {
+        analyzer_->Prepare(scene.inner, *inner_, scene.outer, *outer_, scene.model);
+      }
       law_ = surface.MakeLaw(scene.model.law);
       law_->Prepare(scene.inner, scene.outer, scene.model);
       try {

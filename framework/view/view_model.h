@@ -11,6 +11,7 @@
 #include "framework/core/export.h"
 #include "framework/model/contact_analyzer.h"
 #include "framework/model/resistance_law.h"
+#include "framework/runtime/prepare_worker.h"
 #include "framework/scenario/scene.h"
 #include "framework/view/frame_codec.h"
 #include "framework/view/part_placement.h"
@@ -33,7 +34,11 @@ class FITFEEL_API ViewModel {
   // type without a law (or without an analyzer) still gives a model: its parts are shown, without
   // pressure, and `status()` says why. `step`: the scene's index among a sequence's steps, which
   // its scene message names (`step`), or -1 for a scene of its own, whose message names none.
-  ViewModel(const Scene& scene, std::uint64_t seed, int step = -1);
+  // `progressive`: the analyzer is ready to touch when the constructor returns and prepares the
+  // rest of its tables on a thread of its own (PrepareWorker); a pose past its frontier is
+  // answered at the frontier until then. For a live scene whose page shows states as they come
+  // (LiveSession); a finished run's rows are filled at once and need the whole tables.
+  ViewModel(const Scene& scene, std::uint64_t seed, int step = -1, bool progressive = false);
   ~ViewModel();
   ViewModel(const ViewModel&) = delete;
   ViewModel& operator=(const ViewModel&) = delete;
@@ -82,6 +87,8 @@ class FITFEEL_API ViewModel {
   std::vector<std::string> mesh_frames_;
   std::vector<std::array<Eigen::Vector2d, 2>> position_deviations_;
   std::vector<PartPlacement> placements_;
+  // Last, so that it is stopped first: it prepares analyzer_'s tables.
+  std::unique_ptr<PrepareWorker> rest_;
 };
 
 }  // namespace fitfeel::view
