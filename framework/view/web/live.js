@@ -178,6 +178,10 @@ export function onLive(msg, send) {
     live.yaml = msg.yaml;
     buildForm(msg);
   }
+  // The scenario keeps its name; the title says it renders as edited (and the fit it has now).
+  if (msg.swaps > 0) {
+    $('title').textContent = `${msg.scene} (edited${msg.fit ? `: ${msg.fit}` : ''})`;
+  }
   showEdit(msg);
 }
 
