@@ -26,8 +26,8 @@
 #include "framework/runtime/sequence_run.h"
 #include "framework/scenario/scene.h"
 #include "framework/scenario/sequence.h"
-#include "framework/view/sequence_view.h"
 #include "framework/view/live_session.h"
+#include "framework/view/sequence_view.h"
 #include "framework/view/server.h"
 #include "framework/view/tick_publisher.h"
 #include "framework/view/view_model.h"
@@ -176,16 +176,20 @@ void ViewFinishedSequence(const ViewArgs& args, const nlohmann::json& summary,
   Serve(server, args);
 }
 
+// With --wait, until a browser has connected.
+void WaitForBrowser(const ViewArgs& args, const view::Server& server) {
+  if (!args.wait) return;
+  std::printf("  waiting for a browser to connect before running\n");
+  std::fflush(stdout);
+  while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
+
 // What a live view's run takes once the page may start it: waits for a browser where asked, then
 // the run's folder, seed and clock, and the interrupt's cooperation (from its first tick on, a
 // signal stops the run at a tick boundary and its temporaries are removed).
 RunOptions LiveRunOptions(const ViewArgs& args, view::Server& server, std::uint64_t seed,
                           std::optional<InterruptScope>& interrupt) {
-  if (args.wait) {
-    std::printf("  waiting for a browser to connect before running\n");
-    std::fflush(stdout);
-    while (server.clients() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  WaitForBrowser(args, server);
   RunOptions run;
   run.out_dir = args.out;
   run.stop = &InterruptFlag();
@@ -223,11 +227,12 @@ void ViewSequence(const ViewArgs& args, const fs::path& file, const PluginRegist
                                                   const nlohmann::json& entry) {
     announce(k, result, entry);
     const RunStats& s = result.stats;
-    std::printf("  step %zu of %zu: %s, %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max "
-                "%.2f us; %llu samples dropped\n",
-                k + 1, n, sequence.steps[k].scene.name.c_str(),
-                static_cast<unsigned long long>(s.ticks), s.compute_us.p50, s.compute_us.p99,
-                s.compute_us.max, static_cast<unsigned long long>(viewer.publisher(k).dropped()));
+    std::printf(
+        "  step %zu of %zu: %s, %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max "
+        "%.2f us; %llu samples dropped\n",
+        k + 1, n, sequence.steps[k].scene.name.c_str(), static_cast<unsigned long long>(s.ticks),
+        s.compute_us.p50, s.compute_us.p99, s.compute_us.max,
+        static_cast<unsigned long long>(viewer.publisher(k).dropped()));
     for (const auto& note : result.notes) std::printf("    %s\n", note.c_str());
     std::fflush(stdout);
   };
@@ -248,12 +253,14 @@ void ViewLive(const ViewArgs& args, const fs::path& file, const PluginRegistry& 
               const LoadOptions& load, const view::ServerOptions& options) {
   if (!args.trace.empty()) throw UserError("view: --edit and --compare run a scene, not --trace");
   if (args.virtual_clock) {
-    throw UserError("view: --edit and --compare run the device in real time (a person feels each "
-                    "change); remove --virtual");
+    throw UserError(
+        "view: --edit and --compare run the device in real time (a person feels each "
+        "change); remove --virtual");
   }
   if (!args.out.empty()) {
-    throw UserError("view: --edit and --compare write no outputs (each pass is a new run); "
-                    "remove --out, and save an edited scene from the page");
+    throw UserError(
+        "view: --edit and --compare write no outputs (each pass is a new run); "
+        "remove --out, and save an edited scene from the page");
   }
   view::LiveSessionOptions live;
   live.server = options;
@@ -271,17 +278,10 @@ void ViewLive(const ViewArgs& args, const fs::path& file, const PluginRegistry& 
   session.server().Start();
   std::printf("fitfeel view: %s (%s), %s\n  http://%s:%u/\n", session.rendering().c_str(),
               file.string().c_str(),
-              compare ? ("compared with " + compare->string()).c_str()
-                      : "edited from the page",
+              compare ? ("compared with " + compare->string()).c_str() : "edited from the page",
               args.host.c_str(), session.server().port());
   std::fflush(stdout);
-  if (args.wait) {
-    std::printf("  waiting for a browser to connect before running\n");
-    std::fflush(stdout);
-    while (session.server().clients() == 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-  }
+  WaitForBrowser(args, session.server());
   std::thread timer;
   std::atomic<bool> done{false};
   if (args.exit_after >= 0.0) {
@@ -388,11 +388,11 @@ void View(const ViewArgs& args) {
   interrupt.emplace("fitfeel view",
                     args.out.empty() ? "no outputs written" : "the run's outputs were complete");
   const RunStats& s = result.stats;
-  std::printf("  %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max %.2f us; "
-              "%d viewer client(s), %llu samples dropped\n",
-              static_cast<unsigned long long>(s.ticks), s.compute_us.p50, s.compute_us.p99,
-              s.compute_us.max, server.clients(),
-              static_cast<unsigned long long>(publisher.dropped()));
+  std::printf(
+      "  %llu ticks, tick compute p50 %.2f us, p99 %.2f us, max %.2f us; "
+      "%d viewer client(s), %llu samples dropped\n",
+      static_cast<unsigned long long>(s.ticks), s.compute_us.p50, s.compute_us.p99,
+      s.compute_us.max, server.clients(), static_cast<unsigned long long>(publisher.dropped()));
   for (const auto& note : result.notes) std::printf("  %s\n", note.c_str());
   if (!result.paths.trace.empty()) std::printf("  trace   %s\n", result.paths.trace.c_str());
   std::printf("  run finished: the page scrubs it (Ctrl-C to stop)\n");
@@ -448,9 +448,9 @@ void AddViewCommand(CLI::App& app) {
       ->excludes(edit);
   auto* realtime = cmd->add_flag("--realtime", args->realtime,
                                  "real-time clock (the default for view: watch it at 1 kHz)");
-  auto* virtual_clock = cmd->add_flag(
-      "--virtual", args->virtual_clock,
-      "virtual clock: the run finishes at once and the page scrubs it");
+  auto* virtual_clock =
+      cmd->add_flag("--virtual", args->virtual_clock,
+                    "virtual clock: the run finishes at once and the page scrubs it");
   realtime->excludes(virtual_clock);
   cmd->callback([args] { View(*args); });
 }

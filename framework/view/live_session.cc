@@ -66,11 +66,8 @@ class LiveSession::PassObserver final : public TickObserver {
     if (record.stage == StageId::kConstrained)
       peak = std::max(peak, std::abs(record.wrench.force.y()));
     const bool free = record.stage == StageId::kPositioning || !record.contact.engaged;
-    const bool stop =
-        s_.stop_.load(std::memory_order_relaxed) ||
-        (s_.options_.stop != nullptr && s_.options_.stop->load(std::memory_order_relaxed));
-    if (stop || (s_.swap_pending_.load(std::memory_order_acquire) &&
-                 (free || s_.swap_now_.load(std::memory_order_relaxed)))) {
+    if (s_.StopAsked() || (s_.swap_pending_.load(std::memory_order_acquire) &&
+                           (free || s_.swap_now_.load(std::memory_order_relaxed)))) {
       s_.pass_stop_.store(true, std::memory_order_relaxed);
     }
   }
@@ -85,27 +82,9 @@ LiveSession::LiveSession(const std::filesystem::path& file,
                          const std::optional<std::filesystem::path>& compare,
                          const PluginRegistry& registry, LiveSessionOptions options)
     : registry_(registry), options_(std::move(options)) {
-  for (const std::filesystem::path* f : {&file, compare ? &*compare : nullptr}) {
-    if (f != nullptr && IsSequenceFile(*f)) {
-      throw UserError("view: '" + f->string() +
-                      "' is a sequence; a live view edits or compares scenes (run the sequence "
-                      "with fitfeel view without --edit or --compare)");
-    }
-  }
-  std::string yaml = ReadText(file);
-  // The file is loaded as validate loads it first, so that its own errors point into it.
-  LoadScene(file, registry_, options_.load);
-  if (options_.seed) {
-    yaml = ApplyEdits(yaml, file.string(), {{"run.seed", std::to_string(*options_.seed)}});
-  }
-  current_ = MakeSlot(yaml, file, compare ? "A" : "");
+  current_ = OpenSlot(file, compare ? "A" : "");
   if (compare) {
-    LoadScene(*compare, registry_, options_.load);
-    std::string other = ReadText(*compare);
-    if (options_.seed) {
-      other = ApplyEdits(other, compare->string(), {{"run.seed", std::to_string(*options_.seed)}});
-    }
-    compared_ = {current_, MakeSlot(other, *compare, "B")};
+    compared_ = {current_, OpenSlot(*compare, "B")};
     if (compared_[1]->scene.moving != current_->scene.moving) {
       throw UserError("view: '" + file.string() + "' and '" + compare->string() +
                       "' move different parts; a comparison renders one moving part");
@@ -133,7 +112,25 @@ LiveSession::~LiveSession() {
   if (server_) server_->Stop();
 }
 
-std::shared_ptr<LiveSession::Slot> LiveSession::MakeSlot(std::string yaml,
+std::shared_ptr<LiveSession::Slot> LiveSession::OpenSlot(const std::filesystem::path& file,
+                                                         const std::string& label) const {
+  if (IsSequenceFile(file)) {
+    throw UserError("view: '" + file.string() +
+                    "' is a sequence; a live view edits or compares scenes (run the sequence "
+                    "with fitfeel view without --edit or --compare)");
+  }
+  // Loaded as validate loads it, so that its errors point into the file itself.
+  Scene scene = LoadScene(file, registry_, options_.load);
+  std::string yaml = ReadText(file);
+  if (options_.seed) {
+    // The text too: the page edits on from it.
+    yaml = ApplyEdits(yaml, file.string(), {{"run.seed", std::to_string(*options_.seed)}});
+    scene.run.seed = *options_.seed;
+  }
+  return MakeSlot(std::move(yaml), std::move(scene), file, label);
+}
+
+std::shared_ptr<LiveSession::Slot> LiveSession::MakeSlot(std::string yaml, Scene loaded,
                                                          const std::filesystem::path& file,
                                                          const std::string& label) const {
   const auto start = Clock::now();
@@ -141,7 +138,7 @@ std::shared_ptr<LiveSession::Slot> LiveSession::MakeSlot(std::string yaml,
   slot->label = label;
   slot->file = file;
   slot->fields = EditableFields(yaml, file.string());
-  slot->scene = LoadSceneFromYaml(yaml, file, registry_, options_.load);
+  slot->scene = std::move(loaded);
   slot->yaml = std::move(yaml);
   slot->scene.run.clock = options_.clock;
   const Scene& scene = slot->scene;
@@ -173,10 +170,7 @@ std::shared_ptr<LiveSession::Slot> LiveSession::MakeSlot(std::string yaml,
 
 void LiveSession::Run(std::optional<std::uint64_t> passes) {
   PassObserver observer(*this);
-  const auto stopped = [this] {
-    return stop_.load() || (options_.stop != nullptr && options_.stop->load());
-  };
-  while (!stopped() && !(passes && passes_.load() >= *passes)) {
+  while (!StopAsked() && !(passes && passes_.load() >= *passes)) {
     std::shared_ptr<Slot> slot;
     bool swapped = false;
     {
@@ -273,28 +267,22 @@ void LiveSession::Handle(const std::string& message) {
              j["scene"].is_number_unsigned() && j["scene"].get<std::size_t>() < 2) {
     const std::size_t k = j["scene"].get<std::size_t>();
     const bool now = j.value("now", false);
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (compared_[k] == current_) {
-        // Selecting the scene that renders withdraws a switch still waiting.
-        pending_.reset();
-        swap_pending_.store(false);
-        swap_now_.store(false);
-        selected_ = k;
-      }
+    const std::lock_guard<std::mutex> lock(mutex_);
+    selected_ = k;
+    if (compared_[k] == current_) {
+      // Selecting the scene that renders withdraws a switch still waiting.
+      pending_.reset();
+      swap_pending_.store(false);
+      swap_now_.store(false);
+    } else {
+      OfferLocked(compared_[k], now);
     }
-    if (selected_ != k) {
-      Offer(compared_[k], now);
-      const std::lock_guard<std::mutex> lock(mutex_);
-      selected_ = k;
-    }
-    Publish();
   } else {
     const std::lock_guard<std::mutex> lock(mutex_);
     last_edit_ = {{"state", "refused"},
                   {"message", "view: the session takes edit, apply and select messages (JSON)"}};
   }
-  if (type != "select") Publish();
+  Publish();
 }
 
 void LiveSession::HandleEdit(const nlohmann::json& message) {
@@ -318,7 +306,7 @@ void LiveSession::HandleEdit(const nlohmann::json& message) {
       throw UserError("view: an edit's `apply` is check, free or now, not '" + apply + "'");
     }
     std::string yaml = ApplyEdits(base->yaml, name, edits);
-    const Scene checked = LoadSceneFromYaml(yaml, base->file, registry_, options_.load);
+    Scene checked = LoadSceneFromYaml(yaml, base->file, registry_, options_.load);
     nlohmann::json result = {
         {"state", "valid"}, {"described", DescribeScene(checked)}, {"edits", edits}};
     if (apply != "check") {
@@ -327,7 +315,7 @@ void LiveSession::HandleEdit(const nlohmann::json& message) {
         last_edit_ = {{"state", "preparing"}, {"edits", edits}};
       }
       Publish();
-      std::shared_ptr<Slot> slot = MakeSlot(std::move(yaml), base->file, "");
+      std::shared_ptr<Slot> slot = MakeSlot(std::move(yaml), std::move(checked), base->file, "");
       result["state"] = apply == "now" ? "swapping" : "waiting for the part to be out of contact";
       result["prepare_ms"] = slot->prepare_ms;
       Say("  edit prepared in " + std::to_string(static_cast<int>(slot->prepare_ms)) +
@@ -348,6 +336,10 @@ void LiveSession::HandleEdit(const nlohmann::json& message) {
 
 void LiveSession::Offer(std::shared_ptr<Slot> slot, bool now) {
   const std::lock_guard<std::mutex> lock(mutex_);
+  OfferLocked(std::move(slot), now);
+}
+
+void LiveSession::OfferLocked(std::shared_ptr<Slot> slot, bool now) {
   pending_ = std::move(slot);
   swap_now_.store(now);
   swap_pending_.store(true, std::memory_order_release);
@@ -408,6 +400,11 @@ nlohmann::json LiveSession::panel() const {
 std::string LiveSession::rendering() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return (pending_ && swap_pending_.load() ? pending_ : current_)->scene.name;
+}
+
+bool LiveSession::StopAsked() const noexcept {
+  return stop_.load(std::memory_order_relaxed) ||
+         (options_.stop != nullptr && options_.stop->load(std::memory_order_relaxed));
 }
 
 void LiveSession::Say(const std::string& line) const {

@@ -98,12 +98,18 @@ class FITFEEL_API LiveSession {
   struct Slot;
   class PassObserver;
 
-  std::shared_ptr<Slot> MakeSlot(std::string yaml, const std::filesystem::path& file,
+  // A scenario file's slot, with options.seed applied to its scene and its text.
+  std::shared_ptr<Slot> OpenSlot(const std::filesystem::path& file, const std::string& label) const;
+  // `loaded`, the scene of `yaml` (named `file`), prepared with its view model.
+  std::shared_ptr<Slot> MakeSlot(std::string yaml, Scene loaded, const std::filesystem::path& file,
                                  const std::string& label) const;
   void Work();
   void Handle(const std::string& message);
   void HandleEdit(const nlohmann::json& message);
   void Offer(std::shared_ptr<Slot> slot, bool now);
+  void OfferLocked(std::shared_ptr<Slot> slot, bool now);  // mutex_ held
+  // options.stop or Stop() (relaxed loads: the tick asks too).
+  bool StopAsked() const noexcept;
   void Publish();
   void Say(const std::string& line) const;
 

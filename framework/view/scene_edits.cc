@@ -78,10 +78,7 @@ void AddScalars(const YAML::Node& map, const std::string& prefix, const std::str
   }
 }
 
-}  // namespace
-
-std::vector<EditableField> EditableFields(const std::string& yaml, const std::string& name) {
-  const YAML::Node root = Parse(yaml, name);
+std::vector<EditableField> FieldsOf(const YAML::Node& root) {
   std::vector<EditableField> fields;
   if (!root.IsMap()) return fields;
   const YAML::Node parts = root["parts"];
@@ -118,6 +115,12 @@ std::vector<EditableField> EditableFields(const std::string& yaml, const std::st
   return fields;
 }
 
+}  // namespace
+
+std::vector<EditableField> EditableFields(const std::string& yaml, const std::string& name) {
+  return FieldsOf(Parse(yaml, name));
+}
+
 std::vector<std::string> FitsAt(double nominal_m) {
   static constexpr std::array<std::string_view, 15> kFits = {
       "H11/c11", "H9/d9", "H8/e8", "H8/f7", "H7/f7", "H7/g6", "H7/h6", "H7/js6",
@@ -138,9 +141,9 @@ std::vector<std::string> FitsAt(double nominal_m) {
 
 std::string ApplyEdits(const std::string& yaml, const std::string& name,
                        const std::map<std::string, std::string>& edits) {
-  std::set<std::string> editable;
-  for (const EditableField& f : EditableFields(yaml, name)) editable.insert(f.path);
   YAML::Node root = Parse(yaml, name);
+  std::set<std::string> editable;
+  for (const EditableField& f : FieldsOf(root)) editable.insert(f.path);
   for (const auto& [path, value] : edits) {
     if (editable.count(path) == 0) {
       std::string list;
