@@ -144,14 +144,18 @@ const companion = { group: new THREE.Group(), moving: new THREE.Group(), fixed: 
 companion.group.add(companion.moving, companion.fixed);
 scene.add(companion.group);
 
+// Frees what a group draws and empties it (three.js r111 has no clear()).
+function emptyGroup(group) {
+  group.traverse((o) => {
+    if (o.geometry) o.geometry.dispose();
+    if (o.material) o.material.dispose();
+  });
+  group.children.slice().forEach((c) => group.remove(c));
+}
+
 function clearCompanion() {
-  for (const group of [companion.moving, companion.fixed]) {
-    group.traverse((o) => {
-      if (o.geometry) o.geometry.dispose();
-      if (o.material) o.material.dispose();
-    });
-    group.children.slice().forEach((c) => group.remove(c));
-  }
+  emptyGroup(companion.moving);
+  emptyGroup(companion.fixed);
   Object.assign(companion, { scene: null, pending: 0, drawn: false, meshes: [], geometry: [] });
   document.body.dataset.companionParts = 0;
   $('companion-label').hidden = true;
@@ -753,11 +757,7 @@ function clearScene() {
     view.others.set(label, view.trace);
   }
   for (const group of [moving, fixed]) {
-    group.traverse((o) => {
-      if (o.geometry) o.geometry.dispose();
-      if (o.material) o.material.dispose();
-    });
-    group.children.slice().forEach((c) => group.remove(c));  // three.js r111 has no clear()
+    emptyGroup(group);
     group.position.set(0, 0, 0);
     group.rotation.set(0, 0, 0);
   }
