@@ -59,10 +59,8 @@ struct Server::Impl {
       }
       if (!served.history.empty()) SetHistory(std::move(served.history));
       if (served.companion) {
-        // The other scene's message, marked: the page draws it beside this one.
-        const std::string& message = served.companion->scene_message();
-        companion_frames.push_back(std::make_shared<const std::string>(
-            "{\"companion\":true," + message.substr(message.find('{') + 1)));
+        companion_frames.push_back(
+            std::make_shared<const std::string>(served.companion->companion_message()));
         for (int k = 0; k < served.companion->mesh_count(); ++k) {
           companion_frames.push_back(
               std::make_shared<const std::string>(served.companion->mesh_frame(k)));

@@ -186,6 +186,8 @@ ViewModel::ViewModel(const Scene& scene, std::uint64_t seed, int step, bool prog
   }
   if (step >= 0) j["step"] = step;
   scene_message_ = j.dump();
+  j["companion"] = true;
+  companion_message_ = j.dump();
 }
 
 const std::string& ViewModel::mesh_frame(int k) const {

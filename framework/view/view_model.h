@@ -45,6 +45,9 @@ class FITFEEL_API ViewModel {
 
   // The scene message (JSON text) a client receives first.
   const std::string& scene_message() const { return scene_message_; }
+  // The same marked `companion`: true, for a comparison's other scene, drawn beside the one that
+  // renders (ServedStep::companion).
+  const std::string& companion_message() const { return companion_message_; }
   // The mesh frames a client receives after the scene message, in order: the inner (0) and the
   // outer (1) part of a one-feature scene; of a several-feature scene, each feature's inner part
   // and then its outer part (frame 2 i + side), feature by feature.
@@ -84,6 +87,7 @@ class FITFEEL_API ViewModel {
   double pressure_per_interference_ = 0.0;  // Pa/m; 0 when the law reports none
   std::string status_;
   std::string scene_message_;
+  std::string companion_message_;
   std::vector<std::string> mesh_frames_;
   std::vector<std::array<Eigen::Vector2d, 2>> position_deviations_;
   std::vector<PartPlacement> placements_;
